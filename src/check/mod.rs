@@ -1,0 +1,1 @@
+//! Program-level checks: structure (pairing, jump targets).

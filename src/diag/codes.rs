@@ -1,0 +1,211 @@
+//! The table of diagnostic codes: code, kebab-case name, default severity
+//! and the explanation `cncc explain` prints. Codes are stable: a code is
+//! never reused for another meaning.
+//!
+//! Ranges: E00xx reading characters and numbers, E01xx syntax, E02xx words
+//! and modal groups of a block, E03xx program structure and jumps, E04xx
+//! dialect specs, E05xx running the program, E06xx writing to a target;
+//! W-codes are warnings.
+
+use super::Severity;
+
+macro_rules! codes {
+    ($( $variant:ident = $code:literal, $name:literal, $sev:ident, $summary:literal, $explain:literal; )*) => {
+        /// A stable diagnostic code.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub enum Code { $( $variant, )* }
+
+        impl Code {
+            pub const ALL: &'static [Code] = &[ $( Code::$variant, )* ];
+
+            /// `E0201`.
+            pub fn code(self) -> &'static str {
+                match self { $( Code::$variant => $code, )* }
+            }
+
+            /// `two-motion-codes`.
+            pub fn name(self) -> &'static str {
+                match self { $( Code::$variant => $name, )* }
+            }
+
+            pub fn severity(self) -> Severity {
+                match self { $( Code::$variant => Severity::$sev, )* }
+            }
+
+            /// One line saying what the code is about.
+            pub fn summary(self) -> &'static str {
+                match self { $( Code::$variant => $summary, )* }
+            }
+
+            /// What it means and what to do, for `cncc explain`.
+            pub fn explanation(self) -> &'static str {
+                match self { $( Code::$variant => $explain, )* }
+            }
+        }
+    };
+}
+
+codes! {
+    UnclosedComment = "E0001", "unclosed-comment", Error,
+        "a comment opened with `(` is not closed on its line",
+        "A parenthesised comment must close on the line it opens on. A comment that never closes would swallow the rest of the block, so the opening parenthesis is reported. Close it with `)`.";
+    BadCharacter = "E0002", "bad-character", Error,
+        "a character that has no meaning in this dialect",
+        "The character is not a word address, operator, or part of a number, comment or string in this dialect. Remove it, or put it inside a comment.";
+    MalformedNumber = "E0003", "malformed-number", Error,
+        "a number that cannot be read, such as `1.2.3`",
+        "A number has at most one decimal point and only digits besides. Check for a doubled point or a missing word address between two numbers.";
+    UnterminatedString = "E0004", "unterminated-string", Error,
+        "a string that is not closed on its line",
+        "A string opened with `\"` must close on the same line.";
+    NumberTooLong = "E0005", "number-too-long", Error,
+        "a number with more digits than can be kept exactly",
+        "cncc keeps numbers exactly as decimals of up to 18 significant digits. Controllers accept far fewer; shorten the number.";
+    SyntaxError = "E0101", "syntax-error", Error,
+        "the words of a block do not form a valid statement",
+        "The parser met a token it did not expect here. The message names what was found and what could come instead.";
+    IncompleteExpression = "E0102", "incomplete-expression", Error,
+        "an expression ends before it is complete",
+        "An expression is missing an operand, a closing bracket or a closing parenthesis. Complete it.";
+    WordWithoutValue = "E0103", "word-without-value", Error,
+        "a word address with no value after it",
+        "Every word is a letter followed by a number or an expression, as in `F100`. A letter alone has no meaning.";
+    UnknownKeyword = "E0104", "unknown-keyword", Error,
+        "a keyword or name this dialect does not know",
+        "The name is not a keyword, function, cycle, variable or subprogram this dialect knows. Check its spelling, or declare it.";
+    UnbracketedExpression = "E0105", "unbracketed-expression", Error,
+        "arithmetic after a word without brackets",
+        "In this dialect a word takes a number, a variable or a bracketed expression: write `X[#1/2]`, not `X#1/2`.";
+    TwoMotionCodes = "E0201", "two-motion-codes", Error,
+        "two motion codes (G0, G1, G2, G3, cycles) in one block",
+        "A block can ask for one motion only. Split the block, or remove one of the codes.";
+    ModalGroupConflict = "E0202", "modal-group-conflict", Error,
+        "two codes of one modal group in one block",
+        "Codes of one modal group exclude each other (G90 and G91, G17 and G18, M3 and M4). Keep one per block.";
+    UnknownGCode = "E0203", "unknown-g-code", Error,
+        "a G code this dialect does not have",
+        "The G code is not in this dialect's code table. Check the number, or load a dialect spec that defines it with `--dialect-file`.";
+    UnknownMCode = "E0204", "unknown-m-code", Error,
+        "an M code this dialect does not have",
+        "The M code is not in this dialect's code table. Machine builders add M codes; describe yours in a dialect spec loaded with `--dialect-file`.";
+    RepeatedWord = "E0205", "repeated-word", Error,
+        "the same word address twice in one block",
+        "A block can hold each word address once (except G and M, which may repeat across modal groups). Remove one of the words.";
+    MissingWord = "E0206", "missing-word", Error,
+        "a code without a word it requires",
+        "Some codes need a word to act on: G4 its dwell time, G83 its peck depth Q, G2/G3 a centre or radius. Add the word.";
+    MixedArcFormat = "E0207", "mixed-arc-format", Error,
+        "an arc given both a radius and a centre",
+        "An arc is given either by its radius (R, CR=) or by its centre (I, J, K), not both. Remove one.";
+    UnknownAddress = "E0208", "unknown-address", Error,
+        "a word address this dialect does not have",
+        "The letter is not an address this dialect reads. Check the spelling, or put the text in a comment.";
+    WordNotAllowed = "E0209", "word-not-allowed", Error,
+        "a word that the block's codes cannot use",
+        "The word has no code in this block that uses it (for example axis words with G80). Remove it or add the code that uses it.";
+    NegativeValue = "E0210", "negative-value", Error,
+        "a negative value where only positive ones have meaning",
+        "Feed rates, spindle speeds, dwell times and peck depths are never negative.";
+    CycleTooManyArguments = "E0211", "cycle-too-many-arguments", Error,
+        "a cycle call with more arguments than its signature has",
+        "The cycle's signature in the dialect spec lists fewer parameters than the call gives. Newer controller versions append parameters; if yours does, extend the cycle's signature in a dialect spec.";
+    CycleArgumentKind = "E0212", "cycle-argument-kind", Error,
+        "a cycle argument of the wrong kind",
+        "The parameter takes a number, an integer or a string, and the argument is of another kind.";
+    InvalidValue = "E0213", "invalid-value", Error,
+        "a value outside the range its word allows",
+        "The value is out of the range that the code accepts (for example a G10 L2 P word above 9, or a non-integer G code).";
+    JumpTargetMissing = "E0301", "jump-target-missing", Error,
+        "a jump or call to a block number or label that does not exist",
+        "GOTO, M99 P, M97 P and GOTOF/GOTOB name a sequence number or label that must exist in the program (searched in the direction the jump says). Add the label, or correct the target.";
+    UnbalancedBlock = "E0302", "unbalanced-block", Error,
+        "a control-flow block opened but not closed, or closed but not opened",
+        "IF/ENDIF, WHILE/ENDWHILE (END m), FOR/ENDFOR, REPEAT/UNTIL, LOOP/ENDLOOP, and O-word sub/endsub, if/endif, while/endwhile, do/while, repeat/endrepeat pair up. Add the missing partner.";
+    MismatchedEnd = "E0303", "mismatched-end", Error,
+        "a block closed by the end of another",
+        "The closing statement does not match the innermost open block (for example `END2` closing `DO1`, or `o101 endwhile` closing `o100 if`).";
+    DuplicateLabel = "E0304", "duplicate-label", Error,
+        "the same label or subprogram defined twice",
+        "A label, O-word subroutine or program number names one place. Rename one of them.";
+    NoProgramEnd = "E0305", "no-program-end", Error,
+        "the program ends without M2, M30 or a closing %",
+        "This dialect requires a program to end with M2 or M30 (or a closing %). Add one.";
+    ControlOutsideSub = "E0306", "misplaced-statement", Error,
+        "a statement in a place it cannot be",
+        "The statement is not allowed here (for example `return` outside a subroutine, `break` outside a loop, DEF after the first executable block).";
+    SpecMalformed = "E0401", "spec-malformed-xml", Error,
+        "a dialect spec that is not well-formed XML",
+        "The dialect spec could not be read as XML. The label points at the place the XML reader stopped.";
+    SpecUnknownItem = "E0402", "spec-unknown-item", Error,
+        "an element or attribute the dialect schema does not have",
+        "The dialect spec uses an element or attribute that `dialects/dialect.xsd` does not define. Check its spelling against the schema.";
+    SpecBadValue = "E0403", "spec-bad-value", Error,
+        "a value in a dialect spec that cannot be read",
+        "An attribute holds a value of the wrong form (a code that is not a number, an unknown meaning, capability or modal group).";
+    SpecMissing = "E0404", "spec-missing-item", Error,
+        "a required element or attribute missing from a dialect spec",
+        "The schema requires this element or attribute. Add it.";
+    SpecUnknownBase = "E0405", "spec-unknown-base", Error,
+        "a dialect spec extending a dialect that does not exist",
+        "`extends` names a dialect id or alias that is neither built in nor loaded. Built-in ids: fanuc, haas, linuxcnc, siemens840d.";
+    SpecDuplicate = "E0406", "spec-duplicate", Error,
+        "the same code or cycle defined twice in one dialect spec",
+        "A code or cycle is defined twice in one file. Remove one; to change an inherited entry, define it once in the extending spec.";
+    CannotExpress = "E0601", "cannot-express", Error,
+        "a construct the target dialect cannot express",
+        "The target dialect has no form for this construct. Choose another target, or allow a documented fallback where one exists.";
+    RawInForeignDialect = "E0602", "raw-in-foreign-dialect", Error,
+        "text kept verbatim from one dialect written into another",
+        "cncc kept this text as written because it did not understand it. It can be written back only into the dialect it came from.";
+    LengthWithoutPoint = "W0001", "length-without-decimal-point", Warning,
+        "a length written without a decimal point",
+        "With the decimal-point rule of this dialect (Fanuc parameter 3401#0 = 0), `X10` means 10 least input increments (0.010 mm or 0.0010 in), not 10 mm. Write `X10.` if whole units are meant. Load a spec with `integer-lengths=\"units\"` for a control set to calculator-type input.";
+    DialectDetected = "W0002", "dialect-detected", Note,
+        "the dialect was chosen from the file's name or content",
+        "Without `--dialect`, cncc chooses the dialect from the file extension and its content. Give `--dialect` to be sure.";
+    UnknownSubprogram = "W0003", "unknown-subprogram", Warning,
+        "a call to a subprogram not found in this file",
+        "The called subprogram is not defined in this file. It may live in another file on the controller; cncc cannot check its arguments.";
+    SuspectWord = "W0004", "suspect-word", Warning,
+        "a word that has no effect here",
+        "The word is read but nothing in this block uses it.";
+    ToolNotInTable = "E0501", "tool-not-in-table", Error,
+        "a tool that is not in the tool table",
+        "The program selects or changes to a tool number that the tool table does not list. Add the tool to the table given with `--tool-table`, or correct the number.";
+}
+
+impl Code {
+    /// Finds a code by its code (`E0201`, case-insensitive) or its name.
+    pub fn lookup(text: &str) -> Option<Code> {
+        let t = text.trim();
+        Code::ALL
+            .iter()
+            .copied()
+            .find(|c| c.code().eq_ignore_ascii_case(t) || c.name().eq_ignore_ascii_case(t))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_and_names_are_unique() {
+        let mut codes: Vec<_> = Code::ALL.iter().map(|c| c.code()).collect();
+        let mut names: Vec<_> = Code::ALL.iter().map(|c| c.name()).collect();
+        codes.sort();
+        names.sort();
+        let n = codes.len();
+        codes.dedup();
+        names.dedup();
+        assert_eq!(codes.len(), n, "duplicate code");
+        assert_eq!(names.len(), n, "duplicate name");
+    }
+
+    #[test]
+    fn lookup_by_code_and_name() {
+        assert_eq!(Code::lookup("e0201"), Some(Code::TwoMotionCodes));
+        assert_eq!(Code::lookup("two-motion-codes"), Some(Code::TwoMotionCodes));
+        assert_eq!(Code::lookup("E9999"), None);
+    }
+}

@@ -1,0 +1,194 @@
+//! What a G or M code means in the meta-model, as named in dialect specs
+//! (`meaning="motion.rapid"`). One table serves reading specs and choosing
+//! codes when writing.
+
+use crate::ir::{
+    ArcDir, CompSide, Coolant, CoordShift, CycleKind, DimMode, FeedMode, LengthComp, LengthUnit,
+    MotionKind, PathMode, Plane, StopKind,
+};
+
+/// The spindle functions a code can ask for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SpindleFn {
+    Cw,
+    Ccw,
+    Stop,
+    Orient,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Meaning {
+    Motion(MotionKind),
+    Cycle(CycleKind),
+    CycleCancel,
+    Dwell,
+    Plane(Plane),
+    Units { unit: LengthUnit, with_feeds: bool },
+    Distance(DimMode),
+    ArcDistance(DimMode),
+    FeedMode(FeedMode),
+    RadiusComp(CompSide),
+    LengthComp(LengthComp),
+    /// G54.. with its index (see `StmtKind::WorkOffset`).
+    WorkOffset(u32),
+    /// G54.1 P / G154 P: the index is the P word.
+    WorkOffsetExtended,
+    MachineCoords,
+    CoordShift(CoordShift),
+    SetData,
+    RefReturn { index: u8, store: bool },
+    PathMode(PathMode),
+    /// G98 = true (initial level), G99 = false (R plane).
+    ReturnMode(bool),
+    Rotate(bool),
+    Scale(bool),
+    Mirror(bool),
+    Css(bool),
+    MacroCall,
+    ModalMacroCall,
+    ModalMacroCancel,
+    Stop(StopKind),
+    Spindle(SpindleFn),
+    ToolChange,
+    Coolant(Coolant),
+    SubCall,
+    LocalCall,
+    SubReturn,
+    /// A machine function with no neutral meaning, kept by its code.
+    Aux,
+}
+
+use Meaning as M;
+
+/// Every meaning with its name in dialect specs.
+pub const MEANINGS: &[(&str, Meaning)] = &[
+    ("motion.rapid", M::Motion(MotionKind::Rapid)),
+    ("motion.linear", M::Motion(MotionKind::Linear)),
+    ("motion.arc-cw", M::Motion(MotionKind::Arc(ArcDir::Cw))),
+    ("motion.arc-ccw", M::Motion(MotionKind::Arc(ArcDir::Ccw))),
+    ("motion.arc-through", M::Motion(MotionKind::ArcThrough)),
+    ("motion.arc-tangent", M::Motion(MotionKind::ArcTangent)),
+    ("motion.probe-toward", M::Motion(MotionKind::Probe { toward: true, error: true })),
+    ("motion.probe-toward-noerror", M::Motion(MotionKind::Probe { toward: true, error: false })),
+    ("motion.probe-away", M::Motion(MotionKind::Probe { toward: false, error: true })),
+    ("motion.probe-away-noerror", M::Motion(MotionKind::Probe { toward: false, error: false })),
+    ("cycle.drill", M::Cycle(CycleKind::Drill)),
+    ("cycle.drill-dwell", M::Cycle(CycleKind::DrillDwell)),
+    ("cycle.peck", M::Cycle(CycleKind::Peck)),
+    ("cycle.chip-break", M::Cycle(CycleKind::ChipBreak)),
+    ("cycle.tap", M::Cycle(CycleKind::Tap)),
+    ("cycle.tap-left", M::Cycle(CycleKind::TapLeft)),
+    ("cycle.bore-feed-out", M::Cycle(CycleKind::BoreFeedOut)),
+    ("cycle.bore-stop-rapid-out", M::Cycle(CycleKind::BoreStopRapidOut)),
+    ("cycle.back-bore", M::Cycle(CycleKind::BackBore)),
+    ("cycle.bore-manual", M::Cycle(CycleKind::BoreManual)),
+    ("cycle.bore-dwell-feed-out", M::Cycle(CycleKind::BoreDwellFeedOut)),
+    ("cycle.fine-bore", M::Cycle(CycleKind::FineBore)),
+    ("cycle.cancel", M::CycleCancel),
+    ("dwell", M::Dwell),
+    ("plane.xy", M::Plane(Plane::XY)),
+    ("plane.zx", M::Plane(Plane::ZX)),
+    ("plane.yz", M::Plane(Plane::YZ)),
+    ("units.inch", M::Units { unit: LengthUnit::Inch, with_feeds: false }),
+    ("units.mm", M::Units { unit: LengthUnit::Mm, with_feeds: false }),
+    ("units.inch-with-feeds", M::Units { unit: LengthUnit::Inch, with_feeds: true }),
+    ("units.mm-with-feeds", M::Units { unit: LengthUnit::Mm, with_feeds: true }),
+    ("distance.absolute", M::Distance(DimMode::Absolute)),
+    ("distance.incremental", M::Distance(DimMode::Incremental)),
+    ("arc-distance.absolute", M::ArcDistance(DimMode::Absolute)),
+    ("arc-distance.incremental", M::ArcDistance(DimMode::Incremental)),
+    ("feed-mode.per-minute", M::FeedMode(FeedMode::PerMinute)),
+    ("feed-mode.per-revolution", M::FeedMode(FeedMode::PerRevolution)),
+    ("feed-mode.inverse-time", M::FeedMode(FeedMode::InverseTime)),
+    ("radius-comp.off", M::RadiusComp(CompSide::Off)),
+    ("radius-comp.left", M::RadiusComp(CompSide::Left)),
+    ("radius-comp.right", M::RadiusComp(CompSide::Right)),
+    ("length-comp.positive", M::LengthComp(LengthComp::Positive)),
+    ("length-comp.negative", M::LengthComp(LengthComp::Negative)),
+    ("length-comp.cancel", M::LengthComp(LengthComp::Cancel)),
+    ("length-comp.dynamic", M::LengthComp(LengthComp::Dynamic)),
+    ("length-comp.additive", M::LengthComp(LengthComp::Additive)),
+    ("work-offset.extended", M::WorkOffsetExtended),
+    ("machine-coords", M::MachineCoords),
+    ("coord-shift.set", M::CoordShift(CoordShift::Set)),
+    ("coord-shift.reset", M::CoordShift(CoordShift::Reset)),
+    ("coord-shift.suspend", M::CoordShift(CoordShift::Suspend)),
+    ("coord-shift.restore", M::CoordShift(CoordShift::Restore)),
+    ("coord-shift.local", M::CoordShift(CoordShift::Local)),
+    ("set-data", M::SetData),
+    ("ref-return.1", M::RefReturn { index: 1, store: false }),
+    ("ref-return.2", M::RefReturn { index: 2, store: false }),
+    ("ref-return.store-1", M::RefReturn { index: 1, store: true }),
+    ("ref-return.store-2", M::RefReturn { index: 2, store: true }),
+    ("path.exact-stop", M::PathMode(PathMode::ExactStop)),
+    ("path.exact-stop-block", M::PathMode(PathMode::ExactStopBlock)),
+    ("path.exact-path", M::PathMode(PathMode::ExactPath)),
+    ("path.continuous", M::PathMode(PathMode::Continuous)),
+    ("path.corner-override", M::PathMode(PathMode::CornerOverride)),
+    ("path.tapping", M::PathMode(PathMode::Tapping)),
+    ("return.initial", M::ReturnMode(true)),
+    ("return.r-plane", M::ReturnMode(false)),
+    ("rotate.on", M::Rotate(true)),
+    ("rotate.off", M::Rotate(false)),
+    ("scale.on", M::Scale(true)),
+    ("scale.off", M::Scale(false)),
+    ("mirror.on", M::Mirror(true)),
+    ("mirror.off", M::Mirror(false)),
+    ("css.on", M::Css(true)),
+    ("css.off", M::Css(false)),
+    ("macro.call", M::MacroCall),
+    ("macro.modal", M::ModalMacroCall),
+    ("macro.cancel", M::ModalMacroCancel),
+    ("stop.program", M::Stop(StopKind::Program)),
+    ("stop.optional", M::Stop(StopKind::Optional)),
+    ("stop.end", M::Stop(StopKind::End)),
+    ("stop.end-rewind", M::Stop(StopKind::EndRewind)),
+    ("stop.pallet", M::Stop(StopKind::PalletStop)),
+    ("spindle.cw", M::Spindle(SpindleFn::Cw)),
+    ("spindle.ccw", M::Spindle(SpindleFn::Ccw)),
+    ("spindle.stop", M::Spindle(SpindleFn::Stop)),
+    ("spindle.orient", M::Spindle(SpindleFn::Orient)),
+    ("tool.change", M::ToolChange),
+    ("coolant.mist", M::Coolant(Coolant::Mist)),
+    ("coolant.flood", M::Coolant(Coolant::Flood)),
+    ("coolant.through-tool", M::Coolant(Coolant::ThroughTool)),
+    ("coolant.off", M::Coolant(Coolant::Off)),
+    ("sub.call", M::SubCall),
+    ("sub.local-call", M::LocalCall),
+    ("sub.return", M::SubReturn),
+    ("aux", M::Aux),
+];
+
+impl Meaning {
+    /// Reads a meaning name; `work-offset.N` carries its index.
+    pub fn parse(name: &str) -> Option<Meaning> {
+        if let Some(n) = name.strip_prefix("work-offset.") {
+            if let Ok(i) = n.parse::<u32>() {
+                return Some(M::WorkOffset(i));
+            }
+        }
+        MEANINGS.iter().find(|(n, _)| *n == name).map(|(_, m)| *m)
+    }
+
+    /// The name used in dialect specs.
+    pub fn name(self) -> String {
+        if let M::WorkOffset(i) = self {
+            return format!("work-offset.{i}");
+        }
+        MEANINGS.iter().find(|(_, m)| *m == self).map(|(n, _)| n.to_string()).unwrap_or_default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for (name, m) in MEANINGS {
+            assert_eq!(Meaning::parse(name), Some(*m));
+            assert_eq!(m.name(), *name);
+        }
+        assert_eq!(Meaning::parse("work-offset.3"), Some(Meaning::WorkOffset(3)));
+    }
+}

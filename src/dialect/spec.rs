@@ -1,0 +1,357 @@
+//! A dialect spec in memory: the data that says how one controller's
+//! language differs from the others. Front ends, checks and writers read
+//! it; none of them asks which dialect it is.
+
+use super::meaning::Meaning;
+use crate::ir::{Decimal, DwellUnit, Func};
+use crate::span::Span;
+use std::collections::{BTreeSet, HashMap};
+
+/// The syntax family: which grammar reads the dialect.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Family {
+    /// ISO 6983 word address: Fanuc, Haas, LinuxCNC.
+    WordAddress,
+    /// Siemens Sinumerik.
+    Sinumerik,
+    /// Heidenhain Klartext.
+    Klartext,
+}
+
+impl Family {
+    pub fn parse(s: &str) -> Option<Family> {
+        match s {
+            "word-address" => Some(Family::WordAddress),
+            "sinumerik" => Some(Family::Sinumerik),
+            "klartext" => Some(Family::Klartext),
+            _ => None,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Family::WordAddress => "word-address",
+            Family::Sinumerik => "sinumerik",
+            Family::Klartext => "klartext",
+        }
+    }
+}
+
+/// Named yes/no differences between dialects of one family.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Capability {
+    /// `( ... )` comments.
+    ParenComments,
+    /// `; ...` comments to the end of the line.
+    SemicolonComments,
+    /// Fanuc Custom Macro B: `#n`, `[ ]`, IF/GOTO, WHILE/DO/END, THEN.
+    MacroB,
+    /// LinuxCNC O-word subroutines and control flow.
+    OWords,
+    /// LinuxCNC `#<name>` parameters.
+    NamedParameters,
+    /// `**` power operator.
+    PowerOperator,
+    /// Fanuc-style `O1234` programs with `M98 P` / `M99`.
+    NumberedPrograms,
+    /// Haas `M97 P`: local subprogram at a sequence number.
+    LocalSubprogramCall,
+    /// An M code not in the table is an error (otherwise a warning: it is
+    /// passed to the machine as a builder-defined function).
+    StrictMCodes,
+    /// The program must end with M2/M30 or a closing `%`.
+    ProgramEndRequired,
+    /// A word no code in its block uses is an error (otherwise a warning).
+    StrictWords,
+    /// LinuxCNC polar words `@` and `^`.
+    PolarWords,
+    /// Siemens R parameters.
+    RParameters,
+    /// Siemens DEF variables.
+    DefVariables,
+    /// Siemens labels, GOTOF/GOTOB, IF/WHILE/FOR/REPEAT/LOOP/CASE.
+    StructuredControl,
+    /// Siemens named cycle calls and MCALL.
+    NamedCycles,
+    /// Siemens programmable frames TRANS/ROT/SCALE/MIRROR.
+    Frames,
+    /// Fanuc G68/G51/G51.1 rotation, scaling, mirror.
+    GCodeTransforms,
+    /// Arithmetic allowed after a word without brackets (`X#1/2`), as some
+    /// Fanuc-like controls accept.
+    UnbracketedExpressions,
+}
+
+pub const CAPABILITIES: &[(&str, Capability)] = &[
+    ("paren-comments", Capability::ParenComments),
+    ("semicolon-comments", Capability::SemicolonComments),
+    ("macro-b", Capability::MacroB),
+    ("o-words", Capability::OWords),
+    ("named-parameters", Capability::NamedParameters),
+    ("power-operator", Capability::PowerOperator),
+    ("numbered-programs", Capability::NumberedPrograms),
+    ("local-subprogram-call", Capability::LocalSubprogramCall),
+    ("strict-m-codes", Capability::StrictMCodes),
+    ("program-end-required", Capability::ProgramEndRequired),
+    ("strict-words", Capability::StrictWords),
+    ("polar-words", Capability::PolarWords),
+    ("r-parameters", Capability::RParameters),
+    ("def-variables", Capability::DefVariables),
+    ("structured-control", Capability::StructuredControl),
+    ("named-cycles", Capability::NamedCycles),
+    ("frames", Capability::Frames),
+    ("g-code-transforms", Capability::GCodeTransforms),
+    ("unbracketed-expressions", Capability::UnbracketedExpressions),
+];
+
+impl Capability {
+    pub fn parse(s: &str) -> Option<Capability> {
+        CAPABILITIES.iter().find(|(n, _)| *n == s).map(|(_, c)| *c)
+    }
+
+    pub fn name(self) -> &'static str {
+        CAPABILITIES.iter().find(|(_, c)| *c == self).map(|(n, _)| *n).unwrap_or("")
+    }
+}
+
+/// How a length written without a decimal point is read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IntegerLengths {
+    /// `X10` is 10 mm (calculator type; LinuxCNC, Siemens).
+    Units,
+    /// `X10` is 10 least input increments (Fanuc with 3401#0 = 0).
+    Increments,
+}
+
+/// Number reading and writing rules.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NumberRules {
+    pub integer_lengths: IntegerLengths,
+    /// The least input increment in mm and in inches.
+    pub increment_mm: Decimal,
+    pub increment_inch: Decimal,
+    /// Most decimal places written for lengths, in mm and in inches.
+    pub length_places_mm: u8,
+    pub length_places_inch: u8,
+    /// Write `10.` for a whole-number length.
+    pub point_on_lengths: bool,
+    /// Most decimal places written for feeds and speeds.
+    pub feed_places: u8,
+    /// Most decimal places for angles.
+    pub angle_places: u8,
+}
+
+/// One G or M code.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CodeDef {
+    /// `G` or `M`.
+    pub letter: char,
+    pub code: Decimal,
+    /// Modal group id (`motion`, `plane`, ... or `non-modal`).
+    pub group: String,
+    pub meaning: Meaning,
+    /// Words the code needs: each entry lists alternatives (`P|X`).
+    pub requires: Vec<Vec<char>>,
+    /// Words the code uses besides axis words (consumed by it).
+    pub uses: Vec<char>,
+    /// For dwell codes: the unit of each word that gives the time.
+    pub dwell_units: Vec<(char, DwellUnit)>,
+    /// Writers choose this code for its meaning when several share one.
+    pub preferred: bool,
+    pub doc: String,
+    /// Where it is defined in the spec file.
+    pub span: Span,
+}
+
+/// The kind of value a cycle parameter takes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParamType {
+    Real,
+    Int,
+    String,
+    /// Not modelled: any value is kept.
+    Any,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParamSig {
+    pub name: String,
+    pub ty: ParamType,
+    pub doc: String,
+}
+
+/// A named cycle's signature (Siemens `CYCLE83`, `POCKET1`, `HOLES1`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CycleSig {
+    pub name: String,
+    /// What kind of cycle: `drill`, `peck`, `pocket-rect`, `pattern-row`...
+    pub kind: String,
+    pub params: Vec<ParamSig>,
+    pub doc: String,
+    pub span: Span,
+}
+
+impl CycleSig {
+    pub fn param_index(&self, name: &str) -> Option<usize> {
+        self.params.iter().position(|p| p.name.eq_ignore_ascii_case(name))
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct FunctionDef {
+    pub name: String,
+    pub func: Func,
+    /// Number of arguments.
+    pub arity: usize,
+}
+
+/// What a range of numbered variables is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum VarClass {
+    /// Per macro call level (Fanuc #1-#33).
+    Local,
+    /// Cleared at power off.
+    Common,
+    /// Kept across power off.
+    Retained,
+    /// Controller data (positions, offsets, modes).
+    System,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct VarRange {
+    /// `#` (numbered parameters) or `R` (Siemens R parameters).
+    pub prefix: char,
+    pub first: u32,
+    pub last: u32,
+    pub class: VarClass,
+    pub writable: bool,
+}
+
+/// What an address letter is for (the letters a dialect reads).
+#[derive(Clone, Debug, PartialEq)]
+pub struct AddressDef {
+    pub letter: char,
+    pub role: String,
+    /// A length (decimal-point rule applies).
+    pub length: bool,
+}
+
+/// A whole dialect, with everything inherited from the specs it extends.
+#[derive(Clone, Debug)]
+pub struct DialectSpec {
+    pub id: String,
+    pub name: String,
+    pub family: Family,
+    pub extends: Option<String>,
+    pub aliases: Vec<String>,
+    /// File extensions (lower case, no dot) that suggest this dialect.
+    pub extensions: Vec<String>,
+    pub numbers: NumberRules,
+    pub addresses: Vec<AddressDef>,
+    pub codes: Vec<CodeDef>,
+    pub cycles: Vec<CycleSig>,
+    pub functions: Vec<FunctionDef>,
+    /// Keyword commands with no neutral meaning (Siemens `SOFT`, `FFWON`).
+    pub commands: Vec<String>,
+    pub variables: Vec<VarRange>,
+    pub capabilities: BTreeSet<Capability>,
+    /// The letter for canned-cycle repeats (`K` or `L`).
+    pub repeat_letter: char,
+    /// Block number increment when writing (0: keep the program's numbers).
+    pub doc: String,
+    index: CodeIndex,
+}
+
+#[derive(Clone, Debug, Default)]
+struct CodeIndex {
+    by_code: HashMap<(char, Decimal), usize>,
+    by_meaning: HashMap<Meaning, usize>,
+}
+
+impl DialectSpec {
+    /// Builds the lookup tables; call after filling the fields.
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        id: String,
+        name: String,
+        family: Family,
+        numbers: NumberRules,
+    ) -> Self {
+        DialectSpec {
+            id,
+            name,
+            family,
+            extends: None,
+            aliases: Vec::new(),
+            extensions: Vec::new(),
+            numbers,
+            addresses: Vec::new(),
+            codes: Vec::new(),
+            cycles: Vec::new(),
+            functions: Vec::new(),
+            commands: Vec::new(),
+            variables: Vec::new(),
+            capabilities: BTreeSet::new(),
+            repeat_letter: 'K',
+            doc: String::new(),
+            index: CodeIndex::default(),
+        }
+    }
+
+    /// Rebuilds the code index after `codes` changed.
+    pub fn reindex(&mut self) {
+        let mut idx = CodeIndex::default();
+        for (i, c) in self.codes.iter().enumerate() {
+            idx.by_code.insert((c.letter, c.code.normalized()), i);
+            let m = c.meaning;
+            if m != Meaning::Aux && (c.preferred || !idx.by_meaning.contains_key(&m)) {
+                idx.by_meaning.insert(m, i);
+            }
+        }
+        self.index = idx;
+    }
+
+    pub fn has(&self, cap: Capability) -> bool {
+        self.capabilities.contains(&cap)
+    }
+
+    /// The G or M code definition, if the dialect has it.
+    pub fn code(&self, letter: char, code: Decimal) -> Option<&CodeDef> {
+        self.index.by_code.get(&(letter, code.normalized())).map(|&i| &self.codes[i])
+    }
+
+    /// The code a writer uses for a meaning.
+    pub fn code_for(&self, meaning: Meaning) -> Option<&CodeDef> {
+        self.index.by_meaning.get(&meaning).map(|&i| &self.codes[i])
+    }
+
+    pub fn cycle(&self, name: &str) -> Option<&CycleSig> {
+        self.cycles.iter().find(|c| c.name.eq_ignore_ascii_case(name))
+    }
+
+    pub fn function(&self, name: &str) -> Option<&FunctionDef> {
+        self.functions.iter().find(|f| f.name.eq_ignore_ascii_case(name))
+    }
+
+    /// The dialect's name for a function meaning (for writers).
+    pub fn function_name(&self, func: Func) -> Option<&str> {
+        self.functions.iter().find(|f| f.func == func).map(|f| f.name.as_str())
+    }
+
+    pub fn is_command(&self, name: &str) -> bool {
+        self.commands.iter().any(|c| c.eq_ignore_ascii_case(name))
+    }
+
+    pub fn address(&self, letter: char) -> Option<&AddressDef> {
+        self.addresses.iter().find(|a| a.letter == letter.to_ascii_uppercase())
+    }
+
+    pub fn is_length_address(&self, letter: char) -> bool {
+        self.address(letter).map(|a| a.length).unwrap_or(false)
+    }
+
+    pub fn var_range(&self, prefix: char, n: u32) -> Option<&VarRange> {
+        self.variables.iter().find(|v| v.prefix == prefix && (v.first..=v.last).contains(&n))
+    }
+}

@@ -1,0 +1,1 @@
+//! Writers: meta-model to dialect text.

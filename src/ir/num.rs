@@ -1,0 +1,198 @@
+//! Exact decimal numbers, as written in a program: `10`, `10.`, `-0.0625`.
+//!
+//! A number is kept as an integer mantissa and a count of decimal places, so
+//! nothing a program says is rounded on the way in. Whether it was written
+//! with a decimal point is kept too: Fanuc reads `X10` and `X10.` differently.
+
+use serde::Serialize;
+use std::fmt;
+
+/// Most significant digits kept exactly.
+pub const MAX_DIGITS: usize = 18;
+
+/// `mantissa / 10^scale`, plus whether a decimal point was written.
+#[derive(Clone, Copy, Debug, Eq, Serialize)]
+pub struct Decimal {
+    pub mantissa: i64,
+    pub scale: u8,
+    pub point: bool,
+}
+
+/// Why a number's text could not be read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NumberError {
+    Malformed,
+    TooLong,
+}
+
+impl Decimal {
+    pub const ZERO: Decimal = Decimal { mantissa: 0, scale: 0, point: false };
+
+    pub fn from_int(v: i64) -> Self {
+        Decimal { mantissa: v, scale: 0, point: false }
+    }
+
+    /// Reads `[+-]digits[.digits]` or `[+-].digits` exactly.
+    pub fn parse(text: &str) -> Result<Decimal, NumberError> {
+        let (neg, body) = match text.as_bytes().first() {
+            Some(b'-') => (true, &text[1..]),
+            Some(b'+') => (false, &text[1..]),
+            _ => (false, text),
+        };
+        let mut mantissa: i64 = 0;
+        let mut scale: u8 = 0;
+        let mut point = false;
+        let mut digits = 0usize;
+        let mut significant = 0usize;
+        for b in body.bytes() {
+            match b {
+                b'0'..=b'9' => {
+                    digits += 1;
+                    if significant > 0 || b != b'0' {
+                        significant += 1;
+                    }
+                    if significant > MAX_DIGITS {
+                        return Err(NumberError::TooLong);
+                    }
+                    mantissa = mantissa * 10 + (b - b'0') as i64;
+                    if point {
+                        scale += 1;
+                    }
+                }
+                b'.' if !point => point = true,
+                _ => return Err(NumberError::Malformed),
+            }
+        }
+        if digits == 0 {
+            return Err(NumberError::Malformed);
+        }
+        Ok(Decimal { mantissa: if neg { -mantissa } else { mantissa }, scale, point })
+    }
+
+    pub fn to_f64(self) -> f64 {
+        // Exact for the mantissas and scales programs use; division by an
+        // exact power of ten gives the correctly rounded double.
+        self.mantissa as f64 / 10f64.powi(self.scale as i32)
+    }
+
+    /// The nearest decimal with at most `places` decimal places, from a double.
+    pub fn from_f64(v: f64, places: u8) -> Decimal {
+        let m = (v * 10f64.powi(places as i32)).round();
+        let mut d = Decimal { mantissa: m as i64, scale: places, point: true };
+        d.trim();
+        d
+    }
+
+    /// True when the value has no fractional part.
+    pub fn is_integer(self) -> bool {
+        self.mantissa % 10i64.pow(self.scale as u32) == 0
+    }
+
+    /// The value as an integer, if it is one.
+    pub fn as_int(self) -> Option<i64> {
+        self.is_integer().then(|| self.mantissa / 10i64.pow(self.scale as u32))
+    }
+
+    pub fn is_negative(self) -> bool {
+        self.mantissa < 0
+    }
+
+    pub fn neg(self) -> Decimal {
+        Decimal { mantissa: -self.mantissa, ..self }
+    }
+
+    /// Drops trailing zero decimals (the value is unchanged).
+    pub fn trim(&mut self) {
+        while self.scale > 0 && self.mantissa % 10 == 0 {
+            self.mantissa /= 10;
+            self.scale -= 1;
+        }
+    }
+
+    /// The same value, trimmed.
+    pub fn normalized(self) -> Decimal {
+        let mut d = self;
+        d.trim();
+        d
+    }
+
+    /// Digits as `[-]int[.frac]` with at least `min_places` and no trailing
+    /// zeros beyond them; `force_point` writes `10.` for a whole number.
+    pub fn format(self, min_places: u8, force_point: bool) -> String {
+        let n = self.normalized();
+        let scale = n.scale.max(min_places);
+        let m = n.mantissa.unsigned_abs() as u128 * 10u128.pow((scale - n.scale) as u32);
+        let p = 10u128.pow(scale as u32);
+        let (int, frac) = (m / p, m % p);
+        let mut s = String::new();
+        if n.mantissa < 0 {
+            s.push('-');
+        }
+        s.push_str(&int.to_string());
+        if scale > 0 {
+            s.push('.');
+            s.push_str(&format!("{:0width$}", frac, width = scale as usize));
+        } else if force_point {
+            s.push('.');
+        }
+        s
+    }
+}
+
+/// Equal values are equal, whatever their scale or point.
+impl PartialEq for Decimal {
+    fn eq(&self, other: &Self) -> bool {
+        let (a, b) = (self.normalized(), other.normalized());
+        a.mantissa == b.mantissa && a.scale == b.scale
+    }
+}
+
+impl std::hash::Hash for Decimal {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        let n = self.normalized();
+        n.mantissa.hash(state);
+        n.scale.hash(state);
+    }
+}
+
+/// As written, minimally: `10`, `10.`, `-0.5`.
+impl fmt::Display for Decimal {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let s = Decimal { point: false, ..*self }.format(self.scale, false);
+        f.write_str(&s)?;
+        if self.point && self.scale == 0 {
+            f.write_str(".")?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_exactly() {
+        let d = Decimal::parse("-0.0625").unwrap();
+        assert_eq!((d.mantissa, d.scale, d.point), (-625, 4, true));
+        assert_eq!(Decimal::parse("10.").unwrap(), Decimal::parse("10").unwrap());
+        assert!(Decimal::parse("10.").unwrap().point);
+        assert!(!Decimal::parse("10").unwrap().point);
+        assert_eq!(Decimal::parse(".5").unwrap().to_f64(), 0.5);
+        assert_eq!(Decimal::parse("1.2.3"), Err(NumberError::Malformed));
+        assert_eq!(Decimal::parse("."), Err(NumberError::Malformed));
+        assert_eq!(Decimal::parse("1234567890123456789"), Err(NumberError::TooLong));
+        assert_eq!(Decimal::parse("0000000000000000000001").unwrap(), Decimal::from_int(1));
+    }
+
+    #[test]
+    fn formats() {
+        let d = Decimal::parse("10").unwrap();
+        assert_eq!(d.format(0, true), "10.");
+        assert_eq!(d.format(3, false), "10.000");
+        assert_eq!(Decimal::parse("-0.50").unwrap().format(0, true), "-0.5");
+        assert_eq!(Decimal::parse("-0.50").unwrap().to_string(), "-0.50");
+        assert_eq!(Decimal::parse("10.").unwrap().to_string(), "10.");
+        assert_eq!(Decimal::from_f64(1.23456, 4).to_string(), "1.2346");
+    }
+}

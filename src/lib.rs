@@ -1,0 +1,16 @@
+//! cncc: a compiler for CNC milling part programs.
+//!
+//! Front ends ([`syntax`]) read a dialect's text into lines of words, the
+//! shared [`lower`]ing turns them into the meta-model ([`ir`]) driven by the
+//! dialect's spec ([`dialect`]); [`check`]s report [`diag`]nostics; writers
+//! ([`emit`]) produce any dialect.
+
+pub mod check;
+pub mod diag;
+pub mod dialect;
+pub mod emit;
+pub mod ir;
+pub mod lower;
+pub mod source;
+pub mod span;
+pub mod syntax;

@@ -1,0 +1,1 @@
+//! Lowering: a line's words to meta-model statements, by the dialect spec.

@@ -1,0 +1,72 @@
+//! Front ends: dialect text to [`LineSyntax`], one line at a time.
+//!
+//! A front end (one per syntax family, each a logos lexer and a LALRPOP
+//! grammar in `grammar/`) reads a line into its address words and the
+//! statements its grammar builds directly (comments, assignments, control
+//! flow, calls). The shared, data-driven lowering in [`crate::lower`] then
+//! turns the words into statements using the dialect spec.
+
+pub mod sinumerik;
+pub mod word;
+
+use crate::diag::Diagnostic;
+use crate::dialect::DialectSpec;
+use crate::ir::{Arena, DimMode, Expr, Stmt, Value};
+use crate::span::{FileId, Span, Spanned};
+
+/// One address word as written: `X10.5`, `G#143`, Siemens `X=AC(5)`, `CR=10`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WordSyntax {
+    /// Upper case: `X`, `G`, `CR`, `I1`, `TURN`, `AP`, `CHF`.
+    pub address: String,
+    pub value: Value,
+    /// Siemens `AC(..)` / `IC(..)` around the value.
+    pub dim: Option<DimMode>,
+    /// Written as `ADDR=value` (Siemens extended address).
+    pub extended: bool,
+    /// The whole word.
+    pub span: Span,
+    /// The address letters only.
+    pub address_span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Item {
+    Word(WordSyntax),
+    /// A statement the grammar built directly.
+    Stmt(Stmt),
+}
+
+/// One line as read, before the words become statements.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LineSyntax {
+    /// The whole line, without its line ending.
+    pub span: Span,
+    pub skip: Option<Spanned<u8>>,
+    pub number: Option<Spanned<u32>>,
+    pub label: Option<Spanned<String>>,
+    pub items: Vec<Item>,
+}
+
+/// What a front end needs to read a line.
+pub struct LineInput<'a> {
+    /// The line's text without its line ending.
+    pub text: &'a str,
+    pub file: FileId,
+    /// Byte offset of the line's start in the file.
+    pub offset: u32,
+    pub spec: &'a DialectSpec,
+}
+
+/// A front end for one syntax family.
+pub trait FrontEnd {
+    /// Reads one line. Errors are pushed to `diags` with their spans; the
+    /// line is still returned with what could be read, or `None` if nothing
+    /// could. Must never panic, whatever the text.
+    fn parse_line(
+        &mut self,
+        input: &LineInput<'_>,
+        exprs: &mut Arena<Expr>,
+        diags: &mut Vec<Diagnostic>,
+    ) -> Option<LineSyntax>;
+}

@@ -1,0 +1,1 @@
+//! The Sinumerik front end (Siemens 840D).
