@@ -3,12 +3,16 @@
 //! Front ends ([`syntax`]) read a dialect's text into lines of words, the
 //! shared [`lower`]ing turns them into the meta-model ([`ir`]) driven by the
 //! dialect's spec ([`dialect`]); [`check`]s report [`diag`]nostics; writers
-//! ([`emit`]) produce any dialect.
+//! ([`emit`]) produce any dialect. [`driver`] runs the pipeline, [`cli`] is
+//! the command line.
 
 pub mod check;
+pub mod cli;
 pub mod diag;
 pub mod dialect;
+pub mod driver;
 pub mod emit;
+pub mod fuzzing;
 pub mod ir;
 pub mod lower;
 pub mod source;

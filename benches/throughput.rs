@@ -1,0 +1,83 @@
+//! Throughput of `check` over large generated CAM programs.
+//!
+//! `cargo bench --bench throughput` generates programs of about 3 MB and
+//! 30 MB with `../shared/bench/gen_program.py`, streams each through the
+//! checker on one thread, and prints MB/s and the process's peak resident
+//! memory after each size, so a memory that grows with the program shows.
+//! Figures are printed, never asserted.
+
+use cncc::dialect::builtin::builtin;
+use cncc::driver::check_stream;
+use cncc::span::FileId;
+use std::io::BufReader;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+fn generate(lines: u64, out: &Path) -> bool {
+    let gen = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/bench/gen_program.py");
+    if !gen.exists() {
+        eprintln!("note: ../shared/bench/gen_program.py is absent; benchmark skipped");
+        return false;
+    }
+    if out.exists() {
+        return true;
+    }
+    std::process::Command::new("python3")
+        .arg(&gen)
+        .args(["--lines", &lines.to_string(), "-o"])
+        .arg(out)
+        .status()
+        .map(|s| s.success())
+        .unwrap_or(false)
+}
+
+/// Peak resident set size of this process, in MiB (Linux).
+fn peak_rss_mib() -> f64 {
+    let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
+    status
+        .lines()
+        .find(|l| l.starts_with("VmHWM:"))
+        .and_then(|l| l.split_whitespace().nth(1))
+        .and_then(|kb| kb.parse::<f64>().ok())
+        .map(|kb| kb / 1024.0)
+        .unwrap_or(f64::NAN)
+}
+
+fn bench_check(path: &Path, dialect: &str) -> (f64, u64, usize) {
+    let spec = builtin(dialect).expect("dialect");
+    let best = (0..3)
+        .map(|_| {
+            let f = std::fs::File::open(path).expect("open");
+            let start = Instant::now();
+            let r = check_stream(BufReader::with_capacity(1 << 16, f), FileId(0), &spec, |_, _| {}).expect("read");
+            (start.elapsed().as_secs_f64(), r.bytes, r.diagnostics.len())
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .unwrap();
+    best
+}
+
+fn main() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/bench-programs");
+    std::fs::create_dir_all(&dir).expect("mkdir");
+    println!("{:<28} {:>10} {:>10} {:>12} {:>14}", "program", "MB", "seconds", "MB/s", "peak RSS MiB");
+    for (lines, name) in [(100_000u64, "cam-3MB.ngc"), (1_000_000, "cam-30MB.ngc")] {
+        let path = dir.join(name);
+        if !generate(lines, &path) {
+            return;
+        }
+        for dialect in ["fanuc", "linuxcnc"] {
+            let (secs, bytes, ndiag) = bench_check(&path, dialect);
+            let mb = bytes as f64 / 1e6;
+            println!(
+                "{:<28} {:>10.1} {:>10.3} {:>12.1} {:>14.1}{}",
+                format!("check {name} ({dialect})"),
+                mb,
+                secs,
+                mb / secs,
+                peak_rss_mib(),
+                if ndiag > 0 { format!("  ({ndiag} diagnostics)") } else { String::new() }
+            );
+        }
+    }
+}

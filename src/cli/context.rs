@@ -1,0 +1,99 @@
+//! What every command needs: the dialect registry (built-ins plus
+//! `--dialect-file` specs), the source map, and choosing a file's dialect.
+
+use crate::cli::args::{Cli, ColorChoice, Format};
+use crate::cli::output::print_diagnostics;
+use crate::diag::Diagnostic;
+use crate::dialect::{builtin::Registry, detect, DialectSpec};
+use crate::source::SourceMap;
+use crate::span::FileId;
+use std::path::Path;
+use std::sync::Arc;
+
+/// Exit codes of the command-line contract.
+pub const EXIT_OK: i32 = 0;
+pub const EXIT_INPUT_ERRORS: i32 = 1;
+pub const EXIT_USAGE: i32 = 2;
+
+pub struct Context {
+    pub registry: Registry,
+    pub files: SourceMap,
+    pub color: ColorChoice,
+}
+
+/// A usage or I/O failure: message for stderr, exit 2.
+#[derive(Debug)]
+pub struct Failure(pub String);
+
+impl<E: std::fmt::Display> From<E> for Failure {
+    fn from(e: E) -> Self {
+        Failure(e.to_string())
+    }
+}
+
+impl Context {
+    /// Loads the built-in dialects and the user's spec files. A broken spec
+    /// is reported like a program error (exit 1).
+    pub fn new(cli: &Cli, format: Format) -> Result<Context, i32> {
+        let mut ctx = Context { registry: Registry::with_builtins(), files: SourceMap::new(), color: cli.color };
+        for path in &cli.dialect_files {
+            let text = match read_text(path) {
+                Ok(t) => t,
+                Err(Failure(m)) => {
+                    eprintln!("error: cannot read dialect spec {}: {m}", path.display());
+                    return Err(EXIT_USAGE);
+                }
+            };
+            let id = ctx.files.add(path.display().to_string(), text.clone());
+            if let Err(diags) = ctx.registry.load_user(&text, id) {
+                print_diagnostics(&diags, &ctx.files, format, ctx.color);
+                return Err(EXIT_INPUT_ERRORS);
+            }
+        }
+        Ok(ctx)
+    }
+
+    /// The spec for a dialect name (id or alias).
+    pub fn spec(&self, name: &str) -> Result<Arc<DialectSpec>, Failure> {
+        self.registry.resolve(name).map_err(Failure)
+    }
+
+    /// The spec for a file: the one asked for, or one chosen from the file's
+    /// name and content (with the reason).
+    pub fn spec_for(
+        &self,
+        asked: Option<&str>,
+        path: &Path,
+        text: &str,
+    ) -> Result<(Arc<DialectSpec>, Option<String>), Failure> {
+        match asked {
+            Some(name) => Ok((self.spec(name)?, None)),
+            None => {
+                let (id, reason) = detect::detect(path, text, &self.registry);
+                Ok((self.spec(&id)?, Some(reason)))
+            }
+        }
+    }
+
+    /// Reads a source file and adds it to the source map.
+    pub fn add_file(&mut self, path: &Path) -> Result<(FileId, String), Failure> {
+        let text = read_text(path)?;
+        let id = self.files.add(path.display().to_string(), text.clone());
+        Ok((id, text))
+    }
+
+    pub fn print(&self, diags: &[Diagnostic], format: Format) {
+        print_diagnostics(diags, &self.files, format, self.color);
+    }
+}
+
+/// Reads a file as text (Latin-1 for lines that are not UTF-8).
+pub fn read_text(path: &Path) -> Result<String, Failure> {
+    let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    Ok(crate::driver::decode(&bytes))
+}
+
+/// Says which dialect was chosen and why, on stderr.
+pub fn report_detection(path: &Path, spec: &DialectSpec, reason: &str) {
+    eprintln!("note: reading {} as {} ({reason}); use --dialect to choose", path.display(), spec.id);
+}

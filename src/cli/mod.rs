@@ -1,0 +1,43 @@
+//! The `cncc` command line: argument parsing and one module per command.
+
+pub mod args;
+pub mod check;
+pub mod context;
+pub mod info;
+pub mod ir;
+pub mod output;
+pub mod port;
+
+use args::{Cli, Command, Format};
+use context::{Context, Failure, EXIT_USAGE};
+
+/// Runs a parsed command line; returns the exit code.
+pub fn run(cli: Cli) -> i32 {
+    let format = match &cli.command {
+        Command::Check { format, .. } | Command::Ir { format, .. } | Command::Port { format, .. } => *format,
+        _ => Format::Human,
+    };
+    let mut ctx = match Context::new(&cli, format) {
+        Ok(c) => c,
+        Err(code) => return code,
+    };
+    let result = match &cli.command {
+        Command::Check { files, dialect, format, verbose } => {
+            check::run(&mut ctx, files, dialect.as_deref(), *format, *verbose)
+        }
+        Command::Ir { file, dialect, format } => ir::run(&mut ctx, file, dialect.as_deref(), *format),
+        Command::Port { file, to, from, output, format } => port::run(
+            &mut ctx,
+            port::PortArgs { file, to, from: from.as_deref(), output: output.as_deref(), format: *format },
+        ),
+        Command::Dialects => info::dialects(&ctx),
+        Command::Explain { code } => info::explain(code.as_deref()),
+    };
+    match result {
+        Ok(code) => code,
+        Err(Failure(msg)) => {
+            eprintln!("error: {msg}");
+            EXIT_USAGE
+        }
+    }
+}

@@ -1,0 +1,72 @@
+//! Writing results: whole or not at all, and diagnostics to stderr.
+
+use crate::cli::args::{ColorChoice, Format};
+use crate::diag::{render, Diagnostic};
+use crate::source::SourceMap;
+use std::io::{IsTerminal, Write};
+use std::path::Path;
+
+/// Writes `text` to `path` through a temporary file in the same folder,
+/// renamed into place, so a failed run never leaves half a program.
+pub fn write_atomically(path: &Path, text: &str) -> std::io::Result<()> {
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    let mut tmp = tempfile::NamedTempFile::new_in(dir)?;
+    tmp.write_all(text.as_bytes())?;
+    tmp.as_file().sync_all()?;
+    tmp.persist(path).map_err(|e| e.error)?;
+    Ok(())
+}
+
+/// Writes the result to the output file, or to stdout.
+pub fn emit_output(output: Option<&Path>, text: &str) -> std::io::Result<()> {
+    match output {
+        Some(p) => write_atomically(p, text),
+        None => {
+            let mut out = std::io::stdout().lock();
+            out.write_all(text.as_bytes())?;
+            out.flush()
+        }
+    }
+}
+
+/// Prints diagnostics on stderr in the chosen format.
+pub fn print_diagnostics(diags: &[Diagnostic], files: &SourceMap, format: Format, color: ColorChoice) {
+    if diags.is_empty() {
+        return;
+    }
+    let text = match format {
+        Format::Json => render::json(diags, files),
+        Format::Human => {
+            let use_color = match color {
+                ColorChoice::Always => true,
+                ColorChoice::Never => false,
+                ColorChoice::Auto => std::io::stderr().is_terminal(),
+            };
+            render::human(diags, files, use_color)
+        }
+    };
+    let _ = std::io::stderr().lock().write_all(text.as_bytes());
+}
+
+/// The one-line summary after human diagnostics.
+pub fn summary_line(errors: usize, warnings: usize, dropped: usize) -> Option<String> {
+    if errors == 0 && warnings == 0 {
+        return None;
+    }
+    let mut s = format!("{errors} error{}, {warnings} warning{}", plural(errors), plural(warnings));
+    if dropped > 0 {
+        s.push_str(&format!(" ({dropped} more not shown)"));
+    }
+    Some(s)
+}
+
+fn plural(n: usize) -> &'static str {
+    if n == 1 {
+        ""
+    } else {
+        "s"
+    }
+}

@@ -1,0 +1,147 @@
+//! The command-line contract, tried as a user would: exit codes, silence on
+//! clean programs, rendered diagnostics, `explain`, `dialects`, `port`.
+
+mod common;
+use common::*;
+
+#[test]
+fn clean_programs_check_silently() {
+    for (dialect, file) in [
+        ("fanuc", "tests/programs/fanuc/bracket.nc"),
+        ("haas", "tests/programs/haas/plate.nc"),
+        ("linuxcnc", "tests/programs/linuxcnc/subs.ngc"),
+        ("siemens840d", "tests/programs/siemens840d/plate.mpf"),
+    ] {
+        let o = cncc(&["check", "--dialect", dialect, file]);
+        assert_eq!(o.status.code(), Some(0), "{file}: {}", stderr(&o));
+        assert_eq!(stdout(&o), "", "{file}");
+        assert_eq!(stderr(&o), "", "{file}");
+    }
+}
+
+#[test]
+fn detection_without_dialect_is_quiet_on_clean_files() {
+    let o = cncc(&["check", "tests/programs/siemens840d/plate.mpf", "tests/programs/linuxcnc/subs.ngc"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stderr(&o), "");
+}
+
+fn check_snapshot(name: &str, dialect: &str, file: &str) {
+    let o = cncc(&["check", "--dialect", dialect, file]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    insta::assert_snapshot!(name, stderr(&o));
+}
+
+#[test]
+fn fanuc_mistakes_are_all_reported() {
+    check_snapshot("check_fanuc_mistakes", "fanuc", "tests/programs/fanuc/mistakes.nc");
+}
+
+#[test]
+fn linuxcnc_mistakes_are_all_reported() {
+    check_snapshot("check_linuxcnc_mistakes", "linuxcnc", "tests/programs/linuxcnc/mistakes.ngc");
+}
+
+#[test]
+fn siemens_mistakes_are_all_reported() {
+    check_snapshot("check_siemens_mistakes", "siemens840d", "tests/programs/siemens840d/mistakes.mpf");
+}
+
+#[test]
+fn json_diagnostics_one_object_per_line() {
+    let o = cncc(&["check", "--dialect", "fanuc", "--format", "json", "tests/programs/fanuc/mistakes.nc"]);
+    assert_eq!(o.status.code(), Some(1));
+    let text = stderr(&o);
+    let mut n = 0;
+    for line in text.lines() {
+        let v: serde_json::Value = serde_json::from_str(line).expect("one JSON object per line");
+        for key in ["code", "name", "severity", "message", "file", "line", "column", "end_line", "end_column", "labels"] {
+            assert!(v.get(key).is_some(), "missing {key} in {line}");
+        }
+        n += 1;
+    }
+    assert!(n >= 10, "expected every mistake reported, got {n}");
+}
+
+#[test]
+fn every_reported_code_is_explained() {
+    let o = cncc(&["check", "--dialect", "fanuc", "--format", "json", "tests/programs/fanuc/mistakes.nc"]);
+    for line in stderr(&o).lines() {
+        let v: serde_json::Value = serde_json::from_str(line).unwrap();
+        let code = v["code"].as_str().unwrap();
+        let e = cncc(&["explain", code]);
+        assert_eq!(e.status.code(), Some(0), "explain {code}");
+        assert!(stdout(&e).contains(v["name"].as_str().unwrap()));
+    }
+}
+
+#[test]
+fn explain_unknown_code_is_usage_error() {
+    assert_eq!(cncc(&["explain", "E9999"]).status.code(), Some(2));
+}
+
+#[test]
+fn missing_file_is_io_error() {
+    let o = cncc(&["check", "no/such/file.nc"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("no/such/file.nc"));
+}
+
+#[test]
+fn dialects_lists_the_built_ins() {
+    let o = cncc(&["dialects"]);
+    assert_eq!(o.status.code(), Some(0));
+    for id in ["fanuc", "haas", "linuxcnc", "siemens840d"] {
+        assert!(stdout(&o).contains(id), "{id} missing");
+    }
+}
+
+#[test]
+fn aliases_resolve() {
+    for alias in ["sinumerik", "840d"] {
+        let o = cncc(&["check", "--dialect", alias, "tests/programs/siemens840d/plate.mpf"]);
+        assert_eq!(o.status.code(), Some(0), "{alias}: {}", stderr(&o));
+    }
+    let o = cncc(&["check", "--dialect", "rs274ngc", "tests/programs/linuxcnc/subs.ngc"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}
+
+#[test]
+fn port_to_own_dialect_is_a_fixpoint() {
+    let dir = tempfile::tempdir().unwrap();
+    for (dialect, file) in [
+        ("fanuc", "tests/programs/fanuc/bracket.nc"),
+        ("haas", "tests/programs/haas/plate.nc"),
+        ("linuxcnc", "tests/programs/linuxcnc/subs.ngc"),
+        ("siemens840d", "tests/programs/siemens840d/plate.mpf"),
+    ] {
+        let once = dir.path().join(format!("once.{dialect}"));
+        let twice = dir.path().join(format!("twice.{dialect}"));
+        let o = cncc(&["port", file, "--from", dialect, "--to", dialect, "-o", once.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(0), "{file}: {}", stderr(&o));
+        let o = cncc(&["port", once.to_str().unwrap(), "--from", dialect, "--to", dialect, "-o", twice.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(0), "{file} (second port): {}", stderr(&o));
+        let a = std::fs::read_to_string(&once).unwrap();
+        let b = std::fs::read_to_string(&twice).unwrap();
+        assert_eq!(a, b, "{file}: porting the port changed it");
+    }
+}
+
+#[test]
+fn fanuc_port_writes_decimal_points_on_lengths() {
+    let o = cncc(&["port", "tests/programs/linuxcnc/subs.ngc", "--from", "linuxcnc", "--to", "linuxcnc"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let o = cncc(&["port", "tests/programs/fanuc/bracket.nc", "--to", "fanuc"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = stdout(&o);
+    assert!(text.contains("X135."), "{text}");
+}
+
+#[test]
+fn failed_port_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.nc");
+    let o = cncc(&["port", "tests/programs/fanuc/mistakes.nc", "--to", "fanuc", "-o", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(!out.exists(), "a failed port left a file");
+}

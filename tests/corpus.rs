@@ -1,0 +1,100 @@
+//! The real programs in `../shared/corpus`: each is accepted, or rejected
+//! for a real mistake listed here with its reason; every accepted one
+//! round-trips through its own dialect's writer to a fixpoint with the
+//! meta-model unchanged.
+
+mod common;
+use common::*;
+use cncc::dialect::builtin::builtin;
+use cncc::driver::read_program;
+use cncc::emit::write_program;
+use cncc::source::SourceMap;
+
+/// Files that cncc rejects, and the real mistake in each.
+const REJECTED: &[(&str, &str)] = &[];
+
+const DIALECTS: &[&str] = &["fanuc", "haas", "linuxcnc", "siemens840d"];
+
+fn corpus_files() -> Vec<(String, std::path::PathBuf)> {
+    let Some(shared) = shared() else { return Vec::new() };
+    let mut out = Vec::new();
+    for d in DIALECTS {
+        for f in files_in(&shared.join("corpus").join(d)) {
+            out.push((d.to_string(), f));
+        }
+    }
+    out
+}
+
+fn rel(dialect: &str, path: &std::path::Path) -> String {
+    format!("{dialect}/{}", path.file_name().unwrap().to_string_lossy())
+}
+
+#[test]
+fn corpus_programs_are_accepted_or_rejected_for_a_real_mistake() {
+    let mut failures = Vec::new();
+    let files = corpus_files();
+    for (dialect, path) in &files {
+        let spec = builtin(dialect).expect("built-in dialect");
+        let text = cncc::driver::decode(&std::fs::read(path).unwrap());
+        let mut sm = SourceMap::new();
+        let id = sm.add(rel(dialect, path), text.clone());
+        let (_, diags) = read_program(&text, id, &spec);
+        let errors: Vec<_> = diags.iter().filter(|d| d.is_error()).cloned().collect();
+        let name = rel(dialect, path);
+        let listed = REJECTED.iter().any(|(f, _)| *f == name);
+        if !errors.is_empty() && !listed {
+            failures.push(format!("{name} rejected:\n{}", cncc::diag::render::human(&errors, &sm, false)));
+        }
+        if errors.is_empty() && listed {
+            failures.push(format!("{name} is listed as rejected but is accepted"));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    eprintln!("{} corpus files checked", files.len());
+}
+
+#[test]
+fn corpus_programs_round_trip_to_a_fixpoint() {
+    let mut failures = Vec::new();
+    for (dialect, path) in corpus_files() {
+        let name = rel(&dialect, &path);
+        if REJECTED.iter().any(|(f, _)| *f == name) {
+            continue;
+        }
+        if let Err(e) = round_trip(&dialect, &path) {
+            failures.push(format!("{name}: {e}"));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
+
+fn round_trip(dialect: &str, path: &std::path::Path) -> Result<(), String> {
+    let spec = builtin(dialect).unwrap();
+    let text = cncc::driver::decode(&std::fs::read(path).unwrap());
+    let mut sm = SourceMap::new();
+    let id = sm.add("original", text.clone());
+    let (p1, _) = read_program(&text, id, &spec);
+    let out1 = write_program(&p1, &spec).map_err(|d| cncc::diag::render::human(&d, &sm, false))?;
+    let id2 = sm.add("written", out1.clone());
+    let (p2, d2) = read_program(&out1, id2, &spec);
+    let errs: Vec<_> = d2.into_iter().filter(|d| d.is_error()).collect();
+    if !errs.is_empty() {
+        return Err(format!("written program has errors:\n{}", cncc::diag::render::human(&errs, &sm, false)));
+    }
+    let (f1, f2) = (model_fingerprint(&p1), model_fingerprint(&p2));
+    if let Some(d) = first_difference(&f1, &f2, "") {
+        return Err(format!("meta-model changed at {d}"));
+    }
+    let out2 = write_program(&p2, &spec).map_err(|d| cncc::diag::render::human(&d, &sm, false))?;
+    if out1 != out2 {
+        let line = out1.lines().zip(out2.lines()).position(|(a, b)| a != b).unwrap_or(0);
+        return Err(format!(
+            "not a fixpoint at output line {}: {:?} vs {:?}",
+            line + 1,
+            out1.lines().nth(line),
+            out2.lines().nth(line)
+        ));
+    }
+    Ok(())
+}

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# The whole test suite, with its set-up, on a fresh machine.
+# Used by the README and by .ci/run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+if [ ! -d ../shared ]; then
+    echo "note: ../shared is absent: corpus and reference tests will say they were skipped"
+fi
+
+cargo test --release --all-targets 2>&1
