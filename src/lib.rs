@@ -6,6 +6,7 @@
 //! ([`emit`]) produce any dialect. [`driver`] runs the pipeline, [`cli`] is
 //! the command line.
 
+pub mod canon;
 pub mod check;
 pub mod cli;
 pub mod diag;
@@ -13,6 +14,7 @@ pub mod dialect;
 pub mod driver;
 pub mod emit;
 pub mod fuzzing;
+pub mod interp;
 pub mod ir;
 pub mod lower;
 pub mod source;
