@@ -1,8 +1,18 @@
 //! Dialects as data: specs read from `dialects/*.xml`, the built-in set,
 //! aliases, and choosing a dialect for a file.
 
+pub mod builtin;
+pub mod detect;
+pub mod listing;
+pub mod load;
+mod load_items;
 pub mod meaning;
 pub mod spec;
+mod xml;
 
+pub use builtin::{builtin, builtins, Registry};
+pub use detect::{detect, Detection};
+pub use listing::describe_all;
+pub use load::load_spec;
 pub use meaning::{Meaning, SpindleFn};
 pub use spec::*;
