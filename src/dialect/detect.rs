@@ -35,8 +35,12 @@ pub fn detect(reg: &Registry, path: Option<&Path>, text: &str) -> Detection {
         .filter(|s| !ext.is_empty() && s.extensions.contains(&ext))
         .map(|s| s.id.as_str())
         .collect();
+    // An extension only one dialect claims decides, unless it is one the
+    // default dialect claims (.nc, .txt): those files are often others'.
     if let [only] = by_ext.as_slice() {
-        return found(only, format!("extension .{ext}"));
+        if *only != DEFAULT_DIALECT {
+            return found(only, format!("extension .{ext}"));
+        }
     }
     if let Some(d) = content_hint(head) {
         return d;

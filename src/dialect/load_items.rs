@@ -189,7 +189,7 @@ fn parse_class(s: &str) -> Option<VarClass> {
 
 /// `<group name= exclusive= doc=/>`.
 pub fn read_group(cx: &mut Ctx, n: &Node) -> Option<GroupDef> {
-    cx.check_attrs(n, &["name", "exclusive", "doc"]);
+    cx.check_attrs(n, &["name", "exclusive", "doc", "confidence"]);
     let name = cx.req(n, "name")?.value.trim().to_string();
     let exclusive = cx.bool_attr(n, "exclusive", true);
     Some(GroupDef { name, exclusive, doc: cx.doc(n) })
@@ -364,7 +364,7 @@ fn read_param(cx: &mut Ctx, n: &Node) -> Option<ParamSig> {
 
 /// `<function name= func= arity= doc=/>`.
 pub fn read_function(cx: &mut Ctx, n: &Node) -> Option<FunctionDef> {
-    cx.check_attrs(n, &["name", "func", "arity", "doc"]);
+    cx.check_attrs(n, &["name", "func", "arity", "doc", "confidence"]);
     let name = cx.req(n, "name").map(|a| a.value.trim().to_ascii_uppercase());
     let func = cx.req(n, "func").and_then(|a| {
         let names: Vec<&str> = FUNCS.iter().map(|(n, _)| *n).collect();
@@ -377,7 +377,7 @@ pub fn read_function(cx: &mut Ctx, n: &Node) -> Option<FunctionDef> {
 
 /// `<variables prefix= first= last= class= writable= doc=/>`.
 pub fn read_variables(cx: &mut Ctx, n: &Node) -> Option<VarRange> {
-    cx.check_attrs(n, &["prefix", "first", "last", "class", "writable", "doc"]);
+    cx.check_attrs(n, &["prefix", "first", "last", "class", "writable", "doc", "confidence"]);
     let prefix = cx.req(n, "prefix").and_then(|a| cx.parse(a, "`#` or `R`", "numbered variables are `#n` or `Rn`", |s| match s {
         "#" => Some('#'),
         "R" => Some('R'),
