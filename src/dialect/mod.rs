@@ -6,6 +6,8 @@ pub mod detect;
 pub mod listing;
 pub mod load;
 mod load_items;
+#[cfg(test)]
+mod load_tests;
 pub mod meaning;
 pub mod spec;
 mod xml;

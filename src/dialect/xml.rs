@@ -125,7 +125,12 @@ fn node(e: &BytesStart, text: &str, tag: Span) -> Result<Node, Diagnostic> {
     let spans = attr_spans(raw, tag.start as usize);
     let mut attrs = Vec::new();
     for (i, a) in e.attributes().enumerate() {
-        let a = a.map_err(|err| malformed(tag.file, tag.start as usize, tag.end as usize, &err.to_string()))?;
+        let a = a.map_err(|err| {
+            // Attribute errors count from the byte after `<`.
+            let at = (tag.start as usize + 1 + attr_error_offset(&err)).min(tag.end as usize);
+            let start = Span::new(tag.file, tag.start as usize, tag.start as usize + 1);
+            malformed(tag.file, at, (at + 1).min(tag.end as usize), &err.to_string()).secondary(start, "in the tag that starts here")
+        })?;
         let value = a
             .normalized_value(quick_xml::XmlVersion::Implicit1_0)
             .map_err(|err| malformed(tag.file, tag.start as usize, tag.end as usize, &err.to_string()))?;
@@ -141,6 +146,13 @@ fn node(e: &BytesStart, text: &str, tag: Span) -> Result<Node, Diagnostic> {
     let qname = e.name();
     let name: &str = qname.as_ref();
     Ok(Node { name: name.to_string(), span: tag, attrs, children: Vec::new(), text: String::new() })
+}
+
+fn attr_error_offset(e: &quick_xml::events::attributes::AttrError) -> usize {
+    use quick_xml::events::attributes::AttrError as E;
+    match *e {
+        E::ExpectedEq(p) | E::ExpectedValue(p) | E::UnquotedValue(p) | E::ExpectedQuote(p, _) | E::Duplicated(p, _) => p,
+    }
 }
 
 type Range2 = ((usize, usize), (usize, usize));
