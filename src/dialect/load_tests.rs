@@ -151,3 +151,30 @@ fn garbage_never_panics() {
         assert!(r.is_err(), "{t:?} loaded");
     }
 }
+
+/// The schema's enumerations list exactly what the loader accepts.
+#[test]
+fn schema_matches_the_loader_tables() {
+    use super::load_items::{ADDRESS_ROLES, CYCLE_KINDS, FUNCS};
+    let xsd = include_str!("../../dialects/dialect.xsd");
+    let root = super::xml::parse(xsd, crate::span::FileId(0)).expect("dialect.xsd is well-formed");
+    let values = |type_name: &str| -> Vec<String> {
+        fn walk(n: &super::xml::Node, out: &mut Vec<String>) {
+            if n.name == "xs:enumeration" {
+                out.extend(n.attr("value").map(|a| a.value.clone()));
+            }
+            n.children.iter().for_each(|c| walk(c, out));
+        }
+        let mut out = Vec::new();
+        let t = root.children.iter().find(|c| c.attr("name").is_some_and(|a| a.value == type_name));
+        walk(t.unwrap_or_else(|| panic!("type {type_name}")), &mut out);
+        out
+    };
+    let caps: Vec<String> = super::CAPABILITIES.iter().map(|(n, _)| n.to_string()).collect();
+    assert_eq!(values("capability"), caps);
+    let meanings: Vec<String> = super::meaning::MEANINGS.iter().map(|(n, _)| n.to_string()).collect();
+    assert_eq!(values("meaning"), meanings);
+    assert_eq!(values("cycleKind"), CYCLE_KINDS.iter().map(|s| s.to_string()).collect::<Vec<_>>());
+    assert_eq!(values("addressRole"), ADDRESS_ROLES.iter().map(|s| s.to_string()).collect::<Vec<_>>());
+    assert_eq!(values("func"), FUNCS.iter().map(|(n, _)| n.to_string()).collect::<Vec<_>>());
+}

@@ -5,12 +5,12 @@ pub mod builtin;
 pub mod detect;
 pub mod listing;
 pub mod load;
-mod load_items;
+pub(crate) mod load_items;
 #[cfg(test)]
 mod load_tests;
 pub mod meaning;
 pub mod spec;
-mod xml;
+pub(crate) mod xml;
 
 pub use builtin::{builtin, builtins, Registry};
 pub use detect::{detect, Detection};
