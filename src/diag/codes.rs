@@ -151,6 +151,9 @@ codes! {
     SpecDuplicate = "E0406", "spec-duplicate", Error,
         "the same code or cycle defined twice in one dialect spec",
         "A code or cycle is defined twice in one file. Remove one; to change an inherited entry, define it once in the extending spec.";
+    UnknownDialect = "E0407", "unknown-dialect", Error,
+        "a dialect name that is neither built in nor loaded",
+        "`--dialect` (or `extends`) names no known dialect id or alias, or a dialect cncc cannot read yet (Heidenhain). `cncc dialects` lists the available ones; load your own with `--dialect-file`.";
     CannotExpress = "E0601", "cannot-express", Error,
         "a construct the target dialect cannot express",
         "The target dialect has no form for this construct. Choose another target, or allow a documented fallback where one exists.";

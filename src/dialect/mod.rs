@@ -1,8 +1,20 @@
 //! Dialects as data: specs read from `dialects/*.xml`, the built-in set,
 //! aliases, and choosing a dialect for a file.
 
+pub mod builtin;
+pub mod detect;
+pub mod listing;
+pub mod load;
+pub(crate) mod load_items;
+#[cfg(test)]
+mod load_tests;
 pub mod meaning;
 pub mod spec;
+pub(crate) mod xml;
 
+pub use builtin::{builtin, builtins, Registry};
+pub use detect::{detect, Detection};
+pub use listing::describe_all;
+pub use load::load_spec;
 pub use meaning::{Meaning, SpindleFn};
 pub use spec::*;

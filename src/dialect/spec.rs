@@ -205,6 +205,16 @@ pub struct FunctionDef {
     pub arity: usize,
 }
 
+/// A modal group declared by a spec: codes name it in `group=`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GroupDef {
+    pub name: String,
+    /// Two codes of an exclusive group may not share a block (E0202);
+    /// codes of a non-exclusive group (machine M codes) may.
+    pub exclusive: bool,
+    pub doc: String,
+}
+
 /// What a range of numbered variables is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum VarClass {
@@ -249,6 +259,8 @@ pub struct DialectSpec {
     pub extensions: Vec<String>,
     pub numbers: NumberRules,
     pub addresses: Vec<AddressDef>,
+    /// The modal groups codes may name.
+    pub groups: Vec<GroupDef>,
     pub codes: Vec<CodeDef>,
     pub cycles: Vec<CycleSig>,
     pub functions: Vec<FunctionDef>,
@@ -287,6 +299,7 @@ impl DialectSpec {
             extensions: Vec::new(),
             numbers,
             addresses: Vec::new(),
+            groups: Vec::new(),
             codes: Vec::new(),
             cycles: Vec::new(),
             functions: Vec::new(),
@@ -349,6 +362,10 @@ impl DialectSpec {
 
     pub fn is_length_address(&self, letter: char) -> bool {
         self.address(letter).map(|a| a.length).unwrap_or(false)
+    }
+
+    pub fn group(&self, name: &str) -> Option<&GroupDef> {
+        self.groups.iter().find(|g| g.name == name)
     }
 
     pub fn var_range(&self, prefix: char, n: u32) -> Option<&VarRange> {
