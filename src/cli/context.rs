@@ -4,7 +4,7 @@
 use crate::cli::args::{Cli, ColorChoice, Format};
 use crate::cli::output::print_diagnostics;
 use crate::diag::Diagnostic;
-use crate::dialect::{builtin::Registry, detect, DialectSpec};
+use crate::dialect::{detect, DialectSpec, Registry};
 use crate::source::SourceMap;
 use crate::span::FileId;
 use std::path::Path;
@@ -25,9 +25,23 @@ pub struct Context {
 #[derive(Debug)]
 pub struct Failure(pub String);
 
-impl<E: std::fmt::Display> From<E> for Failure {
-    fn from(e: E) -> Self {
+impl From<std::io::Error> for Failure {
+    fn from(e: std::io::Error) -> Self {
         Failure(e.to_string())
+    }
+}
+
+impl From<Diagnostic> for Failure {
+    /// A diagnostic about the command line itself (no place in a file).
+    fn from(d: Diagnostic) -> Self {
+        let mut s = format!("{} [{} {}]", d.message, d.code.code(), d.code.name());
+        for n in &d.notes {
+            s.push_str(&format!("\n  = note: {n}"));
+        }
+        if let Some(h) = &d.help {
+            s.push_str(&format!("\n  = help: {h}"));
+        }
+        Failure(s)
     }
 }
 
@@ -45,7 +59,7 @@ impl Context {
                 }
             };
             let id = ctx.files.add(path.display().to_string(), text.clone());
-            if let Err(diags) = ctx.registry.load_user(&text, id) {
+            if let Err(diags) = ctx.registry.load(&text, id) {
                 print_diagnostics(&diags, &ctx.files, format, ctx.color);
                 return Err(EXIT_INPUT_ERRORS);
             }
@@ -55,7 +69,7 @@ impl Context {
 
     /// The spec for a dialect name (id or alias).
     pub fn spec(&self, name: &str) -> Result<Arc<DialectSpec>, Failure> {
-        self.registry.resolve(name).map_err(Failure)
+        Ok(self.registry.resolve(name)?)
     }
 
     /// The spec for a file: the one asked for, or one chosen from the file's
@@ -69,8 +83,8 @@ impl Context {
         match asked {
             Some(name) => Ok((self.spec(name)?, None)),
             None => {
-                let (id, reason) = detect::detect(path, text, &self.registry);
-                Ok((self.spec(&id)?, Some(reason)))
+                let d = detect(&self.registry, Some(path), text);
+                Ok((self.spec(&d.id)?, Some(d.reason)))
             }
         }
     }

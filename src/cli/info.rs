@@ -4,7 +4,7 @@ use crate::cli::context::{Context, Failure, EXIT_OK, EXIT_USAGE};
 use crate::diag::Code;
 
 pub fn dialects(ctx: &Context) -> Result<i32, Failure> {
-    crate::cli::output::emit_output(None, &crate::dialect::builtin::describe_all(&ctx.registry))?;
+    crate::cli::output::emit_output(None, &crate::dialect::describe_all(&ctx.registry))?;
     Ok(EXIT_OK)
 }
 
