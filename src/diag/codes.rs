@@ -172,6 +172,9 @@ codes! {
     SuspectWord = "W0004", "suspect-word", Warning,
         "a word that has no effect here",
         "The word is read but nothing in this block uses it.";
+    BadToolTable = "E0502", "bad-tool-table", Warning,
+        "a tool table line that cannot be read",
+        "Tool table lines are `T<tool> P<pocket> Z<length> D<diameter> ;comment` (LinuxCNC's .tbl format). The line was skipped.";
     ToolNotInTable = "E0501", "tool-not-in-table", Error,
         "a tool that is not in the tool table",
         "The program selects or changes to a tool number that the tool table does not list. Add the tool to the table given with `--tool-table`, or correct the number.";

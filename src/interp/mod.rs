@@ -1,6 +1,96 @@
 //! The interpreter: runs the meta-model as a controller would and emits
 //! canonical machining calls ([`crate::canon`]), with every modal state
 //! explicit.
+//!
+//! [`Interp`] holds the machine [`state::State`]; `exec` runs one block's
+//! statements in the order NIST's Table 8 (and LinuxCNC) gives them;
+//! the program loop walks the blocks.
 
 pub mod cycle_io;
+pub mod exec;
 pub mod host;
+pub mod machine;
+pub mod options;
+pub mod state;
+pub mod tooltable;
+
+pub use options::{Limits, Options};
+
+use crate::canon::Canon;
+use crate::diag::Diagnostic;
+use crate::dialect::DialectSpec;
+use crate::ir::{Arena, Block, Expr, Program};
+use crate::span::Span;
+use state::State;
+
+/// Where the calls go, each with the span of the statement it came from.
+pub type Sink<'a> = dyn FnMut(Canon, Span) + 'a;
+
+/// Why a run stopped before the program's end.
+#[derive(Debug)]
+pub enum Stop {
+    /// An error: the controller would alarm here.
+    Error(Diagnostic),
+    /// M2/M30 or a closing `%`: the program ended.
+    End,
+}
+
+pub struct Interp<'a, 's> {
+    pub spec: &'s DialectSpec,
+    pub opts: &'s Options,
+    pub state: State,
+    pub sink: &'a mut Sink<'a>,
+    /// Non-fatal findings (warnings) collected while running.
+    pub diags: Vec<Diagnostic>,
+    /// The span of the statement being executed (calls are tagged with it).
+    pub span: Span,
+    pub ended: bool,
+}
+
+impl<'a, 's> Interp<'a, 's> {
+    pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
+        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false }
+    }
+
+    /// Emits one call, tagged with the current statement's span.
+    pub fn emit(&mut self, call: Canon) {
+        (self.sink)(call, self.span);
+    }
+
+    /// The calls every run starts with.
+    pub fn start(&mut self) {
+        machine::init_sequence(self);
+    }
+
+    /// Runs one block.
+    pub fn block(&mut self, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+        if block.skip.is_some() && self.opts.block_delete {
+            return Ok(());
+        }
+        exec::exec_block(self, block, exprs)
+    }
+}
+
+/// Runs a whole program; returns every diagnostic (the first error ends it).
+pub fn run(program: &Program, spec: &DialectSpec, opts: &Options, sink: &mut Sink<'_>) -> Vec<Diagnostic> {
+    let mut sink = sink;
+    let mut it = Interp::new(spec, opts, &mut sink);
+    it.start();
+    let mut result = Ok(());
+    for block in &program.blocks {
+        result = it.block(block, &program.exprs);
+        if result.is_err() {
+            break;
+        }
+    }
+    let mut diags = std::mem::take(&mut it.diags);
+    match result {
+        Err(Stop::Error(d)) => {
+            diags.push(d);
+            machine::abort_sequence(&mut it);
+        }
+        Err(Stop::End) => {}
+        Ok(()) => machine::fell_off_end(&mut it, &mut diags),
+    }
+    diags
+}

@@ -1,0 +1,132 @@
+//! The machine's modal state while a program runs. Lengths are kept in
+//! millimetres internally and converted to the program's units where the
+//! canon prints them.
+
+use crate::canon::CanonPlane;
+use crate::interp::host::SpindleDir;
+use crate::ir::{CompSide, CycleKind, FeedMode, LengthUnit, MotionKind};
+
+pub const MM_PER_INCH: f64 = 25.4;
+
+/// The modal motion: what a block with axis words and no motion code does.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ModalMotion {
+    None,
+    Move(MotionKind),
+    Cycle(CycleKind),
+}
+
+/// Path control mode (G61, G61.1, G64 P Q).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PathControl {
+    ExactStop,
+    ExactPath,
+    Continuous { tolerance: f64, naive: f64 },
+}
+
+#[derive(Clone, Debug)]
+pub struct State {
+    pub units: LengthUnit,
+    /// Current position x y z a b c u v w: program frame, mm (angles in degrees).
+    pub pos: [f64; 9],
+    pub plane: CanonPlane,
+    pub absolute: bool,
+    pub arc_absolute: bool,
+    pub feed_mode: FeedMode,
+    /// Feed rate as programmed, in program units per minute (or per rev).
+    pub feed: f64,
+    pub speed: f64,
+    pub spindle: SpindleDir,
+    pub motion: ModalMotion,
+    /// Active work offset 1..=9 (G54..G59.3).
+    pub g5x_index: u32,
+    /// Work offsets 1..=9, mm; index 0 unused.
+    pub g5x: [[f64; 9]; 10],
+    /// XY rotation of each work offset, degrees.
+    pub g5x_rotation: [f64; 10],
+    /// G92 offset, mm.
+    pub g92: [f64; 9],
+    pub g92_applied: bool,
+    /// Tool length offset x y z a b c u v w, mm.
+    pub tool_offset: [f64; 9],
+    /// Tool number in the spindle (0: none) and the one selected.
+    pub tool_in_spindle: i64,
+    pub tool_selected: Option<i64>,
+    pub comp_side: CompSide,
+    pub comp_radius: f64,
+    pub retract_initial: bool,
+    pub path: PathControl,
+    pub flood: bool,
+    pub mist: bool,
+}
+
+impl State {
+    pub fn new() -> State {
+        State {
+            units: LengthUnit::Mm,
+            pos: [0.0; 9],
+            plane: CanonPlane::XY,
+            absolute: true,
+            arc_absolute: false,
+            feed_mode: FeedMode::PerMinute,
+            feed: 0.0,
+            speed: 0.0,
+            spindle: SpindleDir::Stopped,
+            motion: ModalMotion::None,
+            g5x_index: 1,
+            g5x: [[0.0; 9]; 10],
+            g5x_rotation: [0.0; 10],
+            g92: [0.0; 9],
+            g92_applied: false,
+            tool_offset: [0.0; 9],
+            tool_in_spindle: 0,
+            tool_selected: None,
+            comp_side: CompSide::Off,
+            comp_radius: 0.0,
+            retract_initial: true,
+            path: PathControl::Continuous { tolerance: 0.0, naive: 0.0 },
+            flood: false,
+            mist: false,
+        }
+    }
+
+    /// mm per program unit.
+    pub fn scale(&self) -> f64 {
+        match self.units {
+            LengthUnit::Mm => 1.0,
+            LengthUnit::Inch => MM_PER_INCH,
+        }
+    }
+
+    /// A length in program units, as mm.
+    pub fn to_mm(&self, v: f64) -> f64 {
+        v * self.scale()
+    }
+
+    /// A length in mm, in program units.
+    pub fn to_prog(&self, mm: f64) -> f64 {
+        mm / self.scale()
+    }
+
+    /// Is axis `i` (0..9) a length axis (X Y Z U V W) rather than an angle?
+    pub fn is_linear(i: usize) -> bool {
+        !(3..6).contains(&i)
+    }
+
+    /// A pose in mm/degrees converted to program units (lengths only).
+    pub fn pose_to_prog(&self, p: &[f64; 9]) -> [f64; 9] {
+        let mut out = *p;
+        for (i, v) in out.iter_mut().enumerate() {
+            if State::is_linear(i) {
+                *v = self.to_prog(*v);
+            }
+        }
+        out
+    }
+}
+
+impl Default for State {
+    fn default() -> Self {
+        State::new()
+    }
+}
