@@ -52,6 +52,16 @@ impl Builder<'_> {
         self.expr(ExprKind::Unary(op, a), l, r)
     }
 
+    /// `-e`; a negated number literal stays a number (`-5`).
+    pub fn neg(&mut self, e: ExprId, l: usize, r: usize) -> ExprId {
+        if let ExprKind::Number(d) = self.exprs[e].kind {
+            let span = self.span(l, r);
+            self.exprs[e] = Expr { kind: ExprKind::Number(d.neg()), span };
+            return e;
+        }
+        self.un(UnaryOp::Neg, e, l, r)
+    }
+
     pub fn var(&mut self, v: Var, l: usize, r: usize) -> ExprId {
         self.expr(ExprKind::Var(v), l, r)
     }

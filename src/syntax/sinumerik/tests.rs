@@ -36,8 +36,12 @@ pub fn spec() -> DialectSpec {
     s.cycles.push(cycle("HOLES1", &[r("SPCA"), r("SPCO"), r("STA1"), r("FDIS"), r("DBH"), ("NUM", Int)]));
     s.cycles.push(cycle("HOLES2", &[r("CPA"), r("CPO"), r("RAD"), r("STA1"), r("INDA"), ("NUM", Int)]));
     s.cycles.push(cycle("CYCLE801", &[r("SPCA"), r("SPCO"), r("STA"), r("DIS1"), r("DIS2"), ("NUM1", Int), ("NUM2", Int)]));
-    s.cycles.push(cycle("POCKET4", &[r("RTP"), r("RFP"), r("SDIS"), r("DP"), r("PRAD")]));
-    s.cycles.push(cycle("CYCLE800", &[("FR", Int), ("TC", String)]));
+    let names: Vec<std::string::String> = (1..=25).map(|i| format!("P{i}")).collect();
+    let pocket4: Vec<(&str, ParamType)> = names.iter().map(|n| (n.as_str(), Real)).collect();
+    s.cycles.push(cycle("POCKET4", &pocket4));
+    let mut c800: Vec<(&str, ParamType)> = vec![("FR", Int), ("TC", String)];
+    c800.extend(names[2..16].iter().map(|n| (n.as_str(), Real)));
+    s.cycles.push(cycle("CYCLE800", &c800));
     for (name, func, arity) in [
         ("SIN", Func::Sin, 1),
         ("COS", Func::Cos, 1),
