@@ -11,8 +11,9 @@ use crate::ir::{
 };
 use crate::span::Span;
 
-/// One piece of a line as the grammar reads it.
+/// One piece of a line as the grammar reads it (short-lived: one line).
 #[derive(Clone, Debug, PartialEq)]
+#[allow(clippy::large_enum_variant)]
 pub enum Node {
     /// `X10`, `X=R1+5`, `X=AC(5)`, `CR=10`, `T="DRILL"`.
     Word { addr: String, addr_span: Span, value: Value, dim: Option<DimMode>, extended: bool, span: Span },
