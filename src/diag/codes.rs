@@ -175,6 +175,9 @@ codes! {
     BadToolTable = "E0502", "bad-tool-table", Warning,
         "a tool table line that cannot be read",
         "Tool table lines are `T<tool> P<pocket> Z<length> D<diameter> ;comment` (LinuxCNC's .tbl format). The line was skipped.";
+    KeptAsText = "W0005", "kept-as-text", Warning,
+        "a block understood only as text",
+        "The front end recognised the block as plausibly valid for the dialect (an unknown system function, an unusual keyword) but cannot place it in the meta-model. It is kept verbatim: it is written back unchanged into the same dialect, and translating it to another dialect is an error.";
     ToolNotInTable = "E0501", "tool-not-in-table", Error,
         "a tool that is not in the tool table",
         "The program selects or changes to a tool number that the tool table does not list. Add the tool to the table given with `--tool-table`, or correct the number.";

@@ -5,6 +5,10 @@
 //! statements its grammar builds directly (comments, assignments, control
 //! flow, calls). The shared, data-driven lowering in [`crate::lower`] then
 //! turns the words into statements using the dialect spec.
+//!
+//! Siemens `CIP` and `CT` (arc through an intermediate point, tangential
+//! arc) are emitted as words with address `CIP`/`CT` and the value 0; the
+//! lowering turns them into `MotionKind::ArcThrough` / `ArcTangent`.
 
 pub mod sinumerik;
 pub mod word;

@@ -1,0 +1,147 @@
+//! From the grammar's [`Node`]s to the line's [`Item`]s: numbered
+//! subprogram calls `L123 P3`, tool names `T="NAME"`, words without a value,
+//! and named cycle calls checked against their signature in the spec.
+
+use super::builder::Node;
+use crate::diag::{Code, Diagnostic};
+use crate::dialect::spec::ParamType;
+use crate::dialect::DialectSpec;
+use crate::ir::{Arena, Arg, CallArgs, CallKind, CallTarget, CycleCall, Expr, ExprKind, Stmt, StmtKind, ToolRef, Value};
+use crate::span::Span;
+use crate::syntax::{Item, WordSyntax};
+
+pub struct Finish<'a> {
+    pub spec: &'a DialectSpec,
+    pub exprs: &'a Arena<Expr>,
+    pub diags: &'a mut Vec<Diagnostic>,
+}
+
+impl Finish<'_> {
+    pub fn items(&mut self, nodes: Vec<Node>) -> Vec<Item> {
+        let mut out: Vec<Item> = Vec::new();
+        for n in nodes {
+            if let Some(item) = self.node(n) {
+                out.push(item);
+            }
+        }
+        take_call_repeat(&mut out);
+        out
+    }
+
+    fn node(&mut self, n: Node) -> Option<Item> {
+        match n {
+            Node::Word { addr, addr_span, value, dim, extended, span } => Some(self.word(addr, addr_span, value, dim, extended, span)),
+            Node::Bare { addr, span } => {
+                let d = Diagnostic::new(Code::WordWithoutValue, format!("the address `{addr}` has no value"))
+                    .primary(span, "no value after this address")
+                    .help(format!("write a value after it, as in `{addr}10` or `{addr}=R1`"));
+                self.diags.push(d);
+                None
+            }
+            Node::WordCall { addr, number, args, span } => self.word_call(addr, number, args, span),
+            Node::Stmt(s) => {
+                if let StmtKind::CycleCall(c) = &s.kind {
+                    self.check_cycle(c, s.span);
+                }
+                Some(Item::Stmt(s))
+            }
+        }
+    }
+
+    fn word(&mut self, addr: String, addr_span: Span, value: Value, dim: Option<crate::ir::DimMode>, extended: bool, span: Span) -> Item {
+        if let Some(call) = self.l_call(&addr, &value, None, span) {
+            return call;
+        }
+        if addr == "T" {
+            if let Value::Expr(e) = &value {
+                if let ExprKind::Str(name) = &self.exprs[*e].kind {
+                    return Item::Stmt(Stmt::new(StmtKind::ToolSelect(ToolRef::Name(name.clone())), span));
+                }
+            }
+        }
+        Item::Word(WordSyntax { address: addr, value, dim, extended, span, address_span: addr_span })
+    }
+
+    /// `L123`: a call of subprogram 123 (not an extended `L=`).
+    fn l_call(&self, addr: &str, value: &Value, args: Option<Vec<Arg>>, span: Span) -> Option<Item> {
+        let n = value.number().filter(|d| addr == "L" && !d.point)?.as_int()?;
+        let n = u32::try_from(n).ok()?;
+        let args = match args {
+            None => CallArgs::None,
+            Some(a) => CallArgs::Positional(a.into_iter().map(|a| a.value).collect()),
+        };
+        let kind = StmtKind::Call { kind: CallKind::Named, target: CallTarget::Number(n), args, repeat: None };
+        Some(Item::Stmt(Stmt::new(kind, span)))
+    }
+
+    fn word_call(&mut self, addr: String, number: crate::ir::Decimal, args: Vec<Arg>, span: Span) -> Option<Item> {
+        let call = self.l_call(&addr, &Value::Number(number), Some(args), span);
+        if call.is_none() {
+            let d = Diagnostic::new(Code::SyntaxError, format!("`{addr}{number}` cannot take arguments"))
+                .primary(span, "arguments after a word")
+                .help("only a subprogram call `L<number>(...)` or a named call `NAME(...)` takes arguments in parentheses");
+            self.diags.push(d);
+        }
+        call
+    }
+
+    fn check_cycle(&mut self, c: &CycleCall, span: Span) {
+        let Some(sig) = self.spec.cycle(&c.name) else { return };
+        if c.args.len() > sig.params.len() {
+            let extra = &c.args[sig.params.len()];
+            let d = Diagnostic::new(
+                Code::CycleTooManyArguments,
+                format!("`{}` takes at most {} arguments, this call gives {}", sig.name, sig.params.len(), c.args.len()),
+            )
+            .primary(extra.span, "first argument beyond the signature")
+            .secondary(span, "in this call")
+            .help(Code::CycleTooManyArguments.explanation());
+            self.diags.push(d);
+        }
+        for (a, p) in c.args.iter().zip(&sig.params) {
+            if let Some(kind) = a.value.and_then(|e| self.wrong_kind(&self.exprs[e].kind, p.ty)) {
+                let d = Diagnostic::new(
+                    Code::CycleArgumentKind,
+                    format!("`{}` of `{}` takes {}, not {kind}", p.name, sig.name, ty_name(p.ty)),
+                )
+                .primary(a.span, format!("{kind} given"))
+                .help(format!("give `{}` {}", p.name, ty_name(p.ty)));
+                self.diags.push(d);
+            }
+        }
+    }
+
+    /// What is wrong with a literal argument for a parameter type.
+    fn wrong_kind(&self, e: &ExprKind, ty: ParamType) -> Option<&'static str> {
+        match (e, ty) {
+            (ExprKind::Str(_), ParamType::Real | ParamType::Int) => Some("a string"),
+            (ExprKind::Number(_) | ExprKind::Bool(_), ParamType::String) => Some("a number"),
+            (ExprKind::Number(d), ParamType::Int) if !d.is_integer() => Some("a fraction"),
+            _ => None,
+        }
+    }
+}
+
+fn ty_name(t: ParamType) -> &'static str {
+    match t {
+        ParamType::Real => "a number",
+        ParamType::Int => "an integer",
+        ParamType::String => "a string",
+        ParamType::Any => "any value",
+    }
+}
+
+/// `L123 P3`, `MYSUB P2`: the P word gives the call's number of passes.
+fn take_call_repeat(items: &mut Vec<Item>) {
+    let has_call = items.iter().any(|i| matches!(i, Item::Stmt(Stmt { kind: StmtKind::Call { .. }, .. })));
+    let p = items.iter().position(|i| matches!(i, Item::Word(w) if w.address == "P"));
+    let (true, Some(p)) = (has_call, p) else { return };
+    let Item::Word(w) = items.remove(p) else { return };
+    for i in items.iter_mut() {
+        if let Item::Stmt(Stmt { kind: StmtKind::Call { repeat, .. }, span }) = i {
+            *repeat = Some(w.value);
+            *span = span.to(w.span);
+            return;
+        }
+    }
+}
