@@ -178,6 +178,33 @@ codes! {
     KeptAsText = "W0005", "kept-as-text", Warning,
         "a block understood only as text",
         "The front end recognised the block as plausibly valid for the dialect (an unknown system function, an unusual keyword) but cannot place it in the meta-model. It is kept verbatim: it is written back unchanged into the same dialect, and translating it to another dialect is an error.";
+    DivisionByZero = "E0503", "division-by-zero", Error,
+        "a division by zero while the program runs",
+        "An expression divides by zero (or takes MOD of zero) with the values the variables have at that point. Check the divisor's variables.";
+    UndefinedVariable = "E0504", "undefined-variable", Error,
+        "a variable read before it was given a value",
+        "The program reads a named parameter or variable that was never set (LinuxCNC: `Named parameter #<x> not defined`). Set it first, or check its spelling.";
+    DomainError = "E0505", "domain-error", Error,
+        "a function given a value outside its domain",
+        "SQRT of a negative number, LN of zero or less, ASIN/ACOS outside -1..1: the controller alarms here. Check the argument's variables.";
+    LimitExceeded = "E0506", "limit-exceeded", Error,
+        "a loop, jump or call nesting ran past its limit",
+        "cncc bounds loops, backward jumps and call nesting so that no program can hang it. The limit was reached: the program probably loops forever. Raise the limit with `--max-loop` / `--max-depth` if the program is right.";
+    NoFeedRate = "E0507", "no-feed-rate", Error,
+        "a feed move with no feed rate",
+        "A G1/G2/G3 or cycle feed move runs with feed rate zero (none programmed yet, or G93 without F in the block). Program an F word.";
+    ArcEndNotOnCircle = "E0508", "arc-end-not-on-circle", Error,
+        "an arc whose end point is not on its circle",
+        "The distances from the centre to the start and to the end differ by more than the tolerance. Check the centre words (I J K are incremental from the start unless G90.1) and the end point.";
+    ArcRadiusTooSmall = "E0509", "arc-radius-too-small", Error,
+        "an arc radius too small to reach the end point",
+        "With the R form, the chord from start to end is longer than the diameter. Use a larger R, or check the end point.";
+    UnsupportedHere = "E0510", "not-supported-here", Error,
+        "a construct the interpreter cannot run",
+        "The statement is read and kept, but cncc cannot run it (yet), so the canonical output would be wrong from here on. The run stops with this diagnostic.";
+    CannotExpandCycle = "W0510", "cycle-not-expanded", Warning,
+        "a cycle the interpreter cannot expand into moves",
+        "The cycle is kept in the program, but its documentation does not define its toolpath well enough for cncc to generate it; the canonical output skips its moves.";
     ToolNotInTable = "E0501", "tool-not-in-table", Error,
         "a tool that is not in the tool table",
         "The program selects or changes to a tool number that the tool table does not list. Add the tool to the table given with `--tool-table`, or correct the number.";

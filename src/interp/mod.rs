@@ -7,10 +7,13 @@
 //! the program loop walks the blocks.
 
 pub mod cycle_io;
+pub mod eval;
 pub mod exec;
 pub mod host;
 pub mod machine;
 pub mod options;
+pub mod params;
+pub mod predefined;
 pub mod state;
 pub mod tooltable;
 
@@ -45,11 +48,12 @@ pub struct Interp<'a, 's> {
     /// The span of the statement being executed (calls are tagged with it).
     pub span: Span,
     pub ended: bool,
+    pub params: params::Params,
 }
 
 impl<'a, 's> Interp<'a, 's> {
     pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
-        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false }
+        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new() }
     }
 
     /// Emits one call, tagged with the current statement's span.

@@ -1,0 +1,210 @@
+//! Evaluating expressions and word values to numbers while a program runs.
+//! Angles are in degrees; comparisons and logic give 1 or 0.
+
+use super::{Interp, Stop};
+use crate::diag::{Code, Diagnostic};
+use crate::ir::{Arena, BinaryOp, Expr, ExprId, ExprKind, Func, UnaryOp, Value, Var};
+
+/// A number, or vacant (Fanuc `#0`, a parameter never set).
+pub type Num = Option<f64>;
+
+impl Interp<'_, '_> {
+    /// A word's value as a number (vacant reads as zero).
+    pub fn value(&mut self, v: &Value, exprs: &Arena<Expr>) -> Result<f64, Stop> {
+        match v {
+            Value::Number(d) => Ok(d.to_f64()),
+            Value::Expr(e) => Ok(self.eval(*e, exprs)?.unwrap_or(0.0)),
+        }
+    }
+
+    /// A word's value, keeping vacancy.
+    pub fn value_or_vacant(&mut self, v: &Value, exprs: &Arena<Expr>) -> Result<Num, Stop> {
+        match v {
+            Value::Number(d) => Ok(Some(d.to_f64())),
+            Value::Expr(e) => self.eval(*e, exprs),
+        }
+    }
+
+    pub fn eval(&mut self, id: ExprId, exprs: &Arena<Expr>) -> Result<Num, Stop> {
+        let e = &exprs[id];
+        let span = e.span;
+        Ok(match &e.kind {
+            ExprKind::Number(d) => Some(d.to_f64()),
+            ExprKind::Bool(b) => Some(*b as i64 as f64),
+            ExprKind::Str(_) => return Err(self.error_at(span, Code::UnsupportedHere, "a string used as a number")),
+            ExprKind::Var(v) => self.read_var(v, exprs, span)?,
+            ExprKind::Unary(op, a) => {
+                let a = self.eval(*a, exprs)?.unwrap_or(0.0);
+                Some(match op {
+                    UnaryOp::Neg => -a,
+                    UnaryOp::Plus => a,
+                    UnaryOp::Not => (a == 0.0) as i64 as f64,
+                    UnaryOp::BitNot => !(a as i64) as f64,
+                })
+            }
+            ExprKind::Binary(op, a, b) => {
+                let a = self.eval(*a, exprs)?;
+                let b = self.eval(*b, exprs)?;
+                Some(self.binary(*op, a, b, span)?)
+            }
+            ExprKind::Call(f, args) => {
+                let mut vals = Vec::with_capacity(args.len());
+                for a in args {
+                    vals.push(self.eval(*a, exprs)?.unwrap_or(0.0));
+                }
+                Some(self.call(*f, &vals, span)?)
+            }
+            ExprKind::AtanSlash(a, b) => {
+                let y = self.eval(*a, exprs)?.unwrap_or(0.0);
+                let x = self.eval(*b, exprs)?.unwrap_or(0.0);
+                Some(atan2_deg(y, x))
+            }
+            ExprKind::Exists(name) => Some(self.params.named(name).is_some() as i64 as f64),
+            ExprKind::Dimension(_, inner) => self.eval(*inner, exprs)?,
+        })
+    }
+
+    fn binary(&mut self, op: BinaryOp, a: Num, b: Num, span: crate::span::Span) -> Result<f64, Stop> {
+        use BinaryOp::*;
+        // Vacant equals only vacant (Fanuc); elsewhere it reads as zero.
+        if matches!(op, Eq | Ne) && (a.is_none() || b.is_none()) {
+            let same = a.is_none() == b.is_none() && a.unwrap_or(0.0) == b.unwrap_or(0.0);
+            return Ok(((op == Eq) == same) as i64 as f64);
+        }
+        let (a, b) = (a.unwrap_or(0.0), b.unwrap_or(0.0));
+        let t = |c: bool| c as i64 as f64;
+        Ok(match op {
+            Add => a + b,
+            Sub => a - b,
+            Mul => a * b,
+            Div | IntDiv | Mod if b == 0.0 => {
+                return Err(self.error_at(span, Code::DivisionByZero, "division by zero"))
+            }
+            Div => a / b,
+            IntDiv => (a / b).trunc(),
+            Mod => a - b * (a / b).floor(),
+            Pow => a.powf(b),
+            Eq => t(a == b),
+            Ne => t(a != b),
+            Gt => t(a > b),
+            Ge => t(a >= b),
+            Lt => t(a < b),
+            Le => t(a <= b),
+            And => t(a != 0.0 && b != 0.0),
+            Or => t(a != 0.0 || b != 0.0),
+            Xor => t((a != 0.0) != (b != 0.0)),
+            BitAnd => ((a as i64) & (b as i64)) as f64,
+            BitOr => ((a as i64) | (b as i64)) as f64,
+            BitXor => ((a as i64) ^ (b as i64)) as f64,
+            Concat => return Err(self.error_at(span, Code::UnsupportedHere, "string concatenation is not evaluated")),
+        })
+    }
+
+    fn call(&mut self, f: Func, v: &[f64], span: crate::span::Span) -> Result<f64, Stop> {
+        let a = v.first().copied().unwrap_or(0.0);
+        let b = v.get(1).copied().unwrap_or(0.0);
+        let domain = |ok: bool| ok;
+        let r = match f {
+            Func::Sin => a.to_radians().sin(),
+            Func::Cos => a.to_radians().cos(),
+            Func::Tan => a.to_radians().tan(),
+            Func::Asin if domain((-1.0..=1.0).contains(&a)) => a.asin().to_degrees(),
+            Func::Acos if domain((-1.0..=1.0).contains(&a)) => a.acos().to_degrees(),
+            Func::Atan => a.atan().to_degrees(),
+            Func::Atan2 => atan2_deg(a, b),
+            Func::Sqrt if a >= 0.0 => a.sqrt(),
+            Func::Abs => a.abs(),
+            Func::Round => a.round(),
+            Func::Floor => a.floor(),
+            Func::Ceil => a.ceil(),
+            Func::Trunc => a.trunc(),
+            Func::Ln if a > 0.0 => a.ln(),
+            Func::Exp => a.exp(),
+            Func::Pow => a.powf(b),
+            Func::Square => a * a,
+            Func::Min => v.iter().copied().fold(f64::INFINITY, f64::min),
+            Func::Max => v.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+            Func::Bin => bcd_to_bin(a),
+            Func::Bcd => bin_to_bcd(a),
+            Func::Asin | Func::Acos | Func::Sqrt | Func::Ln => {
+                return Err(self.error_at(span, Code::DomainError, format!("{f:?} of {a} is undefined")))
+            }
+        };
+        Ok(r)
+    }
+
+    fn read_var(&mut self, v: &Var, exprs: &Arena<Expr>, span: crate::span::Span) -> Result<Num, Stop> {
+        Ok(match v {
+            Var::Numbered(n) => self.read_numbered(*n),
+            Var::Indirect(e) => {
+                let n = self.eval(*e, exprs)?.unwrap_or(0.0);
+                self.read_numbered(n.round().max(0.0) as u32)
+            }
+            Var::Named(name) => match self.read_named(name) {
+                Some(v) => Some(v),
+                None => {
+                    return Err(self.error_at(
+                        span,
+                        Code::UndefinedVariable,
+                        format!("named parameter #<{name}> not defined"),
+                    ))
+                }
+            },
+            Var::R(n) => Some(self.params.r(*n)),
+            Var::RIndirect(e) => {
+                let n = self.eval(*e, exprs)?.unwrap_or(0.0);
+                Some(self.params.r(n.round().max(0.0) as u32))
+            }
+            Var::User(name, _) => match self.params.user(name) {
+                Some(v) => Some(v),
+                None => {
+                    return Err(self.error_at(span, Code::UndefinedVariable, format!("variable {name} has no value")))
+                }
+            },
+            Var::System(name, _) => {
+                return Err(self.error_at(span, Code::UnsupportedHere, format!("system variable {name} is not simulated")))
+            }
+        })
+    }
+
+    /// `#n`, with the system parameters the interpreter keeps.
+    pub fn read_numbered(&self, n: u32) -> Num {
+        self.params.numbered(n)
+    }
+
+    /// `#<name>`, with LinuxCNC's predefined read-only ones.
+    pub fn read_named(&self, name: &str) -> Option<f64> {
+        self.params.named(name).or_else(|| super::predefined::named(self, name))
+    }
+
+    /// A run-time error at a span: the run stops here.
+    pub fn error_at(&self, span: crate::span::Span, code: Code, msg: impl Into<String>) -> Stop {
+        Stop::Error(Diagnostic::new(code, msg).primary(span, "here"))
+    }
+}
+
+fn atan2_deg(y: f64, x: f64) -> f64 {
+    y.atan2(x).to_degrees()
+}
+
+fn bcd_to_bin(a: f64) -> f64 {
+    let mut v = a as i64;
+    let (mut out, mut mul) = (0i64, 1i64);
+    while v > 0 {
+        out += (v & 0xF) * mul;
+        mul *= 10;
+        v >>= 4;
+    }
+    out as f64
+}
+
+fn bin_to_bcd(a: f64) -> f64 {
+    let mut v = a as i64;
+    let (mut out, mut shift) = (0i64, 0);
+    while v > 0 {
+        out |= (v % 10) << shift;
+        shift += 4;
+        v /= 10;
+    }
+    out as f64
+}

@@ -1,0 +1,96 @@
+//! Variables while a program runs: numbered parameters (`#n`), named
+//! parameters (`#<name>`, local per call level, global with `_`), Siemens
+//! R parameters and DEF variables. A numbered parameter never set reads as
+//! vacant (Fanuc `#0`), which arithmetic treats as zero.
+
+use std::collections::HashMap;
+
+#[derive(Clone, Debug, Default)]
+pub struct Params {
+    numbered: HashMap<u32, f64>,
+    r: HashMap<u32, f64>,
+    global_named: HashMap<String, f64>,
+    /// One scope per call level; the last is the current one.
+    local_named: Vec<HashMap<String, f64>>,
+    user: Vec<HashMap<String, f64>>,
+}
+
+impl Params {
+    pub fn new() -> Params {
+        Params { local_named: vec![HashMap::new()], user: vec![HashMap::new()], ..Default::default() }
+    }
+
+    /// `#n`: `None` when vacant.
+    pub fn numbered(&self, n: u32) -> Option<f64> {
+        self.numbered.get(&n).copied()
+    }
+
+    pub fn set_numbered(&mut self, n: u32, v: Option<f64>) {
+        match v {
+            Some(v) => {
+                self.numbered.insert(n, v);
+            }
+            None => {
+                self.numbered.remove(&n);
+            }
+        }
+    }
+
+    pub fn r(&self, n: u32) -> f64 {
+        self.r.get(&n).copied().unwrap_or(0.0)
+    }
+
+    pub fn set_r(&mut self, n: u32, v: f64) {
+        self.r.insert(n, v);
+    }
+
+    /// `#<name>` (names are case-insensitive; `_` prefix: global).
+    pub fn named(&self, name: &str) -> Option<f64> {
+        let key = name.to_ascii_lowercase();
+        if key.starts_with('_') {
+            self.global_named.get(&key).copied()
+        } else {
+            self.local_named.last().and_then(|s| s.get(&key)).copied()
+        }
+    }
+
+    pub fn set_named(&mut self, name: &str, v: f64) {
+        let key = name.to_ascii_lowercase();
+        if key.starts_with('_') {
+            self.global_named.insert(key, v);
+        } else if let Some(s) = self.local_named.last_mut() {
+            s.insert(key, v);
+        }
+    }
+
+    pub fn user(&self, name: &str) -> Option<f64> {
+        let key = name.to_ascii_uppercase();
+        self.user.iter().rev().find_map(|s| s.get(&key)).copied()
+    }
+
+    pub fn set_user(&mut self, name: &str, v: f64) {
+        let key = name.to_ascii_uppercase();
+        if let Some(s) = self.user.iter_mut().rev().find(|s| s.contains_key(&key)) {
+            s.insert(key, v);
+        } else if let Some(s) = self.user.last_mut() {
+            s.insert(key, v);
+        }
+    }
+
+    /// Enters a call level (subroutine, macro): fresh local names.
+    pub fn push_scope(&mut self) {
+        self.local_named.push(HashMap::new());
+        self.user.push(HashMap::new());
+    }
+
+    pub fn pop_scope(&mut self) {
+        if self.local_named.len() > 1 {
+            self.local_named.pop();
+            self.user.pop();
+        }
+    }
+
+    pub fn depth(&self) -> usize {
+        self.local_named.len()
+    }
+}
