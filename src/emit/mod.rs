@@ -15,7 +15,7 @@ mod word;
 mod writer;
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{DialectSpec, Family};

@@ -1,0 +1,151 @@
+//! Writer tests: hand-built programs written in each dialect (snapshots),
+//! and the constructs a target cannot express (asserted diagnostics).
+
+pub mod builder;
+pub mod specs;
+mod programs;
+
+use super::write_program;
+use crate::diag::Code;
+use builder::*;
+use crate::ir::*;
+use StmtKind as K;
+
+fn written(b: &Builder, spec: &crate::dialect::DialectSpec) -> String {
+    match write_program(&b.p, spec) {
+        Ok(s) => s,
+        Err(ds) => panic!("unexpected diagnostics: {ds:#?}"),
+    }
+}
+
+fn codes_of(b: &Builder, spec: &crate::dialect::DialectSpec) -> Vec<(Code, crate::span::Span)> {
+    let ds = write_program(&b.p, spec).expect_err("expected diagnostics");
+    ds.iter().map(|d| (d.code, d.span().unwrap())).collect()
+}
+
+#[test]
+fn fanuc_program() {
+    let b = programs::fanuc();
+    insta::assert_snapshot!(written(&b, &specs::fanuc()));
+}
+
+#[test]
+fn haas_program() {
+    let b = programs::haas();
+    insta::assert_snapshot!(written(&b, &specs::haas()));
+}
+
+#[test]
+fn linuxcnc_program() {
+    let b = programs::linuxcnc();
+    insta::assert_snapshot!(written(&b, &specs::linuxcnc()));
+}
+
+#[test]
+fn siemens_program() {
+    let b = programs::siemens();
+    insta::assert_snapshot!(written(&b, &specs::siemens()));
+}
+
+#[test]
+fn writing_is_deterministic() {
+    let b = programs::siemens();
+    assert_eq!(written(&b, &specs::siemens()), written(&b, &specs::siemens()));
+}
+
+#[test]
+fn siemens_for_loop_into_fanuc_is_cannot_express() {
+    let mut b = Builder::new("siemens840d");
+    let from = b.num("1");
+    let to = b.num("10");
+    b.line(vec![K::For { var: Var::R(1), from, to }]);
+    b.line(vec![K::EndFor]);
+    let got = codes_of(&b, &specs::fanuc());
+    assert_eq!(got, vec![(Code::CannotExpress, b.stmt_span(0, 0)), (Code::CannotExpress, b.stmt_span(1, 0))]);
+}
+
+#[test]
+fn named_cycle_and_oword_sub_into_fanuc_are_errors_and_no_text() {
+    let mut b = Builder::new("siemens840d");
+    let a = b.num("10");
+    let arg = Arg { value: Some(a), span: b.span() };
+    b.line(vec![K::CycleCall(CycleCall { name: "CYCLE81".into(), args: vec![arg], modal: true })]);
+    b.line(vec![K::SubStart { name: "100".into(), params: vec![], id: FlowId::OWord("100".into()) }]);
+    b.line(vec![mv(MotionKind::Linear, &[('X', "1")])]);
+    let got = codes_of(&b, &specs::fanuc());
+    assert_eq!(got, vec![(Code::CannotExpress, b.stmt_span(0, 0)), (Code::CannotExpress, b.stmt_span(1, 0))]);
+}
+
+#[test]
+fn raw_text_only_into_its_own_dialect() {
+    let mut b = Builder::new("fanuc");
+    b.line(vec![K::Raw { dialect: "fanuc".into(), text: "G05.1 Q1".into() }]);
+    assert_eq!(written(&b, &specs::fanuc()), "G05.1 Q1\n");
+    assert_eq!(codes_of(&b, &specs::haas()), vec![(Code::RawInForeignDialect, b.stmt_span(0, 0))]);
+}
+
+#[test]
+fn dwell_converts_exactly_or_says_why_not() {
+    let mut b = Builder::new("siemens840d");
+    b.line(vec![K::Dwell { value: n("1.5"), unit: DwellUnit::Seconds }]);
+    // Fanuc has X in seconds: kept as seconds, with its decimal point.
+    assert_eq!(written(&b, &specs::fanuc()), "G4 X1.5\n");
+    let mut ms = Builder::new("fanuc");
+    ms.line(vec![K::Dwell { value: n("250"), unit: DwellUnit::Milliseconds }]);
+    assert_eq!(written(&ms, &specs::fanuc()), "G4 P250\n");
+    assert_eq!(written(&ms, &specs::linuxcnc()), "G4 P0.25\n");
+    assert_eq!(written(&ms, &specs::siemens()), "G4 F0.25\n");
+    let mut fine = Builder::new("linuxcnc");
+    fine.line(vec![K::Dwell { value: n("0.0005"), unit: DwellUnit::Seconds }]);
+    let mut fanuc_ms_only = specs::fanuc();
+    fanuc_ms_only.codes.iter_mut().find(|c| c.meaning == crate::dialect::Meaning::Dwell).unwrap().dwell_units =
+        vec![('P', DwellUnit::Milliseconds)];
+    fanuc_ms_only.reindex();
+    assert_eq!(codes_of(&fine, &fanuc_ms_only), vec![(Code::InexactNumber, fine.stmt_span(0, 0))]);
+    let mut revs = Builder::new("siemens840d");
+    revs.line(vec![K::Dwell { value: n("3"), unit: DwellUnit::Revolutions }]);
+    assert_eq!(written(&revs, &specs::siemens()), "G4 S3\n");
+    assert_eq!(codes_of(&revs, &specs::fanuc()), vec![(Code::CannotExpress, revs.stmt_span(0, 0))]);
+}
+
+#[test]
+fn lengths_beyond_the_targets_places_are_errors() {
+    let mut b = Builder::new("siemens840d");
+    b.line(vec![mv(MotionKind::Linear, &[('X', "1.23456"), ('Y', "-0.000")])]);
+    assert_eq!(written(&b, &specs::siemens()), "G1 X1.23456 Y0\n");
+    assert_eq!(codes_of(&b, &specs::fanuc()).len(), 1);
+}
+
+#[test]
+fn comments_follow_the_targets_comment_syntax() {
+    let mut b = Builder::new("fanuc");
+    b.line(vec![mv(MotionKind::Rapid, &[('X', "1")]), K::Comment { text: " FAST ".into(), style: CommentStyle::Paren }]);
+    b.line(vec![K::Comment { text: "a(b)".into(), style: CommentStyle::Semicolon }]);
+    assert_eq!(written(&b, &specs::siemens()), "G0 X1 ; FAST \n;a(b)\n");
+    assert_eq!(written(&b, &specs::linuxcnc()), "G0 X1 ( FAST )\n;a(b)\n");
+    assert_eq!(codes_of(&b, &specs::fanuc()), vec![(Code::CannotExpress, b.stmt_span(1, 0))]);
+}
+
+#[test]
+fn expressions_keep_their_tree_with_few_brackets() {
+    use BinaryOp::*;
+    let mut b = Builder::new("fanuc");
+    let v1 = b.var(Var::Numbered(1));
+    let v2 = b.var(Var::Numbered(2));
+    let one = b.num("1");
+    let sum = b.bin(Add, v2, one);
+    let diff = b.bin(Sub, v1, sum); // #1-[#2+1]
+    let prod = b.bin(Mul, diff, v2); // [#1-[#2+1]]*#2
+    b.line(vec![K::Assign { var: Var::Numbered(3), value: prod }]);
+    assert_eq!(written(&b, &specs::fanuc()), "#3=[[#1-[#2+1]]*#2]\n");
+    let mut s = Builder::new("siemens840d");
+    let r1 = s.var(Var::R(1));
+    let five = s.num("5");
+    let r2 = s.var(Var::R(2));
+    let three = s.num("3");
+    let gt = s.bin(Gt, r1, five);
+    let lt = s.bin(Lt, r2, three);
+    let and = s.bin(And, gt, lt);
+    s.line(vec![K::Goto { target: JumpTarget::Label("L1".into()), dir: JumpDir::Forward, cond: Some(and) }]);
+    assert_eq!(written(&s, &specs::siemens()), "IF (R1>5) AND (R2<3) GOTOF L1\n");
+}
