@@ -239,3 +239,47 @@ fn name<T: std::fmt::Debug>(v: T) -> String {
 }
 
 mod stmts;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::emit::tests::{builder::*, programs};
+
+    #[test]
+    fn fanuc_program_as_text() {
+        insta::assert_snapshot!(print_program(&programs::fanuc().p));
+    }
+
+    #[test]
+    fn linuxcnc_program_as_text() {
+        insta::assert_snapshot!(print_program(&programs::linuxcnc().p));
+    }
+
+    #[test]
+    fn siemens_program_as_text() {
+        insta::assert_snapshot!(print_program(&programs::siemens().p));
+    }
+
+    #[test]
+    fn spans_on_request() {
+        let mut b = Builder::new("fanuc");
+        b.numbered(10, vec![mv(MotionKind::Linear, &[('X', "10"), ('Y', "2.5")]), StmtKind::Feed(n("100"))]);
+        b.line(vec![]);
+        let plain = print_program(&b.p);
+        assert_eq!(plain, "N10 motion linear X=10 Y=2.5 | feed 100\n(blank)\n");
+        let spanned = print_program_with(&b.p, PrintOptions { spans: true });
+        assert_eq!(spanned, "N10 @0..3 motion linear X=10 Y=2.5 @4..7 | feed 100 @8..11\n@16..19\n");
+    }
+
+    #[test]
+    fn expressions_bracket_by_precedence() {
+        use BinaryOp::*;
+        let mut b = Builder::new("fanuc");
+        let (a, c1, c2) = (b.var(Var::Numbered(1)), b.num("2"), b.num("3"));
+        let sum = b.bin(Add, c1, c2);
+        let prod = b.bin(Mul, a, sum);
+        let sub = b.bin(Sub, prod, a);
+        b.line(vec![StmtKind::Assign { var: Var::Named("x".into()), value: sub }]);
+        assert_eq!(print_program(&b.p), "assign #<x> = #1*(2+3)-#1\n");
+    }
+}

@@ -3,7 +3,7 @@
 
 pub mod builder;
 pub mod specs;
-mod programs;
+pub mod programs;
 
 use super::write_program;
 use crate::diag::Code;
