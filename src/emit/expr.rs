@@ -12,7 +12,10 @@ pub fn write_expr(w: &mut Writer<'_>, id: ExprId) -> Option<String> {
     let e = &w.prog.exprs[id];
     let span = e.span;
     match &e.kind {
-        ExprKind::Number(d) => Some(d.normalized().to_string()),
+        ExprKind::Number(d) => Some(match w.style {
+            Style::Bracket => d.normalized().to_string(),
+            Style::Sinumerik => d.format(0, false),
+        }),
         ExprKind::Str(s) => match w.style {
             Style::Sinumerik => Some(format!("\"{s}\"")),
             Style::Bracket => cannot(w, span, "a string value"),

@@ -68,5 +68,9 @@ fn block(w: &mut Writer<'_>, b: &Block) -> String {
     for (i, s) in b.stmts.iter().enumerate() {
         stmt::write_stmt(w, s, i + 1 == n, &mut words);
     }
+    if !w.trailing.is_empty() {
+        words.push(format!(";{}", w.trailing.join(" ")));
+        w.trailing.clear();
+    }
     words.join(" ")
 }

@@ -162,21 +162,19 @@ fn opt_word(w: &mut Writer<'_>, words: &mut Vec<String>, addr: &str, v: Option<&
     }
 }
 
+/// A comment in place as `( )` where the target has those (and the text
+/// allows), else as `;` text, which [`super::block`] moves to the block's end.
 fn comment(w: &mut Writer<'_>, text: &str, style: crate::ir::CommentStyle, span: crate::span::Span, last: bool, words: &mut Vec<String>) {
     use crate::dialect::Capability::{ParenComments, SemicolonComments};
     use crate::ir::CommentStyle;
     let paren_ok = w.spec.has(ParenComments) && !text.contains(')') && !text.contains('(');
-    let semi_ok = w.spec.has(SemicolonComments) && last;
-    let semi = match style {
-        CommentStyle::Semicolon => semi_ok || !paren_ok,
-        CommentStyle::Paren => !paren_ok,
-    };
-    if semi && semi_ok {
-        words.push(format!(";{text}"));
-    } else if !semi && paren_ok {
+    let semi = w.spec.has(SemicolonComments);
+    if paren_ok && (style == CommentStyle::Paren || !semi || !last) {
         words.push(format!("({text})"));
+    } else if semi {
+        w.trailing.push(text.to_string());
     } else {
-        w.cannot(span, "this comment here", "a `;` comment must end its block, and a `( )` comment cannot contain parentheses");
+        w.cannot(span, "a comment containing parentheses", "the target has only `( )` comments; remove the parentheses from the text");
     }
 }
 

@@ -23,11 +23,13 @@ pub struct Writer<'a> {
     pub diags: Vec<Diagnostic>,
     pub units: LengthUnit,
     pub style: Style,
+    /// `;` comment texts waiting for the end of the current block.
+    pub trailing: Vec<String>,
 }
 
 impl<'a> Writer<'a> {
     pub fn new(prog: &'a Program, spec: &'a DialectSpec, style: Style) -> Self {
-        Writer { spec, prog, diags: Vec::new(), units: LengthUnit::Mm, style }
+        Writer { spec, prog, diags: Vec::new(), units: LengthUnit::Mm, style, trailing: Vec::new() }
     }
 
     /// E0601: the target has no form for `what`.

@@ -121,8 +121,9 @@ fn comments_follow_the_targets_comment_syntax() {
     let mut b = Builder::new("fanuc");
     b.line(vec![mv(MotionKind::Rapid, &[('X', "1")]), K::Comment { text: " FAST ".into(), style: CommentStyle::Paren }]);
     b.line(vec![K::Comment { text: "a(b)".into(), style: CommentStyle::Semicolon }]);
-    assert_eq!(written(&b, &specs::siemens()), "G0 X1 ; FAST \n;a(b)\n");
-    assert_eq!(written(&b, &specs::linuxcnc()), "G0 X1 ( FAST )\n;a(b)\n");
+    b.line(vec![K::Comment { text: "A".into(), style: CommentStyle::Paren }, mv(MotionKind::Linear, &[('X', "2")]), K::Comment { text: "B".into(), style: CommentStyle::Semicolon }]);
+    assert_eq!(written(&b, &specs::siemens()), "G0 X1 ; FAST \n;a(b)\nG1 X2 ;A B\n");
+    assert_eq!(written(&b, &specs::linuxcnc()), "G0 X1 ( FAST )\n;a(b)\n(A) G1 X2 ;B\n");
     assert_eq!(codes_of(&b, &specs::fanuc()), vec![(Code::CannotExpress, b.stmt_span(1, 0))]);
 }
 
