@@ -38,9 +38,9 @@ fn motion_code(w: &mut Writer<'_>, kind: MotionKind, span: Span) -> Option<Strin
         MotionKind::Implicit => None,
         MotionKind::Other(code) => {
             if w.spec.code('G', code).is_some() {
-                Some(format!("G{}", code.normalized()))
+                Some(format!("G{}", code.format(0, false)))
             } else {
-                w.cannot(span, &format!("the motion code G{}", code.normalized()), "choose a target that has it");
+                w.cannot(span, &format!("the motion code G{}", code.format(0, false)), "choose a target that has it");
                 None
             }
         }

@@ -90,7 +90,7 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
         K::Dwell { value, unit } => motion::dwell(w, value, *unit, span, words),
         K::Stop(k) => w.push_code(words, Meaning::Stop(*k), span),
         K::Aux { letter, code, words: list } => {
-            words.push(format!("{letter}{}", code.normalized()));
+            words.push(format!("{letter}{}", code.format(0, false)));
             w.push_words(words, list);
         }
         K::Command { name, args } if bracket => {

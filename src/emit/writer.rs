@@ -61,7 +61,7 @@ impl<'a> Writer<'a> {
     /// The code the target writes for a meaning (`G1`), or E0601.
     pub fn code(&mut self, meaning: Meaning, span: Span) -> Option<String> {
         match self.spec.code_for(meaning) {
-            Some(c) => Some(format!("{}{}", c.letter, c.code.normalized())),
+            Some(c) => Some(format!("{}{}", c.letter, c.code.format(0, false))),
             None => {
                 let what = format!("`{}` (no code for it in the target's table)", meaning.name());
                 self.cannot(span, &what, "choose a target dialect that has this function, or remove it");

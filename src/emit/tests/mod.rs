@@ -150,3 +150,44 @@ fn expressions_keep_their_tree_with_few_brackets() {
     s.line(vec![K::Goto { target: JumpTarget::Label("L1".into()), dir: JumpDir::Forward, cond: Some(and) }]);
     assert_eq!(written(&s, &specs::siemens()), "IF (R1>5) AND (R2<3) GOTOF L1\n");
 }
+
+/// One short program written into every dialect (a row of the matrix).
+fn matrix_program() -> Builder {
+    let mut b = Builder::new("fanuc");
+    b.line(vec![K::Comment { text: "FACE".into(), style: CommentStyle::Paren }]);
+    b.numbered(10, vec![K::Units { unit: LengthUnit::Mm, with_feeds: false }, K::Distance(DimMode::Absolute), K::WorkOffset { index: 1, extended: None }]);
+    b.numbered(20, vec![K::ToolSelect(ToolRef::Number(n("3"))), K::ToolChange]);
+    b.numbered(30, vec![K::SpindleSpeed(n("2500")), K::Spindle(SpindleState::Cw), K::Coolant(Coolant::Flood)]);
+    b.numbered(40, vec![mv(MotionKind::Rapid, &[('X', "-5"), ('Y', "0"), ('Z', "2")])]);
+    b.numbered(50, vec![mv(MotionKind::Linear, &[('Z', "-0.5")]), K::Feed(n("300"))]);
+    b.numbered(60, vec![StmtKind::Motion(Motion {
+        target: axes(&[('X', "0"), ('Y', "5")]),
+        arc: ArcData { i: Some(c("5")), j: Some(c("0")), ..ArcData::default() },
+        ..Motion::new(MotionKind::Arc(ArcDir::Ccw))
+    })]);
+    b.numbered(70, vec![K::Dwell { value: n("0.5"), unit: DwellUnit::Seconds }]);
+    b.numbered(80, vec![K::Spindle(SpindleState::Stop), K::Coolant(Coolant::Off), K::Stop(StopKind::EndRewind)]);
+    b
+}
+
+#[test]
+fn one_program_in_every_dialect() {
+    let b = matrix_program();
+    let mut out = String::new();
+    for spec in [specs::fanuc(), specs::haas(), specs::linuxcnc(), specs::siemens()] {
+        out.push_str(&format!("== {}\n{}", spec.id, written(&b, &spec)));
+    }
+    insta::assert_snapshot!(out);
+}
+
+#[test]
+fn word_address_cycles_have_no_siemens_code() {
+    let b = programs::haas();
+    let ds = write_program(&b.p, &specs::siemens()).expect_err("cycles and M98 are not Siemens");
+    assert!(ds.iter().all(|d| d.is_error()));
+    let cycle_block = b.p.blocks.iter().position(|bl| bl.stmts.iter().any(|s| matches!(s.kind, K::Cycle(_)))).unwrap();
+    let cycle_stmt = b.p.blocks[cycle_block].stmts.iter().find(|s| matches!(s.kind, K::Cycle(_))).unwrap();
+    let hit = ds.iter().find(|d| d.span() == Some(cycle_stmt.span)).expect("the cycle is reported");
+    assert_eq!(hit.code, Code::CannotExpress);
+    assert!(hit.message.contains("Siemens 840D"), "{}", hit.message);
+}
