@@ -40,7 +40,7 @@ pub fn cycle(w: &mut Writer<'_>, c: &CannedCycle, span: Span, words: &mut Vec<St
     let parts = [
         ("R", &c.r, NumKind::Length),
         ("Q", &c.q, NumKind::Length),
-        ("P", &c.p, NumKind::Int),
+        ("P", &c.p, cycle_dwell_kind(w)),
         ("I", &c.i, NumKind::Length),
         ("J", &c.j, NumKind::Length),
         ("K", &c.k, NumKind::Length),
@@ -53,6 +53,17 @@ pub fn cycle(w: &mut Writer<'_>, c: &CannedCycle, span: Span, words: &mut Vec<St
     if let Some(v) = &c.repeat {
         let letter = w.spec.repeat_letter.to_string();
         w.push_word(words, &letter, v, NumKind::Int, span);
+    }
+}
+
+/// A cycle's `P` dwell is whole milliseconds where the target's dwell code
+/// reads `P` as milliseconds (Fanuc), otherwise a plain number (LinuxCNC
+/// seconds). The IR does not record the unit of a cycle's P.
+fn cycle_dwell_kind(w: &Writer<'_>) -> NumKind {
+    let p_unit = w.spec.code_for(Meaning::Dwell).and_then(|c| c.dwell_units.iter().find(|(l, _)| *l == 'P').map(|(_, u)| *u));
+    match p_unit {
+        Some(crate::ir::DwellUnit::Milliseconds) => NumKind::Int,
+        Some(crate::ir::DwellUnit::Seconds | crate::ir::DwellUnit::Revolutions) | None => NumKind::Plain,
     }
 }
 

@@ -191,3 +191,48 @@ fn word_address_cycles_have_no_siemens_code() {
     assert_eq!(hit.code, Code::CannotExpress);
     assert!(hit.message.contains("Siemens 840D"), "{}", hit.message);
 }
+
+#[test]
+fn cycle_dwell_is_whole_ms_only_where_p_means_ms() {
+    let mut b = Builder::new("linuxcnc");
+    b.line(vec![K::Cycle(CannedCycle {
+        kind: CycleKind::DrillDwell,
+        target: axes(&[('Z', "-1")]),
+        r: Some(n("1")),
+        q: None,
+        p: Some(n("0.5")),
+        repeat: None,
+        i: None,
+        j: None,
+        k: None,
+    })]);
+    assert_eq!(written(&b, &specs::linuxcnc()), "G82 Z-1 R1 P0.5\n");
+    assert_eq!(codes_of(&b, &specs::fanuc()), vec![(Code::InexactNumber, b.stmt_span(0, 0))]);
+}
+
+#[test]
+fn siemens_only_constructs_into_fanuc_each_name_their_statement() {
+    let mut b = Builder::new("siemens840d");
+    b.labelled("START", vec![]);
+    b.line(vec![K::Goto { target: JumpTarget::Label("START".into()), dir: JumpDir::Backward, cond: None }]);
+    b.line(vec![K::Message(Some("HELLO".into()))]);
+    b.line(vec![K::Call { kind: CallKind::Named, target: CallTarget::Name("POCKET".into()), args: CallArgs::None, repeat: None }]);
+    b.line(vec![K::Transform(Transform::Frame { op: FrameOp::Rot, additive: false, axes: axes(&[('Z', "45")]), rpl: None })]);
+    b.line(vec![K::ToolSelect(ToolRef::Name("DRILL".into()))]);
+    let ds = write_program(&b.p, &specs::fanuc()).expect_err("none of these is Fanuc");
+    assert!(ds.iter().all(|d| d.code == Code::CannotExpress));
+    let label_span = b.p.blocks[0].label.as_ref().unwrap().span;
+    let mut want = vec![label_span];
+    want.extend((1..=5).map(|i| b.stmt_span(i, 0)));
+    let got: Vec<_> = ds.iter().map(|d| d.span().unwrap()).collect();
+    assert_eq!(got, want);
+    assert!(ds.iter().all(|d| d.help.is_some()));
+}
+
+#[test]
+fn siemens_program_start_forms() {
+    let mut b = Builder::new("siemens840d");
+    b.line(vec![K::ProgramStart { number: None, name: Some("SUB1_SPF".into()) }]);
+    b.line(vec![K::ProgramStart { number: Some(1234), name: None }]);
+    assert_eq!(written(&b, &specs::siemens()), "%_N_SUB1_SPF\n%_N_O1234_MPF\n");
+}
