@@ -160,6 +160,9 @@ codes! {
     RawInForeignDialect = "E0602", "raw-in-foreign-dialect", Error,
         "text kept verbatim from one dialect written into another",
         "cncc kept this text as written because it did not understand it. It can be written back only into the dialect it came from.";
+    InexactNumber = "E0603", "inexact-number", Error,
+        "a number the target dialect cannot write exactly",
+        "The value has more decimal places than the target writes (its least input increment), or a conversion (such as a dwell from seconds to whole milliseconds) would not be exact. cncc never rounds silently: round the value in the source, or choose a target spec with more places.";
     LengthWithoutPoint = "W0001", "length-without-decimal-point", Warning,
         "a length written without a decimal point",
         "With the decimal-point rule of this dialect (Fanuc parameter 3401#0 = 0), `X10` means 10 least input increments (0.010 mm or 0.0010 in), not 10 mm. Write `X10.` if whole units are meant. Load a spec with `integer-lengths=\"units\"` for a control set to calculator-type input.";

@@ -80,6 +80,8 @@ pub enum Capability {
     /// Arithmetic allowed after a word without brackets (`X#1/2`), as some
     /// Fanuc-like controls accept.
     UnbracketedExpressions,
+    /// LinuxCNC active comments `(MSG, text)` for operator messages.
+    MessageComments,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -102,6 +104,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("frames", Capability::Frames),
     ("g-code-transforms", Capability::GCodeTransforms),
     ("unbracketed-expressions", Capability::UnbracketedExpressions),
+    ("message-comments", Capability::MessageComments),
 ];
 
 impl Capability {

@@ -9,6 +9,7 @@
 pub mod arena;
 pub mod expr;
 pub mod num;
+pub mod print;
 pub mod program;
 pub mod stmt;
 

@@ -1,0 +1,165 @@
+//! The state one run of a writer carries: the target spec, the program, the
+//! diagnostics so far and the units in force (which decide how many decimal
+//! places a length may have), with helpers for the words every family writes.
+
+use super::number::{format_number, NumKind};
+use crate::diag::{Code, Diagnostic};
+use crate::dialect::{DialectSpec, Meaning};
+use crate::ir::{Axes, Coord, DimMode, ExprId, ExprKind, LengthUnit, Program, Value, Word};
+use crate::span::Span;
+
+/// How expressions and addressed values are spelled.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Style {
+    /// `X[#1+2]`, `#<name>`, `SIN[#1]`.
+    Bracket,
+    /// `X=R1+2`, `SIN(R1)`, `X=AC(5)`.
+    Sinumerik,
+}
+
+pub struct Writer<'a> {
+    pub spec: &'a DialectSpec,
+    pub prog: &'a Program,
+    pub diags: Vec<Diagnostic>,
+    pub units: LengthUnit,
+    pub style: Style,
+    /// `;` comment texts waiting for the end of the current block.
+    pub trailing: Vec<String>,
+}
+
+impl<'a> Writer<'a> {
+    pub fn new(prog: &'a Program, spec: &'a DialectSpec, style: Style) -> Self {
+        Writer { spec, prog, diags: Vec::new(), units: LengthUnit::Mm, style, trailing: Vec::new() }
+    }
+
+    /// E0601: the target has no form for `what`.
+    pub fn cannot(&mut self, span: Span, what: &str, help: &str) {
+        let d = Diagnostic::new(Code::CannotExpress, format!("{} cannot express {what}", self.spec.name))
+            .primary(span, format!("{what} written here"))
+            .help(help.to_string());
+        self.diags.push(d);
+    }
+
+    /// E0603: a number the target cannot write exactly.
+    pub fn inexact(&mut self, span: Span, why: String) {
+        let d = Diagnostic::new(Code::InexactNumber, format!("{} cannot write this number exactly", self.spec.name))
+            .primary(span, why)
+            .help("round the value in the source program to the target's precision, or choose a spec with more decimal places");
+        self.diags.push(d);
+    }
+
+    pub fn num(&mut self, d: crate::ir::Decimal, kind: NumKind, span: Span) -> Option<String> {
+        match format_number(d, kind, &self.spec.numbers, self.units) {
+            Ok(s) => Some(s),
+            Err(why) => {
+                self.inexact(span, why);
+                None
+            }
+        }
+    }
+
+    /// The code the target writes for a meaning (`G1`), or E0601.
+    pub fn code(&mut self, meaning: Meaning, span: Span) -> Option<String> {
+        match self.spec.code_for(meaning) {
+            Some(c) => Some(format!("{}{}", c.letter, c.code.format(0, false))),
+            None => {
+                let what = format!("`{}` (no code for it in the target's table)", meaning.name());
+                self.cannot(span, &what, "choose a target dialect that has this function, or remove it");
+                None
+            }
+        }
+    }
+
+    /// Pushes the code for `meaning` onto `words`, if the target has one.
+    pub fn push_code(&mut self, words: &mut Vec<String>, meaning: Meaning, span: Span) {
+        if let Some(c) = self.code(meaning, span) {
+            words.push(c);
+        }
+    }
+
+    /// An expression in the target's syntax.
+    pub fn expr(&mut self, id: ExprId) -> Option<String> {
+        super::expr::write_expr(self, id)
+    }
+
+    /// True when an expression can follow an address letter without brackets.
+    fn atomic(&self, id: ExprId) -> bool {
+        match &self.prog.exprs[id].kind {
+            ExprKind::Number(_) | ExprKind::Var(_) => true,
+            ExprKind::Unary(crate::ir::UnaryOp::Neg, inner) => {
+                matches!(self.prog.exprs[*inner].kind, ExprKind::Var(_))
+            }
+            _ => false,
+        }
+    }
+
+    /// A whole addressed word: `X10.`, `X[#1+2]`, `CR=5`, `X=R1*2`.
+    pub fn word(&mut self, addr: &str, v: &Value, kind: NumKind, span: Span) -> Option<String> {
+        let long = addr.chars().count() > 1;
+        match (v, self.style) {
+            (Value::Number(d), Style::Bracket) => Some(format!("{addr}{}", self.num(*d, kind, span)?)),
+            (Value::Number(d), Style::Sinumerik) => {
+                let n = self.num(*d, kind, span)?;
+                Some(if long { format!("{addr}={n}") } else { format!("{addr}{n}") })
+            }
+            (Value::Expr(id), Style::Bracket) => {
+                let e = self.expr(*id)?;
+                Some(if self.atomic(*id) { format!("{addr}{e}") } else { format!("{addr}[{e}]") })
+            }
+            (Value::Expr(id), Style::Sinumerik) => Some(format!("{addr}={}", self.expr(*id)?)),
+        }
+    }
+
+    pub fn push_word(&mut self, words: &mut Vec<String>, addr: &str, v: &Value, kind: NumKind, span: Span) {
+        if let Some(w) = self.word(addr, v, kind, span) {
+            words.push(w);
+        }
+    }
+
+    /// A coordinate, with Siemens `AC()`/`IC()` where it was written.
+    pub fn coord(&mut self, addr: &str, c: &Coord, kind: NumKind) -> Option<String> {
+        let Some(dim) = c.dim else { return self.word(addr, &c.value, kind, c.span) };
+        if self.style != Style::Sinumerik {
+            self.cannot(c.span, "a per-value AC()/IC() dimension", "use G90/G91 around the block instead");
+            return None;
+        }
+        let inner = match &c.value {
+            Value::Number(d) => self.num(*d, kind, c.span)?,
+            Value::Expr(id) => self.expr(*id)?,
+        };
+        let f = match dim {
+            DimMode::Absolute => "AC",
+            DimMode::Incremental => "IC",
+        };
+        Some(format!("{addr}={f}({inner})"))
+    }
+
+    /// The axis words X Y Z A B C U V W that are given.
+    pub fn push_axes(&mut self, words: &mut Vec<String>, axes: &Axes) {
+        for (letter, c) in axes.iter() {
+            if let Some(w) = self.coord(&letter.to_string(), c, NumKind::Length) {
+                words.push(w);
+            }
+        }
+    }
+
+    /// Kept letter-value words, lengths by the target's address table.
+    pub fn push_words(&mut self, words: &mut Vec<String>, list: &[Word]) {
+        for w in list {
+            let kind = if self.spec.is_length_address(w.letter) { NumKind::Length } else { NumKind::Plain };
+            self.push_word(words, &w.letter.to_string(), &w.value, kind, w.span);
+        }
+    }
+}
+
+impl Writer<'_> {
+    /// True if the target has `cap`; otherwise E0601 naming `what`.
+    pub fn need(&mut self, cap: crate::dialect::Capability, span: Span, what: &str) -> bool {
+        if self.spec.has(cap) {
+            return true;
+        }
+        let help = format!("the target lacks the `{}` capability", cap.name());
+        self.cannot(span, what, &help);
+        false
+    }
+}
