@@ -120,3 +120,11 @@ impl Interp<'_, '_> {
         }
     }
 }
+
+/// A closing `%`: LinuxCNC ends with FINISH instead of PROGRAM_END.
+pub fn finish_sequence(it: &mut Interp<'_, '_>) {
+    it.emit(Canon::Finish);
+    it.emit(Canon::OnReset);
+    it.emit(Canon::OnReset);
+    it.ended = true;
+}

@@ -1,0 +1,638 @@
+//! The program walker: runs blocks one after another and follows control
+//! flow (jumps, IF/WHILE/FOR/REPEAT/LOOP, o-words, subprogram and macro
+//! calls, Siemens section repeats), with every loop and call bounded.
+
+use super::index::FlowIndex;
+use super::{Interp, Stop};
+use crate::diag::{Code, Diagnostic};
+use crate::ir::{
+    Arena, CallArgs, CallKind, CallTarget, Expr, ExprId, JumpDir, JumpTarget, Program, Stmt, StmtKind, Value, Var,
+};
+use std::collections::HashMap;
+
+/// Finds programs that a call names but this file does not hold
+/// (`o<name> call` → `name.ngc`, `M98 P1000` → `O1000.nc` beside it).
+pub trait ProgramLoader {
+    fn load(&mut self, target: &CallTarget) -> Option<std::rc::Rc<Program>>;
+}
+
+/// No other files.
+pub struct NoLoader;
+
+impl ProgramLoader for NoLoader {
+    fn load(&mut self, _: &CallTarget) -> Option<std::rc::Rc<Program>> {
+        None
+    }
+}
+
+/// A place to return to.
+struct Frame {
+    prog: usize,
+    ret: usize,
+    /// Numbered locals saved at the call (restored on return).
+    saved: Vec<(u32, Option<f64>)>,
+    new_scope: bool,
+    /// For a section repeat: the block that ends the section and the passes left.
+    section: Option<(usize, u64)>,
+}
+
+struct Loaded {
+    program: std::rc::Rc<Program>,
+    index: FlowIndex,
+}
+
+/// Walks programs; program 0 is the main one.
+pub struct Walker<'l> {
+    progs: Vec<Loaded>,
+    loader: &'l mut dyn ProgramLoader,
+    frames: Vec<Frame>,
+    loop_counts: HashMap<(usize, usize), u64>,
+    repeat_left: HashMap<(usize, usize), u64>,
+    blocks_run: u64,
+    started_with_percent: bool,
+}
+
+/// What a block asks the walker to do next.
+enum Next {
+    Step,
+    Jump(usize),
+    /// Enter a branch (If/ElseIf/Else/EndIf) by a jump.
+    Enter(usize),
+    Call { prog: usize, at: usize, frame: Frame },
+    Return,
+    End,
+}
+
+impl<'l> Walker<'l> {
+    pub fn new(main: std::rc::Rc<Program>, loader: &'l mut dyn ProgramLoader) -> Self {
+        let index = FlowIndex::build(&main);
+        Walker {
+            progs: vec![Loaded { program: main, index }],
+            loader,
+            frames: Vec::new(),
+            loop_counts: HashMap::new(),
+            repeat_left: HashMap::new(),
+            blocks_run: 0,
+            started_with_percent: false,
+        }
+    }
+
+    /// Runs the main program to its end or first error.
+    pub fn run(&mut self, it: &mut Interp<'_, '_>) -> Result<(), Stop> {
+        let (mut prog, mut pc) = (0usize, 0usize);
+        let mut entered = false;
+        loop {
+            let program = self.progs[prog].program.clone();
+            let Some(block) = program.blocks.get(pc) else {
+                if self.frames.is_empty() || prog == 0 {
+                    return Ok(());
+                }
+                (prog, pc) = self.pop_frame(it);
+                continue;
+            };
+            self.count_block(it, block.span)?;
+            if block.skip.is_some() && it.opts.block_delete {
+                pc += 1;
+                continue;
+            }
+            let next = self.block(it, prog, pc, entered)?;
+            entered = false;
+            match next {
+                Next::Step => pc += 1,
+                Next::Jump(to) => pc = to,
+                Next::Enter(to) => {
+                    pc = to;
+                    entered = true;
+                }
+                Next::Call { prog: p, at, frame } => {
+                    if self.frames.len() as u32 >= it.opts.limits.call_depth {
+                        return Err(limit(it, "call nesting deeper than the limit"));
+                    }
+                    self.frames.push(frame);
+                    (prog, pc) = (p, at);
+                }
+                Next::Return => {
+                    if self.frames.is_empty() {
+                        return Ok(());
+                    }
+                    (prog, pc) = self.pop_frame(it);
+                }
+                Next::End => return Err(Stop::End),
+            }
+        }
+    }
+
+    fn count_block(&mut self, it: &Interp<'_, '_>, span: crate::span::Span) -> Result<(), Stop> {
+        self.blocks_run += 1;
+        if self.blocks_run > it.opts.limits.blocks {
+            return Err(Stop::Error(
+                Diagnostic::new(Code::LimitExceeded, "more blocks run than the limit").primary(span, "here"),
+            ));
+        }
+        Ok(())
+    }
+
+    fn pop_frame(&mut self, it: &mut Interp<'_, '_>) -> (usize, usize) {
+        let f = self.frames.pop().expect("frame");
+        for (n, v) in f.saved {
+            it.params.set_numbered(n, v);
+        }
+        if f.new_scope {
+            it.params.pop_scope();
+        }
+        (f.prog, f.ret)
+    }
+
+    /// Runs one block: machine statements first (in Table 8 order), then
+    /// assignments, then control flow.
+    fn block(&mut self, it: &mut Interp<'_, '_>, prog: usize, pc: usize, entered: bool) -> Result<Next, Stop> {
+        let program = self.progs[prog].program.clone();
+        let block = &program.blocks[pc];
+        let exprs = &program.exprs;
+        // A sub definition met in sequence is skipped, not run.
+        if let Some(s) = block.stmts.iter().find(|s| matches!(s.kind, StmtKind::SubStart { .. })) {
+            it.span = s.span;
+            return Ok(match self.progs[prog].index.partner.get(&pc) {
+                Some(&end) => Next::Jump(end + 1),
+                None => Next::Step,
+            });
+        }
+        if let Some(n) = self.section_end(prog, pc) {
+            return Ok(n);
+        }
+        it.block(block, exprs)?;
+        self.assignments(it, &block.stmts, exprs)?;
+        for s in &block.stmts {
+            it.span = s.span;
+            if let Some(n) = self.control(it, prog, pc, s, exprs, entered)? {
+                return Ok(n);
+            }
+        }
+        Ok(if it.ended { Next::End } else { Next::Step })
+    }
+
+    /// Evaluates every assignment's value first, then sets them all.
+    fn assignments(&mut self, it: &mut Interp<'_, '_>, stmts: &[Stmt], exprs: &Arena<Expr>) -> Result<(), Stop> {
+        let mut sets = Vec::new();
+        for s in stmts {
+            if let StmtKind::Assign { var, value } = &s.kind {
+                it.span = s.span;
+                sets.push((var, it.eval(*value, exprs)?, s.span));
+            }
+        }
+        for (var, v, span) in sets {
+            it.span = span;
+            assign(it, var, v, exprs)?;
+        }
+        Ok(())
+    }
+
+    /// A section repeat that reached the end of its section.
+    fn section_end(&mut self, prog: usize, pc: usize) -> Option<Next> {
+        let f = self.frames.last_mut()?;
+        let (end, left) = f.section?;
+        if f.prog != prog || pc != end + 1 {
+            return None;
+        }
+        let _ = left;
+        None
+    }
+
+    fn control(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        prog: usize,
+        pc: usize,
+        s: &Stmt,
+        exprs: &Arena<Expr>,
+        entered: bool,
+    ) -> Result<Option<Next>, Stop> {
+        use StmtKind::*;
+        let ix = &self.progs[prog].index;
+        let after = |i: Option<&usize>| i.map(|&e| Next::Jump(e + 1));
+        Ok(match &s.kind {
+            Goto { target, dir, cond } => {
+                if let Some(c) = cond {
+                    if !truth(it.eval(*c, exprs)?) {
+                        return Ok(None);
+                    }
+                }
+                Some(self.jump(it, prog, pc, target, *dir, exprs)?)
+            }
+            IfThen { cond, then } => {
+                if truth(it.eval(*cond, exprs)?) {
+                    if let Assign { var, value } = &then.kind {
+                        let v = it.eval(*value, exprs)?;
+                        assign(it, var, v, exprs)?;
+                    } else {
+                        return Ok(Some(self.control(it, prog, pc, then, exprs, false)?.unwrap_or(Next::Step)));
+                    }
+                }
+                None
+            }
+            If { cond, .. } => {
+                if truth(it.eval(*cond, exprs)?) {
+                    None
+                } else {
+                    ix.next_branch.get(&pc).map(|&b| Next::Enter(b))
+                }
+            }
+            ElseIf { cond, .. } => {
+                if !entered {
+                    after(ix.partner.get(&end_of_if(ix, pc)))
+                        .or_else(|| Some(Next::Jump(end_of_if(ix, pc) + 1)))
+                } else if truth(it.eval(*cond, exprs)?) {
+                    None
+                } else {
+                    ix.next_branch.get(&pc).map(|&b| Next::Enter(b))
+                }
+            }
+            Else { .. } => (!entered).then(|| Next::Jump(end_of_if(ix, pc) + 1)),
+            EndIf { .. } | Do { .. } | RepeatUntil | Loop => None,
+            While { cond, .. } => {
+                if truth(it.eval(*cond, exprs)?) {
+                    self.count_loop(it, prog, pc)?;
+                    None
+                } else {
+                    after(ix.partner.get(&pc))
+                }
+            }
+            EndWhile { .. } => ix.partner.get(&pc).map(|&o| Next::Jump(o)),
+            DoWhile { cond, .. } => {
+                if truth(it.eval(*cond, exprs)?) {
+                    self.count_loop(it, prog, pc)?;
+                    ix.partner.get(&pc).map(|&o| Next::Jump(o + 1))
+                } else {
+                    None
+                }
+            }
+            Until { cond } => {
+                if truth(it.eval(*cond, exprs)?) {
+                    None
+                } else {
+                    self.count_loop(it, prog, pc)?;
+                    ix.partner.get(&pc).map(|&o| Next::Jump(o + 1))
+                }
+            }
+            EndLoop => {
+                self.count_loop(it, prog, pc)?;
+                ix.partner.get(&pc).map(|&o| Next::Jump(o + 1))
+            }
+            Repeat { count, .. } => {
+                let n = it.eval(*count, exprs)?.unwrap_or(0.0).round().max(0.0) as u64;
+                if n == 0 {
+                    after(ix.partner.get(&pc))
+                } else {
+                    self.repeat_left.insert((prog, pc), n);
+                    None
+                }
+            }
+            EndRepeat { .. } => {
+                let Some(&o) = ix.partner.get(&pc) else { return Ok(None) };
+                let left = self.repeat_left.get(&(prog, o)).copied().unwrap_or(1).saturating_sub(1);
+                self.repeat_left.insert((prog, o), left);
+                if left > 0 {
+                    self.count_loop(it, prog, o)?;
+                    Some(Next::Jump(o + 1))
+                } else {
+                    None
+                }
+            }
+            For { var, from, to } => {
+                let from = it.eval(*from, exprs)?.unwrap_or(0.0);
+                let to_v = it.eval(*to, exprs)?.unwrap_or(0.0);
+                assign(it, var, Some(from), exprs)?;
+                if from > to_v {
+                    after(ix.partner.get(&pc))
+                } else {
+                    None
+                }
+            }
+            EndFor => {
+                let Some(&o) = ix.partner.get(&pc) else { return Ok(None) };
+                let p = self.progs[prog].program.clone();
+                let Some(StmtKind::For { var, to, .. }) =
+                    p.blocks[o].stmts.iter().map(|s| &s.kind).find(|k| matches!(k, StmtKind::For { .. }))
+                else {
+                    return Ok(None);
+                };
+                let v = read_var(it, var, exprs)? + 1.0;
+                assign(it, var, Some(v), exprs)?;
+                if v <= it.eval(*to, exprs)?.unwrap_or(0.0) {
+                    self.count_loop(it, prog, o)?;
+                    Some(Next::Jump(o + 1))
+                } else {
+                    None
+                }
+            }
+            Break { .. } => ix.loop_of.get(&pc).and_then(|o| ix.partner.get(o)).map(|&e| Next::Jump(e + 1)),
+            Continue { .. } => ix.loop_of.get(&pc).and_then(|o| ix.partner.get(o)).map(|&e| Next::Jump(e)),
+            Case { selector, arms, default } => {
+                let v = it.eval(*selector, exprs)?.unwrap_or(0.0);
+                let mut chosen = None;
+                for arm in arms {
+                    if it.eval(arm.value, exprs)?.unwrap_or(0.0) == v {
+                        chosen = Some((arm.target.clone(), arm.dir));
+                        break;
+                    }
+                }
+                match chosen.or_else(|| default.clone()) {
+                    Some((label, dir)) => Some(self.jump(it, prog, pc, &JumpTarget::Label(label), dir, exprs)?),
+                    None => None,
+                }
+            }
+            SubEnd { value, .. } | Return { value, .. } => {
+                if let Some(v) = value {
+                    let v = it.eval(*v, exprs)?.unwrap_or(0.0);
+                    it.params.set_named("_value", v);
+                }
+                Some(Next::Return)
+            }
+            SubReturn { to } => Some(self.sub_return(it, to.as_ref(), exprs)?),
+            Call { kind, target, args, repeat } => Some(self.call(it, prog, pc, *kind, target, args, repeat.as_ref(), exprs)?),
+            SectionRepeat { .. } => {
+                return Err(it.error_at(s.span, Code::UnsupportedHere, "section repeat is not run by the interpreter yet"))
+            }
+            Tape => {
+                if pc == first_content_block(&self.progs[prog].program) && prog == 0 {
+                    self.started_with_percent = true;
+                    None
+                } else if self.started_with_percent && prog == 0 {
+                    super::machine::finish_sequence(it);
+                    Some(Next::End)
+                } else {
+                    None
+                }
+            }
+            _ => None,
+        })
+    }
+
+    fn count_loop(&mut self, it: &Interp<'_, '_>, prog: usize, at: usize) -> Result<(), Stop> {
+        let c = self.loop_counts.entry((prog, at)).or_insert(0);
+        *c += 1;
+        if *c > it.opts.limits.loop_iterations {
+            return Err(limit(it, "a loop ran more times than the limit"));
+        }
+        Ok(())
+    }
+
+    fn jump(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        prog: usize,
+        pc: usize,
+        target: &JumpTarget,
+        dir: JumpDir,
+        exprs: &Arena<Expr>,
+    ) -> Result<Next, Stop> {
+        let ix = &self.progs[prog].index;
+        let found = match target {
+            JumpTarget::Sequence(v) => {
+                let n = it.value(v, exprs)?.round() as u32;
+                let list = ix.seq.get(&n).cloned().unwrap_or_default();
+                pick(&list, pc, dir)
+            }
+            JumpTarget::Label(l) => {
+                let key = l.to_ascii_uppercase();
+                ix.labels.get(&key).copied().filter(|&i| match dir {
+                    JumpDir::Forward => i > pc,
+                    JumpDir::Backward => i <= pc,
+                    _ => true,
+                })
+            }
+        };
+        match found {
+            Some(i) => {
+                if i <= pc {
+                    self.count_loop(it, prog, pc)?;
+                }
+                Ok(Next::Jump(i))
+            }
+            None if dir == JumpDir::EitherNoAlarm => Ok(Next::Step),
+            None => Err(it.error_at(it.span, Code::JumpTargetMissing, "jump target not found")),
+        }
+    }
+
+    fn sub_return(&mut self, it: &mut Interp<'_, '_>, to: Option<&Value>, exprs: &Arena<Expr>) -> Result<Next, Stop> {
+        if self.frames.is_empty() {
+            // M99 in a main program: start again from the top (bounded).
+            self.count_loop(it, 0, 0)?;
+            return Ok(Next::Jump(0));
+        }
+        match to {
+            None => Ok(Next::Return),
+            Some(v) => {
+                let n = it.value(v, exprs)?.round() as u32;
+                let (prog, _) = {
+                    let f = self.frames.last().expect("frame");
+                    (f.prog, f.ret)
+                };
+                let (p, _) = self.pop_frame(it);
+                let at = self.progs[p].index.seq.get(&n).and_then(|l| l.first().copied());
+                let _ = prog;
+                match at {
+                    Some(i) => Ok(Next::Jump(i)),
+                    None => Err(it.error_at(it.span, Code::JumpTargetMissing, format!("M99 P{n}: no block N{n}"))),
+                }
+            }
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn call(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        prog: usize,
+        pc: usize,
+        kind: CallKind,
+        target: &CallTarget,
+        args: &CallArgs,
+        repeat: Option<&Value>,
+        exprs: &Arena<Expr>,
+    ) -> Result<Next, Stop> {
+        if repeat.is_some() {
+            let n = it.value(repeat.unwrap(), exprs)?;
+            if n.round() != 1.0 {
+                return Err(it.error_at(it.span, Code::UnsupportedHere, "repeated subprogram calls are not run yet"));
+            }
+        }
+        let target = match target {
+            CallTarget::Computed(e) => CallTarget::Number(it.eval(*e, exprs)?.unwrap_or(0.0).round() as u32),
+            t => t.clone(),
+        };
+        let (to_prog, at) = match self.find(prog, &target, kind) {
+            Some(x) => x,
+            None => {
+                return Err(it.error_at(
+                    it.span,
+                    Code::JumpTargetMissing,
+                    format!("subprogram {} not found in this file or beside it", target_name(&target)),
+                ))
+            }
+        };
+        let mut frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: None };
+        let values = self.arg_values(it, args, exprs)?;
+        if matches!(kind, CallKind::OWord | CallKind::Macro | CallKind::ModalMacro | CallKind::Named) {
+            frame.new_scope = true;
+            let locals = if kind == CallKind::OWord { 30 } else { 33 };
+            for n in 1..=locals {
+                frame.saved.push((n, it.params.numbered(n)));
+                it.params.set_numbered(n, None);
+            }
+            it.params.push_scope();
+            for (n, v) in values {
+                it.params.set_numbered(n, v);
+            }
+        }
+        Ok(Next::Call { prog: to_prog, at, frame })
+    }
+
+    /// The values a call passes: o-word `[a] [b]` → #1, #2; G65 letters by
+    /// Fanuc's argument specification I.
+    fn arg_values(&mut self, it: &mut Interp<'_, '_>, args: &CallArgs, exprs: &Arena<Expr>) -> Result<Vec<(u32, Option<f64>)>, Stop> {
+        let mut out = Vec::new();
+        match args {
+            CallArgs::None => {}
+            CallArgs::Positional(list) => {
+                for (i, a) in list.iter().enumerate() {
+                    let v = match a {
+                        Some(e) => it.eval(*e, exprs)?,
+                        None => None,
+                    };
+                    out.push((i as u32 + 1, v));
+                }
+            }
+            CallArgs::Letters(list) => {
+                for (letter, v) in list {
+                    if let Some(n) = fanuc_argument(*letter) {
+                        out.push((n, it.value_or_vacant(v, exprs)?));
+                    }
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// The program and the first block a call runs.
+    fn find(&mut self, prog: usize, target: &CallTarget, _kind: CallKind) -> Option<(usize, usize)> {
+        for p in std::iter::once(prog).chain(0..self.progs.len()) {
+            if let Some(i) = self.progs[p].index.call_target(target) {
+                return Some((p, i + 1));
+            }
+        }
+        let program = self.loader.load(target)?;
+        let index = FlowIndex::build(&program);
+        // A file holding the sub's definition starts after it; a bare
+        // program file starts at its first block.
+        let start = index.call_target(target).map(|i| i + 1).unwrap_or(0);
+        self.progs.push(Loaded { program, index });
+        Some((self.progs.len() - 1, start))
+    }
+}
+
+fn target_name(t: &CallTarget) -> String {
+    match t {
+        CallTarget::Number(n) => n.to_string(),
+        CallTarget::Name(s) => s.clone(),
+        CallTarget::Computed(_) => "(computed)".into(),
+    }
+}
+
+fn limit(it: &Interp<'_, '_>, msg: &str) -> Stop {
+    Stop::Error(
+        Diagnostic::new(Code::LimitExceeded, msg)
+            .primary(it.span, "here")
+            .help("the program probably loops forever; raise the limit if it is right"),
+    )
+}
+
+fn truth(v: Option<f64>) -> bool {
+    v.unwrap_or(0.0) != 0.0
+}
+
+fn end_of_if(ix: &FlowIndex, mut pc: usize) -> usize {
+    // Follow the branch chain to the EndIf.
+    let mut guard = 0;
+    while let Some(&n) = ix.next_branch.get(&pc) {
+        pc = n;
+        guard += 1;
+        if guard > 10_000 {
+            break;
+        }
+    }
+    pc
+}
+
+/// The block a sequence-number jump goes to: Fanuc searches forward from
+/// the jump, then from the top.
+fn pick(list: &[usize], pc: usize, dir: JumpDir) -> Option<usize> {
+    let fwd = list.iter().copied().find(|&i| i > pc);
+    let back = list.iter().copied().rev().find(|&i| i <= pc);
+    match dir {
+        JumpDir::Forward => fwd,
+        JumpDir::Backward => back,
+        JumpDir::Either | JumpDir::EitherNoAlarm => fwd.or_else(|| list.first().copied()),
+    }
+}
+
+fn first_content_block(p: &Program) -> usize {
+    p.blocks.iter().position(|b| !b.stmts.is_empty()).unwrap_or(0)
+}
+
+/// Fanuc G65 argument specification I: letter → local variable number.
+pub fn fanuc_argument(letter: char) -> Option<u32> {
+    Some(match letter.to_ascii_uppercase() {
+        'A' => 1,
+        'B' => 2,
+        'C' => 3,
+        'I' => 4,
+        'J' => 5,
+        'K' => 6,
+        'D' => 7,
+        'E' => 8,
+        'F' => 9,
+        'H' => 11,
+        'M' => 13,
+        'Q' => 17,
+        'R' => 18,
+        'S' => 19,
+        'T' => 20,
+        'U' => 21,
+        'V' => 22,
+        'W' => 23,
+        'X' => 24,
+        'Y' => 25,
+        'Z' => 26,
+        _ => return None,
+    })
+}
+
+fn read_var(it: &mut Interp<'_, '_>, var: &Var, exprs: &Arena<Expr>) -> Result<f64, Stop> {
+    let id_free = Expr { kind: crate::ir::ExprKind::Var(var.clone()), span: it.span };
+    let mut tmp = exprs.clone();
+    let id: ExprId = tmp.alloc(id_free);
+    Ok(it.eval(id, &tmp)?.unwrap_or(0.0))
+}
+
+/// Sets a variable.
+pub fn assign(it: &mut Interp<'_, '_>, var: &Var, v: Option<f64>, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    match var {
+        Var::Numbered(n) => it.params.set_numbered(*n, v),
+        Var::Indirect(e) => {
+            let n = it.eval(*e, exprs)?.unwrap_or(0.0).round().max(0.0) as u32;
+            it.params.set_numbered(n, v);
+        }
+        Var::Named(name) => it.params.set_named(name, v.unwrap_or(0.0)),
+        Var::R(n) => it.params.set_r(*n, v.unwrap_or(0.0)),
+        Var::RIndirect(e) => {
+            let n = it.eval(*e, exprs)?.unwrap_or(0.0).round().max(0.0) as u32;
+            it.params.set_r(n, v.unwrap_or(0.0));
+        }
+        Var::User(name, _) => it.params.set_user(name, v.unwrap_or(0.0)),
+        Var::System(name, _) => {
+            return Err(it.error_at(it.span, Code::UnsupportedHere, format!("writing system variable {name} is not simulated")))
+        }
+    }
+    Ok(())
+}
