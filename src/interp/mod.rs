@@ -9,6 +9,8 @@
 pub mod cycle_io;
 pub mod eval;
 pub mod exec;
+pub mod flow;
+pub mod index;
 pub mod host;
 pub mod machine;
 pub mod options;
@@ -23,6 +25,7 @@ use crate::canon::Canon;
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
 use crate::ir::{Arena, Block, Expr, Program};
+
 use crate::span::Span;
 use state::State;
 
@@ -76,17 +79,17 @@ impl<'a, 's> Interp<'a, 's> {
 }
 
 /// Runs a whole program; returns every diagnostic (the first error ends it).
-pub fn run(program: &Program, spec: &DialectSpec, opts: &Options, sink: &mut Sink<'_>) -> Vec<Diagnostic> {
+pub fn run(
+    program: std::rc::Rc<Program>,
+    spec: &DialectSpec,
+    opts: &Options,
+    loader: &mut dyn flow::ProgramLoader,
+    sink: &mut Sink<'_>,
+) -> Vec<Diagnostic> {
     let mut sink = sink;
     let mut it = Interp::new(spec, opts, &mut sink);
     it.start();
-    let mut result = Ok(());
-    for block in &program.blocks {
-        result = it.block(block, &program.exprs);
-        if result.is_err() {
-            break;
-        }
-    }
+    let result = flow::Walker::new(program, loader).run(&mut it);
     let mut diags = std::mem::take(&mut it.diags);
     match result {
         Err(Stop::Error(d)) => {
