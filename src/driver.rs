@@ -168,3 +168,53 @@ pub fn check_stream(
 fn too_large() -> std::io::Error {
     std::io::Error::new(std::io::ErrorKind::InvalidData, "file larger than 4 GiB")
 }
+
+/// Loads subprograms from files beside the main program:
+/// `o<name> call` → `name.ngc`; `M98 P1000` → `O1000.nc`, `1000.nc`, ...
+/// (any extension the dialect claims), read with the same dialect.
+pub struct FsLoader<'a> {
+    dir: std::path::PathBuf,
+    spec: std::sync::Arc<DialectSpec>,
+    files: &'a mut crate::source::SourceMap,
+    /// Diagnostics from reading the loaded files.
+    pub diags: Vec<Diagnostic>,
+}
+
+impl<'a> FsLoader<'a> {
+    pub fn new(dir: std::path::PathBuf, spec: std::sync::Arc<DialectSpec>, files: &'a mut crate::source::SourceMap) -> Self {
+        FsLoader { dir, spec, files, diags: Vec::new() }
+    }
+
+    fn candidates(&self, target: &crate::ir::CallTarget) -> Vec<std::path::PathBuf> {
+        use crate::ir::CallTarget;
+        let stems: Vec<String> = match target {
+            CallTarget::Name(n) => {
+                let n = n.trim_matches(|c| c == '<' || c == '>');
+                vec![n.to_string(), n.to_ascii_lowercase(), n.to_ascii_uppercase()]
+            }
+            CallTarget::Number(n) => vec![format!("O{n}"), format!("O{n:04}"), format!("o{n}"), n.to_string()],
+            CallTarget::Computed(_) => Vec::new(),
+        };
+        let mut exts: Vec<String> = self.spec.extensions.clone();
+        exts.extend(["ngc", "nc", "NC", "spf", "SPF", "mpf", "MPF"].map(String::from));
+        let mut out = Vec::new();
+        for s in &stems {
+            out.push(self.dir.join(s));
+            for e in &exts {
+                out.push(self.dir.join(format!("{s}.{e}")));
+            }
+        }
+        out
+    }
+}
+
+impl crate::interp::flow::ProgramLoader for FsLoader<'_> {
+    fn load(&mut self, target: &crate::ir::CallTarget) -> Option<std::rc::Rc<Program>> {
+        let path = self.candidates(target).into_iter().find(|p| p.is_file())?;
+        let text = decode(&std::fs::read(&path).ok()?);
+        let id = self.files.add(path.display().to_string(), text.clone());
+        let (p, d) = read_program(&text, id, &self.spec);
+        self.diags.extend(d);
+        Some(std::rc::Rc::new(p))
+    }
+}

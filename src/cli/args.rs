@@ -71,9 +71,61 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = Format::Human)]
         format: Format,
     },
+    /// Run a program and print its canonical machining calls, one per line,
+    /// as LinuxCNC's rs274 prints them.
+    Canon {
+        file: PathBuf,
+        #[arg(long)]
+        dialect: Option<String>,
+        /// A tool table in LinuxCNC's .tbl format (a built-in T1-T20 table otherwise).
+        #[arg(long = "tool-table", value_name = "T.tbl")]
+        tool_table: Option<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Format::Human)]
+        format: Format,
+        #[command(flatten)]
+        run: RunArgs,
+    },
     /// List the known dialects and their capabilities.
     Dialects,
     /// Explain a diagnostic code (`E0201`) or name (`two-motion-codes`);
     /// without one, list them all.
     Explain { code: Option<String> },
+}
+
+/// How a program is run.
+#[derive(clap::Args, Debug, Clone)]
+pub struct RunArgs {
+    /// Most iterations of any one loop before the run stops.
+    #[arg(long = "max-loop", default_value_t = 1_000_000)]
+    pub max_loop: u64,
+    /// Deepest nesting of subprogram and macro calls.
+    #[arg(long = "max-depth", default_value_t = 64)]
+    pub max_depth: u32,
+    /// Units of the tool table and stored positions (LinuxCNC's standalone
+    /// interpreter: inch).
+    #[arg(long = "machine-units", value_enum, default_value_t = MachineUnits::Inch)]
+    pub machine_units: MachineUnits,
+    /// Skip blocks that start with `/` (the block-delete switch on).
+    #[arg(long = "block-delete")]
+    pub block_delete: bool,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MachineUnits {
+    Inch,
+    Mm,
+}
+
+impl RunArgs {
+    pub fn options(&self) -> crate::interp::Options {
+        let mut o = crate::interp::Options::default();
+        o.limits.loop_iterations = self.max_loop;
+        o.limits.call_depth = self.max_depth;
+        o.machine_units = match self.machine_units {
+            MachineUnits::Inch => crate::ir::LengthUnit::Inch,
+            MachineUnits::Mm => crate::ir::LengthUnit::Mm,
+        };
+        o.block_delete = self.block_delete;
+        o
+    }
 }

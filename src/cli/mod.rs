@@ -1,6 +1,7 @@
 //! The `cncc` command line: argument parsing and one module per command.
 
 pub mod args;
+pub mod canon;
 pub mod check;
 pub mod context;
 pub mod info;
@@ -14,7 +15,10 @@ use context::{Context, Failure, EXIT_USAGE};
 /// Runs a parsed command line; returns the exit code.
 pub fn run(cli: Cli) -> i32 {
     let format = match &cli.command {
-        Command::Check { format, .. } | Command::Ir { format, .. } | Command::Port { format, .. } => *format,
+        Command::Check { format, .. }
+        | Command::Ir { format, .. }
+        | Command::Port { format, .. }
+        | Command::Canon { format, .. } => *format,
         _ => Format::Human,
     };
     let mut ctx = match Context::new(&cli, format) {
@@ -29,6 +33,16 @@ pub fn run(cli: Cli) -> i32 {
         Command::Port { file, to, from, output, format } => port::run(
             &mut ctx,
             port::PortArgs { file, to, from: from.as_deref(), output: output.as_deref(), format: *format },
+        ),
+        Command::Canon { file, dialect, tool_table, format, run } => canon::run(
+            &mut ctx,
+            canon::CanonArgs {
+                file,
+                dialect: dialect.as_deref(),
+                tool_table: tool_table.as_deref(),
+                format: *format,
+                options: run.options(),
+            },
         ),
         Command::Dialects => info::dialects(&ctx),
         Command::Explain { code } => info::explain(code.as_deref()),
