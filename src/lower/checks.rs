@@ -47,13 +47,21 @@ pub(super) fn check_required(cw: &CodeWord<'_>, words: &Words, diags: &mut Vec<D
         if alts.iter().any(|a| words.has(a)) {
             continue;
         }
-        let list = alts.iter().map(|a| format!("`{a}`")).collect::<Vec<_>>().join(" or ");
+        let list = describe(&alts);
         diags.push(
             Diagnostic::new(Code::MissingWord, format!("`{}` needs {list}", cw.name()))
                 .primary(cw.span, format!("needs {list}"))
                 .help(format!("add {list} to this block")),
         );
     }
+}
+
+/// The alternatives in words: `` `Q` ``, `` `P` or `X` ``, or an arc's forms.
+fn describe(alts: &[String]) -> String {
+    if alts.len() == ARC_WORDS.len() && alts.iter().zip(ARC_WORDS).all(|(a, b)| a == b) {
+        return "a centre (`I` `J` `K`), a radius (`R`, `CR=`) or an opening angle (`AR=`)".into();
+    }
+    alts.iter().map(|a| format!("`{a}`")).collect::<Vec<_>>().join(" or ")
 }
 
 /// An arc given both a radius and a centre (E0207).

@@ -15,6 +15,8 @@ mod motion;
 mod words;
 
 #[cfg(test)]
+pub(crate) mod test_support;
+#[cfg(test)]
 mod tests;
 
 use crate::diag::Diagnostic;
