@@ -51,7 +51,17 @@ fn describe(kind: Opener, id: &FlowId) -> String {
     match id {
         FlowId::Nested => kind.word().to_string(),
         FlowId::OWord(o) => format!("o{o} {}", kind.word().to_ascii_lowercase()),
+        FlowId::Do(m) if kind == Opener::While => format!("WHILE .. DO {m}"),
         FlowId::Do(m) => format!("{} {m}", kind.word()),
+    }
+}
+
+/// Names a closer as written: `ENDIF`, `o100 endif`, `END 2`.
+fn closer(word: &str, id: &FlowId) -> String {
+    match id {
+        FlowId::Nested => word.to_string(),
+        FlowId::OWord(o) => format!("o{o} {}", word.to_ascii_lowercase()),
+        FlowId::Do(m) => format!("END {m}"),
     }
 }
 
@@ -194,14 +204,14 @@ impl StructureChecker {
             StmtKind::ElseIf { id, .. } | StmtKind::Else { id } => self.middle(O::If, id, sp),
             StmtKind::EndIf { id } => self.close(&[O::If], id, sp, "ENDIF"),
             StmtKind::While { id: id @ FlowId::OWord(_), .. } if self.top_is(O::Do, id) => {
-                self.close(&[O::Do], id, sp, "while")
+                self.close(&[O::Do], id, sp, "WHILE")
             }
             StmtKind::While { id, .. } => self.open(O::While, id, sp),
-            StmtKind::EndWhile { id } => self.close(&[O::While, O::Do], id, sp, "END"),
+            StmtKind::EndWhile { id } => self.close(&[O::While, O::Do], id, sp, "ENDWHILE"),
             StmtKind::Do { id } => self.open(O::Do, id, sp),
-            StmtKind::DoWhile { id, .. } => self.close(&[O::Do], id, sp, "while"),
+            StmtKind::DoWhile { id, .. } => self.close(&[O::Do], id, sp, "WHILE"),
             StmtKind::Repeat { id, .. } => self.open(O::Repeat, id, sp),
-            StmtKind::EndRepeat { id } => self.close(&[O::Repeat], id, sp, "endrepeat"),
+            StmtKind::EndRepeat { id } => self.close(&[O::Repeat], id, sp, "ENDREPEAT"),
             StmtKind::For { .. } => self.open(O::For, &FlowId::Nested, sp),
             StmtKind::EndFor => self.close(&[O::For], &FlowId::Nested, sp, "ENDFOR"),
             StmtKind::Loop => self.open(O::Loop, &FlowId::Nested, sp),
@@ -209,7 +219,7 @@ impl StructureChecker {
             StmtKind::RepeatUntil => self.open(O::RepeatUntil, &FlowId::Nested, sp),
             StmtKind::Until { .. } => self.close(&[O::RepeatUntil], &FlowId::Nested, sp, "UNTIL"),
             StmtKind::SubStart { name, id, .. } => self.sub_start(name, id, sp),
-            StmtKind::SubEnd { id, .. } => self.close(&[O::Sub], id, sp, "endsub"),
+            StmtKind::SubEnd { id, .. } => self.close(&[O::Sub], id, sp, "ENDSUB"),
             StmtKind::Return { .. } => self.misplaced_return(sp),
             StmtKind::Break { id } => self.misplaced_break(id, sp, "break"),
             StmtKind::Continue { id } => self.misplaced_break(id, sp, "continue"),
@@ -235,11 +245,12 @@ impl StructureChecker {
         if self.top_is(kind, id) {
             return;
         }
-        self.mismatch_or_unopened(span, "ELSE", kind);
+        self.mismatch_or_unopened(span, &closer("ELSE", id), kind);
     }
 
     /// A closer: pops its opener, or reports what it finds instead.
     fn close(&mut self, accepts: &[Opener], id: &FlowId, span: Span, word: &str) {
+        let word = &closer(word, id);
         let fits = |o: &Open| accepts.contains(&o.kind) && o.id == *id;
         let Some(top) = self.stack.last() else {
             return self.unopened(span, word, accepts[0]);
@@ -411,3 +422,6 @@ fn missing_target(p: &Pending, exists: bool) -> Diagnostic {
     };
     Diagnostic::new(Code::JumpTargetMissing, msg).primary(p.span, "jumps to a missing target").help(help)
 }
+
+#[cfg(test)]
+mod tests;
