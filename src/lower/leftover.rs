@@ -97,7 +97,7 @@ pub(super) fn unused(words: &mut Words, dynamic: Option<&mut Vec<Word>>, out: &m
     let free: Vec<WordSyntax> =
         words.list.iter_mut().filter(|e| !e.used).map(|e| { e.used = true; e.w.clone() }).collect();
     if let Some(dynamic) = dynamic {
-        dynamic.extend(free.iter().map(|w| as_word(w)));
+        dynamic.extend(free.iter().map(as_word));
         return;
     }
     for w in free {

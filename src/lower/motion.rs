@@ -43,10 +43,7 @@ pub(super) fn motion(kind: MotionKind, uses: &[char], words: &mut Words, ctx: &m
 
 /// Siemens `CIP` intermediate point `I1= J1= K1=`.
 fn mid_point(words: &mut Words) -> Option<Axes> {
-    let mut mid = Axes::default();
-    mid.x = words.coord("I1");
-    mid.y = words.coord("J1");
-    mid.z = words.coord("K1");
+    let mid = Axes { x: words.coord("I1"), y: words.coord("J1"), z: words.coord("K1"), ..Default::default() };
     (!mid.is_empty()).then_some(mid)
 }
 
