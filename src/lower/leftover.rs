@@ -91,9 +91,22 @@ fn register(w: &WordSyntax, ctx: &mut Ctx<'_>) -> StmtKind {
     }
 }
 
+/// A word a modal fixed cycle may take in a block without a code
+/// (`X.48 L6` repeats the cycle): kept without a warning.
+fn modal_cycle_word(w: &WordSyntax, ctx: &Ctx<'_>) -> bool {
+    let letter = single_letter(&w.address);
+    letter.map(|c| matches!(c, 'Q' | 'P') || c == ctx.spec.repeat_letter).unwrap_or(false)
+}
+
 /// Every word still free: given to a dynamic code if the block has one,
 /// otherwise reported (E0209 or W0004) and kept.
-pub(super) fn unused(words: &mut Words, dynamic: Option<&mut Vec<Word>>, out: &mut Vec<Placed>, ctx: &mut Ctx<'_>) {
+pub(super) fn unused(
+    words: &mut Words,
+    dynamic: Option<&mut Vec<Word>>,
+    implicit: bool,
+    out: &mut Vec<Placed>,
+    ctx: &mut Ctx<'_>,
+) {
     let free: Vec<WordSyntax> =
         words.list.iter_mut().filter(|e| !e.used).map(|e| { e.used = true; e.w.clone() }).collect();
     if let Some(dynamic) = dynamic {
@@ -101,7 +114,9 @@ pub(super) fn unused(words: &mut Words, dynamic: Option<&mut Vec<Word>>, out: &m
         return;
     }
     for w in free {
-        report_unused(&w, ctx);
+        if !(implicit && modal_cycle_word(&w, ctx)) {
+            report_unused(&w, ctx);
+        }
         out.push(place(keep(&w, ctx), w.span));
     }
 }

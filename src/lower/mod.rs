@@ -134,14 +134,19 @@ fn lower_codes(codes: &[CodeWord<'_>], words: &mut Words, out: &mut Vec<Placed>,
 fn finish(mut s: Sorted<'_>, words: &mut Words, ctx: &mut Ctx<'_>) -> Vec<Placed> {
     let cancel = s.codes.iter().find(|c| c.meaning == Some(Meaning::CycleCancel)).map(|c| c.span);
     let has_motion = s.codes.iter().any(|c| c.is_motion());
+    let mut implicit = false;
     match cancel {
         Some(span) if !has_motion => leftover::reject_axes_after_cancel(span, words, &mut s.out, ctx),
-        _ => s.out.extend(leftover::implicit_motion(words, ctx)),
+        _ => {
+            let m = leftover::implicit_motion(words, ctx);
+            implicit = m.is_some();
+            s.out.extend(m);
+        }
     }
     leftover::standalone(words, &mut s.out, ctx);
     let mut dynamic_words: Vec<Word> = Vec::new();
     let has_dynamic = !s.dynamic.is_empty();
-    leftover::unused(words, has_dynamic.then_some(&mut dynamic_words), &mut s.out, ctx);
+    leftover::unused(words, has_dynamic.then_some(&mut dynamic_words), implicit, &mut s.out, ctx);
     for (i, (letter, value, span)) in s.dynamic.iter().enumerate() {
         let words = if i == 0 { std::mem::take(&mut dynamic_words) } else { Vec::new() };
         s.out.push((span.start, Stmt::new(StmtKind::DynamicCode { letter: *letter, value: *value, words }, *span)));

@@ -348,3 +348,11 @@ fn corpus_lines_lose_no_word() {
     }
     println!("{lines} corpus lines lowered");
 }
+
+#[test]
+fn modal_cycle_words_in_a_block_without_code_are_kept_quietly() {
+    let o = run(&linuxcnc(), "X0.48 L6 Q1");
+    assert!(o.diags.is_empty(), "{}", o.rendered);
+    assert!(matches!(kinds(&o)[1], StmtKind::Word(Word { letter: 'L', .. })));
+    assert_eq!(codes(&run(&linuxcnc(), "M3 L6")), vec![Code::WordNotAllowed], "no move: reported");
+}
