@@ -8,11 +8,14 @@
 //! never with the number of blocks. Labels are scoped per program: a
 //! `ProgramStart` (`O1234`) begins a new scope for sequence numbers.
 
+mod jumps;
+
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec};
-use crate::ir::{Arena, Block, CallKind, CallTarget, Expr, FlowId, JumpDir, JumpTarget, Stmt, StmtKind, StopKind, Value};
+use crate::ir::{Arena, Block, Expr, FlowId, Stmt, StmtKind, StopKind};
 use crate::span::Span;
-use std::collections::{HashMap, HashSet};
+use jumps::Labels;
+use std::collections::HashMap;
 
 /// The kinds of structure an opener starts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -72,39 +75,13 @@ struct Open {
     span: Span,
 }
 
-/// Where a jump goes.
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
-enum Target {
-    Number(u32),
-    Label(String),
-}
-
-impl Target {
-    fn show(&self) -> String {
-        match self {
-            Target::Number(n) => format!("N{n}"),
-            Target::Label(l) => l.clone(),
-        }
-    }
-}
-
-/// A jump whose target was not (yet) found.
-#[derive(Clone, Debug)]
-struct Pending {
-    target: Target,
-    dir: JumpDir,
-    span: Span,
-}
-
 /// The streaming structure checker (see the module doc).
 pub struct StructureChecker {
     end_required: bool,
     stack: Vec<Open>,
     diags: Vec<Diagnostic>,
     /// Sequence numbers and labels of the current program.
-    seen: HashSet<Target>,
-    labels: HashMap<String, Span>,
-    pending: Vec<Pending>,
+    labels: Labels,
     subs: HashMap<String, Span>,
     programs: HashMap<u32, Span>,
     /// Inside a Siemens `PROC` (ends with the file).
@@ -120,9 +97,7 @@ impl StructureChecker {
             end_required: spec.has(Capability::ProgramEndRequired),
             stack: Vec::new(),
             diags: Vec::new(),
-            seen: HashSet::new(),
-            labels: HashMap::new(),
-            pending: Vec::new(),
+            labels: Labels::default(),
             subs: HashMap::new(),
             programs: HashMap::new(),
             in_proc: false,
@@ -134,13 +109,14 @@ impl StructureChecker {
     /// Feeds the next block.
     pub fn block(&mut self, _index: usize, block: &Block, _exprs: &Arena<Expr>) {
         if block.stmts.iter().any(|s| matches!(s.kind, StmtKind::ProgramStart { .. })) {
-            self.close_scope();
+            self.labels.close_scope(&mut self.diags);
         }
         if let Some(n) = &block.number {
-            self.define(Target::Number(n.node));
+            self.labels.define_number(n.node);
         }
         if let Some(l) = &block.label {
-            self.define_label(&l.node, l.span);
+            let first = self.labels.define_label(&l.node, l.span);
+            self.duplicate(first, l.span, &format!("label `{}`", l.node));
         }
         for s in &block.stmts {
             self.stmt(s);
@@ -149,7 +125,7 @@ impl StructureChecker {
 
     /// Reports what is still open or unresolved, and a missing program end.
     pub fn finish(mut self) -> Vec<Diagnostic> {
-        self.close_scope();
+        self.labels.close_scope(&mut self.diags);
         for open in std::mem::take(&mut self.stack) {
             let name = describe(open.kind, &open.id);
             self.diags.push(
@@ -180,7 +156,7 @@ impl StructureChecker {
     fn stmt(&mut self, s: &Stmt) {
         self.track_content(s);
         self.flow(s);
-        self.jumps(s);
+        self.labels.jumps(s);
     }
 
     /// Notes program ends and the main program's statements.
@@ -328,99 +304,6 @@ impl StructureChecker {
             self.misplaced(span, msg, "put it inside the loop it belongs to, with that loop's number");
         }
     }
-
-    // ---- labels and jumps
-
-    fn define(&mut self, t: Target) {
-        self.pending.retain(|p| p.target != t || p.dir == JumpDir::Backward);
-        self.seen.insert(t);
-    }
-
-    fn define_label(&mut self, name: &str, span: Span) {
-        let first = self.labels.get(name).copied();
-        self.duplicate(first, span, &format!("label `{name}`"));
-        self.labels.entry(name.to_string()).or_insert(span);
-        self.define(Target::Label(name.to_string()));
-    }
-
-    fn jumps(&mut self, s: &Stmt) {
-        match &s.kind {
-            StmtKind::Goto { target, dir, .. } => self.jump_target(target, *dir, s.span),
-            StmtKind::IfThen { then, .. } => self.jumps(then),
-            StmtKind::Case { arms, default, .. } => {
-                for arm in arms {
-                    self.jump(Target::Label(arm.target.clone()), arm.dir, s.span);
-                }
-                if let Some((label, dir)) = default {
-                    self.jump(Target::Label(label.clone()), *dir, s.span);
-                }
-            }
-            StmtKind::SectionRepeat { start, end, single, .. } => {
-                let dir = if *single { JumpDir::Either } else { JumpDir::Backward };
-                self.jump(Target::Label(start.clone()), dir, s.span);
-                if let Some(end) = end {
-                    self.jump(Target::Label(end.clone()), dir, s.span);
-                }
-            }
-            StmtKind::Call { kind: CallKind::Local, target: CallTarget::Number(n), .. } => {
-                self.jump(Target::Number(*n), JumpDir::Either, s.span)
-            }
-            StmtKind::SubReturn { to: Some(Value::Number(d)) } => {
-                if let Some(n) = d.as_int().and_then(|n| u32::try_from(n).ok()) {
-                    self.jump(Target::Number(n), JumpDir::Either, s.span);
-                }
-            }
-            _ => {}
-        }
-    }
-
-    fn jump_target(&mut self, target: &JumpTarget, dir: JumpDir, span: Span) {
-        let t = match target {
-            JumpTarget::Label(l) => Target::Label(l.clone()),
-            JumpTarget::Sequence(Value::Number(d)) => match d.as_int().and_then(|n| u32::try_from(n).ok()) {
-                Some(n) => Target::Number(n),
-                None => return,
-            },
-            JumpTarget::Sequence(Value::Expr(_)) => return,
-        };
-        self.jump(t, dir, span);
-    }
-
-    fn jump(&mut self, target: Target, dir: JumpDir, span: Span) {
-        let known = self.seen.contains(&target);
-        match dir {
-            JumpDir::EitherNoAlarm => {}
-            JumpDir::Either | JumpDir::Backward if known => {}
-            _ => self.pending.push(Pending { target, dir, span }),
-        }
-    }
-
-    /// Reports the jumps of the program just ended and forgets its labels.
-    fn close_scope(&mut self) {
-        for p in std::mem::take(&mut self.pending) {
-            let exists = self.seen.contains(&p.target);
-            self.diags.push(missing_target(&p, exists));
-        }
-        self.seen.clear();
-        self.labels.clear();
-    }
-}
-
-fn missing_target(p: &Pending, exists: bool) -> Diagnostic {
-    let name = p.target.show();
-    let (msg, help) = match (p.dir, exists) {
-        (JumpDir::Forward, true) => (
-            format!("`{name}` is not found after this jump"),
-            "the label is before the jump: a forward jump (GOTOF) cannot reach it; use GOTOB or GOTO".to_string(),
-        ),
-        (JumpDir::Backward, true) => (
-            format!("`{name}` is not found before this jump"),
-            "the label is after the jump: a backward search (GOTOB, REPEAT) cannot reach it; use GOTOF or GOTO"
-                .to_string(),
-        ),
-        _ => (format!("`{name}` does not exist in this program"), format!("add `{name}` or correct the target")),
-    };
-    Diagnostic::new(Code::JumpTargetMissing, msg).primary(p.span, "jumps to a missing target").help(help)
 }
 
 #[cfg(test)]

@@ -19,14 +19,14 @@ fn uses(cw: &CodeWord<'_>) -> Vec<char> {
 
 /// The value of the first `uses` word present (a register, a limit, an angle).
 fn first_used(cw: &CodeWord<'_>, words: &mut Words) -> Option<Value> {
-    uses(cw).iter().find_map(|c| words.value(&c.to_string()))
+    uses(cw).iter().find_map(|c| words.value(*c))
 }
 
 /// The `uses` words present, in the order the spec lists them.
 fn used_words(cw: &CodeWord<'_>, words: &mut Words) -> Vec<Word> {
     uses(cw)
         .into_iter()
-        .filter_map(|c| words.take(&c.to_string()).map(|w| Word { letter: c, value: w.value, span: w.span }))
+        .filter_map(|c| words.take(c).map(|w| Word { letter: c, value: w.value, span: w.span }))
         .collect()
 }
 
@@ -107,7 +107,7 @@ fn scale(on: bool, words: &mut Words) -> Transform {
     }
     let center = words.take_axes();
     let factor = words.value("P");
-    let per_axis = ['I', 'J', 'K'].iter().filter_map(|c| words.value(&c.to_string()).map(|v| (*c, v))).collect();
+    let per_axis = ['I', 'J', 'K'].iter().filter_map(|c| words.value(*c).map(|v| (*c, v))).collect();
     Transform::ScaleOn { center, factor, per_axis }
 }
 
@@ -115,7 +115,7 @@ fn scale(on: bool, words: &mut Words) -> Transform {
 fn dwell(cw: &CodeWord<'_>, words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
     let units: Vec<(char, DwellUnit)> = cw.def.map(|d| d.dwell_units.clone()).unwrap_or_default();
     for (letter, unit) in units {
-        if let Some(w) = words.take(&letter.to_string()) {
+        if let Some(w) = words.take(letter) {
             check_not_negative(&w.value, w.span, "dwell time", ctx.diags);
             return StmtKind::Dwell { value: w.value, unit };
         }

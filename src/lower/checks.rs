@@ -44,7 +44,7 @@ fn required(cw: &CodeWord<'_>) -> Vec<Vec<String>> {
 /// Reports each required word a code lacks (E0206).
 pub(super) fn check_required(cw: &CodeWord<'_>, words: &Words, diags: &mut Vec<Diagnostic>) {
     for alts in required(cw) {
-        if alts.iter().any(|a| words.has(a)) {
+        if alts.iter().any(|a| words.has(a.as_str())) {
             continue;
         }
         let list = describe(&alts);
@@ -66,8 +66,8 @@ fn describe(alts: &[String]) -> String {
 
 /// An arc given both a radius and a centre (E0207).
 pub(super) fn check_arc_format(words: &Words, diags: &mut Vec<Diagnostic>) {
-    let radius = ["R", "CR"].iter().find_map(|a| words.get(a));
-    let centre = ["I", "J", "K"].iter().find_map(|a| words.get(a));
+    let radius = ["R", "CR"].iter().find_map(|a| words.get(*a));
+    let centre = ["I", "J", "K"].iter().find_map(|a| words.get(*a));
     if let (Some(r), Some(c)) = (radius, centre) {
         diags.push(
             Diagnostic::new(Code::MixedArcFormat, "an arc is given both a radius and a centre")

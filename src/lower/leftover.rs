@@ -20,13 +20,13 @@ fn place(kind: StmtKind, span: Span) -> Placed {
 
 /// Whether free words make an implicit move (a lone `R` does not).
 fn has_motion_words(words: &Words) -> bool {
-    words.has_free_axes() || MOTION_WORDS.iter().any(|a| *a != "R" && words.has_free(a))
+    words.has_free_axes() || MOTION_WORDS.iter().any(|a| *a != "R" && words.has_free(*a))
 }
 
 /// Axis words in a block that cancels cycles and has no move (E0209).
 pub(super) fn reject_axes_after_cancel(cancel: Span, words: &mut Words, out: &mut Vec<Placed>, ctx: &mut Ctx<'_>) {
     for a in AXIS_LETTERS {
-        let Some(w) = words.take(&a.to_string()) else { continue };
+        let Some(w) = words.take(a) else { continue };
         ctx.diags.push(
             Diagnostic::new(Code::WordNotAllowed, format!("axis word `{}` in a block that cancels the cycle", w.address))
                 .primary(w.span, "nothing moves to this position")

@@ -54,7 +54,7 @@ fn corner(words: &mut Words) -> Option<(CornerKind, crate::ir::Value)> {
         ("RND", CornerKind::Round),
         ("RNDM", CornerKind::RoundModal),
     ];
-    KINDS.iter().find_map(|(a, k)| words.value(a).map(|v| (*k, v)))
+    KINDS.iter().find_map(|(a, k)| words.value(*a).map(|v| (*k, v)))
 }
 
 /// A fixed cycle with its words.
@@ -64,7 +64,7 @@ pub(super) fn cycle(kind: CycleKind, words: &mut Words, ctx: &mut Ctx<'_>) -> Ca
     if let Some(q) = &q {
         check_not_negative(&q.value, q.span, "peck depth", ctx.diags);
     }
-    let repeat = words.take(&ctx.spec.repeat_letter.to_string());
+    let repeat = words.take(ctx.spec.repeat_letter);
     if let Some(r) = &repeat {
         check_index(r, "repeat count", None, ctx.diags);
     }

@@ -9,6 +9,24 @@ use crate::ir::{Axes, Coord, Decimal, Value, Word, AXIS_LETTERS};
 use crate::span::Span;
 use crate::syntax::WordSyntax;
 
+/// An address to look up: `"CR"` or `'X'` (no allocation either way).
+pub(super) trait Addr: Copy {
+    fn is(self, address: &str) -> bool;
+}
+
+impl Addr for &str {
+    fn is(self, address: &str) -> bool {
+        address == self
+    }
+}
+
+impl Addr for char {
+    fn is(self, address: &str) -> bool {
+        let mut cs = address.chars();
+        cs.next() == Some(self) && cs.next().is_none()
+    }
+}
+
 /// One word and whether a statement has taken it.
 pub(super) struct Entry {
     pub w: WordSyntax,
@@ -40,22 +58,22 @@ impl Words {
         self.list.push(Entry { w, used: false });
     }
 
-    fn find(&self, addr: &str) -> Option<usize> {
-        self.list.iter().position(|e| e.w.address == addr)
+    fn find(&self, addr: impl Addr) -> Option<usize> {
+        self.list.iter().position(|e| addr.is(&e.w.address))
     }
 
     /// Whether the line has a word with this address (taken or not).
-    pub fn has(&self, addr: &str) -> bool {
+    pub fn has(&self, addr: impl Addr) -> bool {
         self.find(addr).is_some()
     }
 
     /// Whether the line has this word and nobody took it yet.
-    pub fn has_free(&self, addr: &str) -> bool {
+    pub fn has_free(&self, addr: impl Addr) -> bool {
         self.find(addr).map(|i| !self.list[i].used).unwrap_or(false)
     }
 
     /// The word, if present (taken or not).
-    pub fn get(&self, addr: &str) -> Option<&WordSyntax> {
+    pub fn get(&self, addr: impl Addr) -> Option<&WordSyntax> {
         self.find(addr).map(|i| &self.list[i].w)
     }
 
@@ -70,7 +88,7 @@ impl Words {
     }
 
     /// Takes a free word.
-    pub fn take(&mut self, addr: &str) -> Option<WordSyntax> {
+    pub fn take(&mut self, addr: impl Addr) -> Option<WordSyntax> {
         let i = self.find(addr)?;
         if self.list[i].used {
             return None;
@@ -80,24 +98,24 @@ impl Words {
         Some(self.list[i].w.clone())
     }
 
-    pub fn value(&mut self, addr: &str) -> Option<Value> {
+    pub fn value(&mut self, addr: impl Addr) -> Option<Value> {
         self.take(addr).map(|w| w.value)
     }
 
-    pub fn coord(&mut self, addr: &str) -> Option<Coord> {
+    pub fn coord(&mut self, addr: impl Addr) -> Option<Coord> {
         self.take(addr).map(|w| Coord { value: w.value, dim: w.dim, span: w.span })
     }
 
     /// Whether any free axis word is present.
     pub fn has_free_axes(&self) -> bool {
-        AXIS_LETTERS.iter().any(|a| self.has_free(&a.to_string()))
+        AXIS_LETTERS.iter().any(|a| self.has_free(*a))
     }
 
     /// Takes every free axis word.
     pub fn take_axes(&mut self) -> Axes {
         let mut axes = Axes::default();
         for a in AXIS_LETTERS {
-            if let Some(c) = self.coord(&a.to_string()) {
+            if let Some(c) = self.coord(a) {
                 if let Some(slot) = axes.slot_mut(a) {
                     *slot = Some(c);
                 }
