@@ -59,7 +59,7 @@ impl NumberSet {
     }
 
     fn contains(&self, n: u32) -> bool {
-        self.runs.iter().any(|&(first, last, step)| (first..=last).contains(&n) && (n - first) % step.max(1) == 0)
+        self.runs.iter().any(|&(first, last, step)| (first..=last).contains(&n) && (n - first).is_multiple_of(step.max(1)))
     }
 
     fn clear(&mut self) {
