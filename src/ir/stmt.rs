@@ -551,6 +551,10 @@ pub enum StmtKind {
     /// A machine function that has no neutral meaning (most M codes beyond
     /// the standard ones, G codes a spec marks `aux`), kept by code.
     Aux { letter: char, code: Decimal, words: Vec<Word> },
+    /// A G or M word whose number is an expression (`G#143`, `M[#1]`): it
+    /// cannot be looked up before the program runs. `words` are the block's
+    /// words that nothing else took (the code may use them).
+    DynamicCode { letter: char, value: ExprId, words: Vec<Word> },
     /// Siemens keyword commands with no neutral meaning (`SOFT`, `FFWON`,
     /// `TRAORI`), with their arguments if written with parentheses.
     Command { name: String, args: Option<Vec<Arg>> },

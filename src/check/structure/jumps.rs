@@ -1,0 +1,200 @@
+//! Jump targets of one program: sequence numbers and labels seen so far,
+//! and the jumps (GOTO, GOTOF/GOTOB, CASE, section REPEAT, `M99 P`,
+//! `M97 P`) whose target has not been found yet.
+//!
+//! Sequence numbers are kept as runs (`N10`, `N20`, `N30`... is one run),
+//! so a CAM program numbering every block needs next to no memory.
+
+use crate::diag::{Code, Diagnostic};
+use crate::ir::{CallKind, CallTarget, JumpDir, JumpTarget, Stmt, StmtKind, Value};
+use crate::span::Span;
+use std::collections::HashMap;
+
+/// Where a jump goes.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+enum Target {
+    Number(u32),
+    Label(String),
+}
+
+impl Target {
+    fn show(&self) -> String {
+        match self {
+            Target::Number(n) => format!("N{n}"),
+            Target::Label(l) => l.clone(),
+        }
+    }
+}
+
+/// A jump whose target was not (yet) found.
+#[derive(Clone, Debug)]
+struct Pending {
+    target: Target,
+    dir: JumpDir,
+    span: Span,
+}
+
+/// A set of numbers stored as arithmetic runs `first, first+step, ..=last`.
+#[derive(Default, Debug)]
+struct NumberSet {
+    runs: Vec<(u32, u32, u32)>,
+}
+
+impl NumberSet {
+    fn insert(&mut self, n: u32) {
+        if let Some((first, last, step)) = self.runs.last_mut() {
+            if *first == *last && n > *last {
+                *step = n - *last;
+                *last = n;
+                return;
+            }
+            if n > *last && n - *last == *step {
+                *last = n;
+                return;
+            }
+        }
+        if !self.contains(n) {
+            self.runs.push((n, n, 1));
+        }
+    }
+
+    fn contains(&self, n: u32) -> bool {
+        self.runs.iter().any(|&(first, last, step)| (first..=last).contains(&n) && (n - first).is_multiple_of(step.max(1)))
+    }
+
+    fn clear(&mut self) {
+        self.runs.clear();
+    }
+}
+
+/// The labels of the current program and its unresolved jumps.
+#[derive(Default)]
+pub(super) struct Labels {
+    numbers: NumberSet,
+    names: HashMap<String, Span>,
+    pending: Vec<Pending>,
+}
+
+impl Labels {
+    fn seen(&self, t: &Target) -> bool {
+        match t {
+            Target::Number(n) => self.numbers.contains(*n),
+            Target::Label(l) => self.names.contains_key(l),
+        }
+    }
+
+    /// Forward and either-way jumps waiting for `t` are resolved.
+    fn resolve(&mut self, t: &Target) {
+        if !self.pending.is_empty() {
+            self.pending.retain(|p| p.target != *t || p.dir == JumpDir::Backward);
+        }
+    }
+
+    pub fn define_number(&mut self, n: u32) {
+        self.resolve(&Target::Number(n));
+        self.numbers.insert(n);
+    }
+
+    /// Defines a label; returns where it was first defined if it was.
+    pub fn define_label(&mut self, name: &str, span: Span) -> Option<Span> {
+        if let Some(first) = self.names.get(name) {
+            return Some(*first);
+        }
+        self.resolve(&Target::Label(name.to_string()));
+        self.names.insert(name.to_string(), span);
+        None
+    }
+
+    /// Records the jumps a statement makes.
+    pub fn jumps(&mut self, s: &Stmt) {
+        match &s.kind {
+            StmtKind::Goto { target, dir, .. } => self.jump_target(target, *dir, s.span),
+            StmtKind::IfThen { then, .. } => self.jumps(then),
+            StmtKind::Case { arms, default, .. } => {
+                for arm in arms {
+                    self.jump(Target::Label(arm.target.clone()), arm.dir, s.span);
+                }
+                if let Some((label, dir)) = default {
+                    self.jump(Target::Label(label.clone()), *dir, s.span);
+                }
+            }
+            StmtKind::SectionRepeat { start, end, single, .. } => {
+                let dir = if *single { JumpDir::Either } else { JumpDir::Backward };
+                self.jump(Target::Label(start.clone()), dir, s.span);
+                if let Some(end) = end {
+                    self.jump(Target::Label(end.clone()), dir, s.span);
+                }
+            }
+            StmtKind::Call { kind: CallKind::Local, target: CallTarget::Number(n), .. } => {
+                self.jump(Target::Number(*n), JumpDir::Either, s.span)
+            }
+            StmtKind::SubReturn { to: Some(v) } => self.jump_target(&JumpTarget::Sequence(v.clone()), JumpDir::Either, s.span),
+            _ => {}
+        }
+    }
+
+    fn jump_target(&mut self, target: &JumpTarget, dir: JumpDir, span: Span) {
+        let t = match target {
+            JumpTarget::Label(l) => Target::Label(l.clone()),
+            JumpTarget::Sequence(Value::Number(d)) => match d.as_int().and_then(|n| u32::try_from(n).ok()) {
+                Some(n) => Target::Number(n),
+                None => return,
+            },
+            JumpTarget::Sequence(Value::Expr(_)) => return,
+        };
+        self.jump(t, dir, span);
+    }
+
+    fn jump(&mut self, target: Target, dir: JumpDir, span: Span) {
+        let known = self.seen(&target);
+        match dir {
+            JumpDir::EitherNoAlarm => {}
+            JumpDir::Either | JumpDir::Backward if known => {}
+            _ => self.pending.push(Pending { target, dir, span }),
+        }
+    }
+
+    /// Reports the jumps of the program just ended and forgets its labels.
+    pub fn close_scope(&mut self, diags: &mut Vec<Diagnostic>) {
+        for p in std::mem::take(&mut self.pending) {
+            diags.push(missing_target(&p, self.seen(&p.target)));
+        }
+        self.numbers.clear();
+        self.names.clear();
+    }
+}
+
+fn missing_target(p: &Pending, exists: bool) -> Diagnostic {
+    let name = p.target.show();
+    let (msg, help) = match (p.dir, exists) {
+        (JumpDir::Forward, true) => (
+            format!("`{name}` is not found after this jump"),
+            "the label is before the jump: a forward jump (GOTOF) cannot reach it; use GOTOB or GOTO".to_string(),
+        ),
+        (JumpDir::Backward, true) => (
+            format!("`{name}` is not found before this jump"),
+            "the label is after the jump: a backward search (GOTOB, REPEAT) cannot reach it; use GOTOF or GOTO"
+                .to_string(),
+        ),
+        _ => (format!("`{name}` does not exist in this program"), format!("add `{name}` or correct the target")),
+    };
+    Diagnostic::new(Code::JumpTargetMissing, msg).primary(p.span, "jumps to a missing target").help(help)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::NumberSet;
+
+    #[test]
+    fn number_runs() {
+        let mut s = NumberSet::default();
+        for n in (10..=100_000).step_by(10) {
+            s.insert(n);
+        }
+        s.insert(5);
+        s.insert(7);
+        assert_eq!(s.runs.len(), 2, "{:?}", s.runs);
+        assert!(s.contains(99_990) && s.contains(5) && s.contains(7));
+        assert!(!s.contains(15) && !s.contains(6) && !s.contains(100_010));
+    }
+}

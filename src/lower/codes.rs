@@ -1,0 +1,124 @@
+//! The G and M words of a line: looked up in the dialect's code table
+//! (E0203/E0204 when missing, E0213 when out of range) and checked against
+//! each other (E0201 two motions, E0202 two codes of one modal group).
+
+use crate::diag::{Code, Diagnostic, Severity};
+use crate::dialect::{Capability, CodeDef, DialectSpec, Meaning};
+use crate::ir::{Decimal, MotionKind};
+use crate::span::Span;
+
+/// A code word of a line, resolved against the spec.
+#[derive(Clone, Debug)]
+pub(super) struct CodeWord<'s> {
+    pub letter: char,
+    pub code: Decimal,
+    pub span: Span,
+    /// `None`: not in the table (kept as `Aux`).
+    pub meaning: Option<Meaning>,
+    pub def: Option<&'s CodeDef>,
+}
+
+impl CodeWord<'_> {
+    /// `G1`, `M98`, `CIP` as written (without leading zeros).
+    pub fn name(&self) -> String {
+        if self.letter == '\0' {
+            return pseudo_name(self.meaning);
+        }
+        format!("{}{}", self.letter, self.code)
+    }
+
+    /// Motion codes and fixed cycles: one of them per block.
+    pub fn is_motion(&self) -> bool {
+        matches!(self.meaning, Some(Meaning::Motion(_)) | Some(Meaning::Cycle(_)))
+    }
+
+    fn group(&self) -> Option<&str> {
+        self.def.map(|d| d.group.as_str()).filter(|g| !g.is_empty())
+    }
+}
+
+fn pseudo_name(m: Option<Meaning>) -> String {
+    match m {
+        Some(Meaning::Motion(MotionKind::ArcTangent)) => "CT".into(),
+        _ => "CIP".into(),
+    }
+}
+
+/// Siemens motion keywords that arrive as words without a value.
+pub(super) fn pseudo_motion(address: &str) -> Option<Meaning> {
+    match address {
+        "CIP" => Some(Meaning::Motion(MotionKind::ArcThrough)),
+        "CT" => Some(Meaning::Motion(MotionKind::ArcTangent)),
+        _ => None,
+    }
+}
+
+/// Looks a numeric G/M word up, reporting unknown and out-of-range codes.
+pub(super) fn resolve<'s>(
+    letter: char,
+    code: Decimal,
+    span: Span,
+    spec: &'s DialectSpec,
+    diags: &mut Vec<Diagnostic>,
+) -> CodeWord<'s> {
+    let def = spec.code(letter, code);
+    let cw = CodeWord { letter, code, span, meaning: def.map(|d| d.meaning), def };
+    if code.is_negative() || (letter == 'M' && !code.is_integer()) {
+        diags.push(
+            Diagnostic::new(Code::InvalidValue, format!("`{letter}{code}` is not a valid {letter} code"))
+                .primary(span, "codes are whole numbers, G codes with at most one decimal")
+                .help("check the number"),
+        );
+        return cw;
+    }
+    if def.is_none() {
+        diags.push(unknown(letter, code, span, spec));
+    }
+    cw
+}
+
+fn unknown(letter: char, code: Decimal, span: Span, spec: &DialectSpec) -> Diagnostic {
+    let name = format!("{letter}{code}");
+    if letter == 'G' {
+        return Diagnostic::new(Code::UnknownGCode, format!("`{name}` is not a G code of {}", spec.name))
+            .primary(span, "unknown G code")
+            .help("check the number, or load a dialect spec that defines it with `--dialect-file`");
+    }
+    let d = Diagnostic::new(Code::UnknownMCode, format!("`{name}` is not an M code of {}", spec.name))
+        .help("machine builders add M codes: describe this one in a dialect spec loaded with `--dialect-file`");
+    if spec.has(Capability::StrictMCodes) {
+        d.primary(span, "unknown M code")
+    } else {
+        d.with_severity(Severity::Warning).primary(span, "unknown M code, passed to the machine as written")
+    }
+}
+
+/// Reports two motion codes, or two codes of one modal group, in a block.
+pub(super) fn check_groups(codes: &[CodeWord<'_>], diags: &mut Vec<Diagnostic>) {
+    for (i, later) in codes.iter().enumerate() {
+        let Some(first) = codes[..i].iter().find(|c| conflicts(c, later)) else { continue };
+        diags.push(conflict(first, later));
+    }
+}
+
+fn conflicts(a: &CodeWord<'_>, b: &CodeWord<'_>) -> bool {
+    if a.is_motion() && b.is_motion() {
+        return true;
+    }
+    a.letter == b.letter && a.group().is_some() && a.group() == b.group()
+}
+
+fn conflict(first: &CodeWord<'_>, later: &CodeWord<'_>) -> Diagnostic {
+    let (a, b) = (first.name(), later.name());
+    if first.is_motion() && later.is_motion() {
+        return Diagnostic::new(Code::TwoMotionCodes, format!("two motion codes in one block: `{a}` and `{b}`"))
+            .primary(later.span, "second motion code")
+            .secondary(first.span, "first motion code")
+            .help("a block asks for one motion: split it into two blocks or remove one code");
+    }
+    let group = first.group().unwrap_or_default();
+    Diagnostic::new(Code::ModalGroupConflict, format!("`{a}` and `{b}` are both in modal group `{group}`"))
+        .primary(later.span, "second code of the group")
+        .secondary(first.span, "first code of the group")
+        .help("codes of one modal group exclude each other: keep one per block")
+}

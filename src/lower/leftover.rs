@@ -1,0 +1,156 @@
+//! The words no code took: an implicit move from axis words, `F` `S` `T`
+//! and register words on their own, and the rest reported and kept.
+
+use super::checks::{check_index, check_not_negative};
+use super::motion::{motion, MOTION_WORDS};
+use super::words::{single_letter, Words};
+use super::Ctx;
+use crate::diag::{Code, Diagnostic, Severity};
+use crate::dialect::Capability;
+use crate::ir::{Decimal, ExprKind, MotionKind, StmtKind, ToolRef, Value, Word, AXIS_LETTERS};
+use crate::span::Span;
+use crate::syntax::WordSyntax;
+
+/// A statement with the position and span of what it was made from.
+pub(super) type Placed = (u32, crate::ir::Stmt);
+
+fn place(kind: StmtKind, span: Span) -> Placed {
+    (span.start, crate::ir::Stmt::new(kind, span))
+}
+
+/// Whether free words make an implicit move (a lone `R` does not).
+fn has_motion_words(words: &Words) -> bool {
+    words.has_free_axes() || MOTION_WORDS.iter().any(|a| *a != "R" && words.has_free(*a))
+}
+
+/// Axis words in a block that cancels cycles and has no move (E0209).
+pub(super) fn reject_axes_after_cancel(cancel: Span, words: &mut Words, out: &mut Vec<Placed>, ctx: &mut Ctx<'_>) {
+    for a in AXIS_LETTERS {
+        let Some(w) = words.take(a) else { continue };
+        ctx.diags.push(
+            Diagnostic::new(Code::WordNotAllowed, format!("axis word `{}` in a block that cancels the cycle", w.address))
+                .primary(w.span, "nothing moves to this position")
+                .secondary(cancel, "cycle cancelled here")
+                .help("add a motion code (`G0`, `G1`) or move the axis word to the next block"),
+        );
+        out.push(place(StmtKind::Word(Word { letter: a, value: w.value, span: w.span }), w.span));
+    }
+}
+
+/// The implicit move made by free axis and arc words, if any.
+pub(super) fn implicit_motion(words: &mut Words, ctx: &mut Ctx<'_>) -> Option<Placed> {
+    if !has_motion_words(words) {
+        return None;
+    }
+    words.begin();
+    let m = motion(MotionKind::Implicit, &[], words, ctx);
+    let span = words.taken_spans().iter().copied().reduce(Span::to)?;
+    Some(place(StmtKind::Motion(m), span))
+}
+
+/// `F`, `S`, `T`, `D`, `H` standing alone.
+pub(super) fn standalone(words: &mut Words, out: &mut Vec<Placed>, ctx: &mut Ctx<'_>) {
+    for addr in ["F", "S", "T", "D", "H"] {
+        let Some(w) = words.take(addr) else { continue };
+        let kind = match addr {
+            "F" => {
+                check_not_negative(&w.value, w.span, "feed rate", ctx.diags);
+                StmtKind::Feed(w.value.clone())
+            }
+            "S" => {
+                check_not_negative(&w.value, w.span, "spindle speed", ctx.diags);
+                StmtKind::SpindleSpeed(w.value.clone())
+            }
+            "T" => StmtKind::ToolSelect(tool_ref(&w, ctx)),
+            _ => register(&w, ctx),
+        };
+        out.push(place(kind, w.span));
+    }
+}
+
+fn tool_ref(w: &WordSyntax, ctx: &mut Ctx<'_>) -> ToolRef {
+    if let Value::Expr(e) = &w.value {
+        if let ExprKind::Str(s) = &ctx.exprs[*e].kind {
+            return ToolRef::Name(s.clone());
+        }
+    }
+    check_index(w, "tool number", None, ctx.diags);
+    ToolRef::Number(w.value.clone())
+}
+
+/// `D`/`H` alone: a cutting edge where the spec gives the address that
+/// role (Siemens `D1`), otherwise an offset register.
+fn register(w: &WordSyntax, ctx: &mut Ctx<'_>) -> StmtKind {
+    check_index(w, "offset number", None, ctx.diags);
+    let letter = single_letter(&w.address).unwrap_or('D');
+    let edge = ctx.spec.address(letter).map(|a| a.role == "cutting-edge").unwrap_or(false);
+    if edge {
+        StmtKind::CuttingEdge(w.value.clone())
+    } else {
+        StmtKind::OffsetRegister { letter, value: w.value.clone() }
+    }
+}
+
+/// A word a modal fixed cycle may take in a block without a code
+/// (`X.48 L6` repeats the cycle): kept without a warning.
+fn modal_cycle_word(w: &WordSyntax, ctx: &Ctx<'_>) -> bool {
+    let letter = single_letter(&w.address);
+    letter.map(|c| matches!(c, 'Q' | 'P') || c == ctx.spec.repeat_letter).unwrap_or(false)
+}
+
+/// Every word still free: given to a dynamic code if the block has one,
+/// otherwise reported (E0209 or W0004) and kept.
+pub(super) fn unused(
+    words: &mut Words,
+    dynamic: Option<&mut Vec<Word>>,
+    implicit: bool,
+    out: &mut Vec<Placed>,
+    ctx: &mut Ctx<'_>,
+) {
+    let free: Vec<WordSyntax> =
+        words.list.iter_mut().filter(|e| !e.used).map(|e| { e.used = true; e.w.clone() }).collect();
+    if let Some(dynamic) = dynamic {
+        dynamic.extend(free.iter().map(as_word));
+        return;
+    }
+    for w in free {
+        if !(implicit && modal_cycle_word(&w, ctx)) {
+            report_unused(&w, ctx);
+        }
+        out.push(place(keep(&w, ctx), w.span));
+    }
+}
+
+fn report_unused(w: &WordSyntax, ctx: &mut Ctx<'_>) {
+    let d = Diagnostic::new(Code::WordNotAllowed, format!("nothing in this block uses `{}`", w.address))
+        .help("remove the word, or add the code that uses it");
+    let d = if ctx.spec.has(Capability::StrictWords) {
+        d.primary(w.span, "unused word")
+    } else {
+        let d = Diagnostic { code: Code::SuspectWord, ..d };
+        d.with_severity(Severity::Warning).primary(w.span, "unused word, kept as written")
+    };
+    ctx.diags.push(d);
+}
+
+/// A word kept as written: one letter as a `Word`, a longer address as raw text.
+pub(super) fn keep(w: &WordSyntax, ctx: &Ctx<'_>) -> StmtKind {
+    match (single_letter(&w.address), &w.value) {
+        (Some(_), _) | (None, Value::Expr(_)) => StmtKind::Word(as_word(w)),
+        (None, Value::Number(d)) => StmtKind::Raw { dialect: ctx.spec.id.clone(), text: raw_text(w, *d) },
+    }
+}
+
+fn raw_text(w: &WordSyntax, d: Decimal) -> String {
+    if w.extended {
+        format!("{}={}", w.address, d)
+    } else {
+        format!("{}{}", w.address, d)
+    }
+}
+
+/// A word as a `Word`; a longer address keeps its first letter.
+pub(super) fn as_word(w: &WordSyntax) -> Word {
+    let letter = w.address.chars().next().unwrap_or('?');
+    Word { letter, value: w.value.clone(), span: w.span }
+}

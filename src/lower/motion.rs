@@ -1,0 +1,82 @@
+//! Moves and fixed cycles: a motion code (or none: an implicit move) with
+//! its axis, arc, polar and corner words; `G81`-style cycles with R Q P,
+//! repeats and I J K.
+
+use super::checks::{check_arc_format, check_index, check_not_negative};
+use super::words::Words;
+use super::Ctx;
+use crate::ir::{Axes, CannedCycle, CornerKind, CycleKind, Motion, MotionKind};
+
+/// Arc words are read for arcs and for implicit moves (the modal motion
+/// may be an arc).
+fn takes_arc_words(kind: MotionKind) -> bool {
+    matches!(kind, MotionKind::Implicit | MotionKind::Arc(_) | MotionKind::ArcThrough | MotionKind::ArcTangent)
+}
+
+/// Words that make a block without a motion code an implicit move.
+pub(super) const MOTION_WORDS: &[&str] =
+    &["I", "J", "K", "R", "CR", "AR", "TURN", "I1", "J1", "K1", "@", "^", "AP", "RP", "CHF", "CHR", "RND", "RNDM"];
+
+/// A move: its kind and the words it takes; `uses` adds the code's extra
+/// words (LinuxCNC `P` turns).
+pub(super) fn motion(kind: MotionKind, uses: &[char], words: &mut Words, ctx: &mut Ctx<'_>) -> Motion {
+    let mut m = Motion::new(kind);
+    m.target = words.take_axes();
+    if takes_arc_words(kind) {
+        check_arc_format(words, ctx.diags);
+        m.arc.i = words.coord("I");
+        m.arc.j = words.coord("J");
+        m.arc.k = words.coord("K");
+        m.arc.radius = words.value("R").or_else(|| words.value("CR"));
+        m.arc.angle = words.value("AR");
+        m.arc.turns = words.value("TURN");
+        if m.arc.turns.is_none() && uses.contains(&'P') {
+            m.arc.turns = words.value("P");
+        }
+        m.arc.mid = mid_point(words);
+    }
+    m.polar_radius = words.value("@").or_else(|| words.value("RP"));
+    m.polar_angle = words.value("^").or_else(|| words.value("AP"));
+    m.corner = corner(words);
+    m
+}
+
+/// Siemens `CIP` intermediate point `I1= J1= K1=`.
+fn mid_point(words: &mut Words) -> Option<Axes> {
+    let mid = Axes { x: words.coord("I1"), y: words.coord("J1"), z: words.coord("K1"), ..Default::default() };
+    (!mid.is_empty()).then_some(mid)
+}
+
+fn corner(words: &mut Words) -> Option<(CornerKind, crate::ir::Value)> {
+    const KINDS: [(&str, CornerKind); 4] = [
+        ("CHF", CornerKind::Chamfer),
+        ("CHR", CornerKind::ChamferLeg),
+        ("RND", CornerKind::Round),
+        ("RNDM", CornerKind::RoundModal),
+    ];
+    KINDS.iter().find_map(|(a, k)| words.value(*a).map(|v| (*k, v)))
+}
+
+/// A fixed cycle with its words.
+pub(super) fn cycle(kind: CycleKind, words: &mut Words, ctx: &mut Ctx<'_>) -> CannedCycle {
+    let target = words.take_axes();
+    let q = words.take("Q");
+    if let Some(q) = &q {
+        check_not_negative(&q.value, q.span, "peck depth", ctx.diags);
+    }
+    let repeat = words.take(ctx.spec.repeat_letter);
+    if let Some(r) = &repeat {
+        check_index(r, "repeat count", None, ctx.diags);
+    }
+    CannedCycle {
+        kind,
+        target,
+        r: words.value("R"),
+        q: q.map(|w| w.value),
+        p: words.value("P"),
+        repeat: repeat.map(|w| w.value),
+        i: words.value("I"),
+        j: words.value("J"),
+        k: words.value("K"),
+    }
+}

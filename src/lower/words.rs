@@ -1,0 +1,194 @@
+//! The non-code words of one line, gathered once: repeated addresses are
+//! reported (E0205), lengths written without a decimal point are converted
+//! to increments where the dialect says so (W0001), and each word is marked
+//! when a statement takes it, so the words nobody takes can be reported.
+
+use crate::diag::{Code, Diagnostic};
+use crate::dialect::{DialectSpec, IntegerLengths};
+use crate::ir::{Axes, Coord, Decimal, Value, Word, AXIS_LETTERS};
+use crate::span::Span;
+use crate::syntax::WordSyntax;
+
+/// An address to look up: `"CR"` or `'X'` (no allocation either way).
+pub(super) trait Addr: Copy {
+    fn is(self, address: &str) -> bool;
+}
+
+impl Addr for &str {
+    fn is(self, address: &str) -> bool {
+        address == self
+    }
+}
+
+impl Addr for char {
+    fn is(self, address: &str) -> bool {
+        let mut cs = address.chars();
+        cs.next() == Some(self) && cs.next().is_none()
+    }
+}
+
+/// One word and whether a statement has taken it.
+pub(super) struct Entry {
+    pub w: WordSyntax,
+    pub used: bool,
+}
+
+/// The words of a line in source order.
+#[derive(Default)]
+pub(super) struct Words {
+    pub list: Vec<Entry>,
+    /// Spans of the words taken since the last [`Words::begin`].
+    taken: Vec<Span>,
+}
+
+impl Words {
+    /// Adds a word, reporting a repeated address (the repeat is kept aside
+    /// in `extra` so that nothing is lost).
+    pub fn push(&mut self, w: WordSyntax, diags: &mut Vec<Diagnostic>, extra: &mut Vec<WordSyntax>) {
+        if let Some(first) = self.list.iter().find(|e| e.w.address == w.address) {
+            diags.push(
+                Diagnostic::new(Code::RepeatedWord, format!("`{}` is given twice in this block", w.address))
+                    .primary(w.span, "repeated here")
+                    .secondary(first.w.span, "first given here")
+                    .help("keep one of the two words; a block holds each address once"),
+            );
+            extra.push(w);
+            return;
+        }
+        self.list.push(Entry { w, used: false });
+    }
+
+    fn find(&self, addr: impl Addr) -> Option<usize> {
+        self.list.iter().position(|e| addr.is(&e.w.address))
+    }
+
+    /// Whether the line has a word with this address (taken or not).
+    pub fn has(&self, addr: impl Addr) -> bool {
+        self.find(addr).is_some()
+    }
+
+    /// Whether the line has this word and nobody took it yet.
+    pub fn has_free(&self, addr: impl Addr) -> bool {
+        self.find(addr).map(|i| !self.list[i].used).unwrap_or(false)
+    }
+
+    /// The word, if present (taken or not).
+    pub fn get(&self, addr: impl Addr) -> Option<&WordSyntax> {
+        self.find(addr).map(|i| &self.list[i].w)
+    }
+
+    /// Starts recording the spans of taken words for one statement.
+    pub fn begin(&mut self) {
+        self.taken.clear();
+    }
+
+    /// The spans taken since [`Words::begin`].
+    pub fn taken_spans(&self) -> &[Span] {
+        &self.taken
+    }
+
+    /// Takes a free word.
+    pub fn take(&mut self, addr: impl Addr) -> Option<WordSyntax> {
+        let i = self.find(addr)?;
+        if self.list[i].used {
+            return None;
+        }
+        self.list[i].used = true;
+        self.taken.push(self.list[i].w.span);
+        Some(self.list[i].w.clone())
+    }
+
+    pub fn value(&mut self, addr: impl Addr) -> Option<Value> {
+        self.take(addr).map(|w| w.value)
+    }
+
+    pub fn coord(&mut self, addr: impl Addr) -> Option<Coord> {
+        self.take(addr).map(|w| Coord { value: w.value, dim: w.dim, span: w.span })
+    }
+
+    /// Whether any free axis word is present.
+    pub fn has_free_axes(&self) -> bool {
+        AXIS_LETTERS.iter().any(|a| self.has_free(*a))
+    }
+
+    /// Takes every free axis word.
+    pub fn take_axes(&mut self) -> Axes {
+        let mut axes = Axes::default();
+        for a in AXIS_LETTERS {
+            if let Some(c) = self.coord(a) {
+                if let Some(slot) = axes.slot_mut(a) {
+                    *slot = Some(c);
+                }
+            }
+        }
+        axes
+    }
+
+    /// Takes every free single-letter word in source order, but those in `except`.
+    pub fn take_all_letters(&mut self, except: &[char]) -> Vec<Word> {
+        let mut out = Vec::new();
+        for i in 0..self.list.len() {
+            let e = &self.list[i];
+            let Some(letter) = single_letter(&e.w.address) else { continue };
+            if e.used || except.contains(&letter) {
+                continue;
+            }
+            self.list[i].used = true;
+            self.taken.push(self.list[i].w.span);
+            out.push(Word { letter, value: self.list[i].w.value.clone(), span: self.list[i].w.span });
+        }
+        out
+    }
+}
+
+/// The letter of a one-letter address.
+pub(super) fn single_letter(addr: &str) -> Option<char> {
+    let mut cs = addr.chars();
+    match (cs.next(), cs.next()) {
+        (Some(c), None) => Some(c),
+        _ => None,
+    }
+}
+
+/// `value × increment`, exactly; `None` on overflow.
+fn times(value: Decimal, inc: Decimal) -> Option<Decimal> {
+    let m = value.mantissa.checked_mul(inc.mantissa)?;
+    let scale = value.scale.checked_add(inc.scale)?;
+    Some(Decimal { mantissa: m, scale, point: true })
+}
+
+/// Converts lengths written without a decimal point into increments when
+/// the dialect reads them so; one warning per line labels every such word.
+pub(super) fn convert_increments(words: &mut [WordSyntax], spec: &DialectSpec, diags: &mut Vec<Diagnostic>) {
+    if spec.numbers.integer_lengths != IntegerLengths::Increments {
+        return;
+    }
+    let mut warn: Option<Diagnostic> = None;
+    for w in words.iter_mut() {
+        let Some(letter) = single_letter(&w.address) else { continue };
+        let Value::Number(d) = w.value else { continue };
+        if d.point || w.extended || !spec.is_length_address(letter) {
+            continue;
+        }
+        let (Some(mm), Some(inch)) = (times(d, spec.numbers.increment_mm), times(d, spec.numbers.increment_inch))
+        else {
+            diags.push(
+                Diagnostic::new(Code::InvalidValue, format!("`{}{}` is too large to read in increments", w.address, d))
+                    .primary(w.span, "too many digits")
+                    .help("write the length with a decimal point"),
+            );
+            continue;
+        };
+        w.value = Value::Number(mm);
+        if d.mantissa == 0 {
+            continue;
+        }
+        let label = format!("read as {mm} mm ({inch} in under G20)");
+        let diag = warn.take().unwrap_or_else(|| {
+            Diagnostic::new(Code::LengthWithoutPoint, "lengths without a decimal point are read in least input increments")
+                .help("write a decimal point (`X10.`) if whole millimetres or inches are meant")
+        });
+        warn = Some(diag.primary(w.span, label));
+    }
+    diags.extend(warn);
+}
