@@ -93,6 +93,10 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
             words.push(format!("{letter}{}", code.format(0, false)));
             w.push_words(words, list);
         }
+        K::DynamicCode { letter, value, words: list } => {
+            w.push_word(words, &letter.to_string(), &crate::ir::Value::Expr(*value), NumKind::Int, span);
+            w.push_words(words, list);
+        }
         K::Command { name, args } if bracket => {
             let _ = args;
             w.cannot(span, &format!("the Siemens command `{name}`"), "remove it or find the target's equivalent");

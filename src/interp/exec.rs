@@ -21,7 +21,7 @@ pub fn phase(kind: &StmtKind) -> u8 {
         ToolChange => 6,
         Spindle(_) => 7,
         Coolant(_) => 8,
-        Aux { .. } => 9,
+        Aux { .. } | DynamicCode { .. } => 9,
         Dwell { .. } => 10,
         Plane(_) => 11,
         Units { .. } => 12,

@@ -78,6 +78,9 @@ impl Printer<'_> {
             K::Dwell { value, unit } => format!("dwell {} {}", self.value(value), name(unit)),
             K::Stop(k) => format!("stop {}", name(k)),
             K::Aux { letter, code, words } => format!("aux {letter}{code}{}", self.words(words)),
+            K::DynamicCode { letter, value, words } => {
+                format!("dynamic-code {letter}={}{}", self.expr(*value), self.words(words))
+            }
             K::Command { name: n, args } => match args {
                 None => format!("command {n}"),
                 Some(a) => format!("command {n}({})", self.args(a.iter().map(|a| a.value))),
