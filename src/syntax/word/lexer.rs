@@ -249,8 +249,8 @@ mod tests {
         let t = toks("IF[#118EQ#116]AND[#119EQ#117]GOTO10");
         assert_eq!(t[4], (Tok::Kw(Kw::Eq), "EQ"));
         assert_eq!(t[8], (Tok::Kw(Kw::And), "AND"));
-        assert_eq!(t[15], (Tok::Kw(Kw::Goto), "GOTO"));
-        assert_eq!(t[16], (Tok::Number, "10"));
+        assert_eq!(t[16], (Tok::Kw(Kw::Goto), "GOTO"));
+        assert_eq!(t[17], (Tok::Number, "10"));
         assert_eq!(toks("o100 endsub")[2].0, Tok::Kw(Kw::EndSub));
         assert_eq!(toks("o100")[0].0, Tok::O);
         assert_eq!(toks("sin")[0].0, Tok::Name);

@@ -23,7 +23,7 @@ pub fn split(input: &LineInput<'_>, toks: &[Spanned], feed: &mut Vec<Spanned>, d
         match t {
             Tok::Comment { closed } => side.push(paren_comment(input, l, r, closed, diags)),
             Tok::Semi => side.extend(semicolon(input, l, r, diags)),
-            Tok::Bad => diags.push(bad_char(&input.text[l..r], sp)),
+            Tok::Bad => diags.push(bad_char(input.text.get(l..r).unwrap_or("?"), sp)),
             _ => feed.push((l, t, r)),
         }
     }
@@ -50,7 +50,7 @@ fn paren_comment(input: &LineInput<'_>, l: usize, r: usize, closed: bool, diags:
 /// `(MSG,text)` is an operator message; anything else a comment.
 fn comment_kind(inner: &str, style: CommentStyle) -> StmtKind {
     let t = inner.trim_start();
-    if style == CommentStyle::Paren && t.len() >= 4 && t[..4].eq_ignore_ascii_case("MSG,") {
+    if style == CommentStyle::Paren && t.get(..4).is_some_and(|p| p.eq_ignore_ascii_case("MSG,")) {
         return StmtKind::Message(Some(t[4..].to_string()));
     }
     StmtKind::Comment { text: inner.to_string(), style }
