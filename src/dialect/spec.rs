@@ -80,6 +80,8 @@ pub enum Capability {
     /// Arithmetic allowed after a word without brackets (`X#1/2`), as some
     /// Fanuc-like controls accept.
     UnbracketedExpressions,
+    /// Fanuc `,C` (chamfer) and `,R` (corner rounding) words after a move.
+    CommaCornerWords,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -102,6 +104,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("frames", Capability::Frames),
     ("g-code-transforms", Capability::GCodeTransforms),
     ("unbracketed-expressions", Capability::UnbracketedExpressions),
+    ("comma-corner-words", Capability::CommaCornerWords),
 ];
 
 impl Capability {

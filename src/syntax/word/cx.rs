@@ -165,9 +165,13 @@ impl<'a> Cx<'a> {
         PExpr { span: Span { start: self.span(l, l).start, ..e.span }, ..e }
     }
 
+    /// `[e]`: the expression's span grows to take in the brackets.
     pub fn bracket(&self, e: PExpr, l: usize, r: usize) -> PExpr {
-        let _ = (l, r);
-        PExpr { arith: false, ..e }
+        let span = self.span(l, r);
+        if let PV::Id(id) = e.v {
+            self.exprs.borrow_mut()[id].span = span;
+        }
+        PExpr { arith: false, span, ..e }
     }
 
     pub fn var_expr(&self, v: (Var, Span)) -> PExpr {
@@ -246,7 +250,25 @@ impl<'a> Cx<'a> {
     }
 
     pub fn word(&self, letter: u8, l: usize, v: PExpr, r: usize) {
-        let address = char::from(letter).to_string();
+        if matches!(letter, b'@' | b'^') {
+            self.require(Capability::PolarWords, self.span(l, l + 1), "polar words `@` and `^`");
+        }
+        self.push_word(char::from(letter).to_string(), l, l + 1, v, r);
+    }
+
+    /// Fanuc `,C` chamfer and `,R` corner rounding words.
+    pub fn comma_word(&self, letter: u8, l: usize, v: PExpr, r: usize) {
+        self.require(Capability::CommaCornerWords, self.span(l, l + 2), "`,C` / `,R` corner words");
+        self.push_word(format!(",{}", char::from(letter)), l, self.letter_end(l), v, r);
+    }
+
+    /// The end of `,R` (spaces may stand between comma and letter).
+    fn letter_end(&self, l: usize) -> usize {
+        let b = self.text.as_bytes();
+        (l + 1..b.len()).find(|&i| b[i].is_ascii_alphabetic()).map_or(l + 1, |i| i + 1)
+    }
+
+    fn push_word(&self, address: String, l: usize, ar: usize, v: PExpr, r: usize) {
         if v.arith && !self.has(crate::dialect::Capability::UnbracketedExpressions) {
             self.unbracketed(&address, v.span);
         }
@@ -256,7 +278,7 @@ impl<'a> Cx<'a> {
             dim: None,
             extended: false,
             span: self.span(l, r),
-            address_span: self.span(l, l + 1),
+            address_span: self.span(l, ar),
         };
         self.items.borrow_mut().push(Item::Word(w));
     }
@@ -285,6 +307,13 @@ impl<'a> Cx<'a> {
 
     pub fn unknown_keyword(&self, l: usize, r: usize) {
         let name = &self.text[l..r];
+        if name.as_bytes()[0].eq_ignore_ascii_case(&b'O') && self.has(Capability::NumberedPrograms) {
+            return self.diag(
+                Diagnostic::new(Code::UnknownKeyword, format!("`{name}` is not a program number"))
+                    .primary(self.span(l, r), "programs are numbered in this dialect")
+                    .help(format!("write a number and keep the name as a comment: `O1234 ({})`", &name[1..])),
+            );
+        }
         self.diag(
             Diagnostic::new(Code::UnknownKeyword, format!("`{name}` is not a keyword of this dialect"))
                 .primary(self.span(l, r), "unknown keyword")

@@ -10,12 +10,15 @@ use logos::Logos;
 
 /// Raw tokens as logos finds them.
 #[derive(Logos, Clone, Copy, Debug, PartialEq, Eq)]
-#[logos(skip r"[ \t\r\f\v]+")]
+#[logos(skip r"[ \t\r\f\v\u{feff}]+")]
 enum Raw {
     #[regex("[A-Za-z]")]
     Letter,
     #[regex("[A-Za-z][A-Za-z_]+")]
     Letters,
+    /// LinuxCNC polar words `@` (radius) and `^` (angle).
+    #[regex("[@^]")]
+    Polar,
     #[regex(r"[0-9.]+")]
     Number,
     #[token("#")]
@@ -54,7 +57,7 @@ enum Raw {
 /// back from the line text through the token's byte range.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Tok {
-    /// A single address letter, upper-cased (never `O`).
+    /// A single address letter, upper-cased (never `O`), or `@` / `^`.
     Letter(u8),
     /// The letter `O` starting a program number `O1234`.
     O,
@@ -189,6 +192,7 @@ fn convert(raw: Raw, slice: &str) -> Tok {
             b'O' => Tok::O,
             c => Tok::Letter(c),
         },
+        Raw::Polar => Tok::Letter(slice.as_bytes()[0]),
         Raw::Letters => Kw::lookup(slice).map(Tok::Kw).unwrap_or(Tok::Name),
         Raw::Number => Tok::Number,
         Raw::Hash => Tok::Hash,
@@ -272,5 +276,7 @@ mod tests {
         assert_eq!(toks("#<_a b>")[1], (Tok::Named, "<_a b>"));
         assert_eq!(toks("X1.2.3")[1], (Tok::Number, "1.2.3"));
         assert_eq!(toks("2**3")[1], (Tok::Pow, "**"));
+        assert_eq!(toks("@1 ^2")[2], (Tok::Letter(b'^'), "^"));
+        assert_eq!(toks("\u{feff}G1")[0], (Tok::Letter(b'G'), "G"));
     }
 }

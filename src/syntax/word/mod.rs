@@ -95,6 +95,7 @@ impl WordFrontEnd {
             errors: RefCell::new(Vec::new()),
             open_do: RefCell::new(&mut self.open_do),
         };
+        let first = cx.diags.borrow().len();
         let result = self.parser.parse(&cx, feed.iter().map(|&t| Ok::<_, ()>(t)));
         let mut errs: Vec<_> = cx.errors.take().into_iter().map(|e| e.error).collect();
         if let Err(e) = result {
@@ -102,7 +103,11 @@ impl WordFrontEnd {
         }
         for e in errs {
             let d = errors::to_diagnostic(&cx, feed, e);
-            cx.diag(d);
+            // An action may have said it already (an unknown name).
+            let said = cx.diags.borrow()[first..].iter().any(|x| x.span() == d.span());
+            if !said {
+                cx.diag(d);
+            }
         }
         cx.items.take()
     }

@@ -25,6 +25,11 @@ pub fn test_spec(caps: &[Capability]) -> DialectSpec {
     s.functions = vec![
         f("SIN", Func::Sin, 1),
         f("COS", Func::Cos, 1),
+        f("TAN", Func::Tan, 1),
+        f("ASIN", Func::Asin, 1),
+        f("ACOS", Func::Acos, 1),
+        f("LN", Func::Ln, 1),
+        f("EXP", Func::Exp, 1),
         f("SQRT", Func::Sqrt, 1),
         f("ABS", Func::Abs, 1),
         f("FIX", Func::Floor, 1),
@@ -37,12 +42,12 @@ pub fn test_spec(caps: &[Capability]) -> DialectSpec {
 
 fn fanuc() -> DialectSpec {
     use Capability::*;
-    test_spec(&[ParenComments, MacroB, NumberedPrograms])
+    test_spec(&[ParenComments, MacroB, NumberedPrograms, CommaCornerWords])
 }
 
 fn linuxcnc() -> DialectSpec {
     use Capability::*;
-    test_spec(&[ParenComments, SemicolonComments, OWords, NamedParameters, PowerOperator, NumberedPrograms])
+    test_spec(&[ParenComments, SemicolonComments, OWords, NamedParameters, PowerOperator, NumberedPrograms, PolarWords])
 }
 
 /// Parses lines with one front end; returns the rendered result.
@@ -263,4 +268,10 @@ fn comments_are_kept_in_order() {
     let kinds: Vec<bool> = line.items.iter().map(is_comment).collect();
     assert_eq!(kinds, vec![true, false, true, false, true]);
     assert!(diags.is_empty());
+}
+
+#[test]
+fn corner_and_polar_words() {
+    insta::assert_snapshot!(run(&fanuc(), "G1 X0,R#144 Y2 ,C1.5"));
+    insta::assert_snapshot!(run(&linuxcnc(), "G91 G81 @1 ^[360/17] R.1\n G1 X1,R2"));
 }
