@@ -42,6 +42,7 @@ pub struct Cx<'a> {
     pub errors: RefCell<Vec<Recovered>>,
     /// O-words of `do` loops still open (a `while` with one closes it).
     pub open_do: RefCell<&'a mut Vec<String>>,
+    pub unknown_seen: std::cell::Cell<bool>,
 }
 
 impl<'a> Cx<'a> {
@@ -306,6 +307,11 @@ impl<'a> Cx<'a> {
     }
 
     pub fn unknown_keyword(&self, l: usize, r: usize) {
+        // Report the first unknown name of a line only: text such as
+        // `[put the XY pairs here]` would otherwise give one per word.
+        if self.unknown_seen.replace(true) {
+            return;
+        }
         let name = &self.text[l..r];
         if name.as_bytes()[0].eq_ignore_ascii_case(&b'O') && self.has(Capability::NumberedPrograms) {
             return self.diag(

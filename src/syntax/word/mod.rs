@@ -94,6 +94,7 @@ impl WordFrontEnd {
             items: RefCell::new(Vec::new()),
             errors: RefCell::new(Vec::new()),
             open_do: RefCell::new(&mut self.open_do),
+            unknown_seen: std::cell::Cell::new(false),
         };
         let first = cx.diags.borrow().len();
         let result = self.parser.parse(&cx, feed.iter().map(|&t| Ok::<_, ()>(t)));

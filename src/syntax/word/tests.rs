@@ -275,3 +275,30 @@ fn corner_and_polar_words() {
     insta::assert_snapshot!(run(&fanuc(), "G1 X0,R#144 Y2 ,C1.5"));
     insta::assert_snapshot!(run(&linuxcnc(), "G91 G81 @1 ^[360/17] R.1\n G1 X1,R2"));
 }
+
+/// Throughput of `parse_line` over a CAM program (run in release):
+/// `python3 ../shared/bench/gen_program.py --lines 200000 -o /tmp/b.nc`, then
+/// `CNCC_BENCH_FILE=/tmp/b.nc cargo test --release --lib word::tests::throughput -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn throughput() {
+    let Ok(path) = std::env::var("CNCC_BENCH_FILE") else {
+        println!("CNCC_BENCH_FILE not set; skipped");
+        return;
+    };
+    let text = std::fs::read_to_string(path).unwrap();
+    let spec = linuxcnc();
+    for (label, mut fe) in [("fast path + grammar", WordFrontEnd::new()), ("grammar only", WordFrontEnd::without_fast_path())] {
+        let start = std::time::Instant::now();
+        let (mut words, mut diags, mut exprs, mut offset) = (0usize, Vec::new(), Arena::new(), 0u32);
+        for l in text.lines() {
+            let input = LineInput { text: l, file: FileId(0), offset, spec: &spec };
+            if let Some(line) = fe.parse_line(&input, &mut exprs, &mut diags) {
+                words += line.items.len();
+            }
+            offset += l.len() as u32 + 1;
+        }
+        let secs = start.elapsed().as_secs_f64();
+        println!("{label}: {:.1} MB/s ({words} items, {} diagnostics)", text.len() as f64 / secs / 1e6, diags.len());
+    }
+}
