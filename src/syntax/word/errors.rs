@@ -33,6 +33,11 @@ fn no_value(cx: &Cx<'_>, l: usize, r: usize) -> Diagnostic {
 }
 
 fn unexpected(cx: &Cx<'_>, feed: &[Spanned], l: usize, t: Tok, r: usize, expected: &[String]) -> Diagnostic {
+    if t == Tok::Named && feed.iter().any(|p| p.1 == Tok::O && p.2 <= l) {
+        return Diagnostic::new(Code::SyntaxError, format!("o-word `o{}` without a statement", &cx.text[l..r]))
+            .primary(cx.span(l, r), "expected `sub`, `call`, `endsub`, `return`, `if`, `while`, `do` or another o-word keyword after this")
+            .help(format!("write for example `o{} call`", &cx.text[l..r]));
+    }
     if let Some((pl, pr)) = letter_before(feed, l).filter(|_| wants_value(expected)) {
         return no_value(cx, pl, pr);
     }
@@ -47,7 +52,7 @@ fn early_end(cx: &Cx<'_>, feed: &[Spanned], at: usize, expected: &[String]) -> D
     if let Some((pl, pr)) = letter_before(feed, at).filter(|_| wants_value(expected)) {
         return no_value(cx, pl, pr);
     }
-    if wants_value(expected) {
+    if wants_value(expected) || expected.iter().any(|e| e == "\"]\"") {
         return Diagnostic::new(Code::IncompleteExpression, "the line ends inside an expression")
             .primary(cx.span(last.0, last.1), format!("expected {} after this", readable(expected)))
             .help("complete the expression: an operand or a closing `]` is missing");

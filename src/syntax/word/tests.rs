@@ -302,3 +302,10 @@ fn throughput() {
         println!("{label}: {:.1} MB/s ({words} items, {} diagnostics)", text.len() as f64 / secs / 1e6, diags.len());
     }
 }
+
+#[test]
+fn more_lines_and_invalid_values() {
+    let text = "/ G1 X1\nN1.5 G1\nWHILE [1] DO 300\nO1234\n#1=#1.5\nGOTO [#1+1]\nX[1+2\nX.\nG1 X1 (a) (b) Y2";
+    insta::assert_snapshot!(run(&fanuc(), text));
+    insta::assert_snapshot!(run(&linuxcnc(), "o<Sub_A> sub\no<sub_a> endsub\no<x> call\no<x>\no100 foo"));
+}
