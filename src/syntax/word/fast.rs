@@ -1,11 +1,12 @@
-//! The fast path: most lines CAM systems write are plain words
-//! (`N10 G1 X12.345 Y-3.2 F500`). They are read here byte by byte without
-//! the lexer and the LALRPOP parser. Anything else (comments, `#`, `[`,
+//! The fast path: most lines CAM systems write are plain words and closed
+//! `( )` comments (`N10 G1 X12.345 Y-3.2 F500`). They are read here byte by
+//! byte without the lexer and the LALRPOP parser. Anything else (`;`, `#`, `[`,
 //! keywords, `O`, `/`, spaces inside a word, a bad number) returns `None`
 //! and the line goes through the grammar, which gives the same result for
 //! the lines this path accepts (tested in `tests::fast_path_agrees`).
 
-use crate::ir::{Decimal, Value};
+use super::prefix::comment_kind;
+use crate::ir::{CommentStyle, Decimal, Stmt, Value};
 use crate::span::{Span, Spanned};
 use crate::syntax::{Item, LineInput, LineSyntax, WordSyntax};
 
@@ -24,6 +25,13 @@ pub fn fast_line(input: &LineInput<'_>) -> Option<LineSyntax> {
         i = skip_ws(b, i);
         if i >= b.len() {
             return Some(line);
+        }
+        if b[i] == b'(' {
+            let close = i + b[i..].iter().position(|&c| c == b')')?;
+            let kind = comment_kind(&input.text[i + 1..close], CommentStyle::Paren);
+            line.items.push(Item::Stmt(Stmt::new(kind, sp(i, close + 1))));
+            i = close + 1;
+            continue;
         }
         let letter = b[i].to_ascii_uppercase();
         if !letter.is_ascii_uppercase() || letter == b'O' {
@@ -60,7 +68,7 @@ fn number_end(b: &[u8], i: usize) -> Option<usize> {
     while j < b.len() && (b[j].is_ascii_digit() || b[j] == b'.') {
         j += 1;
     }
-    let ends_well = j == b.len() || matches!(b[j], b' ' | b'\t' | b'\r') || b[j].is_ascii_alphabetic();
+    let ends_well = j == b.len() || matches!(b[j], b' ' | b'\t' | b'\r' | b'(') || b[j].is_ascii_alphabetic();
     (j > start && ends_well).then_some(j)
 }
 
@@ -72,6 +80,6 @@ fn seq_number(b: &[u8], i: usize) -> Option<(u32, usize)> {
         n = n.checked_mul(10)?.checked_add(u32::from(b[j] - b'0'))?;
         j += 1;
     }
-    let ends_well = j == b.len() || matches!(b[j], b' ' | b'\t' | b'\r') || b[j].is_ascii_alphabetic();
+    let ends_well = j == b.len() || matches!(b[j], b' ' | b'\t' | b'\r' | b'(') || b[j].is_ascii_alphabetic();
     (j > i && ends_well).then_some((n, j))
 }

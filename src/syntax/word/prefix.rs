@@ -48,7 +48,7 @@ fn paren_comment(input: &LineInput<'_>, l: usize, r: usize, closed: bool, diags:
 }
 
 /// `(MSG,text)` is an operator message; anything else a comment.
-fn comment_kind(inner: &str, style: CommentStyle) -> StmtKind {
+pub fn comment_kind(inner: &str, style: CommentStyle) -> StmtKind {
     let t = inner.trim_start();
     if style == CommentStyle::Paren && t.get(..4).is_some_and(|p| p.eq_ignore_ascii_case("MSG,")) {
         return StmtKind::Message(Some(t[4..].to_string()));
