@@ -288,19 +288,26 @@ fn throughput() {
     };
     let text = std::fs::read_to_string(path).unwrap();
     let spec = linuxcnc();
-    for (label, mut fe) in [("fast path + grammar", WordFrontEnd::new()), ("grammar only", WordFrontEnd::without_fast_path())] {
-        let start = std::time::Instant::now();
-        let (mut words, mut diags, mut exprs, mut offset) = (0usize, Vec::new(), Arena::new(), 0u32);
-        for l in text.lines() {
-            let input = LineInput { text: l, file: FileId(0), offset, spec: &spec };
-            if let Some(line) = fe.parse_line(&input, &mut exprs, &mut diags) {
-                words += line.items.len();
-            }
-            offset += l.len() as u32 + 1;
-        }
-        let secs = start.elapsed().as_secs_f64();
-        println!("{label}: {:.1} MB/s ({words} items, {} diagnostics)", text.len() as f64 / secs / 1e6, diags.len());
+    for (label, fast) in [("fast path + grammar", true), ("grammar only", false)] {
+        // Best of five passes: the machine is shared.
+        let best = (0..5).map(|_| pass(&text, &spec, fast)).fold(f64::MAX, f64::min);
+        println!("{label}: {:.1} MB/s", text.len() as f64 / best / 1e6);
     }
+}
+
+fn pass(text: &str, spec: &DialectSpec, fast: bool) -> f64 {
+    let mut fe = if fast { WordFrontEnd::new() } else { WordFrontEnd::without_fast_path() };
+    let start = std::time::Instant::now();
+    let (mut items, mut diags, mut exprs, mut offset) = (0usize, Vec::new(), Arena::new(), 0u32);
+    for l in text.lines() {
+        let input = LineInput { text: l, file: FileId(0), offset, spec };
+        if let Some(line) = fe.parse_line(&input, &mut exprs, &mut diags) {
+            items += line.items.len();
+        }
+        offset += l.len() as u32 + 1;
+    }
+    assert!(items > 0 && diags.is_empty());
+    start.elapsed().as_secs_f64()
 }
 
 #[test]
