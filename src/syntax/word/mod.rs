@@ -25,8 +25,6 @@ lalrpop_util::lalrpop_mod!(
 
 use crate::diag::Diagnostic;
 use crate::ir::{Arena, Expr};
-#[cfg(test)]
-use crate::ir::StmtKind;
 use crate::span::Span;
 use crate::syntax::{FrontEnd, Item, LineInput, LineSyntax};
 use cx::Cx;
@@ -147,10 +145,4 @@ impl FrontEnd for WordFrontEnd {
         }
         Some(self.slow_line(input, exprs, diags))
     }
-}
-
-/// True for a statement the grammar made (not a comment), for tests.
-#[cfg(test)]
-fn is_comment(it: &Item) -> bool {
-    matches!(it, Item::Stmt(s) if matches!(s.kind, StmtKind::Comment { .. } | StmtKind::Message(_)))
 }

@@ -39,10 +39,6 @@ fn paren_comment(input: &LineInput<'_>, l: usize, r: usize, closed: bool, diags:
                 .help("close the comment with `)` before the end of the line"),
         );
     }
-    if !input.spec.has(Capability::ParenComments) && !input.spec.has(Capability::SemicolonComments) {
-        // Both kinds missing means a spec without comment capabilities;
-        // word-address dialects all have `( )`, so read it anyway.
-    }
     let inner = &input.text[l + 1..if closed { r - 1 } else { r }];
     Item::Stmt(Stmt::new(comment_kind(inner, CommentStyle::Paren), sp))
 }

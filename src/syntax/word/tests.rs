@@ -257,6 +257,10 @@ mod fuzz {
     }
 }
 
+fn is_comment(it: &Item) -> bool {
+    matches!(it, Item::Stmt(s) if matches!(s.kind, crate::ir::StmtKind::Comment { .. } | crate::ir::StmtKind::Message(_)))
+}
+
 #[test]
 fn comments_are_kept_in_order() {
     let spec = linuxcnc();
