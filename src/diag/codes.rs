@@ -76,6 +76,9 @@ codes! {
     UnbracketedExpression = "E0105", "unbracketed-expression", Error,
         "arithmetic after a word without brackets",
         "In this dialect a word takes a number, a variable or a bracketed expression: write `X[#1/2]`, not `X#1/2`.";
+    NotInDialect = "E0106", "not-in-dialect", Error,
+        "a construct this dialect does not have",
+        "The construct (Macro B `IF`/`WHILE`/`GOTO`, LinuxCNC o-words, `#<name>` parameters, `**`, `O1234` program numbers, `#` variables) belongs to another dialect. Choose the dialect the program was written for with `--dialect`, or rewrite the construct.";
     TwoMotionCodes = "E0201", "two-motion-codes", Error,
         "two motion codes (G0, G1, G2, G3, cycles) in one block",
         "A block can ask for one motion only. Split the block, or remove one of the codes.";

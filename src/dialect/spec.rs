@@ -82,6 +82,8 @@ pub enum Capability {
     UnbracketedExpressions,
     /// LinuxCNC active comments `(MSG, text)` for operator messages.
     MessageComments,
+    /// Fanuc `,C` (chamfer) and `,R` (corner rounding) words after a move.
+    CommaCornerWords,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -105,6 +107,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("g-code-transforms", Capability::GCodeTransforms),
     ("unbracketed-expressions", Capability::UnbracketedExpressions),
     ("message-comments", Capability::MessageComments),
+    ("comma-corner-words", Capability::CommaCornerWords),
 ];
 
 impl Capability {

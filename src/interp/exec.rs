@@ -7,7 +7,7 @@
 use super::{Interp, Stop};
 use crate::canon::{Canon, CanonPlane, CanonUnits};
 use crate::diag::Code;
-use crate::ir::{Arena, Block, Expr, LengthUnit, Plane, Stmt, StmtKind};
+use crate::ir::{Arena, Block, Expr, LengthUnit, Plane as IrPlane, Stmt, StmtKind};
 
 /// Where a statement runs within its block (lower first).
 pub fn phase(kind: &StmtKind) -> u8 {
@@ -75,9 +75,9 @@ fn exec_stmt(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Exp
         }
         Plane(p) => {
             it.state.plane = match p {
-                Plane::XY => CanonPlane::XY,
-                Plane::ZX => CanonPlane::XZ,
-                Plane::YZ => CanonPlane::YZ,
+                IrPlane::XY => CanonPlane::XY,
+                IrPlane::ZX => CanonPlane::XZ,
+                IrPlane::YZ => CanonPlane::YZ,
             };
             it.emit(Canon::SelectPlane(it.state.plane));
         }

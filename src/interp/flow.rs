@@ -38,7 +38,7 @@ struct Frame {
 
 struct Loaded {
     program: std::rc::Rc<Program>,
-    index: FlowIndex,
+    index: std::rc::Rc<FlowIndex>,
 }
 
 /// Walks programs; program 0 is the main one.
@@ -65,7 +65,7 @@ enum Next {
 
 impl<'l> Walker<'l> {
     pub fn new(main: std::rc::Rc<Program>, loader: &'l mut dyn ProgramLoader) -> Self {
-        let index = FlowIndex::build(&main);
+        let index = std::rc::Rc::new(FlowIndex::build(&main));
         Walker {
             progs: vec![Loaded { program: main, index }],
             loader,
@@ -208,7 +208,7 @@ impl<'l> Walker<'l> {
         entered: bool,
     ) -> Result<Option<Next>, Stop> {
         use StmtKind::*;
-        let ix = &self.progs[prog].index;
+        let ix = self.progs[prog].index.clone();
         let after = |i: Option<&usize>| i.map(|&e| Next::Jump(e + 1));
         Ok(match &s.kind {
             Goto { target, dir, cond } => {
@@ -239,15 +239,14 @@ impl<'l> Walker<'l> {
             }
             ElseIf { cond, .. } => {
                 if !entered {
-                    after(ix.partner.get(&end_of_if(ix, pc)))
-                        .or_else(|| Some(Next::Jump(end_of_if(ix, pc) + 1)))
+                    Some(Next::Jump(end_of_if(&ix, pc) + 1))
                 } else if truth(it.eval(*cond, exprs)?) {
                     None
                 } else {
                     ix.next_branch.get(&pc).map(|&b| Next::Enter(b))
                 }
             }
-            Else { .. } => (!entered).then(|| Next::Jump(end_of_if(ix, pc) + 1)),
+            Else { .. } => (!entered).then(|| Next::Jump(end_of_if(&ix, pc) + 1)),
             EndIf { .. } | Do { .. } | RepeatUntil | Loop => None,
             While { cond, .. } => {
                 if truth(it.eval(*cond, exprs)?) {
@@ -386,7 +385,7 @@ impl<'l> Walker<'l> {
         dir: JumpDir,
         exprs: &Arena<Expr>,
     ) -> Result<Next, Stop> {
-        let ix = &self.progs[prog].index;
+        let ix = self.progs[prog].index.clone();
         let found = match target {
             JumpTarget::Sequence(v) => {
                 let n = it.value(v, exprs)?.round() as u32;
@@ -522,7 +521,7 @@ impl<'l> Walker<'l> {
             }
         }
         let program = self.loader.load(target)?;
-        let index = FlowIndex::build(&program);
+        let index = std::rc::Rc::new(FlowIndex::build(&program));
         // A file holding the sub's definition starts after it; a bare
         // program file starts at its first block.
         let start = index.call_target(target).map(|i| i + 1).unwrap_or(0);
