@@ -34,6 +34,13 @@ pub trait MotionHost {
     fn path_mode(&self) -> (MotionMode, f64) {
         (MotionMode::Continuous(0.0), 0.0)
     }
+    /// The tool was moved outside the program (G88: the operator retracts
+    /// it by hand); from now on assume it is at `to`. Emits nothing.
+    /// The default ignores it: a core should override it to update its
+    /// current position, as LinuxCNC does.
+    fn assume_position(&mut self, to: Pose) {
+        let _ = to;
+    }
     /// Whether feed and spindle-speed overrides are enabled (M48/M49/M50/M51);
     /// tapping cycles disable them and re-enable only those that were on.
     fn overrides_enabled(&self) -> (bool, bool) {

@@ -62,6 +62,9 @@ pub(super) fn run_body(
             // The operator retracts the tool by hand here.
             h.emit(Canon::ProgramStop);
             h.emit(start(dir));
+            // LinuxCNC then takes the tool to be at the clear level.
+            let p = f.pose(h, l.at, l.clear);
+            h.assume_position(p);
         }
         BoreDwellFeedOut => {
             f.feed(h, l.at, l.bottom);
