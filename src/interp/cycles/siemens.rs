@@ -71,7 +71,9 @@ pub fn run_named_drill_cycle(host: &mut dyn MotionHost, name: &str, args: &[Opti
         "CYCLE89" => bore_feed_out(host, &h, a(5), None, None),
         _ => return Err(bad(format!("{name} is not a drilling cycle (CYCLE81..CYCLE89)"))),
     }
-    f.rapid(host, h.at, h.rtp);
+    if f.here(host) != (h.at, h.rtp) {
+        f.rapid(host, h.at, h.rtp);
+    }
     Ok(())
 }
 
@@ -280,4 +282,50 @@ fn infeeds(h: &Hole, first: f64, dam: f64, mdep: f64) -> Result<Vec<f64>, Diagno
         out.push(depth);
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::interp::cycles::testhost::RecHost;
+
+    fn run(name: &str, args: &[Option<f64>]) -> String {
+        let mut h = RecHost::new();
+        h.pos = [10.0, 20.0, 50.0, 0.0, 0.0, 0.0];
+        match run_named_drill_cycle(&mut h, name, args) {
+            Ok(()) => h.text(),
+            Err(d) => format!("{}\nerror: {}", h.text(), d.message),
+        }
+    }
+
+    fn s(v: &[f64]) -> Vec<Option<f64>> {
+        v.iter().map(|x| if x.is_nan() { None } else { Some(*x) }).collect()
+    }
+
+    #[test]
+    fn siemens_drilling_cycles() {
+        let e = f64::NAN;
+        let cases: Vec<(&str, Vec<Option<f64>>)> = vec![
+            // RTP 10, RFP 0, SDIS 2, DP -5 (DPR 0 = not given)
+            ("CYCLE81", s(&[10.0, 0.0, 2.0, -5.0, 0.0])),
+            // DPR 8 wins over DP -5; dwell 1.5 s
+            ("CYCLE82", s(&[10.0, 0.0, 2.0, -5.0, 8.0, 1.5])),
+            // deep hole, chip breaking: DP -10, FDEP -4, DAM 1, DTB 0, FRF 0.5, VARI 0, _VRT 0.5
+            ("CYCLE83", s(&[10.0, 0.0, 2.0, -10.0, e, -4.0, e, 1.0, 0.0, 0.0, 0.5, 0.0, e, e, 0.5])),
+            // deep hole, swarf removal: FDPR 5, DAM 0, DTS 0.2, VARI 1, _DIS1 1
+            ("CYCLE83", s(&[10.0, 0.0, 2.0, -12.0, e, e, 5.0, 0.0, 0.0, 0.2, 1.0, 1.0, e, e, e, e, 1.0])),
+            // rigid tap M6 (pitch 1), SDAC 5, SST 300
+            ("CYCLE84", s(&[10.0, 0.0, 2.0, -8.0, 0.0, 0.0, 5.0, 6.0, 0.0, 0.0, 300.0])),
+            ("CYCLE85", s(&[10.0, 0.0, 2.0, -6.0, 0.0, 0.5, 50.0, 200.0])),
+            ("CYCLE86", s(&[10.0, 0.0, 2.0, -6.0, 0.0, 0.0, 3.0, -0.5, 0.0, 1.0, 90.0])),
+            ("CYCLE88", s(&[10.0, 0.0, 2.0, -6.0, 0.0, 1.0, 3.0])),
+            ("CYCLE89", s(&[10.0, 0.0, 2.0, -6.0, 0.0, 2.0])),
+            ("CYCLE81", s(&[10.0, 0.0, 2.0])),
+        ];
+        let mut out = String::new();
+        for (name, args) in cases {
+            out.push_str(&format!("== {name}\n{}\n", run(name, &args)));
+        }
+        insta::assert_snapshot!("siemens_drilling_cycles", out);
+    }
 }
