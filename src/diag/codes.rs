@@ -211,6 +211,27 @@ codes! {
     CannotExpandCycle = "W0510", "cycle-not-expanded", Warning,
         "a cycle the interpreter cannot expand into moves",
         "The cycle is kept in the program, but its documentation does not define its toolpath well enough for cncc to generate it; the canonical output skips its moves.";
+    CycleRBelowBottom = "E0540", "cycle-r-below-bottom", Error,
+        "a canned cycle whose R plane is below its bottom",
+        "The retract (R) plane of a drilling cycle must not be below the hole bottom along the drilling axis. Check the signs of R and Z (in G91, R is measured from the initial level and Z from R).";
+    CycleMissingWord = "E0541", "cycle-missing-word", Error,
+        "a canned cycle without a word it needs",
+        "The first block of a canned cycle must give the bottom (Z, or the drilling axis of the plane) and R; G82/G86/G88/G89 need P, G73/G83 need Q, G87 needs I, J and K. Later blocks of the same cycle may leave them out: the values stay in force.";
+    CycleBadPeck = "E0542", "cycle-bad-peck", Error,
+        "a peck depth Q that is zero or negative",
+        "G73 and G83 drill in steps of Q, which must be greater than zero.";
+    CycleBadRepeat = "E0543", "cycle-bad-repeat", Error,
+        "a canned-cycle repeat count (L or K) that is zero, negative or not whole",
+        "L (or K) gives how often the cycle runs. LinuxCNC rejects zero and negative counts; Fanuc's K0 only stores the cycle data.";
+    CycleSpindleState = "E0544", "cycle-spindle-state", Error,
+        "a tapping or boring cycle with the spindle stopped or turning the wrong way",
+        "G84 needs the spindle turning clockwise (M3), G74 counterclockwise (M4); G86, G87, G88 and G76 need it turning. Start the spindle before the cycle.";
+    CycleBadArgument = "E0545", "cycle-bad-argument", Error,
+        "a named cycle or hole pattern with a missing or impossible argument",
+        "A Siemens drilling cycle needs RTP and RFP and a depth (DP or DPR); the reference plane must lie above the depth. Hole patterns need a positive whole number of holes.";
+    CycleZeroFeed = "E0546", "cycle-zero-feed", Error,
+        "a canned cycle with no feed rate",
+        "Drilling cycles feed into the material at the active feed rate, which is zero here. Program F before or in the cycle block.";
     ToolNotInTable = "E0501", "tool-not-in-table", Error,
         "a tool that is not in the tool table",
         "The program selects or changes to a tool number that the tool table does not list. Add the tool to the table given with `--tool-table`, or correct the number.";

@@ -134,8 +134,26 @@ fn siemens_hint(line: &str) -> Option<&'static str> {
     if let Some((_, what)) = STARTS.iter().find(|(s, _)| line.starts_with(s)) {
         return Some(what);
     }
-    const CYCLES: &[&str] = &["CYCLE8", "CYCLE7", "CYCLE6", "POCKET", "HOLES1(", "HOLES2(", "GOTOF ", "GOTOB "];
-    CYCLES.iter().any(|c| line.contains(c)).then_some("a Sinumerik cycle or jump")
+    let code = line.split(';').next().unwrap_or("");
+    let calls = ["CYCLE", "POCKET", "HOLES", "SLOT", "LONGHOLE"].iter().any(|c| has_call(code, c));
+    let jumps = ["GOTOF ", "GOTOB "].iter().any(|j| code.contains(j) && !in_paren_comment(code, j));
+    (calls || jumps).then_some("a Sinumerik cycle or jump")
+}
+
+/// `NAME<digits>(` outside a parenthesised comment: a Sinumerik cycle call.
+fn has_call(line: &str, name: &str) -> bool {
+    line.match_indices(name).any(|(i, _)| {
+        let rest = &line[i + name.len()..];
+        let digits = rest.bytes().take_while(|b| b.is_ascii_digit()).count();
+        digits > 0 && rest[digits..].starts_with('(') && !in_paren_comment(line, &line[i..])
+    })
+}
+
+/// Is the first occurrence of `what` inside a `( ... )` comment?
+fn in_paren_comment(line: &str, what: &str) -> bool {
+    let Some(at) = line.find(what) else { return false };
+    let before = &line[..at];
+    before.matches('(').count() > before.matches(')').count() && !before.trim_end().ends_with(|c: char| c.is_ascii_alphanumeric())
 }
 
 fn haas_hint(line: &str) -> Option<&'static str> {

@@ -3,7 +3,7 @@
 //! cutter compensation). They see the machine only through [`MotionHost`]:
 //! positions in the program frame, in the active length units.
 
-use crate::canon::{Canon, CanonPlane, CanonUnits, Pose};
+use crate::canon::{Canon, CanonPlane, CanonUnits, MotionMode, Pose};
 use crate::diag::Diagnostic;
 
 /// Where moves go. The core implements it: it updates the current position,
@@ -28,6 +28,24 @@ pub trait MotionHost {
     fn report(&mut self, diag: Diagnostic);
     fn spindle(&self) -> SpindleDir;
     fn spindle_speed(&self) -> f64;
+    /// The path control mode in force and the naive-CAM tolerance (G64 P Q),
+    /// which canned cycles restore after running in exact-path mode.
+    /// Default: LinuxCNC's start-up state (continuous, no tolerances).
+    fn path_mode(&self) -> (MotionMode, f64) {
+        (MotionMode::Continuous(0.0), 0.0)
+    }
+    /// The tool was moved outside the program (G88: the operator retracts
+    /// it by hand); from now on assume it is at `to`. Emits nothing.
+    /// The default ignores it: a core should override it to update its
+    /// current position, as LinuxCNC does.
+    fn assume_position(&mut self, to: Pose) {
+        let _ = to;
+    }
+    /// Whether feed and spindle-speed overrides are enabled (M48/M49/M50/M51);
+    /// tapping cycles disable them and re-enable only those that were on.
+    fn overrides_enabled(&self) -> (bool, bool) {
+        (true, true)
+    }
 }
 
 /// Maps a plane's (first, second, normal) axis indices into a pose.

@@ -164,10 +164,15 @@ pub(super) fn convert_increments(words: &mut [WordSyntax], spec: &DialectSpec, d
         return;
     }
     let mut warn: Option<Diagnostic> = None;
+    let arc = has_arc_code(words, spec);
     for w in words.iter_mut() {
         let Some(letter) = single_letter(&w.address) else { continue };
         let Value::Number(d) = w.value else { continue };
         if d.point || w.extended || !spec.is_length_address(letter) {
+            continue;
+        }
+        // The repeat letter (Fanuc K) is a count unless an arc uses it as a centre.
+        if letter == spec.repeat_letter && !arc {
             continue;
         }
         let (Some(mm), Some(inch)) = (times(d, spec.numbers.increment_mm), times(d, spec.numbers.increment_inch))
@@ -191,4 +196,17 @@ pub(super) fn convert_increments(words: &mut [WordSyntax], spec: &DialectSpec, d
         warn = Some(diag.primary(w.span, label));
     }
     diags.extend(warn);
+}
+
+/// Does the block hold an arc code (whose K would be a centre word)?
+fn has_arc_code(words: &[WordSyntax], spec: &DialectSpec) -> bool {
+    use crate::dialect::Meaning;
+    use crate::ir::MotionKind;
+    words.iter().any(|w| {
+        w.address == "G"
+            && matches!(w.value, Value::Number(d) if matches!(
+                spec.code('G', d).map(|c| c.meaning),
+                Some(Meaning::Motion(MotionKind::Arc(_)))
+            ))
+    })
 }
