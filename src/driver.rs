@@ -218,3 +218,36 @@ impl crate::interp::flow::ProgramLoader for FsLoader<'_> {
         Some(std::rc::Rc::new(p))
     }
 }
+
+/// Reads, in one pass, the lines of a file that contain any of the given
+/// byte offsets (offsets in the decoded text, as spans are): what a
+/// streamed file's diagnostics need to be rendered.
+pub fn lines_at(input: impl BufRead, offsets: &[u32]) -> std::io::Result<Vec<KeptLine>> {
+    let mut wanted: Vec<u64> = offsets.iter().map(|&o| o as u64).collect();
+    wanted.sort_unstable();
+    wanted.dedup();
+    let mut input = input;
+    let (mut raw, mut text) = (Vec::new(), String::new());
+    let (mut offset, mut line_no, mut next) = (0u64, 0usize, 0usize);
+    let mut out = Vec::new();
+    while next < wanted.len() {
+        raw.clear();
+        if input.read_until(b'\n', &mut raw)? == 0 {
+            break;
+        }
+        text.clear();
+        decode_line_into(&raw, &mut text);
+        let end = offset + text.len() as u64;
+        if wanted[next] < end || (wanted[next] == end && !text.ends_with('\n')) {
+            let line = text.strip_suffix('\n').unwrap_or(&text);
+            let line = line.strip_suffix('\r').unwrap_or(line);
+            out.push(KeptLine { line: line_no, start: offset as usize, text: line.to_owned() });
+            while next < wanted.len() && wanted[next] <= end {
+                next += 1;
+            }
+        }
+        offset = end;
+        line_no += 1;
+    }
+    Ok(out)
+}

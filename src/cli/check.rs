@@ -34,7 +34,16 @@ fn check_file(ctx: &mut Context, path: &Path, dialect: Option<&str>, verbose: bo
     let input = BufReader::with_capacity(1 << 16, File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?);
     let id = ctx.files.add_sparse(path.display().to_string(), Vec::new());
     let result = check_stream(input, id, &spec, |_, _| {}).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
-    ctx.files.set_sparse(id, result.kept_lines);
+    let offsets: Vec<u32> = result
+        .diagnostics
+        .iter()
+        .flat_map(|d| d.labels.iter())
+        .filter(|l| l.span.file == id)
+        .flat_map(|l| [l.span.start, l.span.end.saturating_sub(1).max(l.span.start)])
+        .collect();
+    let file = File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    let lines = crate::driver::lines_at(BufReader::new(file), &offsets)?;
+    ctx.files.set_sparse(id, lines);
     if let Some(r) = reason {
         if verbose || !result.diagnostics.is_empty() {
             report_detection(path, &spec, &r);
