@@ -5,10 +5,12 @@
 //! dialect's spec ([`dialect`]); [`check`]s report [`diag`]nostics; writers
 //! ([`emit`]) produce any dialect.
 
+pub mod canon;
 pub mod check;
 pub mod diag;
 pub mod dialect;
 pub mod emit;
+pub mod interp;
 pub mod ir;
 pub mod lower;
 pub mod source;

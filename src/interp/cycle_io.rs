@@ -1,0 +1,34 @@
+//! What the core hands the canned-cycle expansion: one block's cycle
+//! words, evaluated to numbers but not yet resolved (absolute/incremental,
+//! sticky values, retract plane are the cycle code's business).
+
+use crate::ir::{CycleKind, DwellUnit};
+use crate::span::Span;
+
+/// A block that runs a word-address canned cycle (G73..G89): the block
+/// with the G code, or a later block with axis words while the cycle is
+/// the modal motion.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CycleBlock {
+    pub kind: CycleKind,
+    /// X Y Z A B C as given in this block (None: not written).
+    pub axes: [Option<f64>; 6],
+    pub r: Option<f64>,
+    pub q: Option<f64>,
+    /// Dwell (or G76/G87 shift) word as written; see `p_unit`.
+    pub p: Option<f64>,
+    /// The unit of P for dwells in this dialect.
+    pub p_unit: DwellUnit,
+    /// K (Fanuc) or L (Haas, LinuxCNC) repeats.
+    pub repeat: Option<f64>,
+    pub i: Option<f64>,
+    pub j: Option<f64>,
+    pub k: Option<f64>,
+    /// G91 in force.
+    pub incremental: bool,
+    /// G98 (true) or G99 (false) in force.
+    pub return_initial: bool,
+    /// This block wrote the cycle's G code (not only axis words).
+    pub code_in_block: bool,
+    pub span: Span,
+}
