@@ -4,3 +4,4 @@
 
 pub mod cycle_io;
 pub mod host;
+pub mod comp;
