@@ -184,6 +184,7 @@ impl RadiusComp {
     pub fn straight(&mut self, kind: MoveKind, from: Pose, to: Pose, out: &mut dyn FnMut(Canon)) -> Result<(), CompError> {
         if self.side.is_none() {
             self.arc_not_allowed = false;
+            self.queue.flush(out);
             out(match kind {
                 MoveKind::Rapid => Canon::StraightTraverse(to),
                 MoveKind::Feed => Canon::StraightFeed(to),
@@ -206,6 +207,7 @@ impl RadiusComp {
             if self.arc_not_allowed {
                 return Err(self.error(CompErrorKind::ArcAfterExit, None));
             }
+            self.queue.flush(out);
             out(Canon::ArcFeed {
                 first_end: to[0],
                 second_end: to[1],
