@@ -235,6 +235,24 @@ codes! {
     ToolNotInTable = "E0501", "tool-not-in-table", Error,
         "a tool that is not in the tool table",
         "The program selects or changes to a tool number that the tool table does not list. Add the tool to the table given with `--tool-table`, or correct the number.";
+    CompGouge = "E0550", "comp-gouge", Error,
+        "a concave corner that the compensated tool cannot reach without gouging",
+        "With cutter radius compensation on, the tool would have to back up along a move (or sweep further round an arc) to fit into an inside corner, so it would cut into the part. Use a smaller tool, or make the inside corner or the short move larger than the tool radius.";
+    CompArcTooSmall = "E0551", "comp-arc-too-small", Error,
+        "the tool radius is not less than the radius of an arc it cuts inside",
+        "With the tool on the inside of an arc, the compensated arc has radius arc radius minus tool radius, which must be positive. Use a smaller tool or a larger arc.";
+    CompEntryTooShort = "E0552", "comp-entry-too-short", Error,
+        "the entry move after G41/G42 is not longer than the tool radius",
+        "The first move after turning compensation on must end more than one tool radius from where it starts, so that the tool can be put beside the programmed end point. Start farther away.";
+    CompNotXyPlane = "E0553", "comp-not-xy-plane", Error,
+        "cutter radius compensation outside the XY plane",
+        "cncc computes cutter radius compensation in the XY plane (G17) only, as LinuxCNC does for mills. Select G17 before G41/G42.";
+    CompStateChange = "E0554", "comp-state-change", Error,
+        "a change that is not allowed while cutter radius compensation is on",
+        "Turning compensation on while it is on, or changing plane, needs G40 first.";
+    CompExitArc = "E0555", "comp-exit-arc", Error,
+        "an arc as the first move after G40",
+        "The move after cancelling compensation with G40 takes the tool off the compensated path and must be a straight line.";
 }
 
 impl Code {

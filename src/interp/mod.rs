@@ -7,6 +7,7 @@
 //! the program loop walks the blocks.
 
 pub mod cycle_io;
+pub mod comp;
 pub mod cycles;
 pub mod eval;
 pub mod exec;

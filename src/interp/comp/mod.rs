@@ -1,0 +1,240 @@
+//! Cutter radius compensation (G40/G41/G42/G41.1/G42.1), computed as
+//! LinuxCNC's interpreter computes it, so that the canonical calls match
+//! `rs274`'s to four decimals.
+//!
+//! [`RadiusComp`] sits between the interpreter core and the canon output.
+//! The core sends every motion through it, always in *programmed*
+//! (uncompensated) coordinates, and every other call through
+//! [`RadiusComp::other`]. While compensation is on the engine holds back
+//! one move (the output lags a block, as rs274's does): only the next move
+//! tells where the held one must end (concave corner) or whether an arc
+//! must be added round the corner (convex corner).
+//!
+//! **Positions.** The core keeps the *programmed* position as its current
+//! position: the `from` of each move is the programmed end of the previous
+//! one, incremental (G91) moves and arc centres (I/J) are relative to it,
+//! and after G40 the exit move starts from it too (as LinuxCNC resets its
+//! current point to the programmed one on G40). The tool's actual,
+//! compensated position is kept here: [`RadiusComp::compensated`].
+//!
+//! Only the XY plane is supported (LinuxCNC also allows XZ for lathes).
+
+mod angle;
+mod arc;
+mod error;
+mod queue;
+mod straight;
+
+#[cfg(test)]
+mod tests;
+
+pub use error::{BlockTag, CompError, CompErrorKind};
+
+use crate::canon::{Canon, CanonPlane, Pose};
+use queue::Queue;
+
+/// Which side of the path the tool runs on, looking along the motion.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CompSide {
+    /// G41, G41.1.
+    Left,
+    /// G42, G42.1.
+    Right,
+}
+
+/// A straight move's kind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MoveKind {
+    /// G0: `STRAIGHT_TRAVERSE`.
+    Rapid,
+    /// G1: `STRAIGHT_FEED`.
+    Feed,
+}
+
+/// The compensation engine. See the module documentation.
+#[derive(Clone, Debug)]
+pub struct RadiusComp {
+    side: Option<CompSide>,
+    radius: f64,
+    /// The next move is the entry move.
+    first_move: bool,
+    /// The last G40 flushed a path: the next move must be straight.
+    arc_not_allowed: bool,
+    /// The compensated tool position (x, y, z), valid after the entry move.
+    current: [f64; 3],
+    queue: Queue,
+    /// The block the calls now arriving belong to.
+    block: BlockTag,
+}
+
+impl Default for RadiusComp {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl RadiusComp {
+    pub fn new() -> Self {
+        RadiusComp {
+            side: None,
+            radius: 0.0,
+            first_move: true,
+            arc_not_allowed: false,
+            current: [0.0; 3],
+            queue: Queue::default(),
+            block: 0,
+        }
+    }
+
+    /// Tags the calls that follow with the block they come from, so that
+    /// errors can name it.
+    pub fn set_block(&mut self, block: BlockTag) {
+        self.block = block;
+    }
+
+    /// G41/G42 (`radius` = the tool table's diameter / 2) or G41.1/G42.1
+    /// (`radius` = D / 2). A negative radius swaps the side, as LinuxCNC
+    /// does for a negative table diameter. The core should first pass
+    /// `COMMENT("interpreter: cutter radius compensation on left|right")`
+    /// through [`Self::other`], as rs274 prints it.
+    pub fn start(&mut self, side: CompSide, radius: f64, plane: CanonPlane) -> Result<(), CompError> {
+        if self.side.is_some() {
+            return Err(self.error(CompErrorKind::AlreadyOn, None));
+        }
+        if plane != CanonPlane::XY {
+            return Err(self.error(CompErrorKind::NotXyPlane, None));
+        }
+        let swap = radius < 0.0;
+        self.side = Some(match (side, swap) {
+            (CompSide::Left, false) | (CompSide::Right, true) => CompSide::Left,
+            _ => CompSide::Right,
+        });
+        self.radius = radius.abs();
+        self.first_move = true;
+        Ok(())
+    }
+
+    /// G40: flushes the held-back path, ending it where the tool is; the
+    /// next move (which must be straight) leaves the path uncompensated.
+    /// The core should pass `COMMENT("interpreter: cutter radius
+    /// compensation off")` through [`Self::other`] first: rs274 prints it
+    /// after the held-back move.
+    pub fn stop(&mut self, out: &mut dyn FnMut(Canon)) -> Result<(), CompError> {
+        if self.side.is_some() && self.radius > 0.0 {
+            let p = (self.current[0], self.current[1]);
+            self.move_end_and_flush(p, out)?;
+            self.queue.flush(out);
+            self.arc_not_allowed = true;
+        }
+        self.side = None;
+        self.first_move = true;
+        Ok(())
+    }
+
+    /// Whether compensation is on.
+    pub fn is_on(&self) -> bool {
+        self.side.is_some()
+    }
+
+    /// The side, when on.
+    pub fn side(&self) -> Option<CompSide> {
+        self.side
+    }
+
+    /// The tool radius in use.
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+
+    /// Where the tool really is (x, y, z) once the entry move has been
+    /// made; `None` while off or before the entry move.
+    pub fn compensated(&self) -> Option<[f64; 3]> {
+        (self.is_on() && !self.first_move).then_some(self.current)
+    }
+
+    /// Errors when the plane is changed while compensation is on.
+    pub fn check_plane_change(&self) -> Result<(), CompError> {
+        if self.is_on() {
+            return Err(self.error(CompErrorKind::PlaneChange, None));
+        }
+        Ok(())
+    }
+
+    /// Emits everything held back (program end, or before a call that
+    /// must not overtake the held-back move).
+    pub fn flush(&mut self, out: &mut dyn FnMut(Canon)) {
+        self.queue.flush(out);
+    }
+
+    /// A non-motion call. Feed, dwell, coolant, spindle and comment calls
+    /// wait behind a held-back move; messages go out at once; anything
+    /// else (e.g. `PROGRAM_STOP`) first flushes the queue, as rs274 does.
+    pub fn other(&mut self, call: Canon, out: &mut dyn FnMut(Canon)) {
+        if self.queue.is_empty() || queue::jumps_queue(&call) {
+            out(call);
+        } else if queue::is_queueable(&call) {
+            self.queue.push(queue::Queued::Other(call));
+        } else {
+            self.queue.flush(out);
+            out(call);
+        }
+    }
+
+    /// A straight move from the programmed `from` to the programmed `to`.
+    pub fn straight(&mut self, kind: MoveKind, from: Pose, to: Pose, out: &mut dyn FnMut(Canon)) -> Result<(), CompError> {
+        if self.side.is_none() {
+            self.arc_not_allowed = false;
+            self.queue.flush(out);
+            out(match kind {
+                MoveKind::Rapid => Canon::StraightTraverse(to),
+                MoveKind::Feed => Canon::StraightFeed(to),
+            });
+            return Ok(());
+        }
+        if self.first_move {
+            self.straight_entry(kind, from, to)
+        } else {
+            self.straight_next(kind, from, to, out)
+        }
+    }
+
+    /// An XY arc from the programmed `from` to the programmed `to` round
+    /// `centre` (x, y), `rotation` turns with sign (+ CCW, as in
+    /// `ARC_FEED`); the Z end is `to[2]`. For the entry arc the centre must
+    /// be the one LinuxCNC finds from I/J (start + offset).
+    pub fn arc(&mut self, from: Pose, to: Pose, centre: (f64, f64), rotation: i64, out: &mut dyn FnMut(Canon)) -> Result<(), CompError> {
+        if self.side.is_none() {
+            if self.arc_not_allowed {
+                return Err(self.error(CompErrorKind::ArcAfterExit, None));
+            }
+            self.queue.flush(out);
+            out(Canon::ArcFeed {
+                first_end: to[0],
+                second_end: to[1],
+                first_axis: centre.0,
+                second_axis: centre.1,
+                rotation,
+                axis_end: to[2],
+                abc: [to[3], to[4], to[5]],
+            });
+            return Ok(());
+        }
+        if self.first_move {
+            self.arc_entry(from, to, centre, rotation)
+        } else {
+            self.arc_next(from, to, centre, rotation, out)
+        }
+    }
+
+    fn left(&self) -> bool {
+        self.side == Some(CompSide::Left)
+    }
+
+    fn error(&self, kind: CompErrorKind, held: Option<BlockTag>) -> CompError {
+        CompError { kind, block: self.block, held }
+    }
+
+    fn move_end_and_flush(&mut self, p: (f64, f64), out: &mut dyn FnMut(Canon)) -> Result<(), CompError> {
+        self.queue.move_end_and_flush(p, out).map_err(|(kind, held)| self.error(kind, Some(held)))
+    }
+}
