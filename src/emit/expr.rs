@@ -222,7 +222,8 @@ fn atan_slash(w: &mut Writer<'_>, a: ExprId, b: ExprId, span: crate::span::Span)
     match w.style {
         Style::Sinumerik => call(w, Func::Atan2, &[a, b], span),
         Style::Bracket => {
-            let Some(name) = w.spec.function_name(Func::Atan).map(str::to_string) else {
+            let name = w.spec.function_name(Func::Atan2).or_else(|| w.spec.function_name(Func::Atan));
+            let Some(name) = name.map(str::to_string) else {
                 return cannot(w, span, "the function Atan");
             };
             let (x, y) = (write_expr(w, a), write_expr(w, b));
