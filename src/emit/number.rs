@@ -22,7 +22,9 @@ pub enum NumKind {
 }
 
 /// Writes `d` as `kind` under `rules` in `units`; `Err` says why it cannot.
-pub fn format_number(d: Decimal, kind: NumKind, rules: &NumberRules, units: LengthUnit) -> Result<String, String> {
+/// `units` is `None` before the program says its units (G20/G21): lengths
+/// then get the larger of the two precisions.
+pub fn format_number(d: Decimal, kind: NumKind, rules: &NumberRules, units: Option<LengthUnit>) -> Result<String, String> {
     let n = d.normalized();
     let (places, point) = match kind {
         NumKind::Length => (Some(length_places(rules, units)), rules.point_on_lengths),
@@ -42,10 +44,11 @@ pub fn format_number(d: Decimal, kind: NumKind, rules: &NumberRules, units: Leng
     Ok(n.format(0, point))
 }
 
-fn length_places(rules: &NumberRules, units: LengthUnit) -> u8 {
+fn length_places(rules: &NumberRules, units: Option<LengthUnit>) -> u8 {
     match units {
-        LengthUnit::Mm => rules.length_places_mm,
-        LengthUnit::Inch => rules.length_places_inch,
+        Some(LengthUnit::Mm) => rules.length_places_mm,
+        Some(LengthUnit::Inch) => rules.length_places_inch,
+        None => rules.length_places_mm.max(rules.length_places_inch),
     }
 }
 
@@ -95,20 +98,20 @@ mod tests {
 
     #[test]
     fn lengths_carry_a_point_and_no_trailing_zeros() {
-        assert_eq!(f("10", NumKind::Length, LengthUnit::Mm).unwrap(), "10.");
-        assert_eq!(f("-2.500", NumKind::Length, LengthUnit::Mm).unwrap(), "-2.5");
-        assert_eq!(f("-0.000", NumKind::Length, LengthUnit::Mm).unwrap(), "0.");
+        assert_eq!(f("10", NumKind::Length, Some(LengthUnit::Mm)).unwrap(), "10.");
+        assert_eq!(f("-2.500", NumKind::Length, Some(LengthUnit::Mm)).unwrap(), "-2.5");
+        assert_eq!(f("-0.000", NumKind::Length, Some(LengthUnit::Mm)).unwrap(), "0.");
         assert_eq!(f("1.2345", NumKind::Length, LengthUnit::Inch).unwrap(), "1.2345");
-        assert!(f("1.2345", NumKind::Length, LengthUnit::Mm).is_err());
+        assert!(f("1.2345", NumKind::Length, Some(LengthUnit::Mm)).is_err());
     }
 
     #[test]
     fn feeds_ints_and_plain() {
-        assert_eq!(f("100.", NumKind::Feed, LengthUnit::Mm).unwrap(), "100");
-        assert_eq!(f("12.50", NumKind::Feed, LengthUnit::Mm).unwrap(), "12.5");
-        assert_eq!(f("1000.0", NumKind::Int, LengthUnit::Mm).unwrap(), "1000");
-        assert!(f("1.5", NumKind::Int, LengthUnit::Mm).is_err());
-        assert_eq!(f("0.123456", NumKind::Plain, LengthUnit::Mm).unwrap(), "0.123456");
+        assert_eq!(f("100.", NumKind::Feed, Some(LengthUnit::Mm)).unwrap(), "100");
+        assert_eq!(f("12.50", NumKind::Feed, Some(LengthUnit::Mm)).unwrap(), "12.5");
+        assert_eq!(f("1000.0", NumKind::Int, Some(LengthUnit::Mm)).unwrap(), "1000");
+        assert!(f("1.5", NumKind::Int, Some(LengthUnit::Mm)).is_err());
+        assert_eq!(f("0.123456", NumKind::Plain, Some(LengthUnit::Mm)).unwrap(), "0.123456");
     }
 
     #[test]

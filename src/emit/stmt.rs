@@ -28,7 +28,7 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
         K::Word(word) => w.push_words(words, std::slice::from_ref(word)),
         K::Units { unit, with_feeds } => {
             w.push_code(words, Meaning::Units { unit: *unit, with_feeds: *with_feeds }, span);
-            w.units = *unit;
+            w.units = Some(*unit);
         }
         K::Plane(p) => w.push_code(words, Meaning::Plane(*p), span),
         K::Distance(d) => w.push_code(words, Meaning::Distance(*d), span),
@@ -171,7 +171,8 @@ fn opt_word(w: &mut Writer<'_>, words: &mut Vec<String>, addr: &str, v: Option<&
 fn comment(w: &mut Writer<'_>, text: &str, style: crate::ir::CommentStyle, span: crate::span::Span, last: bool, words: &mut Vec<String>) {
     use crate::dialect::Capability::{ParenComments, SemicolonComments};
     use crate::ir::CommentStyle;
-    let paren_ok = w.spec.has(ParenComments) && !text.contains(')') && !text.contains('(');
+    // A `(` inside a comment read as `( )` reads back the same way.
+    let paren_ok = w.spec.has(ParenComments) && !text.contains(')') && (style == CommentStyle::Paren || !text.contains('('));
     let semi = w.spec.has(SemicolonComments);
     if paren_ok && (style == CommentStyle::Paren || !semi || !last) {
         words.push(format!("({text})"));

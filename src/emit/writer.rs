@@ -21,7 +21,8 @@ pub struct Writer<'a> {
     pub spec: &'a DialectSpec,
     pub prog: &'a Program,
     pub diags: Vec<Diagnostic>,
-    pub units: LengthUnit,
+    /// The units in force, once the program has said them.
+    pub units: Option<LengthUnit>,
     pub style: Style,
     /// `;` comment texts waiting for the end of the current block.
     pub trailing: Vec<String>,
@@ -29,7 +30,7 @@ pub struct Writer<'a> {
 
 impl<'a> Writer<'a> {
     pub fn new(prog: &'a Program, spec: &'a DialectSpec, style: Style) -> Self {
-        Writer { spec, prog, diags: Vec::new(), units: LengthUnit::Mm, style, trailing: Vec::new() }
+        Writer { spec, prog, diags: Vec::new(), units: None, style, trailing: Vec::new() }
     }
 
     /// E0601: the target has no form for `what`.
@@ -147,7 +148,7 @@ impl<'a> Writer<'a> {
     pub fn push_words(&mut self, words: &mut Vec<String>, list: &[Word]) {
         for w in list {
             let kind = if self.spec.is_length_address(w.letter) { NumKind::Length } else { NumKind::Plain };
-            self.push_word(words, &w.letter.to_string(), &w.value, kind, w.span);
+            self.push_word(words, &w.address(), &w.value, kind, w.span);
         }
     }
 }

@@ -14,6 +14,9 @@ use std::fmt::Write;
 pub struct PrintOptions {
     /// Append `@start..end` to each block and statement.
     pub spans: bool,
+    /// Print numbers by value (`10` for both `10` and `10.000`), for
+    /// comparing meta-models regardless of how numbers were written.
+    pub by_value: bool,
 }
 
 /// The program as text, one line per block, without spans.
@@ -34,6 +37,16 @@ pub fn print_program_with(p: &Program, opts: PrintOptions) -> String {
 struct Printer<'a> {
     p: &'a Program,
     opts: PrintOptions,
+}
+
+impl Printer<'_> {
+    fn num(&self, d: crate::ir::Decimal) -> String {
+        if self.opts.by_value {
+            crate::ir::Decimal { point: false, ..d.normalized() }.to_string()
+        } else {
+            d.to_string()
+        }
+    }
 }
 
 fn at(span: Span) -> String {
@@ -81,7 +94,7 @@ impl Printer<'_> {
     fn expr(&self, id: ExprId) -> String {
         let e = &self.p.exprs[id];
         match &e.kind {
-            ExprKind::Number(d) => d.to_string(),
+            ExprKind::Number(d) => self.num(*d),
             ExprKind::Str(s) => format!("{s:?}"),
             ExprKind::Bool(b) => b.to_string(),
             ExprKind::Var(v) => self.var(v),
@@ -139,7 +152,7 @@ impl Printer<'_> {
     /// A value: a number as written, an expression in brackets unless simple.
     fn value(&self, v: &Value) -> String {
         match v {
-            Value::Number(d) => d.to_string(),
+            Value::Number(d) => self.num(*d),
             Value::Expr(id) => match &self.p.exprs[*id].kind {
                 ExprKind::Number(_) | ExprKind::Var(_) => self.expr(*id),
                 _ => format!("[{}]", self.expr(*id)),
@@ -165,7 +178,7 @@ impl Printer<'_> {
     }
 
     fn words(&self, ws: &[Word]) -> String {
-        ws.iter().map(|w| format!(" {}={}", w.letter, self.value(&w.value))).collect()
+        ws.iter().map(|w| format!(" {}={}", w.address(), self.value(&w.value))).collect()
     }
 
     fn cond(&self, c: ExprId) -> String {
@@ -267,7 +280,7 @@ mod tests {
         b.line(vec![]);
         let plain = print_program(&b.p);
         assert_eq!(plain, "N10 motion linear X=10 Y=2.5 | feed 100\n(blank)\n");
-        let spanned = print_program_with(&b.p, PrintOptions { spans: true });
+        let spanned = print_program_with(&b.p, PrintOptions { spans: true, ..Default::default() });
         assert_eq!(spanned, "N10 @0..3 motion linear X=10 Y=2.5 @4..7 | feed 100 @8..11\n@16..19\n");
     }
 

@@ -486,8 +486,22 @@ pub enum CommentStyle {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Word {
     pub letter: char,
+    /// What follows the letter in a longer address (`1` of Siemens `M1=`),
+    /// usually empty.
+    pub suffix: String,
     pub value: Value,
     pub span: Span,
+}
+
+impl Word {
+    pub fn new(letter: char, value: Value, span: Span) -> Self {
+        Word { letter, suffix: String::new(), value, span }
+    }
+
+    /// The address as written: `X`, `M1`.
+    pub fn address(&self) -> String {
+        format!("{}{}", self.letter, self.suffix)
+    }
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize)]

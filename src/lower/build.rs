@@ -26,7 +26,7 @@ fn first_used(cw: &CodeWord<'_>, words: &mut Words) -> Option<Value> {
 fn used_words(cw: &CodeWord<'_>, words: &mut Words) -> Vec<Word> {
     uses(cw)
         .into_iter()
-        .filter_map(|c| words.take(c).map(|w| Word { letter: c, value: w.value, span: w.span }))
+        .filter_map(|c| words.take(c).map(|w| Word::new(c, w.value, w.span)))
         .collect()
 }
 

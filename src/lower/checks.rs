@@ -66,8 +66,8 @@ fn describe(alts: &[String]) -> String {
 
 /// An arc given both a radius and a centre (E0207).
 pub(super) fn check_arc_format(words: &Words, diags: &mut Vec<Diagnostic>) {
-    let radius = ["R", "CR"].iter().find_map(|a| words.get(*a));
-    let centre = ["I", "J", "K"].iter().find_map(|a| words.get(*a));
+    let radius = ["R", "CR"].iter().find_map(|a| words.get_free(*a));
+    let centre = ["I", "J", "K"].iter().find_map(|a| words.get_free(*a));
     if let (Some(r), Some(c)) = (radius, centre) {
         diags.push(
             Diagnostic::new(Code::MixedArcFormat, "an arc is given both a radius and a centre")

@@ -94,18 +94,19 @@ fn unknown(letter: char, code: Decimal, span: Span, spec: &DialectSpec) -> Diagn
 }
 
 /// Reports two motion codes, or two codes of one modal group, in a block.
-pub(super) fn check_groups(codes: &[CodeWord<'_>], diags: &mut Vec<Diagnostic>) {
+pub(super) fn check_groups(codes: &[CodeWord<'_>], spec: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     for (i, later) in codes.iter().enumerate() {
-        let Some(first) = codes[..i].iter().find(|c| conflicts(c, later)) else { continue };
+        let Some(first) = codes[..i].iter().find(|c| conflicts(c, later, spec)) else { continue };
         diags.push(conflict(first, later));
     }
 }
 
-fn conflicts(a: &CodeWord<'_>, b: &CodeWord<'_>) -> bool {
+fn conflicts(a: &CodeWord<'_>, b: &CodeWord<'_>, spec: &DialectSpec) -> bool {
     if a.is_motion() && b.is_motion() {
         return true;
     }
-    a.letter == b.letter && a.group().is_some() && a.group() == b.group()
+    let exclusive = |g: &str| spec.group(g).map(|d| d.exclusive).unwrap_or(true);
+    a.letter == b.letter && a.group().is_some_and(exclusive) && a.group() == b.group()
 }
 
 fn conflict(first: &CodeWord<'_>, later: &CodeWord<'_>) -> Diagnostic {

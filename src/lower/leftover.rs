@@ -33,7 +33,7 @@ pub(super) fn reject_axes_after_cancel(cancel: Span, words: &mut Words, out: &mu
                 .secondary(cancel, "cycle cancelled here")
                 .help("add a motion code (`G0`, `G1`) or move the axis word to the next block"),
         );
-        out.push(place(StmtKind::Word(Word { letter: a, value: w.value, span: w.span }), w.span));
+        out.push(place(StmtKind::Word(Word::new(a, w.value, w.span)), w.span));
     }
 }
 
@@ -152,5 +152,6 @@ fn raw_text(w: &WordSyntax, d: Decimal) -> String {
 /// A word as a `Word`; a longer address keeps its first letter.
 pub(super) fn as_word(w: &WordSyntax) -> Word {
     let letter = w.address.chars().next().unwrap_or('?');
-    Word { letter, value: w.value.clone(), span: w.span }
+    let suffix = w.address.chars().skip(1).collect();
+    Word { letter, suffix, value: w.value.clone(), span: w.span }
 }

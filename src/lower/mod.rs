@@ -54,7 +54,7 @@ pub fn lower_line(line: LineSyntax, spec: &DialectSpec, exprs: &Arena<Expr>, dia
     for w in s.plain.drain(..) {
         words.push(w, ctx.diags, &mut repeated);
     }
-    codes::check_groups(&s.codes, ctx.diags);
+    codes::check_groups(&s.codes, spec, ctx.diags);
     for cw in &s.codes {
         checks::check_required(cw, &words, ctx.diags);
     }

@@ -77,6 +77,11 @@ impl Words {
         self.find(addr).map(|i| &self.list[i].w)
     }
 
+    /// A word not yet taken by a statement.
+    pub fn get_free(&self, addr: impl Addr) -> Option<&WordSyntax> {
+        self.find(addr).filter(|&i| !self.list[i].used).map(|i| &self.list[i].w)
+    }
+
     /// Starts recording the spans of taken words for one statement.
     pub fn begin(&mut self) {
         self.taken.clear();
@@ -135,7 +140,7 @@ impl Words {
             }
             self.list[i].used = true;
             self.taken.push(self.list[i].w.span);
-            out.push(Word { letter, value: self.list[i].w.value.clone(), span: self.list[i].w.span });
+            out.push(Word::new(letter, self.list[i].w.value.clone(), self.list[i].w.span));
         }
         out
     }

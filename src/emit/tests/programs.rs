@@ -62,8 +62,8 @@ fn word_common(b: &mut Builder) {
     b.line(vec![K::RefReturn { index: 1, axes: axes(&[('Z', "0")]), store: false }, K::MachineCoords]);
     b.line(vec![K::CoordShift { kind: CoordShift::Set, axes: axes(&[('X', "0"), ('Y', "0")]) }]);
     b.line(vec![K::CoordShift { kind: CoordShift::Local, axes: axes(&[('X', "10")]) }]);
-    let p = Word { letter: 'P', value: n("1"), span: b.span() };
-    let x = Word { letter: 'X', value: n("-100"), span: b.span() };
+    let p = Word::new('P', n("1"), b.span());
+    let x = Word::new('X', n("-100"), b.span());
     b.line(vec![K::SetData { l: n("2"), words: vec![p, x] }]);
     b.line(vec![K::Dwell { value: n("0.5"), unit: DwellUnit::Seconds }]);
     b.line(vec![K::ReturnToInitial(true), cycle(CycleKind::Peck, &[('X', "10"), ('Y', "10"), ('Z', "-5")], |c| {

@@ -23,7 +23,7 @@ impl Printer<'_> {
                 s
             }
             K::Raw { dialect, text } => format!("raw {dialect} {text:?}"),
-            K::Word(w) => format!("word {}={}", w.letter, self.value(&w.value)),
+            K::Word(w) => format!("word {}={}", w.address(), self.value(&w.value)),
             K::Units { unit, with_feeds } => {
                 format!("units {}{}", name(unit), if *with_feeds { " with-feeds" } else { "" })
             }
