@@ -92,7 +92,7 @@ mod tests {
         }
     }
 
-    fn f(s: &str, k: NumKind, u: LengthUnit) -> Result<String, String> {
+    fn f(s: &str, k: NumKind, u: Option<LengthUnit>) -> Result<String, String> {
         format_number(Decimal::parse(s).unwrap(), k, &fanuc(), u)
     }
 
@@ -101,7 +101,7 @@ mod tests {
         assert_eq!(f("10", NumKind::Length, Some(LengthUnit::Mm)).unwrap(), "10.");
         assert_eq!(f("-2.500", NumKind::Length, Some(LengthUnit::Mm)).unwrap(), "-2.5");
         assert_eq!(f("-0.000", NumKind::Length, Some(LengthUnit::Mm)).unwrap(), "0.");
-        assert_eq!(f("1.2345", NumKind::Length, LengthUnit::Inch).unwrap(), "1.2345");
+        assert_eq!(f("1.2345", NumKind::Length, Some(LengthUnit::Inch)).unwrap(), "1.2345");
         assert!(f("1.2345", NumKind::Length, Some(LengthUnit::Mm)).is_err());
     }
 
