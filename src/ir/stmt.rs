@@ -163,7 +163,7 @@ pub struct ArcData {
     /// Turns: LinuxCNC `P`, Siemens `TURN=`.
     pub turns: Option<Value>,
     /// Siemens CIP intermediate point `I1= J1= K1=`.
-    pub mid: Option<Axes>,
+    pub mid: Option<Box<Axes>>,
 }
 
 impl ArcData {
@@ -542,7 +542,7 @@ pub enum StmtKind {
     /// Siemens `D1`: cutting edge, activating its length and radius.
     CuttingEdge(Value),
     RadiusComp { side: CompSide, register: Option<Value> },
-    LengthComp { mode: LengthComp, register: Option<Value>, axes: Axes },
+    LengthComp { mode: LengthComp, register: Option<Value>, axes: Box<Axes> },
     /// A register word standing alone: `H1` or `D2` without G43/G41.
     OffsetRegister { letter: char, value: Value },
     /// Work offset: 1 = G54 … 6 = G59, 7..9 = G59.1..3 (LinuxCNC),
@@ -551,15 +551,15 @@ pub enum StmtKind {
     WorkOffset { index: u32, extended: Option<Value> },
     /// G53 / SUPA: this block in machine coordinates.
     MachineCoords,
-    CoordShift { kind: CoordShift, axes: Axes },
+    CoordShift { kind: CoordShift, axes: Box<Axes> },
     /// G10 data setting: L, P and the other words as written.
     SetData { l: Value, words: Vec<Word> },
     /// G28/G30 (index 1/2) return via the given axes; `store` for G28.1/G30.1.
-    RefReturn { index: u8, axes: Axes, store: bool },
+    RefReturn { index: u8, axes: Box<Axes>, store: bool },
     PathMode { mode: PathMode, words: Vec<Word> },
     /// G98 (true: initial level) / G99 (false: R plane).
     ReturnToInitial(bool),
-    Transform(Transform),
+    Transform(Box<Transform>),
     Dwell { value: Value, unit: DwellUnit },
     Stop(StopKind),
     /// A machine function that has no neutral meaning (most M codes beyond
@@ -574,8 +574,8 @@ pub enum StmtKind {
     Command { name: String, args: Option<Vec<Arg>> },
 
     // ---- motion and cycles
-    Motion(Motion),
-    Cycle(CannedCycle),
+    Motion(Box<Motion>),
+    Cycle(Box<CannedCycle>),
     /// G80.
     CycleCancel,
     CycleCall(CycleCall),

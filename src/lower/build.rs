@@ -39,8 +39,8 @@ pub(super) fn aux(cw: &CodeWord<'_>, words: &mut Words) -> StmtKind {
 pub(super) fn code_stmt(cw: &CodeWord<'_>, meaning: Meaning, words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
     use Meaning as M;
     match meaning {
-        M::Motion(kind) => StmtKind::Motion(motion(kind, &uses(cw), words, ctx)),
-        M::Cycle(kind) => StmtKind::Cycle(cycle(kind, words, ctx)),
+        M::Motion(kind) => StmtKind::Motion(Box::new(motion(kind, &uses(cw), words, ctx))),
+        M::Cycle(kind) => StmtKind::Cycle(Box::new(cycle(kind, words, ctx))),
         M::CycleCancel => StmtKind::CycleCancel,
         M::Dwell => dwell(cw, words, ctx),
         M::Plane(p) => StmtKind::Plane(p),
@@ -53,15 +53,15 @@ pub(super) fn code_stmt(cw: &CodeWord<'_>, meaning: Meaning, words: &mut Words, 
         M::WorkOffset(index) => StmtKind::WorkOffset { index, extended: None },
         M::WorkOffsetExtended => StmtKind::WorkOffset { index: 1, extended: words.value("P") },
         M::MachineCoords => StmtKind::MachineCoords,
-        M::CoordShift(kind) => StmtKind::CoordShift { kind, axes: words.take_axes() },
+        M::CoordShift(kind) => StmtKind::CoordShift { kind, axes: Box::new(words.take_axes()) },
         M::SetData => set_data(words, ctx),
-        M::RefReturn { index, store } => StmtKind::RefReturn { index, store, axes: words.take_axes() },
+        M::RefReturn { index, store } => StmtKind::RefReturn { index, store, axes: Box::new(words.take_axes()) },
         M::PathMode(mode) => StmtKind::PathMode { mode, words: used_words(cw, words) },
         M::ReturnMode(initial) => StmtKind::ReturnToInitial(initial),
-        M::Rotate(on) => StmtKind::Transform(rotate(on, words)),
-        M::Scale(on) => StmtKind::Transform(scale(on, words)),
-        M::Mirror(true) => StmtKind::Transform(Transform::MirrorOn { axes: words.take_axes() }),
-        M::Mirror(false) => StmtKind::Transform(Transform::MirrorOff),
+        M::Rotate(on) => StmtKind::Transform(Box::new(rotate(on, words))),
+        M::Scale(on) => StmtKind::Transform(Box::new(scale(on, words))),
+        M::Mirror(true) => StmtKind::Transform(Box::new(Transform::MirrorOn { axes: words.take_axes() })),
+        M::Mirror(false) => StmtKind::Transform(Box::new(Transform::MirrorOff)),
         M::Css(on) => StmtKind::SpindleCss { on, max_rpm: if on { first_used(cw, words) } else { None } },
         M::MacroCall => macro_call(CallKind::Macro, cw, words, ctx),
         M::ModalMacroCall => macro_call(CallKind::ModalMacro, cw, words, ctx),
@@ -82,7 +82,7 @@ pub(super) fn code_stmt(cw: &CodeWord<'_>, meaning: Meaning, words: &mut Words, 
 fn length_comp(cw: &CodeWord<'_>, mode: crate::ir::LengthComp, words: &mut Words) -> StmtKind {
     let register = first_used(cw, words);
     let axes = if mode == crate::ir::LengthComp::Dynamic { words.take_axes() } else { Default::default() };
-    StmtKind::LengthComp { mode, register, axes }
+    StmtKind::LengthComp { mode, register, axes: Box::new(axes) }
 }
 
 fn spindle(cw: &CodeWord<'_>, f: SpindleFn, words: &mut Words) -> SpindleState {

@@ -33,7 +33,7 @@ pub(super) fn motion(kind: MotionKind, uses: &[char], words: &mut Words, ctx: &m
         if m.arc.turns.is_none() && uses.contains(&'P') {
             m.arc.turns = words.value("P");
         }
-        m.arc.mid = mid_point(words);
+        m.arc.mid = mid_point(words).map(Box::new);
     }
     m.polar_radius = words.value("@").or_else(|| words.value("RP"));
     m.polar_angle = words.value("^").or_else(|| words.value("AP"));

@@ -163,7 +163,7 @@ fn label_directions() {
 
 #[test]
 fn program_end_required() {
-    let body = || l("G0 X0", vec![StmtKind::Motion(Motion::new(MotionKind::Rapid))]);
+    let body = || l("G0 X0", vec![StmtKind::Motion(Box::new(Motion::new(MotionKind::Rapid)))]);
     let (codes, text) = run(&linuxcnc(), vec![body()]);
     assert_eq!(codes, vec![Code::NoProgramEnd]);
     insta::assert_snapshot!(text);

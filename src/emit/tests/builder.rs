@@ -30,7 +30,7 @@ pub fn axes(list: &[(char, &str)]) -> Axes {
 }
 
 pub fn mv(kind: MotionKind, list: &[(char, &str)]) -> StmtKind {
-    StmtKind::Motion(Motion { target: axes(list), ..Motion::new(kind) })
+    StmtKind::Motion(Box::new(Motion { target: axes(list), ..Motion::new(kind) }))
 }
 
 impl Builder {

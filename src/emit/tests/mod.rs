@@ -160,11 +160,11 @@ fn matrix_program() -> Builder {
     b.numbered(30, vec![K::SpindleSpeed(n("2500")), K::Spindle(SpindleState::Cw), K::Coolant(Coolant::Flood)]);
     b.numbered(40, vec![mv(MotionKind::Rapid, &[('X', "-5"), ('Y', "0"), ('Z', "2")])]);
     b.numbered(50, vec![mv(MotionKind::Linear, &[('Z', "-0.5")]), K::Feed(n("300"))]);
-    b.numbered(60, vec![StmtKind::Motion(Motion {
+    b.numbered(60, vec![StmtKind::Motion(Box::new(Motion {
         target: axes(&[('X', "0"), ('Y', "5")]),
         arc: ArcData { i: Some(c("5")), j: Some(c("0")), ..ArcData::default() },
         ..Motion::new(MotionKind::Arc(ArcDir::Ccw))
-    })]);
+    }))]);
     b.numbered(70, vec![K::Dwell { value: n("0.5"), unit: DwellUnit::Seconds }]);
     b.numbered(80, vec![K::Spindle(SpindleState::Stop), K::Coolant(Coolant::Off), K::Stop(StopKind::EndRewind)]);
     b
@@ -195,7 +195,7 @@ fn word_address_cycles_have_no_siemens_code() {
 #[test]
 fn cycle_dwell_is_whole_ms_only_where_p_means_ms() {
     let mut b = Builder::new("linuxcnc");
-    b.line(vec![K::Cycle(CannedCycle {
+    b.line(vec![K::Cycle(Box::new(CannedCycle {
         kind: CycleKind::DrillDwell,
         target: axes(&[('Z', "-1")]),
         r: Some(n("1")),
@@ -205,7 +205,7 @@ fn cycle_dwell_is_whole_ms_only_where_p_means_ms() {
         i: None,
         j: None,
         k: None,
-    })]);
+    }))]);
     assert_eq!(written(&b, &specs::linuxcnc()), "G82 Z-1 R1 P0.5\n");
     assert_eq!(codes_of(&b, &specs::fanuc()), vec![(Code::InexactNumber, b.stmt_span(0, 0))]);
 }
@@ -217,7 +217,7 @@ fn siemens_only_constructs_into_fanuc_each_name_their_statement() {
     b.line(vec![K::Goto { target: JumpTarget::Label("START".into()), dir: JumpDir::Backward, cond: None }]);
     b.line(vec![K::Message(Some("HELLO".into()))]);
     b.line(vec![K::Call { kind: CallKind::Named, target: CallTarget::Name("POCKET".into()), args: CallArgs::None, repeat: None }]);
-    b.line(vec![K::Transform(Transform::Frame { op: FrameOp::Rot, additive: false, axes: axes(&[('Z', "45")]), rpl: None })]);
+    b.line(vec![K::Transform(Box::new(Transform::Frame { op: FrameOp::Rot, additive: false, axes: axes(&[('Z', "45")]), rpl: None }))]);
     b.line(vec![K::ToolSelect(ToolRef::Name("DRILL".into()))]);
     let ds = write_program(&b.p, &specs::fanuc()).expect_err("none of these is Fanuc");
     assert!(ds.iter().all(|d| d.code == Code::CannotExpress));

@@ -7,13 +7,13 @@ use StmtKind as K;
 fn motion(kind: MotionKind, list: &[(char, &str)], f: impl FnOnce(&mut Motion)) -> StmtKind {
     let mut m = Motion { target: axes(list), ..Motion::new(kind) };
     f(&mut m);
-    K::Motion(m)
+    K::Motion(Box::new(m))
 }
 
 fn cycle(kind: CycleKind, list: &[(char, &str)], f: impl FnOnce(&mut CannedCycle)) -> StmtKind {
     let mut c = CannedCycle { kind, target: axes(list), r: None, q: None, p: None, repeat: None, i: None, j: None, k: None };
     f(&mut c);
-    K::Cycle(c)
+    K::Cycle(Box::new(c))
 }
 
 fn comment(t: &str) -> StmtKind {
@@ -28,7 +28,7 @@ fn word_common(b: &mut Builder) {
     b.numbered(10, vec![
         K::Units { unit: LengthUnit::Mm, with_feeds: false }, K::Plane(Plane::XY), K::Distance(DimMode::Absolute),
         K::FeedMode(FeedMode::PerMinute), K::RadiusComp { side: CompSide::Off, register: None },
-        K::LengthComp { mode: LengthComp::Cancel, register: None, axes: Axes::default() }, K::CycleCancel,
+        K::LengthComp { mode: LengthComp::Cancel, register: None, axes: Box::new(Axes::default()) }, K::CycleCancel,
     ]);
     b.numbered(20, vec![K::ToolSelect(ToolRef::Number(n("1"))), K::ToolChange]);
     b.numbered(30, vec![
@@ -36,7 +36,7 @@ fn word_common(b: &mut Builder) {
         K::SpindleSpeed(n("1200")), K::Spindle(SpindleState::Cw),
     ]);
     b.numbered(40, vec![
-        K::LengthComp { mode: LengthComp::Positive, register: Some(n("1")), axes: axes(&[('Z', "50")]) },
+        K::LengthComp { mode: LengthComp::Positive, register: Some(n("1")), axes: Box::new(axes(&[('Z', "50")])) },
         K::Coolant(Coolant::Flood),
     ]);
     let i = b.numbered(50, vec![motion(MotionKind::Linear, &[('Z', "-2")], |_| {}), K::Feed(n("100"))]);
@@ -59,9 +59,9 @@ fn word_common(b: &mut Builder) {
     b.line(vec![K::Spindle(SpindleState::Stop), K::Coolant(Coolant::Mist), K::Coolant(Coolant::Off)]);
     b.line(vec![K::PathMode { mode: PathMode::ExactStop, words: vec![] }]);
     b.line(vec![K::PathMode { mode: PathMode::Continuous, words: vec![] }]);
-    b.line(vec![K::RefReturn { index: 1, axes: axes(&[('Z', "0")]), store: false }, K::MachineCoords]);
-    b.line(vec![K::CoordShift { kind: CoordShift::Set, axes: axes(&[('X', "0"), ('Y', "0")]) }]);
-    b.line(vec![K::CoordShift { kind: CoordShift::Local, axes: axes(&[('X', "10")]) }]);
+    b.line(vec![K::RefReturn { index: 1, axes: Box::new(axes(&[('Z', "0")])), store: false }, K::MachineCoords]);
+    b.line(vec![K::CoordShift { kind: CoordShift::Set, axes: Box::new(axes(&[('X', "0"), ('Y', "0")])) }]);
+    b.line(vec![K::CoordShift { kind: CoordShift::Local, axes: Box::new(axes(&[('X', "10")])) }]);
     let p = Word::new('P', n("1"), b.span());
     let x = Word::new('X', n("-100"), b.span());
     b.line(vec![K::SetData { l: n("2"), words: vec![p, x] }]);
@@ -92,11 +92,11 @@ pub fn fanuc() -> Builder {
     use BinaryOp::*;
     let mut b = Builder::new("fanuc");
     word_common(&mut b);
-    b.line(vec![K::Transform(Transform::RotateOn { center: axes(&[('X', "0"), ('Y', "0")]), angle: Some(n("45")) })]);
-    b.line(vec![K::Transform(Transform::RotateOff)]);
-    b.line(vec![K::Transform(Transform::ScaleOn { center: axes(&[('X', "0")]), factor: Some(n("2")), per_axis: vec![] })]);
-    b.line(vec![K::Transform(Transform::ScaleOff)]);
-    b.line(vec![K::Transform(Transform::MirrorOn { axes: axes(&[('X', "0")]) }), K::Transform(Transform::MirrorOff)]);
+    b.line(vec![K::Transform(Box::new(Transform::RotateOn { center: axes(&[('X', "0"), ('Y', "0")]), angle: Some(n("45")) }))]);
+    b.line(vec![K::Transform(Box::new(Transform::RotateOff))]);
+    b.line(vec![K::Transform(Box::new(Transform::ScaleOn { center: axes(&[('X', "0")]), factor: Some(n("2")), per_axis: vec![] }))]);
+    b.line(vec![K::Transform(Box::new(Transform::ScaleOff))]);
+    b.line(vec![K::Transform(Box::new(Transform::MirrorOn { axes: axes(&[('X', "0")]) })), K::Transform(Box::new(Transform::MirrorOff))]);
     b.line(vec![K::WorkOffset { index: 1, extended: Some(n("2")) }]);
     b.line(vec![cycle(CycleKind::FineBore, &[('X', "1"), ('Z', "-10")], |c| {
         c.r = Some(n("1"));
@@ -274,17 +274,17 @@ pub fn siemens() -> Builder {
         m.arc.i = Some(c("5"));
         m.arc.turns = Some(n("2"));
     })]);
-    b.line(vec![motion(MotionKind::ArcThrough, &[('X', "10"), ('Y', "10")], |m| m.arc.mid = Some(axes(&[('X', "5"), ('Y', "8")])))]);
+    b.line(vec![motion(MotionKind::ArcThrough, &[('X', "10"), ('Y', "10")], |m| m.arc.mid = Some(Box::new(axes(&[('X', "5"), ('Y', "8")]))))]);
     b.line(vec![motion(MotionKind::ArcTangent, &[('X', "20"), ('Y', "0")], |_| {})]);
     b.line(vec![motion(MotionKind::Linear, &[], |m| {
         m.polar_radius = Some(n("30"));
         m.polar_angle = Some(n("45"));
         m.corner = Some((CornerKind::Chamfer, n("1")));
     })]);
-    b.line(vec![K::Transform(Transform::Frame { op: FrameOp::Trans, additive: false, axes: axes(&[('X', "10"), ('Y', "5")]), rpl: None })]);
-    b.line(vec![K::Transform(Transform::Frame { op: FrameOp::Rot, additive: true, axes: Axes::default(), rpl: Some(n("45")) })]);
-    b.line(vec![K::Transform(Transform::Frame { op: FrameOp::Mirror, additive: false, axes: axes(&[('X', "0")]), rpl: None })]);
-    b.line(vec![K::Transform(Transform::Frame { op: FrameOp::Trans, additive: false, axes: Axes::default(), rpl: None })]);
+    b.line(vec![K::Transform(Box::new(Transform::Frame { op: FrameOp::Trans, additive: false, axes: axes(&[('X', "10"), ('Y', "5")]), rpl: None }))]);
+    b.line(vec![K::Transform(Box::new(Transform::Frame { op: FrameOp::Rot, additive: true, axes: Axes::default(), rpl: Some(n("45")) }))]);
+    b.line(vec![K::Transform(Box::new(Transform::Frame { op: FrameOp::Mirror, additive: false, axes: axes(&[('X', "0")]), rpl: None }))]);
+    b.line(vec![K::Transform(Box::new(Transform::Frame { op: FrameOp::Trans, additive: false, axes: Axes::default(), rpl: None }))]);
     b.line(vec![K::Dwell { value: n("2"), unit: DwellUnit::Seconds }]);
     let args: Vec<Arg> = [Some("10"), Some("0"), Some("2"), Some("-5")].iter().map(|v| arg(&mut b, *v)).collect();
     b.line(vec![K::CycleCall(CycleCall { name: "CYCLE81".into(), args, modal: true })]);

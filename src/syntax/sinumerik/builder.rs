@@ -127,7 +127,7 @@ pub fn frame(ctx: &mut Builder<'_>, f: (FrameOp, bool), words: Vec<Node>, l: usi
             None => ctx.keep_raw_at(format!("`{addr}` in a frame statement"), span),
         }
     }
-    ctx.stmt(StmtKind::Transform(Transform::Frame { op: f.0, additive: f.1, axes, rpl }), l, r)
+    ctx.stmt(StmtKind::Transform(Box::new(Transform::Frame { op: f.0, additive: f.1, axes, rpl })), l, r)
 }
 
 /// A call of a function from the spec's table, its argument count checked.
