@@ -39,7 +39,7 @@ pub(super) fn aux(cw: &CodeWord<'_>, words: &mut Words) -> StmtKind {
 pub(super) fn code_stmt(cw: &CodeWord<'_>, meaning: Meaning, words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
     use Meaning as M;
     match meaning {
-        M::Motion(kind) => StmtKind::Motion(Box::new(motion(kind, &uses(cw), words, ctx))),
+        M::Motion(kind) => StmtKind::Motion(motion(kind, &uses(cw), words, ctx)),
         M::Cycle(kind) => StmtKind::Cycle(Box::new(cycle(kind, words, ctx))),
         M::CycleCancel => StmtKind::CycleCancel,
         M::Dwell => dwell(cw, words, ctx),

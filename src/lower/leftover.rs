@@ -45,7 +45,7 @@ pub(super) fn implicit_motion(words: &mut Words, ctx: &mut Ctx<'_>) -> Option<Pl
     words.begin();
     let m = motion(MotionKind::Implicit, &[], words, ctx);
     let span = words.taken_spans().iter().copied().reduce(Span::to)?;
-    Some(place(StmtKind::Motion(Box::new(m)), span))
+    Some(place(StmtKind::Motion(m), span))
 }
 
 /// `F`, `S`, `T`, `D`, `H` standing alone.

@@ -49,7 +49,7 @@ pub fn lower_line(line: LineSyntax, spec: &DialectSpec, exprs: &Arena<Expr>, dia
     let mut ctx = Ctx { spec, exprs, diags };
     let mut s = sort_items(line.items, &mut ctx);
     words::convert_increments(&mut s.plain, spec, ctx.diags);
-    let mut words = Words::default();
+    let mut words = Words::with_capacity(s.plain.len());
     let mut repeated = Vec::new();
     for w in s.plain.drain(..) {
         words.push(w, ctx.diags, &mut repeated);
@@ -75,7 +75,8 @@ pub fn lower_line(line: LineSyntax, spec: &DialectSpec, exprs: &Arena<Expr>, dia
 
 /// Splits items into statements, code words, dynamic codes and plain words.
 fn sort_items<'s>(items: Vec<Item>, ctx: &mut Ctx<'s>) -> Sorted<'s> {
-    let mut s = Sorted::default();
+    let n = items.len();
+    let mut s = Sorted { out: Vec::with_capacity(n + 1), codes: Vec::with_capacity(4), dynamic: Vec::new(), plain: Vec::with_capacity(n) };
     for item in items {
         let w = match item {
             Item::Stmt(st) => {

@@ -19,9 +19,10 @@ pub(super) const MOTION_WORDS: &[&str] =
 
 /// A move: its kind and the words it takes; `uses` adds the code's extra
 /// words (LinuxCNC `P` turns).
-pub(super) fn motion(kind: MotionKind, uses: &[char], words: &mut Words, ctx: &mut Ctx<'_>) -> Motion {
-    let mut m = Motion::new(kind);
-    m.target = words.take_axes();
+pub(super) fn motion(kind: MotionKind, uses: &[char], words: &mut Words, ctx: &mut Ctx<'_>) -> Box<Motion> {
+    // Built in place: a move is large, and lines are many.
+    let mut m = Box::new(Motion::new(kind));
+    words.take_axes_into(&mut m.target);
     if takes_arc_words(kind) {
         check_arc_format(words, ctx.diags);
         m.arc.i = words.coord("I");

@@ -137,7 +137,7 @@ fn word(tok: &str, span: Span, exprs: &mut Arena<Expr>) -> WordSyntax {
         None => Value::Number(Decimal::parse(if value.is_empty() { "0" } else { value }).unwrap()),
     };
     let address_span = Span { end: span.start + address.len() as u32, ..span };
-    WordSyntax { address, value, dim: None, extended, span, address_span }
+    WordSyntax { address: address.into(), value, dim: None, extended, span, address_span }
 }
 
 /// Splits a line on spaces into words; `N10` becomes the line number.

@@ -11,37 +11,59 @@ use crate::syntax::WordSyntax;
 
 /// An address to look up: `"CR"` or `'X'` (no allocation either way).
 pub(super) trait Addr: Copy {
-    fn is(self, address: &str) -> bool;
+    /// The address packed into an integer (see [`key`]).
+    fn key(self) -> u64;
 }
 
 impl Addr for &str {
-    fn is(self, address: &str) -> bool {
-        address == self
+    fn key(self) -> u64 {
+        key(self)
     }
 }
 
 impl Addr for char {
-    fn is(self, address: &str) -> bool {
-        let mut cs = address.chars();
-        cs.next() == Some(self) && cs.next().is_none()
+    fn key(self) -> u64 {
+        if self.is_ascii() {
+            self as u64
+        } else {
+            u64::MAX
+        }
     }
+}
+
+/// Addresses are short: up to 8 bytes packed into a `u64` compare in one
+/// instruction (longer ones get a key no lookup uses).
+fn key(address: &str) -> u64 {
+    let b = address.as_bytes();
+    if b.len() > 8 {
+        return u64::MAX - 1;
+    }
+    b.iter().enumerate().fold(0u64, |k, (i, &c)| k | (c as u64) << (8 * i))
 }
 
 /// One word and whether a statement has taken it.
 pub(super) struct Entry {
     pub w: WordSyntax,
     pub used: bool,
+    key: u64,
 }
 
 /// The words of a line in source order.
 #[derive(Default)]
 pub(super) struct Words {
     pub list: Vec<Entry>,
+    /// One bit per address key present (`key % 64`): most lookups are for
+    /// words a line does not have, and this answers them at once.
+    mask: u64,
     /// Spans of the words taken since the last [`Words::begin`].
     taken: Vec<Span>,
 }
 
 impl Words {
+    pub fn with_capacity(n: usize) -> Words {
+        Words { list: Vec::with_capacity(n), mask: 0, taken: Vec::with_capacity(n) }
+    }
+
     /// Adds a word, reporting a repeated address (the repeat is kept aside
     /// in `extra` so that nothing is lost).
     pub fn push(&mut self, w: WordSyntax, diags: &mut Vec<Diagnostic>, extra: &mut Vec<WordSyntax>) {
@@ -55,11 +77,17 @@ impl Words {
             extra.push(w);
             return;
         }
-        self.list.push(Entry { w, used: false });
+        let key = key(&w.address);
+        self.mask |= 1 << (key % 64);
+        self.list.push(Entry { w, used: false, key });
     }
 
     fn find(&self, addr: impl Addr) -> Option<usize> {
-        self.list.iter().position(|e| addr.is(&e.w.address))
+        let k = addr.key();
+        if self.mask & (1 << (k % 64)) == 0 {
+            return None;
+        }
+        self.list.iter().position(|e| e.key == k)
     }
 
     /// Whether the line has a word with this address (taken or not).
@@ -119,6 +147,12 @@ impl Words {
     /// Takes every free axis word.
     pub fn take_axes(&mut self) -> Axes {
         let mut axes = Axes::default();
+        self.take_axes_into(&mut axes);
+        axes
+    }
+
+    /// Takes the axis words into `axes` (which is left as it was for the others).
+    pub fn take_axes_into(&mut self, axes: &mut Axes) {
         for a in AXIS_LETTERS {
             if let Some(c) = self.coord(a) {
                 if let Some(slot) = axes.slot_mut(a) {
@@ -126,7 +160,6 @@ impl Words {
                 }
             }
         }
-        axes
     }
 
     /// Takes every free single-letter word in source order, but those in `except`.

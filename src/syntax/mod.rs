@@ -22,7 +22,7 @@ use crate::span::{FileId, Span, Spanned};
 #[derive(Clone, Debug, PartialEq)]
 pub struct WordSyntax {
     /// Upper case: `X`, `G`, `CR`, `I1`, `TURN`, `AP`, `CHF`.
-    pub address: String,
+    pub address: Address,
     pub value: Value,
     /// Siemens `AC(..)` / `IC(..)` around the value.
     pub dim: Option<DimMode>,
@@ -73,4 +73,81 @@ pub trait FrontEnd {
         exprs: &mut Arena<Expr>,
         diags: &mut Vec<Diagnostic>,
     ) -> Option<LineSyntax>;
+}
+
+/// A word's address, kept inline (addresses are short ASCII: `X`, `CR`,
+/// `ADISPOS`), so words cost no allocation. Longer text is cut at
+/// [`Address::CAPACITY`] bytes, which no dialect's address reaches.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Address {
+    bytes: [u8; Address::CAPACITY],
+    len: u8,
+}
+
+impl Address {
+    pub const CAPACITY: usize = 23;
+
+    pub fn new(s: &str) -> Address {
+        let mut end = s.len().min(Address::CAPACITY);
+        while !s.is_char_boundary(end) {
+            end -= 1;
+        }
+        let mut bytes = [0u8; Address::CAPACITY];
+        bytes[..end].copy_from_slice(&s.as_bytes()[..end]);
+        Address { bytes, len: end as u8 }
+    }
+
+    pub fn as_str(&self) -> &str {
+        // Built from a `&str` cut at a char boundary.
+        std::str::from_utf8(&self.bytes[..self.len as usize]).unwrap_or("")
+    }
+}
+
+impl std::ops::Deref for Address {
+    type Target = str;
+    fn deref(&self) -> &str {
+        self.as_str()
+    }
+}
+
+impl PartialEq<str> for Address {
+    fn eq(&self, o: &str) -> bool {
+        self.as_str() == o
+    }
+}
+
+impl PartialEq<&str> for Address {
+    fn eq(&self, o: &&str) -> bool {
+        self.as_str() == *o
+    }
+}
+
+impl From<&str> for Address {
+    fn from(s: &str) -> Address {
+        Address::new(s)
+    }
+}
+
+impl From<String> for Address {
+    fn from(s: String) -> Address {
+        Address::new(&s)
+    }
+}
+
+impl From<&String> for Address {
+    fn from(s: &String) -> Address {
+        Address::new(s)
+    }
+}
+
+impl std::fmt::Display for Address {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl std::fmt::Debug for Address {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{:?}", self.as_str())
+    }
 }

@@ -59,7 +59,7 @@ impl Finish<'_> {
                 }
             }
         }
-        Item::Word(WordSyntax { address: addr, value, dim, extended, span, address_span: addr_span })
+        Item::Word(WordSyntax { address: addr.into(), value, dim, extended, span, address_span: addr_span })
     }
 
     /// `L123`: a call of subprogram 123 (not an extended `L=`).

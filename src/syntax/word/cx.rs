@@ -274,7 +274,7 @@ impl<'a> Cx<'a> {
             self.unbracketed(&address, v.span);
         }
         let w = WordSyntax {
-            address,
+            address: address.into(),
             value: self.value(v),
             dim: None,
             extended: false,

@@ -8,6 +8,7 @@
 use super::prefix::comment_kind;
 use crate::ir::{CommentStyle, Decimal, Stmt, Value};
 use crate::span::{Span, Spanned};
+use crate::syntax::Address;
 use crate::syntax::{Item, LineInput, LineSyntax, WordSyntax};
 
 /// Reads a line of plain `letter number` words, or `None`.
@@ -40,7 +41,7 @@ pub fn fast_line(input: &LineInput<'_>) -> Option<LineSyntax> {
         let end = number_end(b, i + 1)?;
         let value = Decimal::parse(&input.text[i + 1..end]).ok()?;
         line.items.push(Item::Word(WordSyntax {
-            address: char::from(letter).to_string(),
+            address: Address::new(char::from(letter).encode_utf8(&mut [0u8; 4])),
             value: Value::Number(value),
             dim: None,
             extended: false,
