@@ -4,10 +4,8 @@
 //! distance mode, retract mode, G10/G28/G92, motion, stops), whatever
 //! order they were written in.
 
-use super::{Interp, Stop};
-use crate::canon::{Canon, CanonPlane, CanonUnits};
-use crate::diag::Code;
-use crate::ir::{Arena, Block, Expr, LengthUnit, Plane as IrPlane, Stmt, StmtKind};
+use super::{modes, motion, offsets, siemens, tools, Interp, Stop};
+use crate::ir::{Arena, Block, Expr, Stmt, StmtKind};
 
 /// Where a statement runs within its block (lower first).
 pub fn phase(kind: &StmtKind) -> u8 {
@@ -58,41 +56,25 @@ pub fn exec_block(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -
 fn exec_stmt(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     use StmtKind::*;
     match &s.kind {
-        Comment { text, style } => {
-            if *style == crate::ir::CommentStyle::Paren {
-                it.emit(Canon::Comment(text.clone()));
-            }
+        Comment { .. } | Message(_) | FeedMode(_) | Feed(_) | SpindleSpeed(_) | SpindleCss { .. } | Spindle(_)
+        | Coolant(_) | Aux { .. } | DynamicCode { .. } | Dwell { .. } | Plane(_) | Units { .. } | PathMode { .. }
+        | Distance(_) | ArcDistance(_) | ReturnToInitial(_) | Stop(_) => modes::exec(it, s, block, exprs),
+        ToolSelect(_) | ToolChange | RadiusComp { .. } | LengthComp { .. } | OffsetRegister { .. } => {
+            tools::exec(it, s, block, exprs)
         }
-        Feed(v) => {
-            let f = it.value(v, exprs)?;
-            it.state.feed = f;
-            it.emit(Canon::SetFeedRate(f));
+        WorkOffset { .. } | MachineCoords | CoordShift { .. } | SetData { .. } | RefReturn { .. } => {
+            offsets::exec(it, s, block, exprs)
         }
-        SpindleSpeed(v) => {
-            let sp = it.value(v, exprs)?;
-            it.state.speed = sp;
-            it.emit(Canon::SetSpindleSpeed(sp));
+        Transform(t) => match **t {
+            crate::ir::Transform::Frame { .. } => siemens::exec(it, s, block, exprs),
+            _ => offsets::exec(it, s, block, exprs),
+        },
+        CuttingEdge(_) | CycleCall(_) | ModalCallCancel => siemens::exec(it, s, block, exprs),
+        Motion(_) | Cycle(_) | CycleCancel => {
+            motion::exec(it, s, block, exprs)?;
+            siemens::after_motion(it, s, block, exprs)
         }
-        Plane(p) => {
-            it.state.plane = match p {
-                IrPlane::XY => CanonPlane::XY,
-                IrPlane::ZX => CanonPlane::XZ,
-                IrPlane::YZ => CanonPlane::YZ,
-            };
-            it.emit(Canon::SelectPlane(it.state.plane));
-        }
-        Units { unit, .. } => {
-            it.state.units = *unit;
-            it.emit(Canon::UseLengthUnits(match unit {
-                LengthUnit::Mm => CanonUnits::Mm,
-                LengthUnit::Inch => CanonUnits::Inches,
-            }));
-        }
-        Distance(d) => it.state.absolute = *d == crate::ir::DimMode::Absolute,
-        _ => {
-            let _ = block;
-            return Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet"));
-        }
+        // Run by the program walker (phase 0), never here.
+        _ => Ok(()),
     }
-    Ok(())
 }

@@ -15,11 +15,16 @@ pub mod flow;
 pub mod index;
 pub mod host;
 pub mod machine;
+pub mod modes;
+pub mod motion;
+pub mod offsets;
 pub mod options;
 pub mod params;
 pub mod predefined;
+pub mod siemens;
 pub mod state;
 pub mod tooltable;
+pub mod tools;
 
 pub use options::{Limits, Options};
 

@@ -1,0 +1,10 @@
+//! Running the modes statements of a block (see [`super::exec`] for which).
+
+use super::{Interp, Stop};
+use crate::diag::Code;
+use crate::ir::{Arena, Block, Expr, Stmt};
+
+pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    let _ = (block, exprs);
+    Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet"))
+}
