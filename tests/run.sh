@@ -8,4 +8,4 @@ if [ ! -d ../shared ]; then
     echo "note: ../shared is absent: corpus and reference tests will say they were skipped"
 fi
 
-cargo test --release --all-targets 2>&1
+cargo test 2>&1
