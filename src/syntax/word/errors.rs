@@ -42,6 +42,12 @@ fn unexpected(cx: &Cx<'_>, feed: &[Spanned], l: usize, t: Tok, r: usize, expecte
         return no_value(cx, pl, pr);
     }
     let found = describe(t, &cx.text[l..r]);
+    // A closing bracket where an operand must come: the expression stops short.
+    if matches!(t, Tok::RBr) && wants_value(expected) {
+        return Diagnostic::new(Code::IncompleteExpression, "the expression ends before it is complete")
+            .primary(cx.span(l, r), format!("expected {} before this", readable(expected)))
+            .help("an operand is missing before the closing `]`");
+    }
     Diagnostic::new(Code::SyntaxError, format!("unexpected {found}"))
         .primary(cx.span(l, r), format!("expected {}", readable(expected)))
         .help(format!("expected {} here", readable(expected)))
