@@ -43,7 +43,7 @@ fn unexpected(cx: &Cx<'_>, feed: &[Spanned], l: usize, t: Tok, r: usize, expecte
     }
     let found = describe(t, &cx.text[l..r]);
     // A closing bracket where an operand must come: the expression stops short.
-    if matches!(t, Tok::RBr) && wants_value(expected) {
+    if matches!(t, Tok::RBr) && wants_value(expected) && after_operator(feed, l) {
         return Diagnostic::new(Code::IncompleteExpression, "the expression ends before it is complete")
             .primary(cx.span(l, r), format!("expected {} before this", readable(expected)))
             .help("an operand is missing before the closing `]`");
@@ -66,6 +66,12 @@ fn early_end(cx: &Cx<'_>, feed: &[Spanned], at: usize, expected: &[String]) -> D
     Diagnostic::new(Code::SyntaxError, "the line ends before the statement is complete")
         .primary(cx.span(last.0, last.1), format!("expected {} after this", readable(expected)))
         .help(format!("add {}", readable(expected)))
+}
+
+/// Is the token before byte `l` an operator or an opening bracket?
+fn after_operator(feed: &[Spanned], l: usize) -> bool {
+    let Some(prev) = feed.iter().rev().find(|t| t.2 <= l) else { return false };
+    matches!(prev.1, Tok::Plus | Tok::Minus | Tok::Star | Tok::Pow | Tok::Slash | Tok::LBr | Tok::Comma | Tok::Kw(_))
 }
 
 /// True when a value or operand could come next.
