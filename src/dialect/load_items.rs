@@ -163,7 +163,7 @@ pub const CYCLE_KINDS: &[&str] = &[
 /// Address roles an `<address role=...>` may name.
 pub const ADDRESS_ROLES: &[&str] = &[
     "axis", "rotary-axis", "arc-centre", "arc-radius", "feed", "spindle-speed", "tool",
-    "length-offset", "radius-offset", "sequence", "program", "parameter", "repeat", "code",
+    "length-offset", "radius-offset", "cutting-edge", "sequence", "program", "parameter", "repeat", "code",
     "polar", "aux",
 ];
 

@@ -68,7 +68,8 @@ fn rotation(axis: usize, deg: f64) -> [[f64; 3]; 3] {
     m
 }
 
-fn snap(v: f64) -> f64 {
+/// Sine and cosine values within 1e-15 of -1, 0 or 1 made exact.
+pub fn snap(v: f64) -> f64 {
     for r in [-1.0, 0.0, 1.0] {
         if (v - r).abs() < 1e-15 {
             return r;

@@ -20,7 +20,7 @@
 
 mod calls;
 mod edge;
-mod frame;
+pub(crate) mod frame;
 mod host;
 mod milling;
 mod transform;

@@ -15,7 +15,8 @@
 //!    the final contour; then rapid up SDIS and back over the centre;
 //! 3. finishing (VARI units 0 or 2) at the final depth only (MIDF is not
 //!    used [?]): feed down at the centre, out to the final contour and
-//!    round it once at FFP2, spindle speed SSF if given;
+//!    round it once at FFP2, spindle speed SSF if given (the speed before
+//!    the cycle is set again after it [?]);
 //! 4. rapid to RTP and back over the centre.
 //! Rings run G3 (CDIR 3) or G2 (CDIR 2, and any other value [?]); each
 //! ring starts and ends on the positive abscissa of the pocket (the long
@@ -143,12 +144,16 @@ fn run(host: &mut dyn MotionHost, mut pen: Pen, p: &Pocket, last: Ring, r: f64) 
         }
     }
     if p.vari != 1 {
+        let speed = host.spindle_speed();
         if p.ssf > 0.0 {
             host.emit(Canon::SetSpindleSpeed(p.ssf));
         }
         plunge(host, &mut pen, p.ffd, p.depth);
         pen.set_feed(host, if p.ffp2 > 0.0 { p.ffp2 } else { p.ffp1 });
         cut_ring(host, &pen, &last, p.ccw);
+        if p.ssf > 0.0 && p.ssf != speed {
+            host.emit(Canon::SetSpindleSpeed(speed));
+        }
     }
     pen.rapid_w(host, p.rtp);
     pen.rapid(host, 0.0, 0.0, p.rtp);
