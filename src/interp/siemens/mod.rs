@@ -85,6 +85,15 @@ pub fn arc_to_base(
     Ok((f.to_base(end), f.to_base(centre), if flip { -rotation } else { rotation }))
 }
 
+/// Does the programmable frame mirror the active plane (an odd number of
+/// mirrored plane axes)? Then G41 acts as G42 and G2 as G3 [K: the 840D
+/// swaps them under MIRROR]; the core's radius compensation asks this.
+pub fn mirrors_plane(it: &Interp<'_, '_>) -> bool {
+    let (a, b, _) = crate::interp::host::plane_axes(it.state.plane);
+    let m = &it.siemens.frame.m;
+    m[a][a] * m[b][b] - m[a][b] * m[b][a] < 0.0
+}
+
 /// Runs a frame, cutting-edge, cycle-call or MCALL statement.
 pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     let _ = block;

@@ -135,6 +135,13 @@ fn program_frames_and_edges() {
 }
 
 #[test]
+fn program_inch_frames_and_edge() {
+    // G70: geometry in inches; the frame is kept in mm and printed in inches.
+    let out = drive::run("G70\nT1 M6 D1\nTRANS X1\nG0 X1 Y0 Z1\nG71\nG0 X0\nAMIRROR Y0\nG0 Y5\nM30\n");
+    insta::assert_snapshot!("program_inch_frames_and_edge", out);
+}
+
+#[test]
 fn program_mcall_and_patterns() {
     let out = drive::run(
         "T2 M6 D1\nG17 G0 X0 Y0 Z20\nF200\nMCALL CYCLE81(10,0,2,-5)\nG0 X10 Y10\nZ15\nG0 Y20\n\

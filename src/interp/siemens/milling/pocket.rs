@@ -18,6 +18,7 @@
 //!    round it once at FFP2, spindle speed SSF if given (the speed before
 //!    the cycle is set again after it [?]);
 //! 4. rapid to RTP and back over the centre.
+//!
 //! Rings run G3 (CDIR 3) or G2 (CDIR 2, and any other value [?]); each
 //! ring starts and ends on the positive abscissa of the pocket (the long
 //! axis for POCKET1, rotated by STA1). Corner radii of rings are CRAD less

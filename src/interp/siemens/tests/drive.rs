@@ -67,6 +67,10 @@ fn stmt(it: &mut Interp<'_, '_>, s: &Stmt, b: &crate::ir::Block, ex: &Arena<Expr
             it.emit(Canon::SelectPlane(it.state.plane));
             Ok(())
         }
+        StmtKind::Units { unit, .. } => {
+            it.state.units = *unit;
+            Ok(())
+        }
         StmtKind::ToolSelect(ToolRef::Number(v)) => {
             it.state.tool_selected = Some(it.value(v, ex)? as i64);
             Ok(())
