@@ -188,3 +188,23 @@ fn whole_interpreter_frames_and_mcall() {
     assert!(text.contains("STRAIGHT_TRAVERSE(10.0000, 5.0000, 1.0000"), "{text}");
     assert!(text.contains("STRAIGHT_FEED(10.0000, 5.0000, -2.0000"), "{text}");
 }
+
+/// Every Siemens corpus program runs through the stand-in driver without a
+/// panic (variables and control flow are not run there, so most stop at
+/// their first variable: this only checks robustness).
+#[test]
+fn corpus_programs_do_not_panic() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus/siemens840d");
+    let Ok(entries) = std::fs::read_dir(&dir) else {
+        eprintln!("note: {} not found, corpus test skipped", dir.display());
+        return;
+    };
+    for e in entries.flatten() {
+        let Ok(text) = std::fs::read_to_string(e.path()) else { continue };
+        let out = drive::run_lenient(&text);
+        if std::env::var("SIEM_SHOW").is_ok() {
+            eprintln!("== {}\n{}", e.path().display(), out.lines().take(40).collect::<Vec<_>>().join("\n"));
+        }
+        assert!(!out.contains("panicked"), "{}", e.path().display());
+    }
+}
