@@ -59,11 +59,13 @@ pub struct Interp<'a, 's> {
     pub span: Span,
     pub ended: bool,
     pub params: params::Params,
+    /// Siemens programmable frame and modal cycle call.
+    pub siemens: siemens::SiemensState,
 }
 
 impl<'a, 's> Interp<'a, 's> {
     pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
-        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new() }
+        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new(), siemens: siemens::SiemensState::default() }
     }
 
     /// Emits one call, tagged with the current statement's span.
