@@ -11,4 +11,4 @@ if ! command -v rs274 >/dev/null 2>&1; then
     echo "note: rs274 is absent (apt-get install linuxcnc-uspace): the live oracle tests will say they were skipped"
 fi
 
-cargo test --release --all-targets 2>&1
+cargo test 2>&1
