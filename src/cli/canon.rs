@@ -49,6 +49,7 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
     let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
     let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
     diags.extend(interp::run(std::rc::Rc::new(program), &spec, &a.options, &mut loader, &mut sink));
+    diags.append(&mut loader.diags);
     drop(sink);
     out.flush()?;
     if let Some(e) = io_error {

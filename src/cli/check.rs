@@ -1,24 +1,50 @@
 //! `cncc check`: read programs, report every problem, exit 1 on errors.
 //! A clean program prints nothing.
+//!
+//! A program that reads cleanly is also run (calls discarded), so run-time
+//! errors show too: arcs that do not close, moves with no feed, unknown
+//! tools, division by zero, loops past their limit... A program with no
+//! control flow runs block by block while it is read, so memory stays flat
+//! on large CAM files; one with control flow (jumps, loops, calls,
+//! parameters) is read whole and run by the program walker.
 
-use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::cli::args::Format;
+use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::cli::output::summary_line;
 use crate::diag::{Diagnostic, Severity};
-use crate::driver::check_stream;
+use crate::dialect::DialectSpec;
+use crate::driver::{check_stream, read_program, FsLoader};
+use crate::interp::{self, tooltable::ToolTable, Interp, Options, Stop};
+use crate::ir::{Arena, Block, Expr, StmtKind};
 use std::fs::File;
 use std::io::BufReader;
 use std::path::Path;
+use std::sync::Arc;
 
-pub fn run(ctx: &mut Context, files: &[std::path::PathBuf], dialect: Option<&str>, format: Format, verbose: bool) -> Result<i32, Failure> {
+pub struct CheckArgs<'a> {
+    pub files: &'a [std::path::PathBuf],
+    pub dialect: Option<&'a str>,
+    pub format: Format,
+    pub verbose: bool,
+    pub tool_table: Option<&'a Path>,
+    pub options: Options,
+}
+
+pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
     let mut all = Vec::new();
-    for path in files {
-        all.extend(check_file(ctx, path, dialect, verbose)?);
+    if let Some(t) = a.tool_table {
+        let (tid, ttext) = ctx.add_file(t)?;
+        let (table, d) = ToolTable::parse(&ttext, tid);
+        all.extend(d);
+        a.options.tool_table = table;
     }
-    ctx.print(&all, format);
+    for path in a.files {
+        all.extend(check_file(ctx, path, &a)?);
+    }
+    ctx.print(&all, a.format);
     let errors = all.iter().filter(|d| d.severity == Severity::Error).count();
     let warnings = all.iter().filter(|d| d.severity == Severity::Warning).count();
-    if format == Format::Human {
+    if a.format == Format::Human {
         if let Some(s) = summary_line(errors, warnings, 0) {
             eprintln!("{s}");
         }
@@ -26,30 +52,137 @@ pub fn run(ctx: &mut Context, files: &[std::path::PathBuf], dialect: Option<&str
     Ok(if errors > 0 { EXIT_INPUT_ERRORS } else { EXIT_OK })
 }
 
-/// Streams one file through the reader; keeps only the lines diagnostics
-/// point at, so memory does not grow with the file.
-fn check_file(ctx: &mut Context, path: &Path, dialect: Option<&str>, verbose: bool) -> Result<Vec<Diagnostic>, Failure> {
+/// Streams one file through the reader (and the interpreter, while the
+/// program has no control flow); keeps only the lines diagnostics point at.
+fn check_file(ctx: &mut Context, path: &Path, a: &CheckArgs<'_>) -> Result<Vec<Diagnostic>, Failure> {
+    let fail = |e: std::io::Error| Failure(format!("{}: {e}", path.display()));
     let head = read_head(path)?;
-    let (spec, reason) = ctx.spec_for(dialect, path, &head)?;
-    let input = BufReader::with_capacity(1 << 16, File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?);
+    let (spec, reason) = ctx.spec_for(a.dialect, path, &head)?;
+    let input = BufReader::with_capacity(1 << 16, File::open(path).map_err(fail)?);
     let id = ctx.files.add_sparse(path.display().to_string(), Vec::new());
-    let result = check_stream(input, id, &spec, |_, _| {}).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
-    let offsets: Vec<u32> = result
-        .diagnostics
+    let mut discard = |_: crate::canon::Canon, _: crate::span::Span| {};
+    let mut it = Interp::new(&spec, &a.options, &mut discard);
+    it.start();
+    let mut stream = StreamRun::default();
+    let result = check_stream(input, id, &spec, |b, e| stream.block(&mut it, b, e)).map_err(fail)?;
+    let mut diags = result.diagnostics;
+    if !diags.iter().any(Diagnostic::is_error) {
+        diags.extend(stream.finish(&mut it));
+        if stream.needs_walker {
+            drop(it);
+            diags.extend(run_whole(ctx, path, id, &spec, &a.options)?);
+        }
+    }
+    let offsets: Vec<u32> = diags
         .iter()
         .flat_map(|d| d.labels.iter())
         .filter(|l| l.span.file == id)
         .flat_map(|l| [l.span.start, l.span.end.saturating_sub(1).max(l.span.start)])
         .collect();
-    let file = File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    let file = File::open(path).map_err(fail)?;
     let lines = crate::driver::lines_at(BufReader::new(file), &offsets)?;
     ctx.files.set_sparse(id, lines);
     if let Some(r) = reason {
-        if verbose || !result.diagnostics.is_empty() {
+        if a.verbose || !diags.is_empty() {
             report_detection(path, &spec, &r);
         }
     }
-    Ok(result.diagnostics)
+    Ok(diags)
+}
+
+/// Runs a program with control flow: read whole, walked, subprograms
+/// loaded from beside it.
+fn run_whole(ctx: &mut Context, path: &Path, id: crate::span::FileId, spec: &Arc<DialectSpec>, opts: &Options) -> Result<Vec<Diagnostic>, Failure> {
+    let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    let text = crate::driver::decode(&bytes);
+    drop(bytes);
+    let (program, _) = read_program(&text, id, spec);
+    drop(text);
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
+    let mut discard = |_: crate::canon::Canon, _: crate::span::Span| {};
+    let mut diags = interp::run(std::rc::Rc::new(program), spec, opts, &mut loader, &mut discard);
+    diags.append(&mut loader.diags);
+    Ok(diags)
+}
+
+/// Runs blocks as they are read, until the program shows control flow.
+#[derive(Default)]
+struct StreamRun {
+    stopped: bool,
+    needs_walker: bool,
+    seen_content: bool,
+    percent_start: bool,
+    blocks: u64,
+    diags: Vec<Diagnostic>,
+}
+
+impl StreamRun {
+    fn block(&mut self, it: &mut Interp<'_, '_>, b: &Block, exprs: &Arena<Expr>) {
+        if self.stopped {
+            return;
+        }
+        if b.stmts.iter().any(|s| needs_walker(&s.kind)) {
+            self.needs_walker = true;
+            self.stopped = true;
+            return;
+        }
+        if b.stmts.is_empty() {
+            return;
+        }
+        self.blocks += 1;
+        if self.blocks > it.opts.limits.blocks {
+            self.stop(it, Err(Stop::Error(Diagnostic::new(crate::diag::Code::LimitExceeded, "more blocks run than the limit").primary(b.span, "here"))));
+            return;
+        }
+        let first = !self.seen_content;
+        self.seen_content = true;
+        if b.stmts.iter().any(|s| matches!(s.kind, StmtKind::Tape)) && !(b.skip.is_some() && it.opts.block_delete) {
+            if first {
+                self.percent_start = true;
+            } else if self.percent_start {
+                interp::machine::finish_sequence(it);
+                self.stopped = true;
+                return;
+            }
+        }
+        let r = it.block(b, exprs);
+        self.stop(it, r);
+    }
+
+    fn stop(&mut self, it: &mut Interp<'_, '_>, r: Result<(), Stop>) {
+        match r {
+            Ok(()) => self.stopped = it.ended,
+            Err(Stop::End) => self.stopped = true,
+            Err(Stop::Error(d)) => {
+                self.diags.push(d);
+                interp::machine::abort_sequence(it);
+                self.stopped = true;
+            }
+        }
+    }
+
+    /// The run's diagnostics; a program that fell off its end is reported.
+    fn finish(&mut self, it: &mut Interp<'_, '_>) -> Vec<Diagnostic> {
+        if self.needs_walker {
+            return Vec::new();
+        }
+        let mut diags = std::mem::take(&mut it.diags);
+        diags.append(&mut self.diags);
+        if !self.stopped {
+            interp::machine::fell_off_end(it, &mut diags);
+        }
+        diags
+    }
+}
+
+/// Statements only the program walker runs (control flow and variables).
+fn needs_walker(kind: &StmtKind) -> bool {
+    use StmtKind::*;
+    match kind {
+        Tape | ProgramStart { .. } | Raw { .. } | Word(_) | Command { .. } => false,
+        k => interp::exec::phase(k) == 0,
+    }
 }
 
 /// The first 64 KiB of a file, for dialect detection.

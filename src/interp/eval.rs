@@ -3,7 +3,11 @@
 
 use super::{Interp, Stop};
 use crate::diag::{Code, Diagnostic};
+use crate::dialect::spec::Capability;
 use crate::ir::{Arena, BinaryOp, Expr, ExprId, ExprKind, Func, UnaryOp, Value, Var};
+
+/// LinuxCNC's tolerance for EQ and NE.
+pub const EQ_TOLERANCE: f64 = 1e-4;
 
 /// A number, or vacant (Fanuc `#0`, a parameter never set).
 pub type Num = Option<f64>;
@@ -66,13 +70,18 @@ impl Interp<'_, '_> {
 
     fn binary(&mut self, op: BinaryOp, a: Num, b: Num, span: crate::span::Span) -> Result<f64, Stop> {
         use BinaryOp::*;
-        // Vacant equals only vacant (Fanuc); elsewhere it reads as zero.
-        if matches!(op, Eq | Ne) && (a.is_none() || b.is_none()) {
+        // Vacant equals only vacant (Fanuc Macro B); elsewhere it reads as zero.
+        let vacancy = self.spec.has(Capability::MacroB);
+        if vacancy && matches!(op, Eq | Ne) && (a.is_none() || b.is_none()) {
             let same = a.is_none() == b.is_none() && a.unwrap_or(0.0) == b.unwrap_or(0.0);
             return Ok(((op == Eq) == same) as i64 as f64);
         }
         let (a, b) = (a.unwrap_or(0.0), b.unwrap_or(0.0));
         let t = |c: bool| c as i64 as f64;
+        // LinuxCNC's EQ/NE compare within 0.0001 (its TOLERANCE_EQUAL);
+        // probed: `[0.00005 EQ 0]` is 1 in rs274.
+        let tol = if self.spec.has(Capability::OWords) { EQ_TOLERANCE } else { 0.0 };
+        let equal = if tol > 0.0 { (a - b).abs() < tol } else { a == b };
         Ok(match op {
             Add => a + b,
             Sub => a - b,
@@ -84,8 +93,8 @@ impl Interp<'_, '_> {
             IntDiv => (a / b).trunc(),
             Mod => a - b * (a / b).floor(),
             Pow => a.powf(b),
-            Eq => t(a == b),
-            Ne => t(a != b),
+            Eq => t(equal),
+            Ne => t(!equal),
             Gt => t(a > b),
             Ge => t(a >= b),
             Lt => t(a < b),
@@ -169,7 +178,7 @@ impl Interp<'_, '_> {
 
     /// `#n`, with the system parameters the interpreter keeps.
     pub fn read_numbered(&self, n: u32) -> Num {
-        self.params.numbered(n)
+        super::predefined::numbered(self, n).or_else(|| self.params.numbered(n))
     }
 
     /// `#<name>`, with LinuxCNC's predefined read-only ones.

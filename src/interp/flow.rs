@@ -32,8 +32,12 @@ struct Frame {
     /// Numbered locals saved at the call (restored on return).
     saved: Vec<(u32, Option<f64>)>,
     new_scope: bool,
-    /// For a section repeat: the block that ends the section and the passes left.
-    section: Option<(usize, u64)>,
+    /// For a section repeat: its first and last block and the passes left.
+    section: Option<(usize, usize, u64)>,
+    /// A repeated call (`M98 P.. L3`): where it starts and the passes left.
+    repeat: Option<((usize, usize), u64)>,
+    /// The frame of a `G66` modal macro call.
+    modal: bool,
 }
 
 struct Loaded {
@@ -50,6 +54,8 @@ pub struct Walker<'l> {
     repeat_left: HashMap<(usize, usize), u64>,
     blocks_run: u64,
     started_with_percent: bool,
+    /// The active `G66` modal macro: its target and argument values.
+    modal: Option<(CallTarget, Vec<(u32, Option<f64>)>)>,
 }
 
 /// What a block asks the walker to do next.
@@ -74,6 +80,7 @@ impl<'l> Walker<'l> {
             repeat_left: HashMap::new(),
             blocks_run: 0,
             started_with_percent: false,
+            modal: None,
         }
     }
 
@@ -93,6 +100,10 @@ impl<'l> Walker<'l> {
             self.count_block(it, block.span)?;
             if block.skip.is_some() && it.opts.block_delete {
                 pc += 1;
+                continue;
+            }
+            if let Some(at) = self.section_end(it, prog, pc)? {
+                (prog, pc) = at;
                 continue;
             }
             let next = self.block(it, prog, pc, entered)?;
@@ -115,6 +126,10 @@ impl<'l> Walker<'l> {
                     if self.frames.is_empty() {
                         return Ok(());
                     }
+                    if let Some(at) = self.repeat_again(it)? {
+                        (prog, pc) = at;
+                        continue;
+                    }
                     (prog, pc) = self.pop_frame(it);
                 }
                 Next::End => return Err(Stop::End),
@@ -130,6 +145,18 @@ impl<'l> Walker<'l> {
             ));
         }
         Ok(())
+    }
+
+    /// A repeated call that has passes left: its start again.
+    fn repeat_again(&mut self, it: &Interp<'_, '_>) -> Result<Option<(usize, usize)>, Stop> {
+        let Some(f) = self.frames.last_mut() else { return Ok(None) };
+        let Some((at, left)) = f.repeat else { return Ok(None) };
+        if left <= 1 {
+            return Ok(None);
+        }
+        f.repeat = Some((at, left - 1));
+        self.count_loop(it, at.0, at.1)?;
+        Ok(Some(at))
     }
 
     fn pop_frame(&mut self, it: &mut Interp<'_, '_>) -> (usize, usize) {
@@ -157,9 +184,6 @@ impl<'l> Walker<'l> {
                 None => Next::Step,
             });
         }
-        if let Some(n) = self.section_end(prog, pc) {
-            return Ok(n);
-        }
         it.block(block, exprs)?;
         self.assignments(it, &block.stmts, exprs)?;
         for s in &block.stmts {
@@ -168,7 +192,25 @@ impl<'l> Walker<'l> {
                 return Ok(n);
             }
         }
-        Ok(if it.ended { Next::End } else { Next::Step })
+        if it.ended {
+            return Ok(Next::End);
+        }
+        self.modal_call(it, prog, pc, block)
+    }
+
+    /// The `G66` hook: after a block that moves (and not inside the modal
+    /// macro itself), the modal macro is called with its arguments.
+    fn modal_call(&mut self, it: &mut Interp<'_, '_>, prog: usize, pc: usize, block: &crate::ir::Block) -> Result<Next, Stop> {
+        let Some((target, values)) = self.modal.clone() else { return Ok(Next::Step) };
+        let moves = block.stmts.iter().any(|s| matches!(s.kind, StmtKind::Motion(_)));
+        if !moves || self.frames.iter().any(|f| f.modal) {
+            return Ok(Next::Step);
+        }
+        let mut next = self.enter(it, prog, pc, CallKind::Macro, &target, values, 1)?;
+        if let Next::Call { frame, .. } = &mut next {
+            frame.modal = true;
+        }
+        Ok(next)
     }
 
     /// Evaluates every assignment's value first, then sets them all.
@@ -187,15 +229,49 @@ impl<'l> Walker<'l> {
         Ok(())
     }
 
-    /// A section repeat that reached the end of its section.
-    fn section_end(&mut self, prog: usize, pc: usize) -> Option<Next> {
-        let f = self.frames.last_mut()?;
-        let (end, left) = f.section?;
+    /// A section repeat that reached the end of its section: the section
+    /// again, or back after the `REPEAT` when no passes are left.
+    fn section_end(&mut self, it: &mut Interp<'_, '_>, prog: usize, pc: usize) -> Result<Option<(usize, usize)>, Stop> {
+        let Some(f) = self.frames.last_mut() else { return Ok(None) };
+        let Some((start, end, left)) = f.section else { return Ok(None) };
         if f.prog != prog || pc != end + 1 {
-            return None;
+            return Ok(None);
         }
-        let _ = left;
-        None
+        if left > 1 {
+            f.section = Some((start, end, left - 1));
+            self.count_loop(it, prog, start)?;
+            return Ok(Some((prog, start)));
+        }
+        Ok(Some(self.pop_frame(it)))
+    }
+
+    /// Siemens `REPEAT start [end] P=n` / `REPEATB label P=n`: runs the
+    /// section n times, then goes on after the `REPEAT`. Without an end
+    /// label the section ends just before the `REPEAT`.
+    fn section_repeat(&mut self, it: &mut Interp<'_, '_>, prog: usize, pc: usize, s: &Stmt, exprs: &Arena<Expr>) -> Result<Next, Stop> {
+        let StmtKind::SectionRepeat { start, end, count, single } = &s.kind else { return Ok(Next::Step) };
+        let ix = self.progs[prog].index.clone();
+        let find = |l: &str| ix.labels.get(&l.to_ascii_uppercase()).copied();
+        let Some(first) = find(start) else {
+            return Err(it.error_at(s.span, Code::JumpTargetMissing, format!("REPEAT: label {start} not found")));
+        };
+        let last = match (end, single) {
+            (_, true) => first,
+            (Some(e), false) => match find(e) {
+                Some(i) => i,
+                None => return Err(it.error_at(s.span, Code::JumpTargetMissing, format!("REPEAT: label {e} not found"))),
+            },
+            (None, false) => pc.saturating_sub(1),
+        };
+        let n = match count {
+            Some(c) => it.eval(*c, exprs)?.unwrap_or(0.0).round().max(0.0) as u64,
+            None => 1,
+        };
+        if n == 0 || last < first || (first <= pc && pc <= last) {
+            return Ok(Next::Step);
+        }
+        let frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: Some((first, last, n)), repeat: None, modal: false };
+        Ok(Next::Call { prog, at: first, frame })
     }
 
     fn control(
@@ -347,11 +423,23 @@ impl<'l> Walker<'l> {
                 }
                 Some(Next::Return)
             }
+            ModalMacroCancel => {
+                self.modal = None;
+                None
+            }
+            Declare { vars, .. } => {
+                for v in vars {
+                    let val = match v.init {
+                        Some(e) => it.eval(e, exprs)?.unwrap_or(0.0),
+                        None => 0.0,
+                    };
+                    it.params.declare_user(&v.name, val);
+                }
+                None
+            }
             SubReturn { to } => Some(self.sub_return(it, to.as_ref(), exprs)?),
             Call { kind, target, args, repeat } => Some(self.call(it, prog, pc, *kind, target, args, repeat.as_ref(), exprs)?),
-            SectionRepeat { .. } => {
-                return Err(it.error_at(s.span, Code::UnsupportedHere, "section repeat is not run by the interpreter yet"))
-            }
+            SectionRepeat { .. } => Some(self.section_repeat(it, prog, pc, s, exprs)?),
             Tape => {
                 if pc == first_content_block(&self.progs[prog].program) && prog == 0 {
                     self.started_with_percent = true;
@@ -450,16 +538,39 @@ impl<'l> Walker<'l> {
         repeat: Option<&Value>,
         exprs: &Arena<Expr>,
     ) -> Result<Next, Stop> {
-        if repeat.is_some() {
-            let n = it.value(repeat.unwrap(), exprs)?;
-            if n.round() != 1.0 {
-                return Err(it.error_at(it.span, Code::UnsupportedHere, "repeated subprogram calls are not run yet"));
-            }
+        let passes = match repeat {
+            Some(r) => it.value(r, exprs)?.round().max(0.0) as u64,
+            None => 1,
+        };
+        if passes == 0 {
+            return Ok(Next::Step);
         }
         let target = match target {
             CallTarget::Computed(e) => CallTarget::Number(it.eval(*e, exprs)?.unwrap_or(0.0).round() as u32),
             t => t.clone(),
         };
+        let values = self.arg_values(it, args, exprs)?;
+        if kind == CallKind::ModalMacro {
+            self.modal = Some((target, values));
+            return Ok(Next::Step);
+        }
+        self.enter(it, prog, pc, kind, &target, values, passes)
+    }
+
+    /// Enters a subprogram: a frame to come back to, and fresh locals for
+    /// the kinds of call that have them.
+    #[allow(clippy::too_many_arguments)]
+    fn enter(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        prog: usize,
+        pc: usize,
+        kind: CallKind,
+        target: &CallTarget,
+        values: Vec<(u32, Option<f64>)>,
+        passes: u64,
+    ) -> Result<Next, Stop> {
+        let target = target.clone();
         let (to_prog, at) = match self.find(prog, &target, kind) {
             Some(x) => x,
             None => {
@@ -470,18 +581,26 @@ impl<'l> Walker<'l> {
                 ))
             }
         };
-        let mut frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: None };
-        let values = self.arg_values(it, args, exprs)?;
+        let repeat = (passes > 1).then_some(((to_prog, at), passes));
+        let mut frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: None, repeat, modal: false };
         if matches!(kind, CallKind::OWord | CallKind::Macro | CallKind::ModalMacro | CallKind::Named) {
             frame.new_scope = true;
-            let locals = if kind == CallKind::OWord { 30 } else { 33 };
-            for n in 1..=locals {
+            for n in local_numbers(it.spec) {
                 frame.saved.push((n, it.params.numbered(n)));
                 it.params.set_numbered(n, None);
             }
             it.params.push_scope();
-            for (n, v) in values {
-                it.params.set_numbered(n, v);
+            let declared = self.declared_params(to_prog, at);
+            if declared.is_empty() {
+                for (n, v) in values {
+                    it.params.set_numbered(n, v);
+                }
+            } else {
+                // Siemens `PROC NAME(REAL A, ...)`: arguments by position.
+                for (i, name) in declared.iter().enumerate() {
+                    let v = values.iter().find(|(n, _)| *n == i as u32 + 1).and_then(|(_, v)| *v);
+                    it.params.declare_user(name, v.unwrap_or(0.0));
+                }
             }
         }
         Ok(Next::Call { prog: to_prog, at, frame })
@@ -514,7 +633,24 @@ impl<'l> Walker<'l> {
     }
 
     /// The program and the first block a call runs.
-    fn find(&mut self, prog: usize, target: &CallTarget, _kind: CallKind) -> Option<(usize, usize)> {
+    /// The parameter names a subprogram declares (`PROC NAME(REAL A)`).
+    fn declared_params(&self, prog: usize, at: usize) -> Vec<String> {
+        let Some(b) = at.checked_sub(1).and_then(|i| self.progs[prog].program.blocks.get(i)) else { return Vec::new() };
+        b.stmts
+            .iter()
+            .find_map(|s| match &s.kind {
+                StmtKind::SubStart { params, .. } => Some(params.iter().map(|p| p.name.clone()).collect()),
+                _ => None,
+            })
+            .unwrap_or_default()
+    }
+
+    fn find(&mut self, prog: usize, target: &CallTarget, kind: CallKind) -> Option<(usize, usize)> {
+        if kind == CallKind::Local {
+            // Haas M97 P: a sequence number in this program.
+            let CallTarget::Number(n) = target else { return None };
+            return self.progs[prog].index.seq.get(n).and_then(|l| l.first()).map(|&i| (prog, i));
+        }
         for p in std::iter::once(prog).chain(0..self.progs.len()) {
             if let Some(i) = self.progs[p].index.call_target(target) {
                 return Some((p, i + 1));
@@ -634,4 +770,14 @@ pub fn assign(it: &mut Interp<'_, '_>, var: &Var, v: Option<f64>, exprs: &Arena<
         }
     }
     Ok(())
+}
+
+/// The numbered parameters local to a call level (the spec's `local`
+/// ranges: LinuxCNC #1-#30, Fanuc #1-#33), bounded.
+fn local_numbers(spec: &crate::dialect::DialectSpec) -> Vec<u32> {
+    spec.variables
+        .iter()
+        .filter(|r| r.prefix == '#' && r.class == crate::dialect::spec::VarClass::Local)
+        .flat_map(|r| r.first..=r.last.min(r.first.saturating_add(999)))
+        .collect()
 }
