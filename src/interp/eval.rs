@@ -70,8 +70,9 @@ impl Interp<'_, '_> {
 
     fn binary(&mut self, op: BinaryOp, a: Num, b: Num, span: crate::span::Span) -> Result<f64, Stop> {
         use BinaryOp::*;
-        // Vacant equals only vacant (Fanuc Macro B); elsewhere it reads as zero.
-        let vacancy = self.spec.has(Capability::MacroB);
+        // Vacant equals only vacant (Fanuc Macro B: dialects with a `#0`,
+        // always vacant); elsewhere it reads as zero.
+        let vacancy = self.spec.variables.iter().any(|r| r.prefix == '#' && r.first == 0);
         if vacancy && matches!(op, Eq | Ne) && (a.is_none() || b.is_none()) {
             let same = a.is_none() == b.is_none() && a.unwrap_or(0.0) == b.unwrap_or(0.0);
             return Ok(((op == Eq) == same) as i64 as f64);

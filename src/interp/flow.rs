@@ -781,3 +781,7 @@ fn local_numbers(spec: &crate::dialect::DialectSpec) -> Vec<u32> {
         .flat_map(|r| r.first..=r.last.min(r.first.saturating_add(999)))
         .collect()
 }
+
+#[cfg(test)]
+#[path = "flow_tests.rs"]
+mod tests;
