@@ -117,7 +117,7 @@ impl<'l> Walker<'l> {
                 }
                 Next::Call { prog: p, at, frame } => {
                     if self.frames.len() as u32 >= it.opts.limits.call_depth {
-                        return Err(limit(it, "call nesting deeper than the limit"));
+                        return Err(limit(it, "call nesting deeper than the limit", "a subprogram probably calls itself without end; raise --max-depth if the program is right"));
                     }
                     self.frames.push(frame);
                     (prog, pc) = (p, at);
@@ -459,7 +459,7 @@ impl<'l> Walker<'l> {
         let c = self.loop_counts.entry((prog, at)).or_insert(0);
         *c += 1;
         if *c > it.opts.limits.loop_iterations {
-            return Err(limit(it, "a loop ran more times than the limit"));
+            return Err(limit(it, "a loop ran more times than the limit", "the program probably loops forever; raise --max-loop if it is right"));
         }
         Ok(())
     }
@@ -674,12 +674,8 @@ fn target_name(t: &CallTarget) -> String {
     }
 }
 
-fn limit(it: &Interp<'_, '_>, msg: &str) -> Stop {
-    Stop::Error(
-        Diagnostic::new(Code::LimitExceeded, msg)
-            .primary(it.span, "here")
-            .help("the program probably loops forever; raise the limit if it is right"),
-    )
+fn limit(it: &Interp<'_, '_>, msg: &str, help: &str) -> Stop {
+    Stop::Error(Diagnostic::new(Code::LimitExceeded, msg).primary(it.span, "here").help(help.to_string()))
 }
 
 fn truth(v: Option<f64>) -> bool {
