@@ -14,12 +14,10 @@ use crate::cli::output::summary_line;
 use crate::diag::{Code, Diagnostic, Severity};
 use crate::dialect::DialectSpec;
 use crate::driver::{check_stream, read_program, FsLoader};
-use crate::interp::{self, tooltable::ToolTable, Interp, Options, Stop};
-use crate::ir::{Arena, Block, Expr, StmtKind};
+use crate::interp::{stream::StreamRun, tooltable::ToolTable, Interp, Options};
 use std::fs::File;
 use std::io::BufReader;
 use std::path::Path;
-use std::sync::Arc;
 
 pub struct CheckArgs<'a> {
     pub files: &'a [std::path::PathBuf],
@@ -52,8 +50,8 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
     Ok(if errors > 0 { EXIT_INPUT_ERRORS } else { EXIT_OK })
 }
 
-/// Streams one file through the reader (and the interpreter, while the
-/// program has no control flow); keeps only the lines diagnostics point at.
+/// Streams one file through the reader (and the interpreter, until the
+/// program shows control flow); keeps only the lines diagnostics point at.
 fn check_file(ctx: &mut Context, path: &Path, a: &CheckArgs<'_>) -> Result<Vec<Diagnostic>, Failure> {
     let fail = |e: std::io::Error| Failure(format!("{}: {e}", path.display()));
     let head = read_head(path)?;
@@ -67,25 +65,23 @@ fn check_file(ctx: &mut Context, path: &Path, a: &CheckArgs<'_>) -> Result<Vec<D
     let result = check_stream(input, id, &spec, |b, e| stream.block(&mut it, b, e)).map_err(fail)?;
     let mut diags = result.diagnostics;
     if !diags.iter().any(Diagnostic::is_error) {
-        let mut run = stream.finish(&mut it);
-        if stream.needs_walker {
-            drop(it);
-            run = run_whole(ctx, path, id, &spec, &a.options)?;
-        }
+        let mut run = match stream.handover {
+            None => stream.finish(&mut it),
+            Some(_) => {
+                let program = read_whole(path, id, &spec)?;
+                let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+                let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
+                let mut d = stream.continue_with(&mut it, program, &mut loader);
+                d.append(&mut loader.diags);
+                d
+            }
+        };
         // A statement cncc cannot run yet is our limit, not the program's
         // mistake: the run stops there without a report.
         run.retain(|d| d.code != Code::UnsupportedHere);
         diags.extend(run);
     }
-    let offsets: Vec<u32> = diags
-        .iter()
-        .flat_map(|d| d.labels.iter())
-        .filter(|l| l.span.file == id)
-        .flat_map(|l| [l.span.start, l.span.end.saturating_sub(1).max(l.span.start)])
-        .collect();
-    let file = File::open(path).map_err(fail)?;
-    let lines = crate::driver::lines_at(BufReader::new(file), &offsets)?;
-    ctx.files.set_sparse(id, lines);
+    keep_lines(ctx, path, id, &diags)?;
     if let Some(r) = reason {
         if a.verbose || !diags.is_empty() {
             report_detection(path, &spec, &r);
@@ -94,103 +90,30 @@ fn check_file(ctx: &mut Context, path: &Path, a: &CheckArgs<'_>) -> Result<Vec<D
     Ok(diags)
 }
 
-/// Runs a program with control flow: read whole, walked, subprograms
-/// loaded from beside it.
-fn run_whole(ctx: &mut Context, path: &Path, id: crate::span::FileId, spec: &Arc<DialectSpec>, opts: &Options) -> Result<Vec<Diagnostic>, Failure> {
+/// Keeps, for a file read as a stream, the lines the diagnostics show.
+pub(crate) fn keep_lines(ctx: &mut Context, path: &Path, id: crate::span::FileId, diags: &[Diagnostic]) -> Result<(), Failure> {
+    let offsets: Vec<u32> = diags
+        .iter()
+        .flat_map(|d| d.labels.iter())
+        .filter(|l| l.span.file == id)
+        .flat_map(|l| [l.span.start, l.span.end.saturating_sub(1).max(l.span.start)])
+        .collect();
+    let file = File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    let lines = crate::driver::lines_at(BufReader::new(file), &offsets)?;
+    ctx.files.set_sparse(id, lines);
+    Ok(())
+}
+
+/// Reads a whole program (for the walker), with spans in file `id`.
+pub(crate) fn read_whole(path: &Path, id: crate::span::FileId, spec: &DialectSpec) -> Result<std::rc::Rc<crate::ir::Program>, Failure> {
     let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
     let text = crate::driver::decode(&bytes);
     drop(bytes);
-    let (program, _) = read_program(&text, id, spec);
-    drop(text);
-    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
-    let mut discard = |_: crate::canon::Canon, _: crate::span::Span| {};
-    let mut diags = interp::run(std::rc::Rc::new(program), spec, opts, &mut loader, &mut discard);
-    diags.append(&mut loader.diags);
-    Ok(diags)
-}
-
-/// Runs blocks as they are read, until the program shows control flow.
-#[derive(Default)]
-struct StreamRun {
-    stopped: bool,
-    needs_walker: bool,
-    seen_content: bool,
-    percent_start: bool,
-    blocks: u64,
-    diags: Vec<Diagnostic>,
-}
-
-impl StreamRun {
-    fn block(&mut self, it: &mut Interp<'_, '_>, b: &Block, exprs: &Arena<Expr>) {
-        if self.stopped {
-            return;
-        }
-        if b.stmts.iter().any(|s| needs_walker(&s.kind)) {
-            self.needs_walker = true;
-            self.stopped = true;
-            return;
-        }
-        if b.stmts.is_empty() {
-            return;
-        }
-        self.blocks += 1;
-        if self.blocks > it.opts.limits.blocks {
-            self.stop(it, Err(Stop::Error(Diagnostic::new(crate::diag::Code::LimitExceeded, "more blocks run than the limit").primary(b.span, "here"))));
-            return;
-        }
-        let first = !self.seen_content;
-        self.seen_content = true;
-        if b.stmts.iter().any(|s| matches!(s.kind, StmtKind::Tape)) && !(b.skip.is_some() && it.opts.block_delete) {
-            if first {
-                self.percent_start = true;
-            } else if self.percent_start {
-                interp::machine::finish_sequence(it);
-                self.stopped = true;
-                return;
-            }
-        }
-        let r = it.block(b, exprs);
-        self.stop(it, r);
-    }
-
-    fn stop(&mut self, it: &mut Interp<'_, '_>, r: Result<(), Stop>) {
-        match r {
-            Ok(()) => self.stopped = it.ended,
-            Err(Stop::End) => self.stopped = true,
-            Err(Stop::Error(d)) => {
-                self.diags.push(d);
-                interp::machine::abort_sequence(it);
-                self.stopped = true;
-            }
-        }
-    }
-
-    /// The run's diagnostics; a program that fell off its end is reported.
-    fn finish(&mut self, it: &mut Interp<'_, '_>) -> Vec<Diagnostic> {
-        if self.needs_walker {
-            return Vec::new();
-        }
-        let mut diags = std::mem::take(&mut it.diags);
-        diags.append(&mut self.diags);
-        if !self.stopped {
-            interp::machine::fell_off_end(it, &mut diags);
-        }
-        diags
-    }
-}
-
-/// Statements only the program walker runs (control flow and variables).
-fn needs_walker(kind: &StmtKind) -> bool {
-    use StmtKind::*;
-    match kind {
-        Tape | ProgramStart { .. } | Raw { .. } | Word(_) | Command { .. } => false,
-        k => interp::exec::phase(k) == 0,
-    }
+    Ok(std::rc::Rc::new(read_program(&text, id, spec).0))
 }
 
 /// The first 64 KiB of a file, for dialect detection.
-fn read_head(path: &Path) -> Result<String, Failure> {
+pub(crate) fn read_head(path: &Path) -> Result<String, Failure> {
     use std::io::Read;
     let mut buf = vec![0u8; 1 << 16];
     let mut f = File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;

@@ -56,6 +56,8 @@ pub struct Walker<'l> {
     started_with_percent: bool,
     /// The active `G66` modal macro: its target and argument values.
     modal: Option<(CallTarget, Vec<(u32, Option<f64>)>)>,
+    /// Where the main program starts (after a streamed beginning).
+    start: usize,
 }
 
 /// What a block asks the walker to do next.
@@ -81,12 +83,21 @@ impl<'l> Walker<'l> {
             blocks_run: 0,
             started_with_percent: false,
             modal: None,
+            start: 0,
         }
+    }
+
+    /// Starts at block `at` of the main program, after `blocks` blocks
+    /// were run in sequence (see [`super::stream`]).
+    pub fn resume(&mut self, at: usize, started_with_percent: bool, blocks: u64) {
+        self.start = at;
+        self.started_with_percent = started_with_percent;
+        self.blocks_run = blocks;
     }
 
     /// Runs the main program to its end or first error.
     pub fn run(&mut self, it: &mut Interp<'_, '_>) -> Result<(), Stop> {
-        let (mut prog, mut pc) = (0usize, 0usize);
+        let (mut prog, mut pc) = (0usize, self.start);
         let mut entered = false;
         loop {
             let program = self.progs[prog].program.clone();
@@ -329,6 +340,7 @@ impl<'l> Walker<'l> {
                     self.count_loop(it, prog, pc)?;
                     None
                 } else {
+                    self.loop_done(prog, pc);
                     after(ix.partner.get(&pc))
                 }
             }
@@ -338,11 +350,13 @@ impl<'l> Walker<'l> {
                     self.count_loop(it, prog, pc)?;
                     ix.partner.get(&pc).map(|&o| Next::Jump(o + 1))
                 } else {
+                    self.loop_done(prog, pc);
                     None
                 }
             }
             Until { cond } => {
                 if truth(it.eval(*cond, exprs)?) {
+                    self.loop_done(prog, pc);
                     None
                 } else {
                     self.count_loop(it, prog, pc)?;
@@ -370,6 +384,7 @@ impl<'l> Walker<'l> {
                     self.count_loop(it, prog, o)?;
                     Some(Next::Jump(o + 1))
                 } else {
+                    self.loop_done(prog, o);
                     None
                 }
             }
@@ -397,10 +412,18 @@ impl<'l> Walker<'l> {
                     self.count_loop(it, prog, o)?;
                     Some(Next::Jump(o + 1))
                 } else {
+                    self.loop_done(prog, o);
                     None
                 }
             }
-            Break { .. } => ix.loop_of.get(&pc).and_then(|o| ix.partner.get(o)).map(|&e| Next::Jump(e + 1)),
+            Break { .. } => {
+                let o = ix.loop_of.get(&pc).copied();
+                let e = o.and_then(|o| ix.partner.get(&o).copied());
+                for k in [o, e].into_iter().flatten() {
+                    self.loop_done(prog, k);
+                }
+                e.map(|e| Next::Jump(e + 1))
+            }
             Continue { .. } => ix.loop_of.get(&pc).and_then(|o| ix.partner.get(o)).map(|&e| Next::Jump(e)),
             Case { selector, arms, default } => {
                 let v = it.eval(*selector, exprs)?.unwrap_or(0.0);
@@ -453,6 +476,11 @@ impl<'l> Walker<'l> {
             }
             _ => None,
         })
+    }
+
+    /// A loop that ended: its next run counts from zero again.
+    fn loop_done(&mut self, prog: usize, at: usize) {
+        self.loop_counts.remove(&(prog, at));
     }
 
     fn count_loop(&mut self, it: &Interp<'_, '_>, prog: usize, at: usize) -> Result<(), Stop> {

@@ -116,3 +116,16 @@ fn siemens_r_parameters_loops_labels_and_repeat() {
     assert_eq!(p.r(6), 0.0);
     assert_eq!(p.r(7), 3.0);
 }
+
+#[test]
+fn loop_limit_counts_per_run_of_a_loop() {
+    let mut opts = Options::default();
+    opts.limits.loop_iterations = 50;
+    let (p, e) = run_with(
+        "linuxcnc",
+        "%\n#<_t> = 0\no<inner> sub\n#<i> = 0\no1 while [#<i> LT 40]\n#<i> = [#<i> + 1]\n#<_t> = [#<_t> + 1]\no1 endwhile\no<inner> endsub\no2 repeat [10]\no<inner> call\no2 endrepeat\n%\n",
+        &opts,
+    );
+    assert!(e.is_none(), "{e:?}");
+    assert_eq!(g(&p, "_t"), 400.0, "ten runs of a 40-pass loop stay under a limit of 50");
+}
