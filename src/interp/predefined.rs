@@ -36,6 +36,18 @@ pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
             i => 590.0 + (i - 6) as f64,
         }),
         "_call_level" => Some((it.params.depth() - 1) as f64),
+        "_plane" => Some(match s.plane {
+            crate::canon::CanonPlane::XY => 170.0,
+            crate::canon::CanonPlane::XZ => 180.0,
+            crate::canon::CanonPlane::YZ => 190.0,
+        }),
+        "_flood" => Some(s.flood as i64 as f64),
+        "_mist" => Some(s.mist as i64 as f64),
+        // The standalone interpreter: no task, no remapping, overrides on.
+        "_task" | "_remap_level" | "_feed_hold" | "_adaptive_feed" => Some(0.0),
+        "_speed_override" | "_feed_override" => Some(1.0),
+        "_vmajor" => Some(2.0),
+        "_vminor" => Some(9.0),
         _ => None,
     }
 }
