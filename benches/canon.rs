@@ -48,7 +48,7 @@ fn measure(program: &Path, args: &[&std::ffi::OsStr]) -> Option<(f64, f64, i32)>
         .ok()?;
     let secs = start.elapsed().as_secs_f64();
     let text = std::fs::read_to_string(&rss_file).ok()?;
-    let kb: f64 = text.lines().filter_map(|l| l.trim().parse().ok()).last()?;
+    let kb: f64 = text.lines().rev().find_map(|l| l.trim().parse().ok())?;
     Some((secs, kb / 1024.0, status.code().unwrap_or(-1)))
 }
 

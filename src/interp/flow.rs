@@ -25,6 +25,9 @@ impl ProgramLoader for NoLoader {
     }
 }
 
+/// Numbered parameters a call sets, with their values (`None`: vacant).
+type ArgValues = Vec<(u32, Option<f64>)>;
+
 /// A place to return to.
 struct Frame {
     prog: usize,
@@ -55,7 +58,7 @@ pub struct Walker<'l> {
     blocks_run: u64,
     started_with_percent: bool,
     /// The active `G66` modal macro: its target and argument values.
-    modal: Option<(CallTarget, Vec<(u32, Option<f64>)>)>,
+    modal: Option<(CallTarget, ArgValues)>,
     /// Where the main program starts (after a streamed beginning).
     start: usize,
 }
