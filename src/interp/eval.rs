@@ -145,10 +145,14 @@ impl Interp<'_, '_> {
 
     fn read_var(&mut self, v: &Var, exprs: &Arena<Expr>, span: crate::span::Span) -> Result<Num, Stop> {
         Ok(match v {
-            Var::Numbered(n) => self.read_numbered(*n),
+            Var::Numbered(n) => {
+                self.check_number(*n, span)?;
+                self.read_numbered(*n)
+            }
             Var::Indirect(e) => {
-                let n = self.eval(*e, exprs)?.unwrap_or(0.0);
-                self.read_numbered(n.round().max(0.0) as u32)
+                let n = self.eval(*e, exprs)?.unwrap_or(0.0).round().max(0.0) as u32;
+                self.check_number(n, span)?;
+                self.read_numbered(n)
             }
             Var::Named(name) => match self.read_named(name) {
                 Some(v) => Some(v),
@@ -175,6 +179,16 @@ impl Interp<'_, '_> {
                 return Err(self.error_at(span, Code::UnsupportedHere, format!("system variable {name} is not simulated")))
             }
         })
+    }
+
+    /// A numbered parameter outside every range the dialect lists
+    /// (LinuxCNC: #1-#5602) is an error.
+    pub fn check_number(&self, n: u32, span: crate::span::Span) -> Result<(), Stop> {
+        let ranges = || self.spec.variables.iter().filter(|r| r.prefix == '#');
+        if ranges().next().is_none() || ranges().any(|r| (r.first..=r.last).contains(&n)) {
+            return Ok(());
+        }
+        Err(self.error_at(span, Code::UndefinedVariable, format!("parameter #{n} is out of range")))
     }
 
     /// `#n`, with the system parameters the interpreter keeps.

@@ -780,9 +780,13 @@ fn read_var(it: &mut Interp<'_, '_>, var: &Var, exprs: &Arena<Expr>) -> Result<f
 /// Sets a variable.
 pub fn assign(it: &mut Interp<'_, '_>, var: &Var, v: Option<f64>, exprs: &Arena<Expr>) -> Result<(), Stop> {
     match var {
-        Var::Numbered(n) => it.params.set_numbered(*n, v),
+        Var::Numbered(n) => {
+            it.check_number(*n, it.span)?;
+            it.params.set_numbered(*n, v)
+        }
         Var::Indirect(e) => {
             let n = it.eval(*e, exprs)?.unwrap_or(0.0).round().max(0.0) as u32;
+            it.check_number(n, it.span)?;
             it.params.set_numbered(n, v);
         }
         Var::Named(name) => it.params.set_named(name, v.unwrap_or(0.0)),
