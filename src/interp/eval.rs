@@ -182,7 +182,7 @@ impl Interp<'_, '_> {
     }
 
     /// A numbered parameter outside every range the dialect lists
-    /// (LinuxCNC: #1-#5602) is an error.
+    /// (LinuxCNC: #1-#5601, probed) is an error.
     pub fn check_number(&self, n: u32, span: crate::span::Span) -> Result<(), Stop> {
         let ranges = || self.spec.variables.iter().filter(|r| r.prefix == '#');
         if ranges().next().is_none() || ranges().any(|r| (r.first..=r.last).contains(&n)) {

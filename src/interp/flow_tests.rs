@@ -73,7 +73,7 @@ fn linuxcnc_do_repeat_elseif_and_eq_tolerance() {
 fn undefined_named_parameter_and_division_by_zero_stop_the_run() {
     let (_, e) = run_with("linuxcnc", "#1 = #<nope>\n%\n", &Options::default());
     assert_eq!(e.expect("error").code, crate::diag::Code::UndefinedVariable);
-    let (_, e) = run_with("linuxcnc", "#1 = #5603\n%\n", &Options::default());
+    let (_, e) = run_with("linuxcnc", "#1 = #5602\n%\n", &Options::default());
     assert_eq!(e.expect("error").code, crate::diag::Code::UndefinedVariable);
     let (_, e) = run_with("linuxcnc", "#1 = [1 / 0]\n%\n", &Options::default());
     assert_eq!(e.expect("error").code, crate::diag::Code::DivisionByZero);
