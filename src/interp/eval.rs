@@ -63,7 +63,7 @@ impl Interp<'_, '_> {
                 let x = self.eval(*b, exprs)?.unwrap_or(0.0);
                 Some(atan2_deg(y, x))
             }
-            ExprKind::Exists(name) => Some(self.params.named(name).is_some() as i64 as f64),
+            ExprKind::Exists(name) => Some(self.read_named(name).is_some() as i64 as f64),
             ExprKind::Dimension(_, inner) => self.eval(*inner, exprs)?,
         })
     }
@@ -189,6 +189,15 @@ impl Interp<'_, '_> {
             return Ok(());
         }
         Err(self.error_at(span, Code::UndefinedVariable, format!("parameter #{n} is out of range")))
+    }
+
+    /// Writing a read-only numbered parameter (Fanuc `#0`) is an error.
+    pub fn check_writable(&self, n: u32, span: crate::span::Span) -> Result<(), Stop> {
+        let ro = self.spec.variables.iter().any(|r| r.prefix == '#' && !r.writable && (r.first..=r.last).contains(&n));
+        if ro {
+            return Err(self.error_at(span, Code::UnsupportedHere, format!("parameter #{n} is read-only")));
+        }
+        self.check_number(n, span)
     }
 
     /// `#n`, with the system parameters the interpreter keeps.

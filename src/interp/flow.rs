@@ -447,6 +447,7 @@ impl<'l> Walker<'l> {
                     let v = it.eval(*v, exprs)?.unwrap_or(0.0);
                     it.params.set_named("_value", v);
                 }
+                it.params.set_named("_value_returned", value.is_some() as i64 as f64);
                 Some(Next::Return)
             }
             ModalMacroCancel => {
@@ -781,12 +782,12 @@ fn read_var(it: &mut Interp<'_, '_>, var: &Var, exprs: &Arena<Expr>) -> Result<f
 pub fn assign(it: &mut Interp<'_, '_>, var: &Var, v: Option<f64>, exprs: &Arena<Expr>) -> Result<(), Stop> {
     match var {
         Var::Numbered(n) => {
-            it.check_number(*n, it.span)?;
+            it.check_writable(*n, it.span)?;
             it.params.set_numbered(*n, v)
         }
         Var::Indirect(e) => {
             let n = it.eval(*e, exprs)?.unwrap_or(0.0).round().max(0.0) as u32;
-            it.check_number(n, it.span)?;
+            it.check_writable(n, it.span)?;
             it.params.set_numbered(n, v);
         }
         Var::Named(name) => it.params.set_named(name, v.unwrap_or(0.0)),

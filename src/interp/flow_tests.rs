@@ -131,3 +131,22 @@ fn loop_limit_counts_per_run_of_a_loop() {
     assert!(e.is_none(), "{e:?}");
     assert_eq!(g(&p, "_t"), 400.0, "ten runs of a 40-pass loop stay under a limit of 50");
 }
+
+#[test]
+fn exists_sees_predefined_names_and_value_returned_is_set() {
+    let p = run(
+        "linuxcnc",
+        "%\n#<_e1> = EXISTS[#<_x>]\n#<_e2> = EXISTS[#<nothing>]\no<f> sub\no<f> endsub\no<f> call\n#<_r> = #<_value_returned>\n%\n",
+    );
+    assert_eq!(g(&p, "_e1"), 1.0);
+    assert_eq!(g(&p, "_e2"), 0.0);
+    assert_eq!(g(&p, "_r"), 0.0);
+}
+
+#[test]
+fn fanuc_read_only_and_missing_variables_are_errors() {
+    let (_, e) = run_with("fanuc", "%\nO1000\n#0 = 1\nM30\n%\n", &Options::default());
+    assert!(e.expect("error").message.contains("read-only"));
+    let (_, e) = run_with("fanuc", "%\nO1000\n#50 = 1\nM30\n%\n", &Options::default());
+    assert_eq!(e.expect("error").code, crate::diag::Code::UndefinedVariable);
+}
