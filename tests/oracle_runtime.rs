@@ -18,6 +18,9 @@ const PENDING_CORE: &[&str] = &[
     "linuxcnc/runtime/comp-gouge.ngc",
 ];
 
+/// Subprogram files that programs here call (not run on their own).
+const HELPERS: &[&str] = &["linuxcnc/runtime/halve.ngc"];
+
 fn programs() -> Vec<(String, String)> {
     let mut out = Vec::new();
     for dialect in ["linuxcnc", "fanuc", "siemens840d"] {
@@ -28,7 +31,8 @@ fn programs() -> Vec<(String, String)> {
             .map(|e| e.file_name().to_string_lossy().into_owned())
             .collect();
         files.sort();
-        out.extend(files.into_iter().map(|f| (dialect.to_string(), format!("{dialect}/runtime/{f}"))));
+        let rel = files.into_iter().map(|f| format!("{dialect}/runtime/{f}"));
+        out.extend(rel.filter(|r| !HELPERS.contains(&r.as_str())).map(|r| (dialect.to_string(), r)));
     }
     out
 }

@@ -41,6 +41,8 @@ struct Frame {
     repeat: Option<((usize, usize), u64)>,
     /// The frame of a `G66` modal macro call.
     modal: bool,
+    /// The statement that made the call (shown with errors inside it).
+    call_span: crate::span::Span,
 }
 
 struct Loaded {
@@ -98,8 +100,25 @@ impl<'l> Walker<'l> {
         self.blocks_run = blocks;
     }
 
-    /// Runs the main program to its end or first error.
+    /// Runs the main program to its end or first error; an error inside a
+    /// subprogram also shows where it was called from.
     pub fn run(&mut self, it: &mut Interp<'_, '_>) -> Result<(), Stop> {
+        match self.walk(it) {
+            Err(Stop::Error(mut d)) => {
+                let mut shown: Vec<crate::span::Span> = d.labels.iter().map(|l| l.span).collect();
+                for f in self.frames.iter().rev().filter(|f| f.section.is_none()) {
+                    if shown.len() < 8 && !shown.contains(&f.call_span) {
+                        shown.push(f.call_span);
+                        d = d.secondary(f.call_span, "called from here");
+                    }
+                }
+                Err(Stop::Error(d))
+            }
+            r => r,
+        }
+    }
+
+    fn walk(&mut self, it: &mut Interp<'_, '_>) -> Result<(), Stop> {
         let (mut prog, mut pc) = (0usize, self.start);
         let mut entered = false;
         loop {
@@ -284,7 +303,7 @@ impl<'l> Walker<'l> {
         if n == 0 || last < first || (first <= pc && pc <= last) {
             return Ok(Next::Step);
         }
-        let frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: Some((first, last, n)), repeat: None, modal: false };
+        let frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: Some((first, last, n)), repeat: None, modal: false, call_span: s.span };
         Ok(Next::Call { prog, at: first, frame })
     }
 
@@ -614,7 +633,8 @@ impl<'l> Walker<'l> {
             }
         };
         let repeat = (passes > 1).then_some(((to_prog, at), passes));
-        let mut frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: None, repeat, modal: false };
+        let call_span = it.span;
+        let mut frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: None, repeat, modal: false, call_span };
         if matches!(kind, CallKind::OWord | CallKind::Macro | CallKind::ModalMacro | CallKind::Named) {
             frame.new_scope = true;
             for n in local_numbers(it.spec) {
