@@ -150,3 +150,14 @@ fn fanuc_read_only_and_missing_variables_are_errors() {
     let (_, e) = run_with("fanuc", "%\nO1000\n#50 = 1\nM30\n%\n", &Options::default());
     assert_eq!(e.expect("error").code, crate::diag::Code::UndefinedVariable);
 }
+
+#[test]
+fn siemens_def_case_loop_and_repeat_until() {
+    let p = run(
+        "siemens840d",
+        "DEF REAL A=2\nDEF INT N\nR1=0\nCASE (A) OF 1 GOTOF ONE 2 GOTOF TWO DEFAULT GOTOF OTHER\nONE: R1=1\nTWO: R1=R1+2\nOTHER: R2=0\nREPEAT\nR2=R2+1\nUNTIL R2>=3\nN=0\nLOOP\nN=N+1\nIF N==4 GOTOF OUT\nENDLOOP\nOUT: R3=N\n",
+    );
+    assert_eq!(p.r(1), 2.0, "CASE jumps to TWO");
+    assert_eq!(p.r(2), 3.0);
+    assert_eq!(p.r(3), 4.0);
+}
