@@ -192,7 +192,7 @@ impl<'a> FsLoader<'a> {
                 let n = n.trim_matches(|c| c == '<' || c == '>');
                 vec![n.to_string(), n.to_ascii_lowercase(), n.to_ascii_uppercase()]
             }
-            CallTarget::Number(n) => vec![format!("O{n}"), format!("O{n:04}"), format!("o{n}"), n.to_string()],
+            CallTarget::Number(n) => vec![format!("O{n}"), format!("O{n:04}"), format!("o{n}"), n.to_string(), format!("L{n}")],
             CallTarget::Computed(_) => Vec::new(),
         };
         let mut exts: Vec<String> = self.spec.extensions.clone();

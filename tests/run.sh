@@ -7,5 +7,8 @@ cd "$(dirname "$0")/.."
 if [ ! -d ../shared ]; then
     echo "note: ../shared is absent: corpus and reference tests will say they were skipped"
 fi
+if ! command -v rs274 >/dev/null 2>&1; then
+    echo "note: rs274 is absent (apt-get install linuxcnc-uspace): the live oracle tests will say they were skipped"
+fi
 
 cargo test 2>&1

@@ -47,6 +47,11 @@ pub enum Command {
         /// Say which dialect was detected even when the file is clean.
         #[arg(long, short)]
         verbose: bool,
+        /// A tool table in LinuxCNC's .tbl format, for running the program.
+        #[arg(long = "tool-table", value_name = "T.tbl")]
+        tool_table: Option<PathBuf>,
+        #[command(flatten)]
+        run: RunArgs,
     },
     /// Print the meta-model of a program as readable text.
     Ir {

@@ -1,12 +1,20 @@
 //! `cncc canon`: run a program and print its canonical machining calls,
 //! one per line, in the text form of LinuxCNC's `rs274`.
+//!
+//! The file is read twice as a stream: first for the reader's diagnostics
+//! (a program with errors is not run), then to run it block by block while
+//! it is read. A program with control flow is read whole from its first
+//! such block and the walker goes on from there (see
+//! [`crate::interp::stream`]), so memory stays flat on large CAM files.
 
 use crate::cli::args::Format;
+use crate::cli::check::{keep_lines, read_head, read_whole};
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::canon::format_call;
-use crate::driver::{read_program, FsLoader};
-use crate::interp::{self, tooltable::ToolTable, Options};
-use std::io::Write;
+use crate::driver::{check_stream, FsLoader};
+use crate::interp::{stream::StreamRun, tooltable::ToolTable, Interp, Options};
+use std::fs::File;
+use std::io::{BufReader, Write};
 use std::path::Path;
 
 pub struct CanonArgs<'a> {
@@ -18,8 +26,9 @@ pub struct CanonArgs<'a> {
 }
 
 pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
-    let (id, text) = ctx.add_file(a.file)?;
-    let (spec, reason) = ctx.spec_for(a.dialect, a.file, &text)?;
+    let fail = |e: std::io::Error| Failure(format!("{}: {e}", a.file.display()));
+    let head = read_head(a.file)?;
+    let (spec, reason) = ctx.spec_for(a.dialect, a.file, &head)?;
     if let Some(r) = reason {
         report_detection(a.file, &spec, &r);
     }
@@ -30,9 +39,11 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
         diags.extend(d);
         a.options.tool_table = table;
     }
-    let (program, d) = read_program(&text, id, &spec);
-    diags.extend(d);
+    let id = ctx.files.add_sparse(a.file.display().to_string(), Vec::new());
+    let open = || File::open(a.file).map(|f| BufReader::with_capacity(1 << 16, f)).map_err(fail);
+    diags.extend(check_stream(open()?, id, &spec, |_, _| {}).map_err(fail)?.diagnostics);
     if diags.iter().any(|d| d.is_error()) {
+        keep_lines(ctx, a.file, id, &diags)?;
         ctx.print(&diags, a.format);
         return Ok(EXIT_INPUT_ERRORS);
     }
@@ -46,14 +57,28 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
             }
         }
     };
-    let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
-    let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
-    diags.extend(interp::run(std::rc::Rc::new(program), &spec, &a.options, &mut loader, &mut sink));
-    drop(sink);
+    let mut it = Interp::new(&spec, &a.options, &mut sink);
+    it.start();
+    let mut stream = StreamRun::default();
+    check_stream(open()?, id, &spec, |b, e| stream.block(&mut it, b, e)).map_err(fail)?;
+    let run = match stream.handover {
+        None => stream.finish(&mut it),
+        Some(_) => {
+            let program = read_whole(a.file, id, &spec)?;
+            let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
+            let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
+            let mut d = stream.continue_with(&mut it, program, &mut loader);
+            d.append(&mut loader.diags);
+            d
+        }
+    };
+    diags.extend(run);
+    drop(it);
     out.flush()?;
     if let Some(e) = io_error {
         return Err(e.into());
     }
+    keep_lines(ctx, a.file, id, &diags)?;
     ctx.print(&diags, a.format);
     Ok(if diags.iter().any(|d| d.is_error()) { EXIT_INPUT_ERRORS } else { EXIT_OK })
 }

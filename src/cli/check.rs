@@ -1,24 +1,48 @@
 //! `cncc check`: read programs, report every problem, exit 1 on errors.
 //! A clean program prints nothing.
+//!
+//! A program that reads cleanly is also run (calls discarded), so run-time
+//! errors show too: arcs that do not close, moves with no feed, unknown
+//! tools, division by zero, loops past their limit... A program with no
+//! control flow runs block by block while it is read, so memory stays flat
+//! on large CAM files; one with control flow (jumps, loops, calls,
+//! parameters) is read whole and run by the program walker.
 
-use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::cli::args::Format;
+use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::cli::output::summary_line;
-use crate::diag::{Diagnostic, Severity};
-use crate::driver::check_stream;
+use crate::diag::{Code, Diagnostic, Severity};
+use crate::dialect::DialectSpec;
+use crate::driver::{check_stream, read_program, FsLoader};
+use crate::interp::{stream::StreamRun, tooltable::ToolTable, Interp, Options};
 use std::fs::File;
 use std::io::BufReader;
 use std::path::Path;
 
-pub fn run(ctx: &mut Context, files: &[std::path::PathBuf], dialect: Option<&str>, format: Format, verbose: bool) -> Result<i32, Failure> {
+pub struct CheckArgs<'a> {
+    pub files: &'a [std::path::PathBuf],
+    pub dialect: Option<&'a str>,
+    pub format: Format,
+    pub verbose: bool,
+    pub tool_table: Option<&'a Path>,
+    pub options: Options,
+}
+
+pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
     let mut all = Vec::new();
-    for path in files {
-        all.extend(check_file(ctx, path, dialect, verbose)?);
+    if let Some(t) = a.tool_table {
+        let (tid, ttext) = ctx.add_file(t)?;
+        let (table, d) = ToolTable::parse(&ttext, tid);
+        all.extend(d);
+        a.options.tool_table = table;
     }
-    ctx.print(&all, format);
+    for path in a.files {
+        all.extend(check_file(ctx, path, &a)?);
+    }
+    ctx.print(&all, a.format);
     let errors = all.iter().filter(|d| d.severity == Severity::Error).count();
     let warnings = all.iter().filter(|d| d.severity == Severity::Warning).count();
-    if format == Format::Human {
+    if a.format == Format::Human {
         if let Some(s) = summary_line(errors, warnings, 0) {
             eprintln!("{s}");
         }
@@ -26,16 +50,49 @@ pub fn run(ctx: &mut Context, files: &[std::path::PathBuf], dialect: Option<&str
     Ok(if errors > 0 { EXIT_INPUT_ERRORS } else { EXIT_OK })
 }
 
-/// Streams one file through the reader; keeps only the lines diagnostics
-/// point at, so memory does not grow with the file.
-fn check_file(ctx: &mut Context, path: &Path, dialect: Option<&str>, verbose: bool) -> Result<Vec<Diagnostic>, Failure> {
+/// Streams one file through the reader (and the interpreter, until the
+/// program shows control flow); keeps only the lines diagnostics point at.
+fn check_file(ctx: &mut Context, path: &Path, a: &CheckArgs<'_>) -> Result<Vec<Diagnostic>, Failure> {
+    let fail = |e: std::io::Error| Failure(format!("{}: {e}", path.display()));
     let head = read_head(path)?;
-    let (spec, reason) = ctx.spec_for(dialect, path, &head)?;
-    let input = BufReader::with_capacity(1 << 16, File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?);
+    let (spec, reason) = ctx.spec_for(a.dialect, path, &head)?;
+    let input = BufReader::with_capacity(1 << 16, File::open(path).map_err(fail)?);
     let id = ctx.files.add_sparse(path.display().to_string(), Vec::new());
-    let result = check_stream(input, id, &spec, |_, _| {}).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
-    let offsets: Vec<u32> = result
-        .diagnostics
+    let mut discard = |_: crate::canon::Canon, _: crate::span::Span| {};
+    let mut it = Interp::new(&spec, &a.options, &mut discard);
+    it.start();
+    let mut stream = StreamRun::default();
+    let result = check_stream(input, id, &spec, |b, e| stream.block(&mut it, b, e)).map_err(fail)?;
+    let mut diags = result.diagnostics;
+    if !diags.iter().any(Diagnostic::is_error) {
+        let mut run = match stream.handover {
+            None => stream.finish(&mut it),
+            Some(_) => {
+                let program = read_whole(path, id, &spec)?;
+                let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+                let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
+                let mut d = stream.continue_with(&mut it, program, &mut loader);
+                d.append(&mut loader.diags);
+                d
+            }
+        };
+        // A statement cncc cannot run yet is our limit, not the program's
+        // mistake: the run stops there without a report.
+        run.retain(|d| d.code != Code::UnsupportedHere);
+        diags.extend(run);
+    }
+    keep_lines(ctx, path, id, &diags)?;
+    if let Some(r) = reason {
+        if a.verbose || !diags.is_empty() {
+            report_detection(path, &spec, &r);
+        }
+    }
+    Ok(diags)
+}
+
+/// Keeps, for a file read as a stream, the lines the diagnostics show.
+pub(crate) fn keep_lines(ctx: &mut Context, path: &Path, id: crate::span::FileId, diags: &[Diagnostic]) -> Result<(), Failure> {
+    let offsets: Vec<u32> = diags
         .iter()
         .flat_map(|d| d.labels.iter())
         .filter(|l| l.span.file == id)
@@ -44,16 +101,19 @@ fn check_file(ctx: &mut Context, path: &Path, dialect: Option<&str>, verbose: bo
     let file = File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
     let lines = crate::driver::lines_at(BufReader::new(file), &offsets)?;
     ctx.files.set_sparse(id, lines);
-    if let Some(r) = reason {
-        if verbose || !result.diagnostics.is_empty() {
-            report_detection(path, &spec, &r);
-        }
-    }
-    Ok(result.diagnostics)
+    Ok(())
+}
+
+/// Reads a whole program (for the walker), with spans in file `id`.
+pub(crate) fn read_whole(path: &Path, id: crate::span::FileId, spec: &DialectSpec) -> Result<std::rc::Rc<crate::ir::Program>, Failure> {
+    let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    let text = crate::driver::decode(&bytes);
+    drop(bytes);
+    Ok(std::rc::Rc::new(read_program(&text, id, spec).0))
 }
 
 /// The first 64 KiB of a file, for dialect detection.
-fn read_head(path: &Path) -> Result<String, Failure> {
+pub(crate) fn read_head(path: &Path) -> Result<String, Failure> {
     use std::io::Read;
     let mut buf = vec![0u8; 1 << 16];
     let mut f = File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;

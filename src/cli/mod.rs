@@ -26,9 +26,17 @@ pub fn run(cli: Cli) -> i32 {
         Err(code) => return code,
     };
     let result = match &cli.command {
-        Command::Check { files, dialect, format, verbose } => {
-            check::run(&mut ctx, files, dialect.as_deref(), *format, *verbose)
-        }
+        Command::Check { files, dialect, format, verbose, tool_table, run } => check::run(
+            &mut ctx,
+            check::CheckArgs {
+                files,
+                dialect: dialect.as_deref(),
+                format: *format,
+                verbose: *verbose,
+                tool_table: tool_table.as_deref(),
+                options: run.options(),
+            },
+        ),
         Command::Ir { file, dialect, format } => ir::run(&mut ctx, file, dialect.as_deref(), *format),
         Command::Port { file, to, from, output, format } => port::run(
             &mut ctx,

@@ -3,7 +3,11 @@
 
 use super::{Interp, Stop};
 use crate::diag::{Code, Diagnostic};
+use crate::dialect::spec::Capability;
 use crate::ir::{Arena, BinaryOp, Expr, ExprId, ExprKind, Func, UnaryOp, Value, Var};
+
+/// LinuxCNC's tolerance for EQ and NE.
+pub const EQ_TOLERANCE: f64 = 1e-4;
 
 /// A number, or vacant (Fanuc `#0`, a parameter never set).
 pub type Num = Option<f64>;
@@ -59,20 +63,26 @@ impl Interp<'_, '_> {
                 let x = self.eval(*b, exprs)?.unwrap_or(0.0);
                 Some(atan2_deg(y, x))
             }
-            ExprKind::Exists(name) => Some(self.params.named(name).is_some() as i64 as f64),
+            ExprKind::Exists(name) => Some(self.read_named(name).is_some() as i64 as f64),
             ExprKind::Dimension(_, inner) => self.eval(*inner, exprs)?,
         })
     }
 
     fn binary(&mut self, op: BinaryOp, a: Num, b: Num, span: crate::span::Span) -> Result<f64, Stop> {
         use BinaryOp::*;
-        // Vacant equals only vacant (Fanuc); elsewhere it reads as zero.
-        if matches!(op, Eq | Ne) && (a.is_none() || b.is_none()) {
+        // Vacant equals only vacant (Fanuc Macro B: dialects with a `#0`,
+        // always vacant); elsewhere it reads as zero.
+        let vacancy = self.spec.variables.iter().any(|r| r.prefix == '#' && r.first == 0);
+        if vacancy && matches!(op, Eq | Ne) && (a.is_none() || b.is_none()) {
             let same = a.is_none() == b.is_none() && a.unwrap_or(0.0) == b.unwrap_or(0.0);
             return Ok(((op == Eq) == same) as i64 as f64);
         }
         let (a, b) = (a.unwrap_or(0.0), b.unwrap_or(0.0));
         let t = |c: bool| c as i64 as f64;
+        // LinuxCNC's EQ/NE compare within 0.0001 (its TOLERANCE_EQUAL);
+        // probed: `[0.00005 EQ 0]` is 1 in rs274.
+        let tol = if self.spec.has(Capability::OWords) { EQ_TOLERANCE } else { 0.0 };
+        let equal = if tol > 0.0 { (a - b).abs() < tol } else { a == b };
         Ok(match op {
             Add => a + b,
             Sub => a - b,
@@ -84,8 +94,8 @@ impl Interp<'_, '_> {
             IntDiv => (a / b).trunc(),
             Mod => a - b * (a / b).floor(),
             Pow => a.powf(b),
-            Eq => t(a == b),
-            Ne => t(a != b),
+            Eq => t(equal),
+            Ne => t(!equal),
             Gt => t(a > b),
             Ge => t(a >= b),
             Lt => t(a < b),
@@ -135,10 +145,14 @@ impl Interp<'_, '_> {
 
     fn read_var(&mut self, v: &Var, exprs: &Arena<Expr>, span: crate::span::Span) -> Result<Num, Stop> {
         Ok(match v {
-            Var::Numbered(n) => self.read_numbered(*n),
+            Var::Numbered(n) => {
+                self.check_number(*n, span)?;
+                self.read_numbered(*n)
+            }
             Var::Indirect(e) => {
-                let n = self.eval(*e, exprs)?.unwrap_or(0.0);
-                self.read_numbered(n.round().max(0.0) as u32)
+                let n = self.eval(*e, exprs)?.unwrap_or(0.0).round().max(0.0) as u32;
+                self.check_number(n, span)?;
+                self.read_numbered(n)
             }
             Var::Named(name) => match self.read_named(name) {
                 Some(v) => Some(v),
@@ -167,9 +181,28 @@ impl Interp<'_, '_> {
         })
     }
 
+    /// A numbered parameter outside every range the dialect lists
+    /// (LinuxCNC: #1-#5601, probed) is an error.
+    pub fn check_number(&self, n: u32, span: crate::span::Span) -> Result<(), Stop> {
+        let ranges = || self.spec.variables.iter().filter(|r| r.prefix == '#');
+        if ranges().next().is_none() || ranges().any(|r| (r.first..=r.last).contains(&n)) {
+            return Ok(());
+        }
+        Err(self.error_at(span, Code::UndefinedVariable, format!("parameter #{n} is out of range")))
+    }
+
+    /// Writing a read-only numbered parameter (Fanuc `#0`) is an error.
+    pub fn check_writable(&self, n: u32, span: crate::span::Span) -> Result<(), Stop> {
+        let ro = self.spec.variables.iter().any(|r| r.prefix == '#' && !r.writable && (r.first..=r.last).contains(&n));
+        if ro {
+            return Err(self.error_at(span, Code::UnsupportedHere, format!("parameter #{n} is read-only")));
+        }
+        self.check_number(n, span)
+    }
+
     /// `#n`, with the system parameters the interpreter keeps.
     pub fn read_numbered(&self, n: u32) -> Num {
-        self.params.numbered(n)
+        super::predefined::numbered(self, n).or_else(|| self.params.numbered(n))
     }
 
     /// `#<name>`, with LinuxCNC's predefined read-only ones.

@@ -25,6 +25,9 @@ impl ProgramLoader for NoLoader {
     }
 }
 
+/// Numbered parameters a call sets, with their values (`None`: vacant).
+type ArgValues = Vec<(u32, Option<f64>)>;
+
 /// A place to return to.
 struct Frame {
     prog: usize,
@@ -32,8 +35,14 @@ struct Frame {
     /// Numbered locals saved at the call (restored on return).
     saved: Vec<(u32, Option<f64>)>,
     new_scope: bool,
-    /// For a section repeat: the block that ends the section and the passes left.
-    section: Option<(usize, u64)>,
+    /// For a section repeat: its first and last block and the passes left.
+    section: Option<(usize, usize, u64)>,
+    /// A repeated call (`M98 P.. L3`): where it starts and the passes left.
+    repeat: Option<((usize, usize), u64)>,
+    /// The frame of a `G66` modal macro call.
+    modal: bool,
+    /// The statement that made the call (shown with errors inside it).
+    call_span: crate::span::Span,
 }
 
 struct Loaded {
@@ -50,6 +59,10 @@ pub struct Walker<'l> {
     repeat_left: HashMap<(usize, usize), u64>,
     blocks_run: u64,
     started_with_percent: bool,
+    /// The active `G66` modal macro: its target and argument values.
+    modal: Option<(CallTarget, ArgValues)>,
+    /// Where the main program starts (after a streamed beginning).
+    start: usize,
 }
 
 /// What a block asks the walker to do next.
@@ -74,12 +87,39 @@ impl<'l> Walker<'l> {
             repeat_left: HashMap::new(),
             blocks_run: 0,
             started_with_percent: false,
+            modal: None,
+            start: 0,
         }
     }
 
-    /// Runs the main program to its end or first error.
+    /// Starts at block `at` of the main program, after `blocks` blocks
+    /// were run in sequence (see [`super::stream`]).
+    pub fn resume(&mut self, at: usize, started_with_percent: bool, blocks: u64) {
+        self.start = at;
+        self.started_with_percent = started_with_percent;
+        self.blocks_run = blocks;
+    }
+
+    /// Runs the main program to its end or first error; an error inside a
+    /// subprogram also shows where it was called from.
     pub fn run(&mut self, it: &mut Interp<'_, '_>) -> Result<(), Stop> {
-        let (mut prog, mut pc) = (0usize, 0usize);
+        match self.walk(it) {
+            Err(Stop::Error(mut d)) => {
+                let mut shown: Vec<crate::span::Span> = d.labels.iter().map(|l| l.span).collect();
+                for f in self.frames.iter().rev().filter(|f| f.section.is_none()) {
+                    if shown.len() < 8 && !shown.contains(&f.call_span) {
+                        shown.push(f.call_span);
+                        d = d.secondary(f.call_span, "called from here");
+                    }
+                }
+                Err(Stop::Error(d))
+            }
+            r => r,
+        }
+    }
+
+    fn walk(&mut self, it: &mut Interp<'_, '_>) -> Result<(), Stop> {
+        let (mut prog, mut pc) = (0usize, self.start);
         let mut entered = false;
         loop {
             let program = self.progs[prog].program.clone();
@@ -95,6 +135,10 @@ impl<'l> Walker<'l> {
                 pc += 1;
                 continue;
             }
+            if let Some(at) = self.section_end(it, prog, pc)? {
+                (prog, pc) = at;
+                continue;
+            }
             let next = self.block(it, prog, pc, entered)?;
             entered = false;
             match next {
@@ -106,7 +150,7 @@ impl<'l> Walker<'l> {
                 }
                 Next::Call { prog: p, at, frame } => {
                     if self.frames.len() as u32 >= it.opts.limits.call_depth {
-                        return Err(limit(it, "call nesting deeper than the limit"));
+                        return Err(limit(it, "call nesting deeper than the limit", "a subprogram probably calls itself without end; raise --max-depth if the program is right"));
                     }
                     self.frames.push(frame);
                     (prog, pc) = (p, at);
@@ -114,6 +158,10 @@ impl<'l> Walker<'l> {
                 Next::Return => {
                     if self.frames.is_empty() {
                         return Ok(());
+                    }
+                    if let Some(at) = self.repeat_again(it)? {
+                        (prog, pc) = at;
+                        continue;
                     }
                     (prog, pc) = self.pop_frame(it);
                 }
@@ -130,6 +178,18 @@ impl<'l> Walker<'l> {
             ));
         }
         Ok(())
+    }
+
+    /// A repeated call that has passes left: its start again.
+    fn repeat_again(&mut self, it: &Interp<'_, '_>) -> Result<Option<(usize, usize)>, Stop> {
+        let Some(f) = self.frames.last_mut() else { return Ok(None) };
+        let Some((at, left)) = f.repeat else { return Ok(None) };
+        if left <= 1 {
+            return Ok(None);
+        }
+        f.repeat = Some((at, left - 1));
+        self.count_loop(it, at.0, at.1)?;
+        Ok(Some(at))
     }
 
     fn pop_frame(&mut self, it: &mut Interp<'_, '_>) -> (usize, usize) {
@@ -157,9 +217,6 @@ impl<'l> Walker<'l> {
                 None => Next::Step,
             });
         }
-        if let Some(n) = self.section_end(prog, pc) {
-            return Ok(n);
-        }
         it.block(block, exprs)?;
         self.assignments(it, &block.stmts, exprs)?;
         for s in &block.stmts {
@@ -168,7 +225,25 @@ impl<'l> Walker<'l> {
                 return Ok(n);
             }
         }
-        Ok(if it.ended { Next::End } else { Next::Step })
+        if it.ended {
+            return Ok(Next::End);
+        }
+        self.modal_call(it, prog, pc, block)
+    }
+
+    /// The `G66` hook: after a block that moves (and not inside the modal
+    /// macro itself), the modal macro is called with its arguments.
+    fn modal_call(&mut self, it: &mut Interp<'_, '_>, prog: usize, pc: usize, block: &crate::ir::Block) -> Result<Next, Stop> {
+        let Some((target, values)) = self.modal.clone() else { return Ok(Next::Step) };
+        let moves = block.stmts.iter().any(|s| matches!(s.kind, StmtKind::Motion(_)));
+        if !moves || self.frames.iter().any(|f| f.modal) {
+            return Ok(Next::Step);
+        }
+        let mut next = self.enter(it, prog, pc, CallKind::Macro, &target, values, 1)?;
+        if let Next::Call { frame, .. } = &mut next {
+            frame.modal = true;
+        }
+        Ok(next)
     }
 
     /// Evaluates every assignment's value first, then sets them all.
@@ -187,15 +262,49 @@ impl<'l> Walker<'l> {
         Ok(())
     }
 
-    /// A section repeat that reached the end of its section.
-    fn section_end(&mut self, prog: usize, pc: usize) -> Option<Next> {
-        let f = self.frames.last_mut()?;
-        let (end, left) = f.section?;
+    /// A section repeat that reached the end of its section: the section
+    /// again, or back after the `REPEAT` when no passes are left.
+    fn section_end(&mut self, it: &mut Interp<'_, '_>, prog: usize, pc: usize) -> Result<Option<(usize, usize)>, Stop> {
+        let Some(f) = self.frames.last_mut() else { return Ok(None) };
+        let Some((start, end, left)) = f.section else { return Ok(None) };
         if f.prog != prog || pc != end + 1 {
-            return None;
+            return Ok(None);
         }
-        let _ = left;
-        None
+        if left > 1 {
+            f.section = Some((start, end, left - 1));
+            self.count_loop(it, prog, start)?;
+            return Ok(Some((prog, start)));
+        }
+        Ok(Some(self.pop_frame(it)))
+    }
+
+    /// Siemens `REPEAT start [end] P=n` / `REPEATB label P=n`: runs the
+    /// section n times, then goes on after the `REPEAT`. Without an end
+    /// label the section ends just before the `REPEAT`.
+    fn section_repeat(&mut self, it: &mut Interp<'_, '_>, prog: usize, pc: usize, s: &Stmt, exprs: &Arena<Expr>) -> Result<Next, Stop> {
+        let StmtKind::SectionRepeat { start, end, count, single } = &s.kind else { return Ok(Next::Step) };
+        let ix = self.progs[prog].index.clone();
+        let find = |l: &str| ix.labels.get(&l.to_ascii_uppercase()).copied();
+        let Some(first) = find(start) else {
+            return Err(it.error_at(s.span, Code::JumpTargetMissing, format!("REPEAT: label {start} not found")));
+        };
+        let last = match (end, single) {
+            (_, true) => first,
+            (Some(e), false) => match find(e) {
+                Some(i) => i,
+                None => return Err(it.error_at(s.span, Code::JumpTargetMissing, format!("REPEAT: label {e} not found"))),
+            },
+            (None, false) => pc.saturating_sub(1),
+        };
+        let n = match count {
+            Some(c) => it.eval(*c, exprs)?.unwrap_or(0.0).round().max(0.0) as u64,
+            None => 1,
+        };
+        if n == 0 || last < first || (first <= pc && pc <= last) {
+            return Ok(Next::Step);
+        }
+        let frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: Some((first, last, n)), repeat: None, modal: false, call_span: s.span };
+        Ok(Next::Call { prog, at: first, frame })
     }
 
     fn control(
@@ -253,6 +362,7 @@ impl<'l> Walker<'l> {
                     self.count_loop(it, prog, pc)?;
                     None
                 } else {
+                    self.loop_done(prog, pc);
                     after(ix.partner.get(&pc))
                 }
             }
@@ -262,11 +372,13 @@ impl<'l> Walker<'l> {
                     self.count_loop(it, prog, pc)?;
                     ix.partner.get(&pc).map(|&o| Next::Jump(o + 1))
                 } else {
+                    self.loop_done(prog, pc);
                     None
                 }
             }
             Until { cond } => {
                 if truth(it.eval(*cond, exprs)?) {
+                    self.loop_done(prog, pc);
                     None
                 } else {
                     self.count_loop(it, prog, pc)?;
@@ -294,6 +406,7 @@ impl<'l> Walker<'l> {
                     self.count_loop(it, prog, o)?;
                     Some(Next::Jump(o + 1))
                 } else {
+                    self.loop_done(prog, o);
                     None
                 }
             }
@@ -321,10 +434,18 @@ impl<'l> Walker<'l> {
                     self.count_loop(it, prog, o)?;
                     Some(Next::Jump(o + 1))
                 } else {
+                    self.loop_done(prog, o);
                     None
                 }
             }
-            Break { .. } => ix.loop_of.get(&pc).and_then(|o| ix.partner.get(o)).map(|&e| Next::Jump(e + 1)),
+            Break { .. } => {
+                let o = ix.loop_of.get(&pc).copied();
+                let e = o.and_then(|o| ix.partner.get(&o).copied());
+                for k in [o, e].into_iter().flatten() {
+                    self.loop_done(prog, k);
+                }
+                e.map(|e| Next::Jump(e + 1))
+            }
             Continue { .. } => ix.loop_of.get(&pc).and_then(|o| ix.partner.get(o)).map(|&e| Next::Jump(e)),
             Case { selector, arms, default } => {
                 let v = it.eval(*selector, exprs)?.unwrap_or(0.0);
@@ -345,13 +466,26 @@ impl<'l> Walker<'l> {
                     let v = it.eval(*v, exprs)?.unwrap_or(0.0);
                     it.params.set_named("_value", v);
                 }
+                it.params.set_named("_value_returned", value.is_some() as i64 as f64);
                 Some(Next::Return)
+            }
+            ModalMacroCancel => {
+                self.modal = None;
+                None
+            }
+            Declare { vars, .. } => {
+                for v in vars {
+                    let val = match v.init {
+                        Some(e) => it.eval(e, exprs)?.unwrap_or(0.0),
+                        None => 0.0,
+                    };
+                    it.params.declare_user(&v.name, val);
+                }
+                None
             }
             SubReturn { to } => Some(self.sub_return(it, to.as_ref(), exprs)?),
             Call { kind, target, args, repeat } => Some(self.call(it, prog, pc, *kind, target, args, repeat.as_ref(), exprs)?),
-            SectionRepeat { .. } => {
-                return Err(it.error_at(s.span, Code::UnsupportedHere, "section repeat is not run by the interpreter yet"))
-            }
+            SectionRepeat { .. } => Some(self.section_repeat(it, prog, pc, s, exprs)?),
             Tape => {
                 if pc == first_content_block(&self.progs[prog].program) && prog == 0 {
                     self.started_with_percent = true;
@@ -367,11 +501,16 @@ impl<'l> Walker<'l> {
         })
     }
 
+    /// A loop that ended: its next run counts from zero again.
+    fn loop_done(&mut self, prog: usize, at: usize) {
+        self.loop_counts.remove(&(prog, at));
+    }
+
     fn count_loop(&mut self, it: &Interp<'_, '_>, prog: usize, at: usize) -> Result<(), Stop> {
         let c = self.loop_counts.entry((prog, at)).or_insert(0);
         *c += 1;
         if *c > it.opts.limits.loop_iterations {
-            return Err(limit(it, "a loop ran more times than the limit"));
+            return Err(limit(it, "a loop ran more times than the limit", "the program probably loops forever; raise --max-loop if it is right"));
         }
         Ok(())
     }
@@ -450,16 +589,39 @@ impl<'l> Walker<'l> {
         repeat: Option<&Value>,
         exprs: &Arena<Expr>,
     ) -> Result<Next, Stop> {
-        if repeat.is_some() {
-            let n = it.value(repeat.unwrap(), exprs)?;
-            if n.round() != 1.0 {
-                return Err(it.error_at(it.span, Code::UnsupportedHere, "repeated subprogram calls are not run yet"));
-            }
+        let passes = match repeat {
+            Some(r) => it.value(r, exprs)?.round().max(0.0) as u64,
+            None => 1,
+        };
+        if passes == 0 {
+            return Ok(Next::Step);
         }
         let target = match target {
             CallTarget::Computed(e) => CallTarget::Number(it.eval(*e, exprs)?.unwrap_or(0.0).round() as u32),
             t => t.clone(),
         };
+        let values = self.arg_values(it, args, exprs)?;
+        if kind == CallKind::ModalMacro {
+            self.modal = Some((target, values));
+            return Ok(Next::Step);
+        }
+        self.enter(it, prog, pc, kind, &target, values, passes)
+    }
+
+    /// Enters a subprogram: a frame to come back to, and fresh locals for
+    /// the kinds of call that have them.
+    #[allow(clippy::too_many_arguments)]
+    fn enter(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        prog: usize,
+        pc: usize,
+        kind: CallKind,
+        target: &CallTarget,
+        values: Vec<(u32, Option<f64>)>,
+        passes: u64,
+    ) -> Result<Next, Stop> {
+        let target = target.clone();
         let (to_prog, at) = match self.find(prog, &target, kind) {
             Some(x) => x,
             None => {
@@ -470,18 +632,27 @@ impl<'l> Walker<'l> {
                 ))
             }
         };
-        let mut frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: None };
-        let values = self.arg_values(it, args, exprs)?;
+        let repeat = (passes > 1).then_some(((to_prog, at), passes));
+        let call_span = it.span;
+        let mut frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: None, repeat, modal: false, call_span };
         if matches!(kind, CallKind::OWord | CallKind::Macro | CallKind::ModalMacro | CallKind::Named) {
             frame.new_scope = true;
-            let locals = if kind == CallKind::OWord { 30 } else { 33 };
-            for n in 1..=locals {
+            for n in local_numbers(it.spec) {
                 frame.saved.push((n, it.params.numbered(n)));
                 it.params.set_numbered(n, None);
             }
             it.params.push_scope();
-            for (n, v) in values {
-                it.params.set_numbered(n, v);
+            let declared = self.declared_params(to_prog, at);
+            if declared.is_empty() {
+                for (n, v) in values {
+                    it.params.set_numbered(n, v);
+                }
+            } else {
+                // Siemens `PROC NAME(REAL A, ...)`: arguments by position.
+                for (i, name) in declared.iter().enumerate() {
+                    let v = values.iter().find(|(n, _)| *n == i as u32 + 1).and_then(|(_, v)| *v);
+                    it.params.declare_user(name, v.unwrap_or(0.0));
+                }
             }
         }
         Ok(Next::Call { prog: to_prog, at, frame })
@@ -514,7 +685,24 @@ impl<'l> Walker<'l> {
     }
 
     /// The program and the first block a call runs.
-    fn find(&mut self, prog: usize, target: &CallTarget, _kind: CallKind) -> Option<(usize, usize)> {
+    /// The parameter names a subprogram declares (`PROC NAME(REAL A)`).
+    fn declared_params(&self, prog: usize, at: usize) -> Vec<String> {
+        let Some(b) = at.checked_sub(1).and_then(|i| self.progs[prog].program.blocks.get(i)) else { return Vec::new() };
+        b.stmts
+            .iter()
+            .find_map(|s| match &s.kind {
+                StmtKind::SubStart { params, .. } => Some(params.iter().map(|p| p.name.clone()).collect()),
+                _ => None,
+            })
+            .unwrap_or_default()
+    }
+
+    fn find(&mut self, prog: usize, target: &CallTarget, kind: CallKind) -> Option<(usize, usize)> {
+        if kind == CallKind::Local {
+            // Haas M97 P: a sequence number in this program.
+            let CallTarget::Number(n) = target else { return None };
+            return self.progs[prog].index.seq.get(n).and_then(|l| l.first()).map(|&i| (prog, i));
+        }
         for p in std::iter::once(prog).chain(0..self.progs.len()) {
             if let Some(i) = self.progs[p].index.call_target(target) {
                 return Some((p, i + 1));
@@ -538,12 +726,8 @@ fn target_name(t: &CallTarget) -> String {
     }
 }
 
-fn limit(it: &Interp<'_, '_>, msg: &str) -> Stop {
-    Stop::Error(
-        Diagnostic::new(Code::LimitExceeded, msg)
-            .primary(it.span, "here")
-            .help("the program probably loops forever; raise the limit if it is right"),
-    )
+fn limit(it: &Interp<'_, '_>, msg: &str, help: &str) -> Stop {
+    Stop::Error(Diagnostic::new(Code::LimitExceeded, msg).primary(it.span, "here").help(help.to_string()))
 }
 
 fn truth(v: Option<f64>) -> bool {
@@ -617,9 +801,13 @@ fn read_var(it: &mut Interp<'_, '_>, var: &Var, exprs: &Arena<Expr>) -> Result<f
 /// Sets a variable.
 pub fn assign(it: &mut Interp<'_, '_>, var: &Var, v: Option<f64>, exprs: &Arena<Expr>) -> Result<(), Stop> {
     match var {
-        Var::Numbered(n) => it.params.set_numbered(*n, v),
+        Var::Numbered(n) => {
+            it.check_writable(*n, it.span)?;
+            it.params.set_numbered(*n, v)
+        }
         Var::Indirect(e) => {
             let n = it.eval(*e, exprs)?.unwrap_or(0.0).round().max(0.0) as u32;
+            it.check_writable(n, it.span)?;
             it.params.set_numbered(n, v);
         }
         Var::Named(name) => it.params.set_named(name, v.unwrap_or(0.0)),
@@ -635,3 +823,17 @@ pub fn assign(it: &mut Interp<'_, '_>, var: &Var, v: Option<f64>, exprs: &Arena<
     }
     Ok(())
 }
+
+/// The numbered parameters local to a call level (the spec's `local`
+/// ranges: LinuxCNC #1-#30, Fanuc #1-#33), bounded.
+fn local_numbers(spec: &crate::dialect::DialectSpec) -> Vec<u32> {
+    spec.variables
+        .iter()
+        .filter(|r| r.prefix == '#' && r.class == crate::dialect::spec::VarClass::Local)
+        .flat_map(|r| r.first..=r.last.min(r.first.saturating_add(999)))
+        .collect()
+}
+
+#[cfg(test)]
+#[path = "flow_tests.rs"]
+mod tests;

@@ -22,6 +22,7 @@ pub mod options;
 pub mod params;
 pub mod predefined;
 pub mod siemens;
+pub mod stream;
 pub mod state;
 pub mod tooltable;
 pub mod tools;

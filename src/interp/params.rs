@@ -77,6 +77,13 @@ impl Params {
         }
     }
 
+    /// `DEF`: a new variable in the current call level.
+    pub fn declare_user(&mut self, name: &str, v: f64) {
+        if let Some(s) = self.user.last_mut() {
+            s.insert(name.to_ascii_uppercase(), v);
+        }
+    }
+
     /// Enters a call level (subroutine, macro): fresh local names.
     pub fn push_scope(&mut self) {
         self.local_named.push(HashMap::new());
