@@ -13,11 +13,19 @@ use crate::syntax::WordSyntax;
 pub(super) trait Addr: Copy {
     /// The address packed into an integer (see [`key`]).
     fn key(self) -> u64;
+    /// `0..26` for a one-letter address `A`..`Z`.
+    fn letter(self) -> Option<usize>;
 }
 
 impl Addr for &str {
     fn key(self) -> u64 {
-        key(self)
+        key(self.as_bytes())
+    }
+    fn letter(self) -> Option<usize> {
+        match self.as_bytes() {
+            [b] => letter_index(*b),
+            _ => None,
+        }
     }
 }
 
@@ -29,12 +37,18 @@ impl Addr for char {
             u64::MAX
         }
     }
+    fn letter(self) -> Option<usize> {
+        u8::try_from(self).ok().and_then(letter_index)
+    }
+}
+
+fn letter_index(b: u8) -> Option<usize> {
+    b.is_ascii_uppercase().then(|| usize::from(b - b'A'))
 }
 
 /// Addresses are short: up to 8 bytes packed into a `u64` compare in one
 /// instruction (longer ones get a key no lookup uses).
-fn key(address: &str) -> u64 {
-    let b = address.as_bytes();
+fn key(b: &[u8]) -> u64 {
     if b.len() > 8 {
         return u64::MAX - 1;
     }
@@ -52,41 +66,61 @@ pub(super) struct Entry {
 #[derive(Default)]
 pub(super) struct Words {
     pub list: Vec<Entry>,
-    /// One bit per address key present (`key % 64`): most lookups are for
-    /// words a line does not have, and this answers them at once.
-    mask: u64,
+    /// For each one-letter address `A`..`Z`: 1 + its index in `list`, or 0.
+    letters: [u32; 26],
+    /// Whether `list` holds any other address (looked up by scanning).
+    others: bool,
     /// Spans of the words taken since the last [`Words::begin`].
     taken: Vec<Span>,
 }
 
 impl Words {
-    pub fn with_capacity(n: usize) -> Words {
-        Words { list: Vec::with_capacity(n), mask: 0, taken: Vec::with_capacity(n) }
+    /// Empties the set, keeping its buffers for the next line.
+    pub fn clear(&mut self) {
+        self.list.clear();
+        self.letters = [0; 26];
+        self.others = false;
+        self.taken.clear();
     }
 
     /// Adds a word, reporting a repeated address (the repeat is kept aside
     /// in `extra` so that nothing is lost).
     pub fn push(&mut self, w: WordSyntax, diags: &mut Vec<Diagnostic>, extra: &mut Vec<WordSyntax>) {
-        if let Some(first) = self.list.iter().find(|e| e.w.address == w.address) {
+        let letter = match w.address.as_bytes() {
+            [b] => letter_index(*b),
+            _ => None,
+        };
+        let first = match letter {
+            Some(l) => self.letters[l].checked_sub(1).map(|i| i as usize),
+            None if self.others => self.list.iter().position(|e| e.w.address == w.address),
+            None => None,
+        };
+        if let Some(first) = first {
             diags.push(
                 Diagnostic::new(Code::RepeatedWord, format!("`{}` is given twice in this block", w.address))
                     .primary(w.span, "repeated here")
-                    .secondary(first.w.span, "first given here")
+                    .secondary(self.list[first].w.span, "first given here")
                     .help("keep one of the two words; a block holds each address once"),
             );
             extra.push(w);
             return;
         }
-        let key = key(&w.address);
-        self.mask |= 1 << (key % 64);
+        match letter {
+            Some(l) => self.letters[l] = self.list.len() as u32 + 1,
+            None => self.others = true,
+        }
+        let key = key(w.address.as_bytes());
         self.list.push(Entry { w, used: false, key });
     }
 
     fn find(&self, addr: impl Addr) -> Option<usize> {
-        let k = addr.key();
-        if self.mask & (1 << (k % 64)) == 0 {
+        if let Some(l) = addr.letter() {
+            return self.letters[l].checked_sub(1).map(|i| i as usize);
+        }
+        if !self.others {
             return None;
         }
+        let k = addr.key();
         self.list.iter().position(|e| e.key == k)
     }
 
@@ -154,10 +188,15 @@ impl Words {
     /// Takes the axis words into `axes` (which is left as it was for the others).
     pub fn take_axes_into(&mut self, axes: &mut Axes) {
         for a in AXIS_LETTERS {
-            if let Some(c) = self.coord(a) {
-                if let Some(slot) = axes.slot_mut(a) {
-                    *slot = Some(c);
-                }
+            let Some(i) = self.find(a) else { continue };
+            let e = &mut self.list[i];
+            if e.used {
+                continue;
+            }
+            e.used = true;
+            self.taken.push(e.w.span);
+            if let Some(slot) = axes.slot_mut(a) {
+                *slot = Some(Coord { value: e.w.value.clone(), dim: e.w.dim, span: e.w.span });
             }
         }
     }
