@@ -44,7 +44,7 @@ pub(super) fn implicit_motion(words: &mut Words, ctx: &mut Ctx<'_>) -> Option<Pl
     }
     words.begin();
     let m = motion(MotionKind::Implicit, &[], words, ctx);
-    let span = words.taken_spans().iter().copied().reduce(Span::to)?;
+    let span = words.taken_span()?;
     Some(place(StmtKind::Motion(m), span))
 }
 

@@ -179,7 +179,7 @@ fn lower_codes(codes: &[CodeWord<'_>], words: &mut Words, out: &mut Vec<Placed>,
             Some(m) => build::code_stmt(cw, m, words, ctx),
             None => build::aux(cw, words),
         };
-        let span = words.taken_spans().iter().fold(cw.span, |a, b| a.to(*b));
+        let span = words.taken_span().map_or(cw.span, |t| cw.span.to(t));
         out.push((cw.span.start, Stmt::new(kind, span)));
     }
 }

@@ -70,8 +70,8 @@ pub(super) struct Words {
     letters: [u32; 26],
     /// Whether `list` holds any other address (looked up by scanning).
     others: bool,
-    /// Spans of the words taken since the last [`Words::begin`].
-    taken: Vec<Span>,
+    /// The span of the words taken since the last [`Words::begin`].
+    taken: Option<Span>,
 }
 
 impl Words {
@@ -80,7 +80,7 @@ impl Words {
         self.list.clear();
         self.letters = [0; 26];
         self.others = false;
-        self.taken.clear();
+        self.taken = None;
     }
 
     /// Adds a word, reporting a repeated address (the repeat is kept aside
@@ -146,31 +146,40 @@ impl Words {
 
     /// Starts recording the spans of taken words for one statement.
     pub fn begin(&mut self) {
-        self.taken.clear();
+        self.taken = None;
     }
 
-    /// The spans taken since [`Words::begin`].
-    pub fn taken_spans(&self) -> &[Span] {
-        &self.taken
+    /// The span of the words taken since [`Words::begin`] (`None`: none).
+    pub fn taken_span(&self) -> Option<Span> {
+        self.taken
     }
 
-    /// Takes a free word.
-    pub fn take(&mut self, addr: impl Addr) -> Option<WordSyntax> {
+    fn mark_taken(&mut self, span: Span) {
+        self.taken = Some(self.taken.map_or(span, |t| t.to(span)));
+    }
+
+    /// Takes a free word, giving a reference to it.
+    fn take_ref(&mut self, addr: impl Addr) -> Option<&WordSyntax> {
         let i = self.find(addr)?;
         if self.list[i].used {
             return None;
         }
         self.list[i].used = true;
-        self.taken.push(self.list[i].w.span);
-        Some(self.list[i].w.clone())
+        self.mark_taken(self.list[i].w.span);
+        Some(&self.list[i].w)
+    }
+
+    /// Takes a free word.
+    pub fn take(&mut self, addr: impl Addr) -> Option<WordSyntax> {
+        self.take_ref(addr).cloned()
     }
 
     pub fn value(&mut self, addr: impl Addr) -> Option<Value> {
-        self.take(addr).map(|w| w.value)
+        self.take_ref(addr).map(|w| w.value.clone())
     }
 
     pub fn coord(&mut self, addr: impl Addr) -> Option<Coord> {
-        self.take(addr).map(|w| Coord { value: w.value, dim: w.dim, span: w.span })
+        self.take_ref(addr).map(|w| Coord { value: w.value.clone(), dim: w.dim, span: w.span })
     }
 
     /// Whether any free axis word is present.
@@ -194,10 +203,11 @@ impl Words {
                 continue;
             }
             e.used = true;
-            self.taken.push(e.w.span);
+            let span = e.w.span;
             if let Some(slot) = axes.slot_mut(a) {
-                *slot = Some(Coord { value: e.w.value.clone(), dim: e.w.dim, span: e.w.span });
+                *slot = Some(Coord { value: e.w.value.clone(), dim: e.w.dim, span });
             }
+            self.mark_taken(span);
         }
     }
 
@@ -211,7 +221,7 @@ impl Words {
                 continue;
             }
             self.list[i].used = true;
-            self.taken.push(self.list[i].w.span);
+            self.mark_taken(self.list[i].w.span);
             out.push(Word::new(letter, self.list[i].w.value.clone(), self.list[i].w.span));
         }
         out
