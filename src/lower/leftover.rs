@@ -20,6 +20,9 @@ fn place(kind: StmtKind, span: Span) -> Placed {
 
 /// Whether free words make an implicit move (a lone `R` does not).
 fn has_motion_words(words: &Words) -> bool {
+    if !words.any_free() {
+        return false;
+    }
     words.has_free_axes() || MOTION_WORDS.iter().any(|a| *a != "R" && words.has_free(*a))
 }
 
@@ -50,6 +53,9 @@ pub(super) fn implicit_motion(words: &mut Words, ctx: &mut Ctx<'_>) -> Option<Pl
 
 /// `F`, `S`, `T`, `D`, `H` standing alone.
 pub(super) fn standalone(words: &mut Words, out: &mut Vec<Placed>, ctx: &mut Ctx<'_>) {
+    if !words.any_free() {
+        return;
+    }
     for addr in ["F", "S", "T", "D", "H"] {
         let Some(w) = words.take(addr) else { continue };
         let kind = match addr {
@@ -107,8 +113,7 @@ pub(super) fn unused(
     out: &mut Vec<Placed>,
     ctx: &mut Ctx<'_>,
 ) {
-    let free: Vec<WordSyntax> =
-        words.list.iter_mut().filter(|e| !e.used).map(|e| { e.used = true; e.w.clone() }).collect();
+    let free = words.take_free();
     if let Some(dynamic) = dynamic {
         dynamic.extend(free.iter().map(as_word));
         return;

@@ -71,6 +71,8 @@ pub struct Lowering<'s> {
     repeated: Vec<WordSyntax>,
     codes: codes::Cache<'s>,
     spare_moves: Vec<Box<Motion>>,
+    /// Diagnostics of words pushed early, given after those of the codes.
+    deferred: Vec<Diagnostic>,
 }
 
 impl<'s> Lowering<'s> {
@@ -82,6 +84,7 @@ impl<'s> Lowering<'s> {
             repeated: Vec::new(),
             codes: codes::Cache::default(),
             spare_moves: Vec::new(),
+            deferred: Vec::new(),
         }
     }
 
@@ -105,7 +108,13 @@ impl<'s> Lowering<'s> {
         let s = &mut self.sorted;
         s.clear();
         self.words.clear();
-        sort_items(items, s, &mut self.codes, spec, ctx.diags);
+        // Words go straight to the word set unless lengths are converted
+        // first (which needs all of them).
+        let direct = !words::converts_increments(spec);
+        let to = if direct { Some((&mut self.words, &mut self.repeated, &mut self.deferred)) } else { None };
+        sort_items(items, s, to, &mut self.codes, spec, ctx.diags);
+        // Repeated words are reported after the codes, as when words come later.
+        ctx.diags.append(&mut self.deferred);
         words::convert_increments(&mut s.plain, spec, ctx.diags);
         for w in s.plain.drain(..) {
             self.words.push(w, ctx.diags, &mut self.repeated);
@@ -128,6 +137,7 @@ impl<'s> Lowering<'s> {
 fn sort_items<'s>(
     items: &mut Vec<Item>,
     s: &mut Sorted<'s>,
+    mut direct: Option<(&mut Words, &mut Vec<WordSyntax>, &mut Vec<Diagnostic>)>,
     cache: &mut codes::Cache<'s>,
     spec: &'s DialectSpec,
     diags: &mut Vec<Diagnostic>,
@@ -146,7 +156,10 @@ fn sort_items<'s>(
             a => {
                 match codes::pseudo_motion(a) {
                     Some(m) => s.codes.push(CodeWord { letter: '\0', code: crate::ir::Decimal::ZERO, span: w.span, meaning: Some(m), def: None }),
-                    None => s.plain.push(w),
+                    None => match &mut direct {
+                        Some((words, repeated, deferred)) => words.push(w, deferred, repeated),
+                        None => s.plain.push(w),
+                    },
                 }
                 continue;
             }

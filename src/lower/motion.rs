@@ -30,6 +30,10 @@ pub(super) fn motion(kind: MotionKind, uses: &[char], words: &mut Words, ctx: &m
         None => Box::new(Motion::new(kind)),
     };
     words.take_axes_into(&mut m.target);
+    if !words.any_free() {
+        // Every lookup below would find nothing.
+        return m;
+    }
     if takes_arc_words(kind) {
         check_arc_format(words, ctx.diags);
         m.arc.i = words.coord("I");

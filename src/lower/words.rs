@@ -70,6 +70,8 @@ pub(super) struct Words {
     letters: [u32; 26],
     /// Whether `list` holds any other address (looked up by scanning).
     others: bool,
+    /// How many words of `list` no statement has taken yet.
+    free: usize,
     /// The span of the words taken since the last [`Words::begin`].
     taken: Option<Span>,
 }
@@ -80,6 +82,7 @@ impl Words {
         self.list.clear();
         self.letters = [0; 26];
         self.others = false;
+        self.free = 0;
         self.taken = None;
     }
 
@@ -111,8 +114,17 @@ impl Words {
         }
         let key = key(w.address.as_bytes());
         self.list.push(Entry { w, used: false, key });
+        self.free += 1;
     }
 
+    /// Whether any word is still free (when not, every lookup of a free
+    /// word answers `None`, and callers may skip them).
+    #[inline]
+    pub fn any_free(&self) -> bool {
+        self.free > 0
+    }
+
+    #[inline]
     fn find(&self, addr: impl Addr) -> Option<usize> {
         if let Some(l) = addr.letter() {
             return self.letters[l].checked_sub(1).map(|i| i as usize);
@@ -125,21 +137,25 @@ impl Words {
     }
 
     /// Whether the line has a word with this address (taken or not).
+    #[inline]
     pub fn has(&self, addr: impl Addr) -> bool {
         self.find(addr).is_some()
     }
 
     /// Whether the line has this word and nobody took it yet.
+    #[inline]
     pub fn has_free(&self, addr: impl Addr) -> bool {
         self.find(addr).map(|i| !self.list[i].used).unwrap_or(false)
     }
 
     /// The word, if present (taken or not).
+    #[inline]
     pub fn get(&self, addr: impl Addr) -> Option<&WordSyntax> {
         self.find(addr).map(|i| &self.list[i].w)
     }
 
     /// A word not yet taken by a statement.
+    #[inline]
     pub fn get_free(&self, addr: impl Addr) -> Option<&WordSyntax> {
         self.find(addr).filter(|&i| !self.list[i].used).map(|i| &self.list[i].w)
     }
@@ -159,25 +175,30 @@ impl Words {
     }
 
     /// Takes a free word, giving a reference to it.
+    #[inline]
     fn take_ref(&mut self, addr: impl Addr) -> Option<&WordSyntax> {
         let i = self.find(addr)?;
         if self.list[i].used {
             return None;
         }
         self.list[i].used = true;
+        self.free -= 1;
         self.mark_taken(self.list[i].w.span);
         Some(&self.list[i].w)
     }
 
     /// Takes a free word.
+    #[inline]
     pub fn take(&mut self, addr: impl Addr) -> Option<WordSyntax> {
         self.take_ref(addr).cloned()
     }
 
+    #[inline]
     pub fn value(&mut self, addr: impl Addr) -> Option<Value> {
         self.take_ref(addr).map(|w| w.value.clone())
     }
 
+    #[inline]
     pub fn coord(&mut self, addr: impl Addr) -> Option<Coord> {
         self.take_ref(addr).map(|w| Coord { value: w.value.clone(), dim: w.dim, span: w.span })
     }
@@ -203,12 +224,25 @@ impl Words {
                 continue;
             }
             e.used = true;
-            let span = e.w.span;
+            self.free -= 1;
             if let Some(slot) = axes.slot_mut(a) {
-                *slot = Some(Coord { value: e.w.value.clone(), dim: e.w.dim, span });
+                put_coord(slot, &e.w);
             }
+            let span = e.w.span;
             self.mark_taken(span);
         }
+    }
+
+    /// Takes every free word, in source order.
+    pub fn take_free(&mut self) -> Vec<WordSyntax> {
+        if self.free == 0 {
+            return Vec::new();
+        }
+        self.free = 0;
+        self.list.iter_mut().filter(|e| !e.used).map(|e| {
+            e.used = true;
+            e.w.clone()
+        }).collect()
     }
 
     /// Takes every free single-letter word in source order, but those in `except`.
@@ -221,11 +255,19 @@ impl Words {
                 continue;
             }
             self.list[i].used = true;
+            self.free -= 1;
             self.mark_taken(self.list[i].w.span);
             out.push(Word::new(letter, self.list[i].w.value.clone(), self.list[i].w.span));
         }
         out
     }
+}
+
+/// Writes a word's coordinate straight into its slot. Not inlined: inlined,
+/// the coordinate is assembled on the stack and copied, which stalls.
+#[inline(never)]
+fn put_coord(slot: &mut Option<Coord>, w: &WordSyntax) {
+    *slot = Some(Coord { value: w.value.clone(), dim: w.dim, span: w.span });
 }
 
 /// The letter of a one-letter address.
@@ -244,10 +286,15 @@ fn times(value: Decimal, inc: Decimal) -> Option<Decimal> {
     Some(Decimal { mantissa: m, scale, point: true })
 }
 
+/// Whether the dialect reads lengths without a decimal point in increments.
+pub(super) fn converts_increments(spec: &DialectSpec) -> bool {
+    spec.numbers.integer_lengths == IntegerLengths::Increments
+}
+
 /// Converts lengths written without a decimal point into increments when
 /// the dialect reads them so; one warning per line labels every such word.
 pub(super) fn convert_increments(words: &mut [WordSyntax], spec: &DialectSpec, diags: &mut Vec<Diagnostic>) {
-    if spec.numbers.integer_lengths != IntegerLengths::Increments {
+    if !converts_increments(spec) {
         return;
     }
     let mut warn: Option<Diagnostic> = None;
