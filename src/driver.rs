@@ -366,3 +366,7 @@ pub fn lines_at(input: impl BufRead, offsets: &[u32]) -> std::io::Result<Vec<Kep
     })?;
     Ok(out)
 }
+
+#[cfg(test)]
+#[path = "driver_tests.rs"]
+mod tests;
