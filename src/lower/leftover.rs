@@ -14,6 +14,51 @@ use crate::syntax::WordSyntax;
 /// A statement with the position and span of what it was made from.
 pub(super) type Placed = (u32, crate::ir::Stmt);
 
+/// A line's statements as they are made, each with its position (where
+/// its first word is); put in source order at the end.
+#[derive(Default)]
+pub(super) struct Placement {
+    stmts: Vec<crate::ir::Stmt>,
+    pos: Vec<u32>,
+}
+
+impl Placement {
+    pub fn clear(&mut self) {
+        self.stmts.clear();
+        self.pos.clear();
+    }
+
+    #[inline]
+    pub fn push(&mut self, (pos, stmt): Placed) {
+        self.pos.push(pos);
+        self.stmts.push(stmt);
+    }
+
+    pub fn extend(&mut self, placed: impl IntoIterator<Item = Placed>) {
+        for p in placed {
+            self.push(p);
+        }
+    }
+
+    /// Appends the statements to `out` in source order (a stable sort by
+    /// position). Usually already in order, and `out` empty: then the
+    /// buffers are swapped and nothing moves.
+    pub fn drain_sorted_into(&mut self, out: &mut Vec<crate::ir::Stmt>) {
+        if self.pos.is_sorted() {
+            if out.is_empty() {
+                std::mem::swap(out, &mut self.stmts);
+            } else {
+                out.append(&mut self.stmts);
+            }
+            self.pos.clear();
+            return;
+        }
+        let mut placed: Vec<Placed> = self.pos.drain(..).zip(self.stmts.drain(..)).collect();
+        placed.sort_by_key(|(pos, _)| *pos);
+        out.extend(placed.into_iter().map(|(_, s)| s));
+    }
+}
+
 fn place(kind: StmtKind, span: Span) -> Placed {
     (span.start, crate::ir::Stmt::new(kind, span))
 }
@@ -27,7 +72,7 @@ fn has_motion_words(words: &Words) -> bool {
 }
 
 /// Axis words in a block that cancels cycles and has no move (E0209).
-pub(super) fn reject_axes_after_cancel(cancel: Span, words: &mut Words, out: &mut Vec<Placed>, ctx: &mut Ctx<'_>) {
+pub(super) fn reject_axes_after_cancel(cancel: Span, words: &mut Words, out: &mut Placement, ctx: &mut Ctx<'_>) {
     for a in AXIS_LETTERS {
         let Some(w) = words.take(a) else { continue };
         ctx.diags.push(
@@ -52,7 +97,7 @@ pub(super) fn implicit_motion(words: &mut Words, ctx: &mut Ctx<'_>) -> Option<Pl
 }
 
 /// `F`, `S`, `T`, `D`, `H` standing alone.
-pub(super) fn standalone(words: &mut Words, out: &mut Vec<Placed>, ctx: &mut Ctx<'_>) {
+pub(super) fn standalone(words: &mut Words, out: &mut Placement, ctx: &mut Ctx<'_>) {
     if !words.any_free() {
         return;
     }
@@ -110,7 +155,7 @@ pub(super) fn unused(
     words: &mut Words,
     dynamic: Option<&mut Vec<Word>>,
     implicit: bool,
-    out: &mut Vec<Placed>,
+    out: &mut Placement,
     ctx: &mut Ctx<'_>,
 ) {
     let free = words.take_free();

@@ -25,7 +25,7 @@ use crate::ir::{Arena, Block, Expr, ExprId, LengthComp, Motion, Stmt, StmtKind, 
 use crate::span::Span;
 use crate::syntax::{Item, LineSyntax, WordSyntax};
 use codes::CodeWord;
-use leftover::Placed;
+use leftover::Placement;
 use words::Words;
 
 /// What the builders share while lowering one line.
@@ -40,7 +40,7 @@ pub(crate) struct Ctx<'a> {
 /// The words of a line sorted by kind.
 #[derive(Default)]
 struct Sorted<'s> {
-    out: Vec<Placed>,
+    out: Placement,
     codes: Vec<CodeWord<'s>>,
     dynamic: Vec<(char, ExprId, Span)>,
     plain: Vec<WordSyntax>,
@@ -128,8 +128,7 @@ impl<'s> Lowering<'s> {
         for w in self.repeated.drain(..) {
             s.out.push((w.span.start, Stmt::new(leftover::keep(&w, &ctx), w.span)));
         }
-        s.out.sort_by_key(|(pos, _)| *pos);
-        stmts.extend(s.out.drain(..).map(|(_, s)| s));
+        s.out.drain_sorted_into(stmts);
     }
 }
 
@@ -183,7 +182,7 @@ fn priority(cw: &CodeWord<'_>) -> u8 {
     }
 }
 
-fn lower_codes(codes: &[CodeWord<'_>], words: &mut Words, out: &mut Vec<Placed>, ctx: &mut Ctx<'_>) {
+fn lower_codes(codes: &[CodeWord<'_>], words: &mut Words, out: &mut Placement, ctx: &mut Ctx<'_>) {
     // In priority order, then source order (a stable sort, without a buffer).
     let order = (0..3).flat_map(|p| codes.iter().filter(move |cw| priority(cw) == p));
     for cw in order {

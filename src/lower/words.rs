@@ -270,6 +270,15 @@ fn put_coord(slot: &mut Option<Coord>, w: &WordSyntax) {
     *slot = Some(Coord { value: w.value.clone(), dim: w.dim, span: w.span });
 }
 
+/// The letter of a one-letter address, read without a UTF-8 check when ASCII.
+pub(super) fn address_letter(a: &crate::syntax::Address) -> Option<char> {
+    match a.as_bytes() {
+        [b] => Some(char::from(*b)),
+        b if b.len() <= 4 => single_letter(a),
+        _ => None,
+    }
+}
+
 /// The letter of a one-letter address.
 pub(super) fn single_letter(addr: &str) -> Option<char> {
     let mut cs = addr.chars();
@@ -300,7 +309,7 @@ pub(super) fn convert_increments(words: &mut [WordSyntax], spec: &DialectSpec, d
     let mut warn: Option<Diagnostic> = None;
     let arc = has_arc_code(words, spec);
     for w in words.iter_mut() {
-        let Some(letter) = single_letter(&w.address) else { continue };
+        let Some(letter) = address_letter(&w.address) else { continue };
         let Value::Number(d) = w.value else { continue };
         if d.point || w.extended || !spec.is_length_address(letter) {
             continue;
@@ -337,7 +346,7 @@ fn has_arc_code(words: &[WordSyntax], spec: &DialectSpec) -> bool {
     use crate::dialect::Meaning;
     use crate::ir::MotionKind;
     words.iter().any(|w| {
-        w.address == "G"
+        w.address.as_bytes() == b"G"
             && matches!(w.value, Value::Number(d) if matches!(
                 spec.code('G', d).map(|c| c.meaning),
                 Some(Meaning::Motion(MotionKind::Arc(_)))
