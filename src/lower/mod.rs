@@ -116,9 +116,10 @@ impl<'s> Lowering<'s> {
         // Repeated words are reported after the codes, as when words come later.
         ctx.diags.append(&mut self.deferred);
         words::convert_increments(&mut s.plain, spec, ctx.diags);
-        for w in s.plain.drain(..) {
+        for w in &s.plain {
             self.words.push(w, ctx.diags, &mut self.repeated);
         }
+        s.plain.clear();
         codes::check_groups(&s.codes, spec, ctx.diags);
         for cw in &s.codes {
             checks::check_required(cw, &self.words, ctx.diags);
@@ -141,14 +142,10 @@ fn sort_items<'s>(
     spec: &'s DialectSpec,
     diags: &mut Vec<Diagnostic>,
 ) {
-    for item in items.drain(..) {
-        let w = match item {
-            Item::Stmt(st) => {
-                s.out.push((st.span.start, st));
-                continue;
-            }
-            Item::Word(w) => w,
-        };
+    // Words are read where they lie (copied once, into their set); the
+    // statements are moved out after.
+    for item in items.iter() {
+        let Item::Word(w) = item else { continue };
         let letter = match w.address.as_bytes() {
             b"G" => 'G',
             b"M" => 'M',
@@ -157,7 +154,7 @@ fn sort_items<'s>(
                     Some(m) => s.codes.push(CodeWord { letter: '\0', code: crate::ir::Decimal::ZERO, span: w.span, meaning: Some(m), def: None }),
                     None => match &mut direct {
                         Some((words, repeated, deferred)) => words.push(w, deferred, repeated),
-                        None => s.plain.push(w),
+                        None => s.plain.push(w.clone()),
                     },
                 }
                 continue;
@@ -168,6 +165,14 @@ fn sort_items<'s>(
             Value::Expr(e) => s.dynamic.push((letter, e, w.span)),
         }
     }
+    if items.iter().any(|i| matches!(i, Item::Stmt(_))) {
+        for item in items.drain(..) {
+            if let Item::Stmt(st) = item {
+                s.out.push((st.span.start, st));
+            }
+        }
+    }
+    items.clear();
 }
 
 /// Which codes take their words first: those taking every word, then those

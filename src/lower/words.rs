@@ -88,7 +88,7 @@ impl Words {
 
     /// Adds a word, reporting a repeated address (the repeat is kept aside
     /// in `extra` so that nothing is lost).
-    pub fn push(&mut self, w: WordSyntax, diags: &mut Vec<Diagnostic>, extra: &mut Vec<WordSyntax>) {
+    pub fn push(&mut self, w: &WordSyntax, diags: &mut Vec<Diagnostic>, extra: &mut Vec<WordSyntax>) {
         let letter = match w.address.as_bytes() {
             [b] => letter_index(*b),
             _ => None,
@@ -105,7 +105,7 @@ impl Words {
                     .secondary(self.list[first].w.span, "first given here")
                     .help("keep one of the two words; a block holds each address once"),
             );
-            extra.push(w);
+            extra.push(w.clone());
             return;
         }
         match letter {
@@ -113,7 +113,7 @@ impl Words {
             None => self.others = true,
         }
         let key = key(w.address.as_bytes());
-        self.list.push(Entry { w, used: false, key });
+        self.list.push(Entry { w: w.clone(), used: false, key });
         self.free += 1;
     }
 
