@@ -34,8 +34,13 @@ pub(crate) struct Ctx<'a> {
     pub exprs: &'a Arena<Expr>,
     pub diags: &'a mut Vec<Diagnostic>,
     /// Moves of earlier lines, emptied for reuse (see [`Lowering::recycle`]).
-    pub spare_moves: &'a mut Vec<Box<Motion>>,
+    pub spare_moves: &'a mut SpareMoves,
 }
+
+/// Boxes of moves already handed out and given back: the boxes themselves
+/// are what is reused (a statement holds its move boxed).
+#[allow(clippy::vec_box)]
+pub(crate) type SpareMoves = Vec<Box<Motion>>;
 
 /// The words of a line sorted by kind.
 #[derive(Default)]
@@ -70,7 +75,7 @@ pub struct Lowering<'s> {
     words: Words,
     repeated: Vec<WordSyntax>,
     codes: codes::Cache<'s>,
-    spare_moves: Vec<Box<Motion>>,
+    spare_moves: SpareMoves,
     /// Diagnostics of words pushed early, given after those of the codes.
     deferred: Vec<Diagnostic>,
 }

@@ -65,7 +65,7 @@ pub(super) struct Entry {
 /// The words of a line in source order.
 #[derive(Default)]
 pub(super) struct Words {
-    pub list: Vec<Entry>,
+    list: Vec<Entry>,
     /// For each one-letter address `A`..`Z`: 1 + its index in `list`, or 0.
     letters: [u32; 26],
     /// Whether `list` holds any other address (looked up by scanning).
