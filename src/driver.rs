@@ -8,7 +8,8 @@ use crate::check::structure::StructureChecker;
 use crate::diag::Diagnostic;
 use crate::dialect::{DialectSpec, Family};
 use crate::ir::{Arena, Block, Expr, Program};
-use crate::lower::lower_line;
+use crate::lower::Lowering;
+use crate::span::Span;
 use crate::source::KeptLine;
 use crate::span::FileId;
 use crate::syntax::sinumerik::SinumerikFrontEnd;
@@ -31,13 +32,21 @@ pub struct Reader<'s> {
     spec: &'s DialectSpec,
     file: FileId,
     front: Box<dyn FrontEnd>,
+    lowering: Lowering<'s>,
     structure: StructureChecker,
     index: usize,
 }
 
 impl<'s> Reader<'s> {
     pub fn new(spec: &'s DialectSpec, file: FileId) -> Self {
-        Reader { spec, file, front: front_end_for(spec), structure: StructureChecker::new(spec), index: 0 }
+        Reader {
+            spec,
+            file,
+            front: front_end_for(spec),
+            lowering: Lowering::new(spec),
+            structure: StructureChecker::new(spec),
+            index: 0,
+        }
     }
 
     /// Reads one line (without its ending) that starts at byte `offset`.
@@ -48,18 +57,42 @@ impl<'s> Reader<'s> {
         exprs: &mut Arena<Expr>,
         diags: &mut Vec<Diagnostic>,
     ) -> Option<Block> {
+        let mut block = empty_block();
+        self.line_into(text, offset, exprs, diags, &mut block).then_some(block)
+    }
+
+    /// [`Reader::line`] into `block`, whose statements vector is reused;
+    /// `false` (and `block` unspecified) when the line gives no block.
+    pub fn line_into(
+        &mut self,
+        text: &str,
+        offset: u32,
+        exprs: &mut Arena<Expr>,
+        diags: &mut Vec<Diagnostic>,
+        block: &mut Block,
+    ) -> bool {
         let input = LineInput { text, file: self.file, offset, spec: self.spec };
-        let syntax = self.front.parse_line(&input, exprs, diags)?;
-        let block = lower_line(syntax, self.spec, exprs, diags);
-        self.structure.block(self.index, &block, exprs);
+        let Some(mut syntax) = self.front.parse_line(&input, exprs, diags) else { return false };
+        self.lowering.recycle(&mut block.stmts);
+        self.lowering.lower(&mut syntax.items, exprs, diags, &mut block.stmts);
+        self.front.recycle(syntax.items);
+        block.span = syntax.span;
+        block.skip = syntax.skip;
+        block.number = syntax.number;
+        block.label = syntax.label;
+        self.structure.block(self.index, block, exprs);
         self.index += 1;
-        Some(block)
+        true
     }
 
     /// Ends the program: the checks that need all of it.
     pub fn finish(self) -> Vec<Diagnostic> {
         self.structure.finish()
     }
+}
+
+fn empty_block() -> Block {
+    Block { span: Span::default(), skip: None, number: None, label: None, stmts: Vec::new() }
 }
 
 /// Splits text into lines without their endings (`\n` or `\r\n`), with the
@@ -129,27 +162,18 @@ pub fn check_stream(
     spec: &DialectSpec,
     mut on_block: impl FnMut(&Block, &Arena<Expr>),
 ) -> std::io::Result<StreamResult> {
-    let mut input = input;
     let mut reader = Reader::new(spec, file);
     let mut exprs = Arena::new();
     let mut diags = Vec::new();
     let mut kept = Vec::new();
-    let mut raw = Vec::new();
-    let mut text = String::new();
+    let mut block = empty_block();
     let (mut offset, mut line_no) = (0u64, 0u64);
-    loop {
-        raw.clear();
-        if input.read_until(b'\n', &mut raw)? == 0 {
-            break;
-        }
-        text.clear();
-        decode_line_into(&raw, &mut text);
-        let line = text.strip_suffix('\n').unwrap_or(&text);
-        let line = line.strip_suffix('\r').unwrap_or(line);
+    for_each_line(input, |text| {
+        let line = strip_ending(text);
         let off = u32::try_from(offset).map_err(|_| too_large())?;
         let before = diags.len();
-        if let Some(b) = reader.line(line, off, &mut exprs, &mut diags) {
-            on_block(&b, &exprs);
+        if reader.line_into(line, off, &mut exprs, &mut diags, &mut block) {
+            on_block(&block, &exprs);
         }
         if diags.len() > before && kept.len() < crate::diag::MAX_KEPT {
             kept.push(KeptLine { line: line_no as usize, start: offset as usize, text: line.to_owned() });
@@ -160,9 +184,106 @@ pub fn check_stream(
         exprs.clear();
         offset += text.len() as u64;
         line_no += 1;
-    }
+        Ok(true)
+    })?;
     diags.extend(reader.finish());
     Ok(StreamResult { diagnostics: diags, kept_lines: kept, bytes: offset, lines: line_no })
+}
+
+/// A line without its ending (`\n`, `\r\n`).
+fn strip_ending(text: &str) -> &str {
+    let line = text.strip_suffix('\n').unwrap_or(text);
+    line.strip_suffix('\r').unwrap_or(line)
+}
+
+/// Calls `f` with each line of the input, with its ending, decoded as
+/// [`decode`] does (UTF-8, or Latin-1 for a line that is not), until `f`
+/// says `false`. Reads the input's buffer in place: whole buffers of lines
+/// are checked as UTF-8 at once; only a line across two reads is copied.
+pub fn for_each_line<F>(mut input: impl BufRead, mut f: F) -> std::io::Result<()>
+where
+    F: FnMut(&str) -> std::io::Result<bool>,
+{
+    let mut carry: Vec<u8> = Vec::new();
+    let mut latin = String::new();
+    loop {
+        let chunk = match input.fill_buf() {
+            Ok(c) => c,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        if chunk.is_empty() {
+            break;
+        }
+        let (used, go_on) = if carry.is_empty() {
+            match chunk.iter().rposition(|&b| b == b'\n') {
+                Some(last) => (last + 1, lines_in(&chunk[..=last], &mut latin, &mut f)?),
+                None => {
+                    carry.extend_from_slice(chunk);
+                    (chunk.len(), true)
+                }
+            }
+        } else {
+            match chunk.iter().position(|&b| b == b'\n') {
+                Some(i) => {
+                    carry.extend_from_slice(&chunk[..=i]);
+                    let go_on = one_line(&carry, &mut latin, &mut f)?;
+                    carry.clear();
+                    (i + 1, go_on)
+                }
+                None => {
+                    carry.extend_from_slice(chunk);
+                    (chunk.len(), true)
+                }
+            }
+        };
+        input.consume(used);
+        if !go_on {
+            return Ok(());
+        }
+    }
+    if !carry.is_empty() {
+        one_line(&carry, &mut latin, &mut f)?;
+    }
+    Ok(())
+}
+
+/// Whole lines (the last one ends with `\n`).
+fn lines_in<F>(bytes: &[u8], latin: &mut String, f: &mut F) -> std::io::Result<bool>
+where
+    F: FnMut(&str) -> std::io::Result<bool>,
+{
+    if let Ok(text) = std::str::from_utf8(bytes) {
+        // Lines are short: a plain scan beats a vectorised search here.
+        let mut start = 0;
+        for (i, _) in text.bytes().enumerate().filter(|&(_, b)| b == b'\n') {
+            if !f(&text[start..=i])? {
+                return Ok(false);
+            }
+            start = i + 1;
+        }
+        return Ok(true);
+    }
+    for raw in bytes.split_inclusive(|&b| b == b'\n') {
+        if !one_line(raw, latin, f)? {
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}
+
+fn one_line<F>(raw: &[u8], latin: &mut String, f: &mut F) -> std::io::Result<bool>
+where
+    F: FnMut(&str) -> std::io::Result<bool>,
+{
+    match std::str::from_utf8(raw) {
+        Ok(s) => f(s),
+        Err(_) => {
+            latin.clear();
+            latin.extend(raw.iter().map(|&b| b as char));
+            f(latin)
+        }
+    }
 }
 
 fn too_large() -> std::io::Error {
@@ -226,28 +347,26 @@ pub fn lines_at(input: impl BufRead, offsets: &[u32]) -> std::io::Result<Vec<Kep
     let mut wanted: Vec<u64> = offsets.iter().map(|&o| o as u64).collect();
     wanted.sort_unstable();
     wanted.dedup();
-    let mut input = input;
-    let (mut raw, mut text) = (Vec::new(), String::new());
     let (mut offset, mut line_no, mut next) = (0u64, 0usize, 0usize);
     let mut out = Vec::new();
-    while next < wanted.len() {
-        raw.clear();
-        if input.read_until(b'\n', &mut raw)? == 0 {
-            break;
-        }
-        text.clear();
-        decode_line_into(&raw, &mut text);
+    if wanted.is_empty() {
+        return Ok(out);
+    }
+    for_each_line(input, |text| {
         let end = offset + text.len() as u64;
         if wanted[next] < end || (wanted[next] == end && !text.ends_with('\n')) {
-            let line = text.strip_suffix('\n').unwrap_or(&text);
-            let line = line.strip_suffix('\r').unwrap_or(line);
-            out.push(KeptLine { line: line_no, start: offset as usize, text: line.to_owned() });
+            out.push(KeptLine { line: line_no, start: offset as usize, text: strip_ending(text).to_owned() });
             while next < wanted.len() && wanted[next] <= end {
                 next += 1;
             }
         }
         offset = end;
         line_no += 1;
-    }
+        Ok(next < wanted.len())
+    })?;
     Ok(out)
 }
+
+#[cfg(test)]
+#[path = "driver_tests.rs"]
+mod tests;

@@ -13,8 +13,8 @@ use crate::ir::{
 use crate::syntax::WordSyntax;
 
 /// The words a code's spec entry says it uses, as addresses.
-fn uses(cw: &CodeWord<'_>) -> Vec<char> {
-    cw.def.map(|d| d.uses.clone()).unwrap_or_default()
+fn uses<'s>(cw: &CodeWord<'s>) -> &'s [char] {
+    cw.def.map(|d| d.uses.as_slice()).unwrap_or_default()
 }
 
 /// The value of the first `uses` word present (a register, a limit, an angle).
@@ -25,8 +25,8 @@ fn first_used(cw: &CodeWord<'_>, words: &mut Words) -> Option<Value> {
 /// The `uses` words present, in the order the spec lists them.
 fn used_words(cw: &CodeWord<'_>, words: &mut Words) -> Vec<Word> {
     uses(cw)
-        .into_iter()
-        .filter_map(|c| words.take(c).map(|w| Word::new(c, w.value, w.span)))
+        .iter()
+        .filter_map(|&c| words.take(c).map(|w| Word::new(c, w.value, w.span)))
         .collect()
 }
 
@@ -39,7 +39,7 @@ pub(super) fn aux(cw: &CodeWord<'_>, words: &mut Words) -> StmtKind {
 pub(super) fn code_stmt(cw: &CodeWord<'_>, meaning: Meaning, words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
     use Meaning as M;
     match meaning {
-        M::Motion(kind) => StmtKind::Motion(motion(kind, &uses(cw), words, ctx)),
+        M::Motion(kind) => StmtKind::Motion(motion(kind, uses(cw), words, ctx)),
         M::Cycle(kind) => StmtKind::Cycle(Box::new(cycle(kind, words, ctx))),
         M::CycleCancel => StmtKind::CycleCancel,
         M::Dwell => dwell(cw, words, ctx),

@@ -15,45 +15,75 @@ const ARC_WORDS: &[&str] = &["I", "J", "K", "R", "CR", "AR", "@", "^", "AP", "RP
 const CIP_WORDS: &[&str] = &["I1", "J1", "K1"];
 
 /// The alternatives a code needs, from the spec or built in by meaning.
-fn required(cw: &CodeWord<'_>) -> Vec<Vec<String>> {
-    let from_spec: Vec<Vec<String>> = cw
-        .def
-        .map(|d| d.requires.iter().map(|alt| alt.iter().map(|c| c.to_string()).collect()).collect())
-        .unwrap_or_default();
-    if !from_spec.is_empty() {
-        return from_spec;
+enum Required<'s> {
+    /// From the spec: each entry lists alternatives.
+    Spec(&'s [Vec<char>]),
+    /// Built in: one entry of these alternatives.
+    Builtin(&'static [&'static str]),
+    /// A dwell: one entry, the words its units name.
+    Dwell(&'s [(char, crate::ir::DwellUnit)]),
+    None,
+}
+
+fn required<'s>(cw: &CodeWord<'s>) -> Required<'s> {
+    if let Some(d) = cw.def.filter(|d| !d.requires.is_empty()) {
+        return Required::Spec(&d.requires);
     }
-    let words: &[&str] = match cw.meaning {
+    let words: &'static [&'static str] = match cw.meaning {
         Some(Meaning::Motion(MotionKind::Arc(ArcDir::Cw | ArcDir::Ccw))) => ARC_WORDS,
         Some(Meaning::Motion(MotionKind::ArcThrough)) => CIP_WORDS,
         Some(Meaning::Cycle(CycleKind::Peck | CycleKind::ChipBreak)) => &["Q", "I"],
         Some(Meaning::SubCall | Meaning::LocalCall | Meaning::MacroCall | Meaning::ModalMacroCall) => &["P"],
         Some(Meaning::SetData) => &["L"],
         Some(Meaning::Dwell) => {
-            let units = cw.def.map(|d| d.dwell_units.iter().map(|(c, _)| c.to_string()).collect());
-            return units.filter(|v: &Vec<String>| !v.is_empty()).into_iter().collect();
+            return match cw.def {
+                Some(d) if !d.dwell_units.is_empty() => Required::Dwell(&d.dwell_units),
+                _ => Required::None,
+            };
         }
         _ => &[],
     };
     if words.is_empty() {
-        return Vec::new();
+        return Required::None;
     }
-    vec![words.iter().map(|s| s.to_string()).collect()]
+    Required::Builtin(words)
 }
 
 /// Reports each required word a code lacks (E0206).
 pub(super) fn check_required(cw: &CodeWord<'_>, words: &Words, diags: &mut Vec<Diagnostic>) {
-    for alts in required(cw) {
-        if alts.iter().any(|a| words.has(a.as_str())) {
-            continue;
-        }
+    let mut missing = |alts: Vec<String>| {
         let list = describe(&alts);
         diags.push(
             Diagnostic::new(Code::MissingWord, format!("`{}` needs {list}", cw.name()))
                 .primary(cw.span, format!("needs {list}"))
                 .help(format!("add {list} to this block")),
         );
+    };
+    match required(cw) {
+        Required::Spec(entries) => {
+            for alts in entries {
+                if !alts.iter().any(|a| has_char(words, *a)) {
+                    missing(alts.iter().map(|c| c.to_string()).collect());
+                }
+            }
+        }
+        Required::Builtin(alts) => {
+            if !alts.iter().any(|a| words.has(*a)) {
+                missing(alts.iter().map(|s| s.to_string()).collect());
+            }
+        }
+        Required::Dwell(units) => {
+            if !units.iter().any(|(c, _)| has_char(words, *c)) {
+                missing(units.iter().map(|(c, _)| c.to_string()).collect());
+            }
+        }
+        Required::None => {}
     }
+}
+
+/// Looked up as the text of the letter, as the spec writes it.
+fn has_char(words: &Words, c: char) -> bool {
+    words.has(&*c.encode_utf8(&mut [0u8; 4]))
 }
 
 /// The alternatives in words: `` `Q` ``, `` `P` or `X` ``, or an arc's forms.

@@ -45,11 +45,45 @@ fn pseudo_name(m: Option<Meaning>) -> String {
 }
 
 /// Siemens motion keywords that arrive as words without a value.
-pub(super) fn pseudo_motion(address: &str) -> Option<Meaning> {
+pub(super) fn pseudo_motion(address: &[u8]) -> Option<Meaning> {
     match address {
-        "CIP" => Some(Meaning::Motion(MotionKind::ArcThrough)),
-        "CT" => Some(Meaning::Motion(MotionKind::ArcTangent)),
+        b"CIP" => Some(Meaning::Motion(MotionKind::ArcThrough)),
+        b"CT" => Some(Meaning::Motion(MotionKind::ArcTangent)),
         _ => None,
+    }
+}
+
+/// The spec's answers for the G and M codes `0`..`99.9` a file has used:
+/// the same lookup as [`DialectSpec::code`], asked once per code.
+pub(super) struct Cache<'s> {
+    /// Index `letter * 1000 + code × 10`; `None` until asked.
+    slots: Vec<Option<Option<&'s CodeDef>>>,
+}
+
+impl Default for Cache<'_> {
+    fn default() -> Self {
+        Cache { slots: vec![None; 2000] }
+    }
+}
+
+impl<'s> Cache<'s> {
+    fn code(&mut self, letter: char, code: Decimal, spec: &'s DialectSpec) -> Option<&'s CodeDef> {
+        let Some(i) = Self::slot(letter, code) else { return spec.code(letter, code) };
+        *self.slots[i].get_or_insert_with(|| spec.code(letter, code))
+    }
+
+    fn slot(letter: char, code: Decimal) -> Option<usize> {
+        let base = match letter {
+            'G' => 0,
+            'M' => 1000,
+            _ => return None,
+        };
+        let tenths = match code.scale {
+            0 => code.mantissa.checked_mul(10)?,
+            1 => code.mantissa,
+            _ => return None,
+        };
+        (0..1000).contains(&tenths).then(|| base + tenths as usize)
     }
 }
 
@@ -58,10 +92,11 @@ pub(super) fn resolve<'s>(
     letter: char,
     code: Decimal,
     span: Span,
+    cache: &mut Cache<'s>,
     spec: &'s DialectSpec,
     diags: &mut Vec<Diagnostic>,
 ) -> CodeWord<'s> {
-    let def = spec.code(letter, code);
+    let def = cache.code(letter, code, spec);
     let cw = CodeWord { letter, code, span, meaning: def.map(|d| d.meaning), def };
     if code.is_negative() || (letter == 'M' && !code.is_integer()) {
         diags.push(

@@ -14,17 +14,65 @@ use crate::syntax::WordSyntax;
 /// A statement with the position and span of what it was made from.
 pub(super) type Placed = (u32, crate::ir::Stmt);
 
+/// A line's statements as they are made, each with its position (where
+/// its first word is); put in source order at the end.
+#[derive(Default)]
+pub(super) struct Placement {
+    stmts: Vec<crate::ir::Stmt>,
+    pos: Vec<u32>,
+}
+
+impl Placement {
+    pub fn clear(&mut self) {
+        self.stmts.clear();
+        self.pos.clear();
+    }
+
+    #[inline]
+    pub fn push(&mut self, (pos, stmt): Placed) {
+        self.pos.push(pos);
+        self.stmts.push(stmt);
+    }
+
+    pub fn extend(&mut self, placed: impl IntoIterator<Item = Placed>) {
+        for p in placed {
+            self.push(p);
+        }
+    }
+
+    /// Appends the statements to `out` in source order (a stable sort by
+    /// position). Usually already in order, and `out` empty: then the
+    /// buffers are swapped and nothing moves.
+    pub fn drain_sorted_into(&mut self, out: &mut Vec<crate::ir::Stmt>) {
+        if self.pos.is_sorted() {
+            if out.is_empty() {
+                std::mem::swap(out, &mut self.stmts);
+            } else {
+                out.append(&mut self.stmts);
+            }
+            self.pos.clear();
+            return;
+        }
+        let mut placed: Vec<Placed> = self.pos.drain(..).zip(self.stmts.drain(..)).collect();
+        placed.sort_by_key(|(pos, _)| *pos);
+        out.extend(placed.into_iter().map(|(_, s)| s));
+    }
+}
+
 fn place(kind: StmtKind, span: Span) -> Placed {
     (span.start, crate::ir::Stmt::new(kind, span))
 }
 
 /// Whether free words make an implicit move (a lone `R` does not).
 fn has_motion_words(words: &Words) -> bool {
+    if !words.any_free() {
+        return false;
+    }
     words.has_free_axes() || MOTION_WORDS.iter().any(|a| *a != "R" && words.has_free(*a))
 }
 
 /// Axis words in a block that cancels cycles and has no move (E0209).
-pub(super) fn reject_axes_after_cancel(cancel: Span, words: &mut Words, out: &mut Vec<Placed>, ctx: &mut Ctx<'_>) {
+pub(super) fn reject_axes_after_cancel(cancel: Span, words: &mut Words, out: &mut Placement, ctx: &mut Ctx<'_>) {
     for a in AXIS_LETTERS {
         let Some(w) = words.take(a) else { continue };
         ctx.diags.push(
@@ -44,12 +92,15 @@ pub(super) fn implicit_motion(words: &mut Words, ctx: &mut Ctx<'_>) -> Option<Pl
     }
     words.begin();
     let m = motion(MotionKind::Implicit, &[], words, ctx);
-    let span = words.taken_spans().iter().copied().reduce(Span::to)?;
+    let span = words.taken_span()?;
     Some(place(StmtKind::Motion(m), span))
 }
 
 /// `F`, `S`, `T`, `D`, `H` standing alone.
-pub(super) fn standalone(words: &mut Words, out: &mut Vec<Placed>, ctx: &mut Ctx<'_>) {
+pub(super) fn standalone(words: &mut Words, out: &mut Placement, ctx: &mut Ctx<'_>) {
+    if !words.any_free() {
+        return;
+    }
     for addr in ["F", "S", "T", "D", "H"] {
         let Some(w) = words.take(addr) else { continue };
         let kind = match addr {
@@ -104,11 +155,10 @@ pub(super) fn unused(
     words: &mut Words,
     dynamic: Option<&mut Vec<Word>>,
     implicit: bool,
-    out: &mut Vec<Placed>,
+    out: &mut Placement,
     ctx: &mut Ctx<'_>,
 ) {
-    let free: Vec<WordSyntax> =
-        words.list.iter_mut().filter(|e| !e.used).map(|e| { e.used = true; e.w.clone() }).collect();
+    let free = words.take_free();
     if let Some(dynamic) = dynamic {
         dynamic.extend(free.iter().map(as_word));
         return;

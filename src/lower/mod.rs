@@ -21,11 +21,11 @@ mod tests;
 
 use crate::diag::Diagnostic;
 use crate::dialect::{DialectSpec, Meaning};
-use crate::ir::{Arena, Block, Expr, ExprId, LengthComp, Stmt, StmtKind, Value, Word};
+use crate::ir::{Arena, Block, Expr, ExprId, LengthComp, Motion, Stmt, StmtKind, Value, Word};
 use crate::span::Span;
 use crate::syntax::{Item, LineSyntax, WordSyntax};
 use codes::CodeWord;
-use leftover::Placed;
+use leftover::Placement;
 use words::Words;
 
 /// What the builders share while lowering one line.
@@ -33,75 +33,151 @@ pub(crate) struct Ctx<'a> {
     pub spec: &'a DialectSpec,
     pub exprs: &'a Arena<Expr>,
     pub diags: &'a mut Vec<Diagnostic>,
+    /// Moves of earlier lines, emptied for reuse (see [`Lowering::recycle`]).
+    pub spare_moves: &'a mut SpareMoves,
 }
+
+/// Boxes of moves already handed out and given back: the boxes themselves
+/// are what is reused (a statement holds its move boxed).
+#[allow(clippy::vec_box)]
+pub(crate) type SpareMoves = Vec<Box<Motion>>;
 
 /// The words of a line sorted by kind.
 #[derive(Default)]
 struct Sorted<'s> {
-    out: Vec<Placed>,
+    out: Placement,
     codes: Vec<CodeWord<'s>>,
     dynamic: Vec<(char, ExprId, Span)>,
     plain: Vec<WordSyntax>,
 }
 
+impl Sorted<'_> {
+    fn clear(&mut self) {
+        self.out.clear();
+        self.codes.clear();
+        self.dynamic.clear();
+        self.plain.clear();
+    }
+}
+
 /// Lowers one line's words to statements (see the module doc).
-pub fn lower_line(line: LineSyntax, spec: &DialectSpec, exprs: &Arena<Expr>, diags: &mut Vec<Diagnostic>) -> Block {
-    let mut ctx = Ctx { spec, exprs, diags };
-    let mut s = sort_items(line.items, &mut ctx);
-    words::convert_increments(&mut s.plain, spec, ctx.diags);
-    let mut words = Words::with_capacity(s.plain.len());
-    let mut repeated = Vec::new();
-    for w in s.plain.drain(..) {
-        words.push(w, ctx.diags, &mut repeated);
+pub fn lower_line(mut line: LineSyntax, spec: &DialectSpec, exprs: &Arena<Expr>, diags: &mut Vec<Diagnostic>) -> Block {
+    let mut stmts = Vec::new();
+    Lowering::new(spec).lower(&mut line.items, exprs, diags, &mut stmts);
+    Block { span: line.span, skip: line.skip, number: line.number, label: line.label, stmts }
+}
+
+/// The lowering of one file's lines, keeping its buffers from line to
+/// line (a long program allocates nothing per line for them).
+pub struct Lowering<'s> {
+    spec: &'s DialectSpec,
+    sorted: Sorted<'s>,
+    words: Words,
+    repeated: Vec<WordSyntax>,
+    codes: codes::Cache<'s>,
+    spare_moves: SpareMoves,
+    /// Diagnostics of words pushed early, given after those of the codes.
+    deferred: Vec<Diagnostic>,
+}
+
+impl<'s> Lowering<'s> {
+    pub fn new(spec: &'s DialectSpec) -> Self {
+        Lowering {
+            spec,
+            sorted: Sorted::default(),
+            words: Words::default(),
+            repeated: Vec::new(),
+            codes: codes::Cache::default(),
+            spare_moves: Vec::new(),
+            deferred: Vec::new(),
+        }
     }
-    codes::check_groups(&s.codes, spec, ctx.diags);
-    for cw in &s.codes {
-        checks::check_required(cw, &words, ctx.diags);
+
+    /// Empties `stmts`, keeping the memory of its moves for later lines.
+    pub fn recycle(&mut self, stmts: &mut Vec<Stmt>) {
+        const KEEP: usize = 16;
+        for s in stmts.drain(..) {
+            if let StmtKind::Motion(m) = s.kind {
+                if self.spare_moves.len() < KEEP {
+                    self.spare_moves.push(m);
+                }
+            }
+        }
     }
-    lower_codes(&s.codes, &mut words, &mut s.out, &mut ctx);
-    let mut out = finish(s, &mut words, &mut ctx);
-    for w in repeated {
-        out.push((w.span.start, Stmt::new(leftover::keep(&w, &ctx), w.span)));
-    }
-    out.sort_by_key(|(pos, _)| *pos);
-    Block {
-        span: line.span,
-        skip: line.skip,
-        number: line.number,
-        label: line.label,
-        stmts: out.into_iter().map(|(_, s)| s).collect(),
+
+    /// Lowers the items (which are taken, leaving the vector empty) into
+    /// `stmts` (appended, in source order).
+    pub fn lower(&mut self, items: &mut Vec<Item>, exprs: &Arena<Expr>, diags: &mut Vec<Diagnostic>, stmts: &mut Vec<Stmt>) {
+        let spec = self.spec;
+        let mut ctx = Ctx { spec, exprs, diags, spare_moves: &mut self.spare_moves };
+        let s = &mut self.sorted;
+        s.clear();
+        self.words.clear();
+        // Words go straight to the word set unless lengths are converted
+        // first (which needs all of them).
+        let direct = !words::converts_increments(spec);
+        let to = if direct { Some((&mut self.words, &mut self.repeated, &mut self.deferred)) } else { None };
+        sort_items(items, s, to, &mut self.codes, spec, ctx.diags);
+        // Repeated words are reported after the codes, as when words come later.
+        ctx.diags.append(&mut self.deferred);
+        words::convert_increments(&mut s.plain, spec, ctx.diags);
+        for w in &s.plain {
+            self.words.push(w, ctx.diags, &mut self.repeated);
+        }
+        s.plain.clear();
+        codes::check_groups(&s.codes, spec, ctx.diags);
+        for cw in &s.codes {
+            checks::check_required(cw, &self.words, ctx.diags);
+        }
+        lower_codes(&s.codes, &mut self.words, &mut s.out, &mut ctx);
+        finish(s, &mut self.words, &mut ctx);
+        for w in self.repeated.drain(..) {
+            s.out.push((w.span.start, Stmt::new(leftover::keep(&w, &ctx), w.span)));
+        }
+        s.out.drain_sorted_into(stmts);
     }
 }
 
 /// Splits items into statements, code words, dynamic codes and plain words.
-fn sort_items<'s>(items: Vec<Item>, ctx: &mut Ctx<'s>) -> Sorted<'s> {
-    let n = items.len();
-    let mut s = Sorted { out: Vec::with_capacity(n + 1), codes: Vec::with_capacity(4), dynamic: Vec::new(), plain: Vec::with_capacity(n) };
-    for item in items {
-        let w = match item {
-            Item::Stmt(st) => {
-                s.out.push((st.span.start, st));
-                continue;
-            }
-            Item::Word(w) => w,
-        };
-        let letter = match w.address.as_str() {
-            "G" => 'G',
-            "M" => 'M',
+fn sort_items<'s>(
+    items: &mut Vec<Item>,
+    s: &mut Sorted<'s>,
+    mut direct: Option<(&mut Words, &mut Vec<WordSyntax>, &mut Vec<Diagnostic>)>,
+    cache: &mut codes::Cache<'s>,
+    spec: &'s DialectSpec,
+    diags: &mut Vec<Diagnostic>,
+) {
+    // Words are read where they lie (copied once, into their set); the
+    // statements are moved out after.
+    for item in items.iter() {
+        let Item::Word(w) = item else { continue };
+        let letter = match w.address.as_bytes() {
+            b"G" => 'G',
+            b"M" => 'M',
             a => {
                 match codes::pseudo_motion(a) {
                     Some(m) => s.codes.push(CodeWord { letter: '\0', code: crate::ir::Decimal::ZERO, span: w.span, meaning: Some(m), def: None }),
-                    None => s.plain.push(w),
+                    None => match &mut direct {
+                        Some((words, repeated, deferred)) => words.push(w, deferred, repeated),
+                        None => s.plain.push(w.clone()),
+                    },
                 }
                 continue;
             }
         };
         match w.value {
-            Value::Number(d) => s.codes.push(codes::resolve(letter, d, w.span, ctx.spec, ctx.diags)),
+            Value::Number(d) => s.codes.push(codes::resolve(letter, d, w.span, cache, spec, diags)),
             Value::Expr(e) => s.dynamic.push((letter, e, w.span)),
         }
     }
-    s
+    if items.iter().any(|i| matches!(i, Item::Stmt(_))) {
+        for item in items.drain(..) {
+            if let Item::Stmt(st) = item {
+                s.out.push((st.span.start, st));
+            }
+        }
+    }
+    items.clear();
 }
 
 /// Which codes take their words first: those taking every word, then those
@@ -116,23 +192,23 @@ fn priority(cw: &CodeWord<'_>) -> u8 {
     }
 }
 
-fn lower_codes(codes: &[CodeWord<'_>], words: &mut Words, out: &mut Vec<Placed>, ctx: &mut Ctx<'_>) {
-    let mut order: Vec<&CodeWord<'_>> = codes.iter().collect();
-    order.sort_by_key(|cw| priority(cw));
+fn lower_codes(codes: &[CodeWord<'_>], words: &mut Words, out: &mut Placement, ctx: &mut Ctx<'_>) {
+    // In priority order, then source order (a stable sort, without a buffer).
+    let order = (0..3).flat_map(|p| codes.iter().filter(move |cw| priority(cw) == p));
     for cw in order {
         words.begin();
         let kind = match cw.meaning {
             Some(m) => build::code_stmt(cw, m, words, ctx),
             None => build::aux(cw, words),
         };
-        let span = words.taken_spans().iter().fold(cw.span, |a, b| a.to(*b));
+        let span = words.taken_span().map_or(cw.span, |t| cw.span.to(t));
         out.push((cw.span.start, Stmt::new(kind, span)));
     }
 }
 
 /// Everything after the codes: moves, standalone words, dynamic codes, and
 /// the words nobody took.
-fn finish(mut s: Sorted<'_>, words: &mut Words, ctx: &mut Ctx<'_>) -> Vec<Placed> {
+fn finish(s: &mut Sorted<'_>, words: &mut Words, ctx: &mut Ctx<'_>) {
     let cancel = s.codes.iter().find(|c| c.meaning == Some(Meaning::CycleCancel)).map(|c| c.span);
     let has_motion = s.codes.iter().any(|c| c.is_motion());
     let mut implicit = false;
@@ -152,5 +228,4 @@ fn finish(mut s: Sorted<'_>, words: &mut Words, ctx: &mut Ctx<'_>) -> Vec<Placed
         let words = if i == 0 { std::mem::take(&mut dynamic_words) } else { Vec::new() };
         s.out.push((span.start, Stmt::new(StmtKind::DynamicCode { letter: *letter, value: *value, words }, *span)));
     }
-    s.out
 }

@@ -20,9 +20,20 @@ pub(super) const MOTION_WORDS: &[&str] =
 /// A move: its kind and the words it takes; `uses` adds the code's extra
 /// words (LinuxCNC `P` turns).
 pub(super) fn motion(kind: MotionKind, uses: &[char], words: &mut Words, ctx: &mut Ctx<'_>) -> Box<Motion> {
-    // Built in place: a move is large, and lines are many.
-    let mut m = Box::new(Motion::new(kind));
+    // Built in place, in the memory of an earlier move if there is one: a
+    // move is large, and lines are many.
+    let mut m = match ctx.spare_moves.pop() {
+        Some(mut m) => {
+            *m = Motion::new(kind);
+            m
+        }
+        None => Box::new(Motion::new(kind)),
+    };
     words.take_axes_into(&mut m.target);
+    if !words.any_free() {
+        // Every lookup below would find nothing.
+        return m;
+    }
     if takes_arc_words(kind) {
         check_arc_format(words, ctx.diags);
         m.arc.i = words.coord("I");

@@ -13,11 +13,19 @@ use crate::syntax::WordSyntax;
 pub(super) trait Addr: Copy {
     /// The address packed into an integer (see [`key`]).
     fn key(self) -> u64;
+    /// `0..26` for a one-letter address `A`..`Z`.
+    fn letter(self) -> Option<usize>;
 }
 
 impl Addr for &str {
     fn key(self) -> u64 {
-        key(self)
+        key(self.as_bytes())
+    }
+    fn letter(self) -> Option<usize> {
+        match self.as_bytes() {
+            [b] => letter_index(*b),
+            _ => None,
+        }
     }
 }
 
@@ -29,12 +37,18 @@ impl Addr for char {
             u64::MAX
         }
     }
+    fn letter(self) -> Option<usize> {
+        u8::try_from(self).ok().and_then(letter_index)
+    }
+}
+
+fn letter_index(b: u8) -> Option<usize> {
+    b.is_ascii_uppercase().then(|| usize::from(b - b'A'))
 }
 
 /// Addresses are short: up to 8 bytes packed into a `u64` compare in one
 /// instruction (longer ones get a key no lookup uses).
-fn key(address: &str) -> u64 {
-    let b = address.as_bytes();
+fn key(b: &[u8]) -> u64 {
     if b.len() > 8 {
         return u64::MAX - 1;
     }
@@ -51,92 +65,142 @@ pub(super) struct Entry {
 /// The words of a line in source order.
 #[derive(Default)]
 pub(super) struct Words {
-    pub list: Vec<Entry>,
-    /// One bit per address key present (`key % 64`): most lookups are for
-    /// words a line does not have, and this answers them at once.
-    mask: u64,
-    /// Spans of the words taken since the last [`Words::begin`].
-    taken: Vec<Span>,
+    list: Vec<Entry>,
+    /// For each one-letter address `A`..`Z`: 1 + its index in `list`, or 0.
+    letters: [u32; 26],
+    /// Whether `list` holds any other address (looked up by scanning).
+    others: bool,
+    /// How many words of `list` no statement has taken yet.
+    free: usize,
+    /// The span of the words taken since the last [`Words::begin`].
+    taken: Option<Span>,
 }
 
 impl Words {
-    pub fn with_capacity(n: usize) -> Words {
-        Words { list: Vec::with_capacity(n), mask: 0, taken: Vec::with_capacity(n) }
+    /// Empties the set, keeping its buffers for the next line.
+    pub fn clear(&mut self) {
+        self.list.clear();
+        self.letters = [0; 26];
+        self.others = false;
+        self.free = 0;
+        self.taken = None;
     }
 
     /// Adds a word, reporting a repeated address (the repeat is kept aside
     /// in `extra` so that nothing is lost).
-    pub fn push(&mut self, w: WordSyntax, diags: &mut Vec<Diagnostic>, extra: &mut Vec<WordSyntax>) {
-        if let Some(first) = self.list.iter().find(|e| e.w.address == w.address) {
+    pub fn push(&mut self, w: &WordSyntax, diags: &mut Vec<Diagnostic>, extra: &mut Vec<WordSyntax>) {
+        let letter = match w.address.as_bytes() {
+            [b] => letter_index(*b),
+            _ => None,
+        };
+        let first = match letter {
+            Some(l) => self.letters[l].checked_sub(1).map(|i| i as usize),
+            None if self.others => self.list.iter().position(|e| e.w.address == w.address),
+            None => None,
+        };
+        if let Some(first) = first {
             diags.push(
                 Diagnostic::new(Code::RepeatedWord, format!("`{}` is given twice in this block", w.address))
                     .primary(w.span, "repeated here")
-                    .secondary(first.w.span, "first given here")
+                    .secondary(self.list[first].w.span, "first given here")
                     .help("keep one of the two words; a block holds each address once"),
             );
-            extra.push(w);
+            extra.push(w.clone());
             return;
         }
-        let key = key(&w.address);
-        self.mask |= 1 << (key % 64);
-        self.list.push(Entry { w, used: false, key });
+        match letter {
+            Some(l) => self.letters[l] = self.list.len() as u32 + 1,
+            None => self.others = true,
+        }
+        let key = key(w.address.as_bytes());
+        self.list.push(Entry { w: w.clone(), used: false, key });
+        self.free += 1;
     }
 
+    /// Whether any word is still free (when not, every lookup of a free
+    /// word answers `None`, and callers may skip them).
+    #[inline]
+    pub fn any_free(&self) -> bool {
+        self.free > 0
+    }
+
+    #[inline]
     fn find(&self, addr: impl Addr) -> Option<usize> {
-        let k = addr.key();
-        if self.mask & (1 << (k % 64)) == 0 {
+        if let Some(l) = addr.letter() {
+            return self.letters[l].checked_sub(1).map(|i| i as usize);
+        }
+        if !self.others {
             return None;
         }
+        let k = addr.key();
         self.list.iter().position(|e| e.key == k)
     }
 
     /// Whether the line has a word with this address (taken or not).
+    #[inline]
     pub fn has(&self, addr: impl Addr) -> bool {
         self.find(addr).is_some()
     }
 
     /// Whether the line has this word and nobody took it yet.
+    #[inline]
     pub fn has_free(&self, addr: impl Addr) -> bool {
         self.find(addr).map(|i| !self.list[i].used).unwrap_or(false)
     }
 
     /// The word, if present (taken or not).
+    #[inline]
     pub fn get(&self, addr: impl Addr) -> Option<&WordSyntax> {
         self.find(addr).map(|i| &self.list[i].w)
     }
 
     /// A word not yet taken by a statement.
+    #[inline]
     pub fn get_free(&self, addr: impl Addr) -> Option<&WordSyntax> {
         self.find(addr).filter(|&i| !self.list[i].used).map(|i| &self.list[i].w)
     }
 
     /// Starts recording the spans of taken words for one statement.
     pub fn begin(&mut self) {
-        self.taken.clear();
+        self.taken = None;
     }
 
-    /// The spans taken since [`Words::begin`].
-    pub fn taken_spans(&self) -> &[Span] {
-        &self.taken
+    /// The span of the words taken since [`Words::begin`] (`None`: none).
+    pub fn taken_span(&self) -> Option<Span> {
+        self.taken
     }
 
-    /// Takes a free word.
-    pub fn take(&mut self, addr: impl Addr) -> Option<WordSyntax> {
+    fn mark_taken(&mut self, span: Span) {
+        self.taken = Some(self.taken.map_or(span, |t| t.to(span)));
+    }
+
+    /// Takes a free word, giving a reference to it.
+    #[inline]
+    fn take_ref(&mut self, addr: impl Addr) -> Option<&WordSyntax> {
         let i = self.find(addr)?;
         if self.list[i].used {
             return None;
         }
         self.list[i].used = true;
-        self.taken.push(self.list[i].w.span);
-        Some(self.list[i].w.clone())
+        self.free -= 1;
+        self.mark_taken(self.list[i].w.span);
+        Some(&self.list[i].w)
     }
 
+    /// Takes a free word.
+    #[inline]
+    pub fn take(&mut self, addr: impl Addr) -> Option<WordSyntax> {
+        self.take_ref(addr).cloned()
+    }
+
+    #[inline]
     pub fn value(&mut self, addr: impl Addr) -> Option<Value> {
-        self.take(addr).map(|w| w.value)
+        self.take_ref(addr).map(|w| w.value.clone())
     }
 
+    #[inline]
     pub fn coord(&mut self, addr: impl Addr) -> Option<Coord> {
-        self.take(addr).map(|w| Coord { value: w.value, dim: w.dim, span: w.span })
+        self.take_ref(addr).map(|w| Coord { value: w.value.clone(), dim: w.dim, span: w.span })
     }
 
     /// Whether any free axis word is present.
@@ -154,12 +218,31 @@ impl Words {
     /// Takes the axis words into `axes` (which is left as it was for the others).
     pub fn take_axes_into(&mut self, axes: &mut Axes) {
         for a in AXIS_LETTERS {
-            if let Some(c) = self.coord(a) {
-                if let Some(slot) = axes.slot_mut(a) {
-                    *slot = Some(c);
-                }
+            let Some(i) = self.find(a) else { continue };
+            let e = &mut self.list[i];
+            if e.used {
+                continue;
             }
+            e.used = true;
+            self.free -= 1;
+            if let Some(slot) = axes.slot_mut(a) {
+                put_coord(slot, &e.w);
+            }
+            let span = e.w.span;
+            self.mark_taken(span);
         }
+    }
+
+    /// Takes every free word, in source order.
+    pub fn take_free(&mut self) -> Vec<WordSyntax> {
+        if self.free == 0 {
+            return Vec::new();
+        }
+        self.free = 0;
+        self.list.iter_mut().filter(|e| !e.used).map(|e| {
+            e.used = true;
+            e.w.clone()
+        }).collect()
     }
 
     /// Takes every free single-letter word in source order, but those in `except`.
@@ -172,10 +255,27 @@ impl Words {
                 continue;
             }
             self.list[i].used = true;
-            self.taken.push(self.list[i].w.span);
+            self.free -= 1;
+            self.mark_taken(self.list[i].w.span);
             out.push(Word::new(letter, self.list[i].w.value.clone(), self.list[i].w.span));
         }
         out
+    }
+}
+
+/// Writes a word's coordinate straight into its slot. Not inlined: inlined,
+/// the coordinate is assembled on the stack and copied, which stalls.
+#[inline(never)]
+fn put_coord(slot: &mut Option<Coord>, w: &WordSyntax) {
+    *slot = Some(Coord { value: w.value.clone(), dim: w.dim, span: w.span });
+}
+
+/// The letter of a one-letter address, read without a UTF-8 check when ASCII.
+pub(super) fn address_letter(a: &crate::syntax::Address) -> Option<char> {
+    match a.as_bytes() {
+        [b] => Some(char::from(*b)),
+        b if b.len() <= 4 => single_letter(a),
+        _ => None,
     }
 }
 
@@ -195,16 +295,21 @@ fn times(value: Decimal, inc: Decimal) -> Option<Decimal> {
     Some(Decimal { mantissa: m, scale, point: true })
 }
 
+/// Whether the dialect reads lengths without a decimal point in increments.
+pub(super) fn converts_increments(spec: &DialectSpec) -> bool {
+    spec.numbers.integer_lengths == IntegerLengths::Increments
+}
+
 /// Converts lengths written without a decimal point into increments when
 /// the dialect reads them so; one warning per line labels every such word.
 pub(super) fn convert_increments(words: &mut [WordSyntax], spec: &DialectSpec, diags: &mut Vec<Diagnostic>) {
-    if spec.numbers.integer_lengths != IntegerLengths::Increments {
+    if !converts_increments(spec) {
         return;
     }
     let mut warn: Option<Diagnostic> = None;
     let arc = has_arc_code(words, spec);
     for w in words.iter_mut() {
-        let Some(letter) = single_letter(&w.address) else { continue };
+        let Some(letter) = address_letter(&w.address) else { continue };
         let Value::Number(d) = w.value else { continue };
         if d.point || w.extended || !spec.is_length_address(letter) {
             continue;
@@ -241,7 +346,7 @@ fn has_arc_code(words: &[WordSyntax], spec: &DialectSpec) -> bool {
     use crate::dialect::Meaning;
     use crate::ir::MotionKind;
     words.iter().any(|w| {
-        w.address == "G"
+        w.address.as_bytes() == b"G"
             && matches!(w.value, Value::Number(d) if matches!(
                 spec.code('G', d).map(|c| c.meaning),
                 Some(Meaning::Motion(MotionKind::Arc(_)))

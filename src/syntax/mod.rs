@@ -73,6 +73,10 @@ pub trait FrontEnd {
         exprs: &mut Arena<Expr>,
         diags: &mut Vec<Diagnostic>,
     ) -> Option<LineSyntax>;
+
+    /// Takes back a line's item vector once its items are used, so that
+    /// the next line may reuse its memory (a no-op by default).
+    fn recycle(&mut self, _items: Vec<Item>) {}
 }
 
 /// A word's address, kept inline (addresses are short ASCII: `X`, `CR`,
@@ -95,6 +99,11 @@ impl Address {
         let mut bytes = [0u8; Address::CAPACITY];
         bytes[..end].copy_from_slice(&s.as_bytes()[..end]);
         Address { bytes, len: end as u8 }
+    }
+
+    /// The address's bytes (no UTF-8 check: cheaper than [`Address::as_str`]).
+    pub fn as_bytes(&self) -> &[u8] {
+        &self.bytes[..self.len as usize]
     }
 
     pub fn as_str(&self) -> &str {

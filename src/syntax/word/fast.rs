@@ -13,24 +13,33 @@ use crate::syntax::{Item, LineInput, LineSyntax, WordSyntax};
 
 /// Reads a line of plain `letter number` words, or `None`.
 pub fn fast_line(input: &LineInput<'_>) -> Option<LineSyntax> {
+    fast_line_with(input, &mut Vec::new())
+}
+
+/// [`fast_line`] with the items built in `spare` (taken on success, so a
+/// caller can hand back emptied vectors and lines allocate nothing).
+pub fn fast_line_with(input: &LineInput<'_>, spare: &mut Vec<Item>) -> Option<LineSyntax> {
+    spare.clear();
     let b = input.text.as_bytes();
     let sp = |l: usize, r: usize| Span::new(input.file, l + input.offset as usize, r + input.offset as usize);
     let mut i = skip_ws(b, 0);
-    let mut line = LineSyntax { span: sp(0, b.len()), skip: None, number: None, label: None, items: Vec::new() };
+    let mut seq = None;
     if i < b.len() && b[i].eq_ignore_ascii_case(&b'N') {
         let (n, end) = seq_number(b, i + 1)?;
-        line.number = Some(Spanned::new(n, sp(i, end)));
+        seq = Some(Spanned::new(n, sp(i, end)));
         i = end;
     }
+    let items = spare;
     loop {
         i = skip_ws(b, i);
         if i >= b.len() {
-            return Some(line);
+            let items = std::mem::take(items);
+            return Some(LineSyntax { span: sp(0, b.len()), skip: None, number: seq, label: None, items });
         }
         if b[i] == b'(' {
             let close = i + b[i..].iter().position(|&c| c == b')')?;
             let kind = comment_kind(&input.text[i + 1..close], CommentStyle::Paren);
-            line.items.push(Item::Stmt(Stmt::new(kind, sp(i, close + 1))));
+            items.push(Item::Stmt(Stmt::new(kind, sp(i, close + 1))));
             i = close + 1;
             continue;
         }
@@ -38,9 +47,8 @@ pub fn fast_line(input: &LineInput<'_>) -> Option<LineSyntax> {
         if !letter.is_ascii_uppercase() || letter == b'O' {
             return None;
         }
-        let end = number_end(b, i + 1)?;
-        let value = Decimal::parse(&input.text[i + 1..end]).ok()?;
-        line.items.push(Item::Word(WordSyntax {
+        let (value, end) = number(input.text, i + 1)?;
+        items.push(Item::Word(WordSyntax {
             address: Address::new(char::from(letter).encode_utf8(&mut [0u8; 4])),
             value: Value::Number(value),
             dim: None,
@@ -59,18 +67,37 @@ fn skip_ws(b: &[u8], mut i: usize) -> usize {
     i
 }
 
-/// The end of `[-+]digits.digits` starting at `i`, if a word may end there.
-fn number_end(b: &[u8], i: usize) -> Option<usize> {
+/// The number `[-+]digits.digits` starting at `i` and its end, if a word
+/// may end there and [`Decimal::parse`] reads it. Read in the same pass
+/// when short (the common case); longer ones are left to `Decimal::parse`.
+fn number(text: &str, i: usize) -> Option<(Decimal, usize)> {
+    let b = text.as_bytes();
     let mut j = i;
+    let neg = j < b.len() && b[j] == b'-';
     if j < b.len() && matches!(b[j], b'-' | b'+') {
         j += 1;
     }
     let start = j;
+    let (mut mantissa, mut scale, mut points) = (0i64, 0u8, 0usize);
     while j < b.len() && (b[j].is_ascii_digit() || b[j] == b'.') {
+        if b[j] == b'.' {
+            points += 1;
+        } else {
+            mantissa = mantissa.wrapping_mul(10).wrapping_add(i64::from(b[j] - b'0'));
+            scale = scale.wrapping_add(u8::from(points > 0));
+        }
         j += 1;
     }
     let ends_well = j == b.len() || matches!(b[j], b' ' | b'\t' | b'\r' | b'(') || b[j].is_ascii_alphabetic();
-    (j > start && ends_well).then_some(j)
+    if j == start || !ends_well {
+        return None;
+    }
+    let digits = j - start - points;
+    if digits == 0 || digits > crate::ir::num::MAX_DIGITS || points > 1 {
+        // Nothing, or too long to be sure here: the shared reader decides.
+        return Decimal::parse(&text[i..j]).ok().map(|d| (d, j));
+    }
+    Some((Decimal { mantissa: if neg { -mantissa } else { mantissa }, scale, point: points == 1 }, j))
 }
 
 /// A sequence number: digits only, fitting a `u32`.

@@ -40,6 +40,8 @@ pub struct WordFrontEnd {
     parser: grammar::LineParser,
     /// Off only in tests comparing the two ways.
     use_fast_path: bool,
+    /// An emptied item vector handed back, for the next line.
+    spare: Vec<Item>,
 }
 
 impl Default for WordFrontEnd {
@@ -56,6 +58,7 @@ impl WordFrontEnd {
             open_do: Vec::new(),
             parser: grammar::LineParser::new(),
             use_fast_path: true,
+            spare: Vec::new(),
         }
     }
 
@@ -139,10 +142,17 @@ fn item_start(it: &Item) -> u32 {
 impl FrontEnd for WordFrontEnd {
     fn parse_line(&mut self, input: &LineInput<'_>, exprs: &mut Arena<Expr>, diags: &mut Vec<Diagnostic>) -> Option<LineSyntax> {
         if self.use_fast_path {
-            if let Some(line) = fast::fast_line(input) {
+            if let Some(line) = fast::fast_line_with(input, &mut self.spare) {
                 return Some(line);
             }
         }
         Some(self.slow_line(input, exprs, diags))
+    }
+
+    fn recycle(&mut self, mut items: Vec<Item>) {
+        if items.capacity() > self.spare.capacity() {
+            items.clear();
+            self.spare = items;
+        }
     }
 }
