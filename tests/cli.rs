@@ -110,6 +110,9 @@ fn aliases_resolve() {
 fn port_to_own_dialect_is_a_fixpoint() {
     let dir = tempfile::tempdir().unwrap();
     for (dialect, file) in [
+        ("fanuc", "tests/programs/fanuc/macro.nc"),
+        ("linuxcnc", "tests/programs/linuxcnc/flow.ngc"),
+        ("siemens840d", "tests/programs/siemens840d/control.mpf"),
         ("fanuc", "tests/programs/fanuc/bracket.nc"),
         ("haas", "tests/programs/haas/plate.nc"),
         ("linuxcnc", "tests/programs/linuxcnc/subs.ngc"),

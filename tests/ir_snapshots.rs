@@ -30,3 +30,18 @@ fn linuxcnc_subs() {
 fn siemens_plate() {
     insta::assert_snapshot!(ir("siemens840d", "tests/programs/siemens840d/plate.mpf"));
 }
+
+#[test]
+fn fanuc_macro() {
+    insta::assert_snapshot!(ir("fanuc", "tests/programs/fanuc/macro.nc"));
+}
+
+#[test]
+fn linuxcnc_flow() {
+    insta::assert_snapshot!(ir("linuxcnc", "tests/programs/linuxcnc/flow.ngc"));
+}
+
+#[test]
+fn siemens_control() {
+    insta::assert_snapshot!(ir("siemens840d", "tests/programs/siemens840d/control.mpf"));
+}
