@@ -25,6 +25,9 @@ pub mod siemens;
 pub mod state;
 pub mod tooltable;
 pub mod tools;
+pub mod aux;
+pub mod target;
+pub mod arcs;
 
 pub use options::{Limits, Options};
 
@@ -59,11 +62,19 @@ pub struct Interp<'a, 's> {
     pub span: Span,
     pub ended: bool,
     pub params: params::Params,
+    /// Canned-cycle values that carry over between blocks.
+    pub cycles: cycles::CycleMemory,
+    /// Cutter radius compensation (every move goes through it).
+    pub comp: comp::RadiusComp,
+    /// Recent blocks' spans by compensation tag (errors name them).
+    pub comp_tags: std::collections::VecDeque<(u64, Span)>,
+    /// The tool table as the program changes it (G10 L1/L10/L11).
+    pub tool_table: tooltable::ToolTable,
 }
 
 impl<'a, 's> Interp<'a, 's> {
     pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
-        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new() }
+        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new(), cycles: cycles::CycleMemory::new(), comp: comp::RadiusComp::new(), comp_tags: std::collections::VecDeque::new(), tool_table: opts.tool_table.clone() }
     }
 
     /// Emits one call, tagged with the current statement's span.

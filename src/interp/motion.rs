@@ -1,10 +1,202 @@
-//! Running the motion statements of a block (see [`super::exec`] for which).
+//! Running the motion statements of a block (see [`super::exec`] for which):
+//! G0/G1 (absolute, incremental, G53), implicit moves in the modal motion,
+//! G2/G3 (see [`super::arcs`]), G38.x probing, canned cycles G73..G89
+//! through [`super::cycles::run_cycle`], G80. Every move goes through
+//! cutter compensation ([`Interp::straight_move`], [`Interp::arc_move`]).
 
-use super::{Interp, Stop};
+use super::comp::MoveKind;
+use super::cycle_io::CycleBlock;
+use super::machine::pose6;
+use super::state::ModalMotion;
+use super::target::{target, written, Frame};
+use super::{arcs, aux, Interp, Stop};
+use crate::canon::{Canon, Pose};
 use crate::diag::Code;
-use crate::ir::{Arena, Block, Expr, Stmt};
+use crate::ir::{Arena, Axes, Block, CannedCycle, CycleKind, DwellUnit, Expr, FeedMode, Motion, MotionKind, Stmt, StmtKind, Value};
 
 pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
-    let _ = (block, exprs);
-    Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet"))
+    match &s.kind {
+        StmtKind::Motion(m) => motion(it, m, block, exprs),
+        StmtKind::Cycle(c) => {
+            let cb = cycle_block(it, c, block, exprs)?;
+            run_cycle(it, cb, block)
+        }
+        StmtKind::CycleCancel => {
+            it.cycles.cancel();
+            it.state.motion = ModalMotion::None;
+            it.out(Canon::Comment("interpreter: motion mode set to none".into()));
+            Ok(())
+        }
+        _ => Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet")),
+    }
+}
+
+fn has(block: &Block, f: impl Fn(&StmtKind) -> bool) -> bool {
+    block.stmts.iter().any(|s| f(&s.kind))
+}
+
+fn motion(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    let kind = match m.kind {
+        MotionKind::Implicit => match it.state.motion {
+            _ if m.target.is_empty() && m.arc.is_empty() => return Ok(()),
+            ModalMotion::Move(k) => k,
+            ModalMotion::Cycle(kind) => return implicit_cycle(it, kind, &m.target, block, exprs),
+            ModalMotion::None if has(block, |k| matches!(k, StmtKind::CycleCancel)) => {
+                return Err(it.error_at(it.span, Code::BadWordValue, "Cannot use axis values with g80"))
+            }
+            ModalMotion::None => {
+                return Err(it.error_at(it.span, Code::BadWordValue, "Cannot use axis values without a g code that uses them"))
+            }
+        },
+        k => {
+            it.cycles.cancel();
+            it.state.motion = ModalMotion::Move(k);
+            k
+        }
+    };
+    it.comp_block(block.span);
+    match kind {
+        MotionKind::Rapid | MotionKind::Linear => straight(it, kind, &m.target, block, exprs),
+        MotionKind::Arc(dir) => arcs::arc(it, dir, m, block, exprs),
+        MotionKind::Probe { .. } => probe(it, &m.target, exprs),
+        MotionKind::Implicit | MotionKind::ArcThrough | MotionKind::ArcTangent | MotionKind::Other(_) => {
+            Err(it.error_at(it.span, Code::UnsupportedHere, "this motion is not run by the interpreter yet"))
+        }
+    }
+}
+
+fn straight(it: &mut Interp<'_, '_>, kind: MotionKind, axes: &Axes, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    let machine = has(block, |k| matches!(k, StmtKind::MachineCoords));
+    let to = target(it, axes, exprs, if machine { Frame::Machine } else { Frame::Program })?;
+    let to = pose6(&it.state, &to);
+    if axes.is_empty() {
+        return Ok(());
+    }
+    if kind == MotionKind::Rapid {
+        return it.straight_move(MoveKind::Rapid, to);
+    }
+    let from = super::host::MotionHost::position(it);
+    check_feed(it, block, "Cannot do g1 with zero feed rate", "F word missing with inverse time g1 move")?;
+    if it.state.feed_mode == FeedMode::InverseTime {
+        let rate = straight_length(&from, &to) * it.state.feed;
+        it.out(Canon::SetFeedRate(rate));
+    }
+    it.straight_move(MoveKind::Feed, to)
+}
+
+/// Errors for a feed move without a usable feed rate.
+pub fn check_feed(it: &Interp<'_, '_>, block: &Block, zero: &str, inverse: &str) -> Result<(), Stop> {
+    if it.state.feed_mode == FeedMode::InverseTime {
+        if !has(block, |k| matches!(k, StmtKind::Feed(_))) {
+            return Err(it.error_at(it.span, Code::NoFeedRate, inverse));
+        }
+    } else if it.state.feed == 0.0 {
+        return Err(it.error_at(it.span, Code::NoFeedRate, zero));
+    }
+    Ok(())
+}
+
+/// The length of a straight move as rs274 measures it for inverse time:
+/// X Y Z if any moves, else A B C.
+pub fn straight_length(from: &Pose, to: &Pose) -> f64 {
+    let d = |r: std::ops::Range<usize>| r.map(|i| (to[i] - from[i]).powi(2)).sum::<f64>().sqrt();
+    let xyz = d(0..3);
+    if xyz > 0.0 {
+        xyz
+    } else {
+        d(3..6)
+    }
+}
+
+/// G38.x: the simulated probe reaches the programmed point.
+fn probe(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    let to = target(it, axes, exprs, Frame::Program)?;
+    let to = pose6(&it.state, &to);
+    {
+        let span = it.span;
+        let sink = &mut it.sink;
+        it.comp.flush(&mut |c| sink(c, span));
+    }
+    it.out(Canon::TurnProbeOn);
+    it.set_position(&to);
+    it.out(Canon::StraightProbe(to));
+    it.out(Canon::TurnProbeOff);
+    for (i, v) in to.iter().enumerate() {
+        it.params.set_numbered(5061 + i as u32, Some(*v));
+    }
+    it.params.set_numbered(5070, Some(0.0));
+    Ok(())
+}
+
+fn num(it: &mut Interp<'_, '_>, v: &Option<Value>, exprs: &Arena<Expr>) -> Result<Option<f64>, Stop> {
+    match v {
+        Some(v) => Ok(Some(it.value(v, exprs)?)),
+        None => Ok(None),
+    }
+}
+
+fn dwell_unit(it: &Interp<'_, '_>) -> DwellUnit {
+    it.spec
+        .code_for(crate::dialect::Meaning::Dwell)
+        .and_then(|c| c.dwell_units.iter().find(|(l, _)| *l == 'P').map(|(_, u)| *u))
+        .unwrap_or(DwellUnit::Seconds)
+}
+
+fn base_block(it: &mut Interp<'_, '_>, kind: CycleKind, axes: &Axes, exprs: &Arena<Expr>) -> Result<CycleBlock, Stop> {
+    let w = written(it, axes, exprs)?;
+    Ok(CycleBlock {
+        kind,
+        axes: [w[0], w[1], w[2], w[3], w[4], w[5]],
+        r: None,
+        q: None,
+        p: None,
+        p_unit: dwell_unit(it),
+        repeat: None,
+        i: None,
+        j: None,
+        k: None,
+        incremental: !it.state.absolute,
+        return_initial: it.state.retract_initial,
+        code_in_block: false,
+        span: it.span,
+    })
+}
+
+fn cycle_block(it: &mut Interp<'_, '_>, c: &CannedCycle, block: &Block, exprs: &Arena<Expr>) -> Result<CycleBlock, Stop> {
+    let _ = block;
+    let mut cb = base_block(it, c.kind, &c.target, exprs)?;
+    cb.r = num(it, &c.r, exprs)?;
+    cb.q = num(it, &c.q, exprs)?;
+    cb.p = num(it, &c.p, exprs)?;
+    cb.repeat = num(it, &c.repeat, exprs)?;
+    cb.i = num(it, &c.i, exprs)?;
+    cb.j = num(it, &c.j, exprs)?;
+    cb.k = num(it, &c.k, exprs)?;
+    cb.code_in_block = true;
+    Ok(cb)
+}
+
+fn implicit_cycle(it: &mut Interp<'_, '_>, kind: CycleKind, axes: &Axes, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    let mut cb = base_block(it, kind, axes, exprs)?;
+    cb.r = aux::block_word(it, block, 'R', exprs)?;
+    cb.q = aux::block_word(it, block, 'Q', exprs)?;
+    cb.p = aux::block_word(it, block, 'P', exprs)?;
+    cb.repeat = match aux::block_word(it, block, 'L', exprs)? {
+        Some(l) => Some(l),
+        None => aux::block_word(it, block, 'K', exprs)?,
+    };
+    cb.i = aux::block_word(it, block, 'I', exprs)?;
+    cb.j = aux::block_word(it, block, 'J', exprs)?;
+    cb.k = aux::block_word(it, block, 'K', exprs)?;
+    run_cycle(it, cb, block)
+}
+
+fn run_cycle(it: &mut Interp<'_, '_>, cb: CycleBlock, block: &Block) -> Result<(), Stop> {
+    it.comp_block(block.span);
+    it.state.motion = ModalMotion::Cycle(cb.kind);
+    let mark = it.diags.len();
+    let mut mem = std::mem::take(&mut it.cycles);
+    super::cycles::run_cycle(it, &mut mem, &cb);
+    it.cycles = mem;
+    it.take_error(mark)
 }

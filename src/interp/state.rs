@@ -58,6 +58,15 @@ pub struct State {
     pub path: PathControl,
     pub flood: bool,
     pub mist: bool,
+    /// M48..M51: feed and spindle-speed overrides enabled.
+    pub feed_override: bool,
+    pub speed_override: bool,
+    /// Tool number set by M61 (reported, not used for G43).
+    pub tool_number: i64,
+    /// G53 in force for the block being run.
+    pub machine_coords: bool,
+    /// Constant surface speed maximum (G96 D), 0 when off.
+    pub css_max: f64,
 }
 
 impl State {
@@ -87,6 +96,11 @@ impl State {
             path: PathControl::Continuous { tolerance: 0.0, naive: 0.0 },
             flood: false,
             mist: false,
+            feed_override: true,
+            speed_override: true,
+            tool_number: 0,
+            machine_coords: false,
+            css_max: 0.0,
         }
     }
 
@@ -128,5 +142,27 @@ impl State {
 impl Default for State {
     fn default() -> Self {
         State::new()
+    }
+}
+
+impl State {
+    /// The origin of the program frame in machine coordinates, mm:
+    /// work offset plus G92 offset (when applied) plus tool length offset.
+    pub fn origin(&self) -> [f64; 9] {
+        let mut o = [0.0; 9];
+        for (i, v) in o.iter_mut().enumerate() {
+            let g92 = if self.g92_applied { self.g92[i] } else { 0.0 };
+            *v = self.g5x[self.g5x_index as usize][i] + g92 + self.tool_offset[i];
+        }
+        o
+    }
+
+    /// Moves the current position by the change of origin from `old`
+    /// (the tool stays where it is; its program coordinates change).
+    pub fn reframe(&mut self, old: [f64; 9]) {
+        let new = self.origin();
+        for i in 0..9 {
+            self.pos[i] += old[i] - new[i];
+        }
     }
 }

@@ -1,0 +1,137 @@
+//! Machine functions kept by code (`StmtKind::Aux`): LinuxCNC's override
+//! switches M48..M53, M61, the I/O codes M62..M68. They have no neutral
+//! meaning in the dialect specs yet, so they are told apart by number
+//! here: [`AUX_M`] is the one table to extend.
+
+use super::{Interp, Stop};
+use crate::canon::Canon;
+use crate::diag::Code;
+use crate::ir::{Arena, Block, Expr, StmtKind, Word};
+
+/// What an M code does, by meaning.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum AuxFn {
+    /// M48 / M49: both overrides on / off.
+    Overrides(bool),
+    /// M50 P: feed override (P0 off, else on).
+    FeedOverride,
+    /// M51 P: spindle speed override.
+    SpeedOverride,
+    /// M52 P: adaptive feed.
+    AdaptiveFeed,
+    /// M53 P: feed stop (hold).
+    FeedHold,
+    /// M61 Q: set the tool number without a change.
+    SetToolNumber,
+    /// M62..M65 P: digital output bit (motion-synchronised?, on?).
+    DigitalOut { motion: bool, on: bool },
+    /// M67/M68 E Q: analog output (motion-synchronised?).
+    AnalogOut { motion: bool },
+}
+
+/// The M codes run here, by number.
+const AUX_M: &[(u32, AuxFn)] = &[
+    (48, AuxFn::Overrides(true)),
+    (49, AuxFn::Overrides(false)),
+    (50, AuxFn::FeedOverride),
+    (51, AuxFn::SpeedOverride),
+    (52, AuxFn::AdaptiveFeed),
+    (53, AuxFn::FeedHold),
+    (61, AuxFn::SetToolNumber),
+    (62, AuxFn::DigitalOut { motion: true, on: true }),
+    (63, AuxFn::DigitalOut { motion: true, on: false }),
+    (64, AuxFn::DigitalOut { motion: false, on: true }),
+    (65, AuxFn::DigitalOut { motion: false, on: false }),
+    (67, AuxFn::AnalogOut { motion: true }),
+    (68, AuxFn::AnalogOut { motion: false }),
+];
+
+fn lookup(letter: char, code: f64) -> Option<AuxFn> {
+    if !letter.eq_ignore_ascii_case(&'M') || code.fract() != 0.0 {
+        return None;
+    }
+    AUX_M.iter().find(|(n, _)| *n as f64 == code).map(|(_, f)| *f)
+}
+
+/// The value of a word among `words`, if written.
+fn word(it: &mut Interp<'_, '_>, words: &[Word], letter: char, exprs: &Arena<Expr>) -> Result<Option<f64>, Stop> {
+    match words.iter().find(|w| w.letter.eq_ignore_ascii_case(&letter)) {
+        Some(w) => Ok(Some(it.value(&w.value, exprs)?)),
+        None => Ok(None),
+    }
+}
+
+/// The value of a loose word (`StmtKind::Word`) of the block, if written.
+pub fn block_word(it: &mut Interp<'_, '_>, block: &Block, letter: char, exprs: &Arena<Expr>) -> Result<Option<f64>, Stop> {
+    for s in &block.stmts {
+        if let StmtKind::Word(w) = &s.kind {
+            if w.letter.eq_ignore_ascii_case(&letter) {
+                return Ok(Some(it.value(&w.value, exprs)?));
+            }
+        }
+    }
+    Ok(None)
+}
+
+/// Runs an Aux statement.
+pub fn exec(it: &mut Interp<'_, '_>, letter: char, code: f64, words: &[Word], exprs: &Arena<Expr>) -> Result<(), Stop> {
+    let Some(f) = lookup(letter, code) else {
+        return Err(it.error_at(it.span, Code::UnsupportedHere, format!("{letter}{code} is not run by the interpreter")));
+    };
+    let p = word(it, words, 'P', exprs)?;
+    let on = p.map(|v| v != 0.0).unwrap_or(true);
+    match f {
+        AuxFn::Overrides(on) => {
+            it.state.feed_override = on;
+            it.state.speed_override = on;
+            it.out(if on { Canon::EnableFeedOverride } else { Canon::DisableFeedOverride });
+            it.out(if on { Canon::EnableSpeedOverride } else { Canon::DisableSpeedOverride });
+        }
+        AuxFn::FeedOverride => {
+            it.state.feed_override = on;
+            it.out(if on { Canon::EnableFeedOverride } else { Canon::DisableFeedOverride });
+        }
+        AuxFn::SpeedOverride => {
+            it.state.speed_override = on;
+            it.out(if on { Canon::EnableSpeedOverride } else { Canon::DisableSpeedOverride });
+        }
+        AuxFn::AdaptiveFeed => it.out(if on { Canon::EnableAdaptiveFeed } else { Canon::DisableAdaptiveFeed }),
+        AuxFn::FeedHold => it.out(if on { Canon::EnableFeedHold } else { Canon::DisableFeedHold }),
+        AuxFn::SetToolNumber => {
+            let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0) as i64;
+            let row = super::tools::row_of(it, q)?;
+            it.state.tool_number = q;
+            it.out(Canon::ChangeToolNumber(row));
+        }
+        AuxFn::DigitalOut { motion, on } => {
+            let n = p.unwrap_or(0.0) as i64;
+            let what = match (on, motion) {
+                (true, true) => "SET_MOTION_OUTPUT_BIT",
+                (false, true) => "CLEAR_MOTION_OUTPUT_BIT",
+                (true, false) => "SET_AUX_OUTPUT_BIT",
+                (false, false) => "CLEAR_AUX_OUTPUT_BIT",
+            };
+            it.out(Canon::Io(format!("{what}({n})")));
+        }
+        AuxFn::AnalogOut { motion } => {
+            let e = word(it, words, 'E', exprs)?.unwrap_or(0.0) as i64;
+            let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0);
+            let what = if motion { "SET_MOTION_OUTPUT_VALUE" } else { "SET_AUX_OUTPUT_VALUE" };
+            it.out(Canon::Io(format!("{what}({e},{q:.6})")));
+        }
+    }
+    Ok(())
+}
+
+/// `M[#1]`, `G#2`: a code known only at run time.
+pub fn dynamic(
+    it: &mut Interp<'_, '_>,
+    letter: char,
+    code: f64,
+    words: &[Word],
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    let _ = block;
+    exec(it, letter, code, words, exprs)
+}
