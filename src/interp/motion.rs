@@ -40,7 +40,7 @@ fn motion(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr
         MotionKind::Implicit => match it.state.motion {
             _ if m.target.is_empty() && m.arc.is_empty() => return Ok(()),
             ModalMotion::Move(k) => k,
-            ModalMotion::Cycle(kind) => return implicit_cycle(it, kind, &m.target, block, exprs),
+            ModalMotion::Cycle(kind) => return implicit_cycle(it, kind, m, block, exprs),
             ModalMotion::None if has(block, |k| matches!(k, StmtKind::CycleCancel)) => {
                 return Err(it.error_at(it.span, Code::BadWordValue, "Cannot use axis values with g80"))
             }
@@ -176,9 +176,12 @@ fn cycle_block(it: &mut Interp<'_, '_>, c: &CannedCycle, block: &Block, exprs: &
     Ok(cb)
 }
 
-fn implicit_cycle(it: &mut Interp<'_, '_>, kind: CycleKind, axes: &Axes, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
-    let mut cb = base_block(it, kind, axes, exprs)?;
-    cb.r = aux::block_word(it, block, 'R', exprs)?;
+fn implicit_cycle(it: &mut Interp<'_, '_>, kind: CycleKind, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    let mut cb = base_block(it, kind, &m.target, exprs)?;
+    cb.r = match num(it, &m.arc.radius, exprs)? {
+        Some(r) => Some(r),
+        None => aux::block_word(it, block, 'R', exprs)?,
+    };
     cb.q = aux::block_word(it, block, 'Q', exprs)?;
     cb.p = aux::block_word(it, block, 'P', exprs)?;
     cb.repeat = match aux::block_word(it, block, 'L', exprs)? {
