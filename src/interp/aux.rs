@@ -1,7 +1,8 @@
 //! Machine functions kept by code (`StmtKind::Aux`): LinuxCNC's override
-//! switches M48..M53, M61, the I/O codes M62..M68. They have no neutral
+//! switches M48..M53, M61, the I/O codes M62..M68, lathe G7/G8 and the
+//! spindle-synchronised motions G33/G33.1. They have no neutral
 //! meaning in the dialect specs yet, so they are told apart by number
-//! here: [`AUX_M`] is the one table to extend.
+//! here: [`AUX`] is the one table to extend.
 
 use super::{Interp, Stop};
 use crate::canon::Canon;
@@ -27,30 +28,41 @@ enum AuxFn {
     DigitalOut { motion: bool, on: bool },
     /// M67/M68 E Q: analog output (motion-synchronised?).
     AnalogOut { motion: bool },
+    /// G7 (true) / G8: lathe diameter / radius mode for X.
+    LatheDiameter(bool),
+    /// G33 K (false) / G33.1 K (true, rigid tapping): spindle-synchronised
+    /// motion, modal; the block's axis words give the end point.
+    SpindleSync { rigid: bool },
 }
 
-/// The M codes run here, by number.
-const AUX_M: &[(u32, AuxFn)] = &[
-    (48, AuxFn::Overrides(true)),
-    (49, AuxFn::Overrides(false)),
-    (50, AuxFn::FeedOverride),
-    (51, AuxFn::SpeedOverride),
-    (52, AuxFn::AdaptiveFeed),
-    (53, AuxFn::FeedHold),
-    (61, AuxFn::SetToolNumber),
-    (62, AuxFn::DigitalOut { motion: true, on: true }),
-    (63, AuxFn::DigitalOut { motion: true, on: false }),
-    (64, AuxFn::DigitalOut { motion: false, on: true }),
-    (65, AuxFn::DigitalOut { motion: false, on: false }),
-    (67, AuxFn::AnalogOut { motion: true }),
-    (68, AuxFn::AnalogOut { motion: false }),
+/// The codes run here: letter, code times ten, meaning.
+const AUX: &[(char, i64, AuxFn)] = &[
+    ('M', 480, AuxFn::Overrides(true)),
+    ('M', 490, AuxFn::Overrides(false)),
+    ('M', 500, AuxFn::FeedOverride),
+    ('M', 510, AuxFn::SpeedOverride),
+    ('M', 520, AuxFn::AdaptiveFeed),
+    ('M', 530, AuxFn::FeedHold),
+    ('M', 610, AuxFn::SetToolNumber),
+    ('M', 620, AuxFn::DigitalOut { motion: true, on: true }),
+    ('M', 630, AuxFn::DigitalOut { motion: true, on: false }),
+    ('M', 640, AuxFn::DigitalOut { motion: false, on: true }),
+    ('M', 650, AuxFn::DigitalOut { motion: false, on: false }),
+    ('M', 670, AuxFn::AnalogOut { motion: true }),
+    ('M', 680, AuxFn::AnalogOut { motion: false }),
+    ('G', 70, AuxFn::LatheDiameter(true)),
+    ('G', 80, AuxFn::LatheDiameter(false)),
+    ('G', 330, AuxFn::SpindleSync { rigid: false }),
+    ('G', 331, AuxFn::SpindleSync { rigid: true }),
 ];
 
 fn lookup(letter: char, code: f64) -> Option<AuxFn> {
-    if !letter.eq_ignore_ascii_case(&'M') || code.fract() != 0.0 {
+    let tenths = (code * 10.0).round();
+    if (code * 10.0 - tenths).abs() > 1e-6 {
         return None;
     }
-    AUX_M.iter().find(|(n, _)| *n as f64 == code).map(|(_, f)| *f)
+    let letter = letter.to_ascii_uppercase();
+    AUX.iter().find(|(l, n, _)| *l == letter && *n as f64 == tenths).map(|(_, _, f)| *f)
 }
 
 /// The value of a word among `words`, if written.
@@ -118,6 +130,20 @@ pub fn exec(it: &mut Interp<'_, '_>, letter: char, code: f64, words: &[Word], ex
             let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0);
             let what = if motion { "SET_MOTION_OUTPUT_VALUE" } else { "SET_AUX_OUTPUT_VALUE" };
             it.out(Canon::Io(format!("{what}({e},{q:.6})")));
+        }
+        AuxFn::LatheDiameter(on) => {
+            if on != it.state.lathe_diameter {
+                let what = if on { "diameter" } else { "radius" };
+                it.out(Canon::Comment(format!("interpreter: Lathe diameter mode changed to {what}")));
+            }
+            it.state.lathe_diameter = on;
+        }
+        AuxFn::SpindleSync { rigid } => {
+            let k = word(it, words, 'K', exprs)?.unwrap_or(0.0);
+            it.cycles.cancel();
+            it.state.sync_pitch = k;
+            let code = crate::ir::Decimal::from_f64(if rigid { 33.1 } else { 33.0 }, 1);
+            it.state.motion = super::state::ModalMotion::Move(crate::ir::MotionKind::Other(code));
         }
     }
     Ok(())

@@ -59,6 +59,9 @@ fn motion(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr
         MotionKind::Rapid | MotionKind::Linear => straight(it, kind, &m.target, block, exprs),
         MotionKind::Arc(dir) => arcs::arc(it, dir, m, block, exprs),
         MotionKind::Probe { .. } => probe(it, &m.target, exprs),
+        MotionKind::Other(code) if code.to_f64() == 33.0 || code.to_f64() == 33.1 => {
+            spindle_sync(it, code.to_f64() != 33.0, &m.target, exprs)
+        }
         MotionKind::Implicit | MotionKind::ArcThrough | MotionKind::ArcTangent | MotionKind::Other(_) => {
             Err(it.error_at(it.span, Code::UnsupportedHere, "this motion is not run by the interpreter yet"))
         }
@@ -202,4 +205,23 @@ fn run_cycle(it: &mut Interp<'_, '_>, cb: CycleBlock, block: &Block) -> Result<(
     super::cycles::run_cycle(it, &mut mem, &cb);
     it.cycles = mem;
     it.take_error(mark)
+}
+
+/// G33 (a synchronised feed) and G33.1 (rigid tapping: in and back out,
+/// so the position does not change).
+fn spindle_sync(it: &mut Interp<'_, '_>, rigid: bool, axes: &Axes, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    if axes.is_empty() {
+        return Ok(());
+    }
+    let to = target(it, axes, exprs, Frame::Program)?;
+    let to = pose6(&it.state, &to);
+    let pitch = it.state.sync_pitch;
+    it.out(Canon::StartSpeedFeedSync { pitch, velocity_mode: false });
+    if rigid {
+        it.out(Canon::RigidTap { x: to[0], y: to[1], z: to[2] });
+    } else {
+        it.straight_move(MoveKind::Feed, to)?;
+    }
+    it.out(Canon::StopSpeedFeedSync);
+    Ok(())
 }

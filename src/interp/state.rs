@@ -67,6 +67,10 @@ pub struct State {
     pub machine_coords: bool,
     /// Constant surface speed maximum (G96 D), 0 when off.
     pub css_max: f64,
+    /// G7: X words are diameters (halved).
+    pub lathe_diameter: bool,
+    /// G33/G33.1 K: distance per spindle revolution.
+    pub sync_pitch: f64,
 }
 
 impl State {
@@ -101,6 +105,8 @@ impl State {
             tool_number: 0,
             machine_coords: false,
             css_max: 0.0,
+            lathe_diameter: false,
+            sync_pitch: 0.0,
         }
     }
 

@@ -23,6 +23,7 @@ pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: 
     for (i, letter) in AXIS_LETTERS.iter().enumerate() {
         let Some(c) = axes.get(*letter) else { continue };
         let v = it.value(&c.value, exprs)?;
+        let v = if i == 0 && it.state.lathe_diameter { v / 2.0 } else { v };
         let v = if State::is_linear(i) { it.state.to_mm(v) } else { v };
         let absolute = match c.dim {
             Some(d) => d == DimMode::Absolute,
