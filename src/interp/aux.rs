@@ -113,6 +113,7 @@ pub fn exec(it: &mut Interp<'_, '_>, letter: char, code: f64, words: &[Word], ex
             let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0) as i64;
             let row = super::tools::row_of(it, q)?;
             it.state.tool_number = q;
+            it.state.m61_block = Some(it.block_span);
             it.out(Canon::ChangeToolNumber(row));
         }
         AuxFn::DigitalOut { motion, on } => {

@@ -265,6 +265,12 @@ pub fn program_end(it: &mut Interp<'_, '_>, rewind: bool) -> Result<(), Stop> {
     it.emit(Canon::StopSpindle);
     it.state.css_max = 0.0;
     it.emit(Canon::SetSpindleMode(0.0));
+    if it.state.mist {
+        it.emit(Canon::MistOff);
+    }
+    if it.state.flood {
+        it.emit(Canon::FloodOff);
+    }
     it.state.mist = false;
     it.state.flood = false;
     it.state.motion = super::state::ModalMotion::Move(crate::ir::MotionKind::Linear);

@@ -70,11 +70,13 @@ pub struct Interp<'a, 's> {
     pub comp_tags: std::collections::VecDeque<(u64, Span)>,
     /// The tool table as the program changes it (G10 L1/L10/L11).
     pub tool_table: tooltable::ToolTable,
+    /// The span of the block being run.
+    pub block_span: Span,
 }
 
 impl<'a, 's> Interp<'a, 's> {
     pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
-        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new(), cycles: cycles::CycleMemory::new(), comp: comp::RadiusComp::new(), comp_tags: std::collections::VecDeque::new(), tool_table: opts.tool_table.clone() }
+        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new(), cycles: cycles::CycleMemory::new(), comp: comp::RadiusComp::new(), comp_tags: std::collections::VecDeque::new(), tool_table: opts.tool_table.clone(), block_span: Span::default() }
     }
 
     /// Emits one call, tagged with the current statement's span.

@@ -15,6 +15,7 @@ use crate::ir::{
 
 pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     use StmtKind::*;
+    it.block_span = block.span;
     match &s.kind {
         Comment { text, style } => comment(it, text, *style),
         Message(m) => {
@@ -81,6 +82,10 @@ fn comment(it: &mut Interp<'_, '_>, text: &str, style: CommentStyle) -> Result<(
     }
     let lower = text.trim_start().to_ascii_lowercase();
     if let Some(rest) = strip_prefix_ci(text, "debug,") {
+        // #5599 = 0 turns DEBUG messages off.
+        if it.read_numbered(5599) == Some(0.0) {
+            return Ok(());
+        }
         let msg = substitute(it, rest);
         it.out(Canon::Message(msg));
     } else if let Some(rest) = strip_prefix_ci(text, "msg,") {

@@ -38,7 +38,7 @@ fn has(block: &Block, f: impl Fn(&StmtKind) -> bool) -> bool {
 fn motion(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     let kind = match m.kind {
         MotionKind::Implicit => match it.state.motion {
-            _ if m.target.is_empty() && m.arc.is_empty() => return Ok(()),
+            _ if m.target.is_empty() && m.arc.is_empty() && m.polar_radius.is_none() => return Ok(()),
             ModalMotion::Move(k) => k,
             ModalMotion::Cycle(kind) => return implicit_cycle(it, kind, m, block, exprs),
             ModalMotion::None if has(block, |k| matches!(k, StmtKind::CycleCancel)) => {
@@ -56,7 +56,7 @@ fn motion(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr
     };
     it.comp_block(block.span);
     match kind {
-        MotionKind::Rapid | MotionKind::Linear => straight(it, kind, &m.target, block, exprs),
+        MotionKind::Rapid | MotionKind::Linear => straight(it, kind, m, block, exprs),
         MotionKind::Arc(dir) => arcs::arc(it, dir, m, block, exprs),
         MotionKind::Probe { .. } => probe(it, &m.target, exprs),
         MotionKind::Other(code) if code.to_f64() == 33.0 || code.to_f64() == 33.1 => {
@@ -68,11 +68,17 @@ fn motion(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr
     }
 }
 
-fn straight(it: &mut Interp<'_, '_>, kind: MotionKind, axes: &Axes, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn straight(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    let axes = &m.target;
     let machine = has(block, |k| matches!(k, StmtKind::MachineCoords));
-    let to = target(it, axes, exprs, if machine { Frame::Machine } else { Frame::Program })?;
+    let mut to = target(it, axes, exprs, if machine { Frame::Machine } else { Frame::Program })?;
+    let polar = polar(it, m, exprs)?;
+    if let Some((x, y)) = polar {
+        to[0] = x;
+        to[1] = y;
+    }
     let to = pose6(&it.state, &to);
-    if axes.is_empty() {
+    if axes.is_empty() && polar.is_none() {
         return Ok(());
     }
     if kind == MotionKind::Rapid {
@@ -224,4 +230,17 @@ fn spindle_sync(it: &mut Interp<'_, '_>, rigid: bool, axes: &Axes, exprs: &Arena
     }
     it.out(Canon::StopSpeedFeedSync);
     Ok(())
+}
+
+/// LinuxCNC polar words `@` (distance) and `^` (angle, degrees): X and Y
+/// (mm) from the program origin (G90) or from the current point (G91).
+fn polar(it: &mut Interp<'_, '_>, m: &Motion, exprs: &Arena<Expr>) -> Result<Option<(f64, f64)>, Stop> {
+    if m.polar_radius.is_none() && m.polar_angle.is_none() {
+        return Ok(None);
+    }
+    let r = num(it, &m.polar_radius, exprs)?.unwrap_or(0.0);
+    let r = it.state.to_mm(r);
+    let a = num(it, &m.polar_angle, exprs)?.unwrap_or(0.0).to_radians();
+    let (x, y) = (r * a.cos(), r * a.sin());
+    Ok(Some(if it.state.absolute { (x, y) } else { (it.state.pos[0] + x, it.state.pos[1] + y) }))
 }

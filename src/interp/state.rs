@@ -71,6 +71,8 @@ pub struct State {
     pub lathe_diameter: bool,
     /// G33/G33.1 K: distance per spindle revolution.
     pub sync_pitch: f64,
+    /// The block of the last M61 (G43 in that block uses its tool).
+    pub m61_block: Option<crate::span::Span>,
 }
 
 impl State {
@@ -107,6 +109,7 @@ impl State {
             css_max: 0.0,
             lathe_diameter: false,
             sync_pitch: 0.0,
+            m61_block: None,
         }
     }
 

@@ -12,6 +12,7 @@ use crate::diag::Code;
 use crate::ir::{Arena, Axes, Block, CompSide, Expr, LengthComp, LengthUnit, Stmt, StmtKind, ToolRef, Value};
 
 pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    it.block_span = block.span;
     match &s.kind {
         StmtKind::ToolSelect(ToolRef::Number(v)) => {
             let t = it.value(v, exprs)?.round() as i64;
@@ -146,7 +147,13 @@ fn length_comp(
     };
     let new = match mode {
         LengthComp::Positive | LengthComp::Negative => {
-            let t = h.unwrap_or(it.state.tool_in_spindle);
+            // M61 in the same block counts; from the next block on rs274
+            // reads the tool loaded by the last M6 again.
+            let spindle = match it.state.m61_block {
+                Some(b) if b == it.block_span => it.state.tool_number,
+                _ => it.state.tool_in_spindle,
+            };
+            let t = h.unwrap_or(spindle);
             let mut o = table_offset(it, t)?;
             if mode == LengthComp::Negative {
                 o.iter_mut().for_each(|v| *v = -*v);
@@ -174,9 +181,9 @@ fn length_comp(
             o
         }
     };
-    let old = it.state.origin();
+    // The current position keeps its program coordinates (rs274 does not
+    // move its current point when the tool length offset changes).
     it.state.tool_offset = new;
-    it.state.reframe(old);
     let p = it.state.pose_to_prog(&new);
     it.out(Canon::UseToolLengthOffset(p));
     Ok(())
