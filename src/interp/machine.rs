@@ -130,6 +130,20 @@ impl Interp<'_, '_> {
         for (i, v) in p.iter().enumerate() {
             self.state.pos[i] = if State::is_linear(i) { self.state.to_mm(*v) } else { *v };
         }
+        self.state.canon_pos = self.state.pos;
+    }
+
+    /// Called by every statement: notes a new block, and after a tool
+    /// change re-reads the position as rs274 does.
+    pub fn begin_block(&mut self, block: &crate::ir::Block) {
+        if block.span == self.block_span {
+            return;
+        }
+        self.block_span = block.span;
+        if self.state.resync {
+            self.state.resync = false;
+            self.state.pos = self.state.canon_pos;
+        }
     }
 }
 

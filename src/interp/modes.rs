@@ -15,7 +15,7 @@ use crate::ir::{
 
 pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     use StmtKind::*;
-    it.block_span = block.span;
+    it.begin_block(block);
     match &s.kind {
         Comment { text, style } => comment(it, text, *style),
         Message(m) => {

@@ -15,10 +15,17 @@ use crate::diag::Code;
 use crate::ir::{Arena, Axes, Block, CannedCycle, CycleKind, DwellUnit, Expr, FeedMode, Motion, MotionKind, Stmt, StmtKind, Value};
 
 pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    it.begin_block(block);
     match &s.kind {
         StmtKind::Motion(m) => motion(it, m, block, exprs),
         StmtKind::Cycle(c) => {
-            let cb = cycle_block(it, c, block, exprs)?;
+            let mut cb = cycle_block(it, c, block, exprs)?;
+            if let Some(StmtKind::Motion(m)) = block.stmts.iter().map(|s| &s.kind).find(|k| matches!(k, StmtKind::Motion(_))) {
+                if let Some((x, y)) = polar(it, m, exprs)? {
+                    cb.axes[0] = Some(x);
+                    cb.axes[1] = Some(y);
+                }
+            }
             run_cycle(it, cb, block)
         }
         StmtKind::CycleCancel => {
@@ -74,8 +81,14 @@ fn straight(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block
     let mut to = target(it, axes, exprs, if machine { Frame::Machine } else { Frame::Program })?;
     let polar = polar(it, m, exprs)?;
     if let Some((x, y)) = polar {
-        to[0] = x;
-        to[1] = y;
+        let (x, y) = (it.state.to_mm(x), it.state.to_mm(y));
+        if it.state.absolute {
+            to[0] = x;
+            to[1] = y;
+        } else {
+            to[0] = it.state.pos[0] + x;
+            to[1] = it.state.pos[1] + y;
+        }
     }
     let to = pose6(&it.state, &to);
     if axes.is_empty() && polar.is_none() {
@@ -187,6 +200,10 @@ fn cycle_block(it: &mut Interp<'_, '_>, c: &CannedCycle, block: &Block, exprs: &
 
 fn implicit_cycle(it: &mut Interp<'_, '_>, kind: CycleKind, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     let mut cb = base_block(it, kind, &m.target, exprs)?;
+    if let Some((x, y)) = polar(it, m, exprs)? {
+        cb.axes[0] = Some(x);
+        cb.axes[1] = Some(y);
+    }
     cb.r = match num(it, &m.arc.radius, exprs)? {
         Some(r) => Some(r),
         None => aux::block_word(it, block, 'R', exprs)?,
@@ -232,15 +249,15 @@ fn spindle_sync(it: &mut Interp<'_, '_>, rigid: bool, axes: &Axes, exprs: &Arena
     Ok(())
 }
 
-/// LinuxCNC polar words `@` (distance) and `^` (angle, degrees): X and Y
-/// (mm) from the program origin (G90) or from the current point (G91).
+/// LinuxCNC polar words `@` (distance) and `^` (angle, degrees) as X and
+/// Y words (program units): from the origin under G90, increments under
+/// G91. A missing one keeps the current point's distance or angle.
 fn polar(it: &mut Interp<'_, '_>, m: &Motion, exprs: &Arena<Expr>) -> Result<Option<(f64, f64)>, Stop> {
     if m.polar_radius.is_none() && m.polar_angle.is_none() {
         return Ok(None);
     }
-    let r = num(it, &m.polar_radius, exprs)?.unwrap_or(0.0);
-    let r = it.state.to_mm(r);
-    let a = num(it, &m.polar_angle, exprs)?.unwrap_or(0.0).to_radians();
-    let (x, y) = (r * a.cos(), r * a.sin());
-    Ok(Some(if it.state.absolute { (x, y) } else { (it.state.pos[0] + x, it.state.pos[1] + y) }))
+    let (cx, cy) = (it.state.to_prog(it.state.pos[0]), it.state.to_prog(it.state.pos[1]));
+    let r = num(it, &m.polar_radius, exprs)?.unwrap_or(cx.hypot(cy));
+    let a = num(it, &m.polar_angle, exprs)?.map(f64::to_radians).unwrap_or(cy.atan2(cx));
+    Ok(Some((r * a.cos(), r * a.sin())))
 }

@@ -11,6 +11,7 @@ use crate::diag::Code;
 use crate::ir::{Arena, Axes, Block, CoordShift, Expr, LengthUnit, Stmt, StmtKind, Word};
 
 pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    it.begin_block(block);
     let _ = block;
     match &s.kind {
         StmtKind::WorkOffset { index, extended: None } if (1..=9).contains(index) => {

@@ -73,6 +73,12 @@ pub struct State {
     pub sync_pitch: f64,
     /// The block of the last M61 (G43 in that block uses its tool).
     pub m61_block: Option<crate::span::Span>,
+    /// Where the canon layer last put the tool (program frame, mm): the
+    /// current position without tool-length shifts since the last move.
+    pub canon_pos: [f64; 9],
+    /// A tool change happened: the next block re-reads the position from
+    /// the canon layer (as rs274 does), dropping tool-length shifts.
+    pub resync: bool,
 }
 
 impl State {
@@ -110,6 +116,8 @@ impl State {
             lathe_diameter: false,
             sync_pitch: 0.0,
             m61_block: None,
+            canon_pos: [0.0; 9],
+            resync: false,
         }
     }
 
@@ -169,6 +177,16 @@ impl State {
     /// Moves the current position by the change of origin from `old`
     /// (the tool stays where it is; its program coordinates change).
     pub fn reframe(&mut self, old: [f64; 9]) {
+        let new = self.origin();
+        for i in 0..9 {
+            self.pos[i] += old[i] - new[i];
+            self.canon_pos[i] += old[i] - new[i];
+        }
+    }
+
+    /// As [`Self::reframe`] for a tool length change: the canon layer's
+    /// position is not shifted.
+    pub fn reframe_keep_canon(&mut self, old: [f64; 9]) {
         let new = self.origin();
         for i in 0..9 {
             self.pos[i] += old[i] - new[i];

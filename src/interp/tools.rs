@@ -12,7 +12,7 @@ use crate::diag::Code;
 use crate::ir::{Arena, Axes, Block, CompSide, Expr, LengthComp, LengthUnit, Stmt, StmtKind, ToolRef, Value};
 
 pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
-    it.block_span = block.span;
+    it.begin_block(block);
     match &s.kind {
         StmtKind::ToolSelect(ToolRef::Number(v)) => {
             let t = it.value(v, exprs)?.round() as i64;
@@ -55,6 +55,7 @@ fn tool_change(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
     it.state.spindle = SpindleDir::Stopped;
     it.out(Canon::StopSpindle);
     it.state.tool_in_spindle = t;
+    it.state.resync = true;
     it.out(Canon::ChangeTool(row));
     Ok(())
 }
@@ -181,9 +182,12 @@ fn length_comp(
             o
         }
     };
-    // The current position keeps its program coordinates (rs274 does not
-    // move its current point when the tool length offset changes).
+    // The tool tip stays where it is: its program coordinates change
+    // (until a tool change makes rs274 re-read the position, see
+    // `State::resync`).
+    let old = it.state.origin();
     it.state.tool_offset = new;
+    it.state.reframe_keep_canon(old);
     let p = it.state.pose_to_prog(&new);
     it.out(Canon::UseToolLengthOffset(p));
     Ok(())
