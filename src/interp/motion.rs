@@ -19,11 +19,10 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
     match &s.kind {
         StmtKind::Motion(m) => motion(it, m, block, exprs),
         StmtKind::Cycle(c) => {
-            let mut cb = cycle_block(it, c, block, exprs)?;
+            let cb = cycle_block(it, c, block, exprs)?;
             if let Some(StmtKind::Motion(m)) = block.stmts.iter().map(|s| &s.kind).find(|k| matches!(k, StmtKind::Motion(_))) {
-                if let Some((x, y)) = polar(it, m, exprs)? {
-                    cb.axes[0] = Some(x);
-                    cb.axes[1] = Some(y);
+                if m.polar_radius.is_some() || m.polar_angle.is_some() {
+                    return polar_cycle(it, cb, m, block, exprs);
                 }
             }
             run_cycle(it, cb, block)
@@ -45,7 +44,9 @@ fn has(block: &Block, f: impl Fn(&StmtKind) -> bool) -> bool {
 fn motion(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     let kind = match m.kind {
         MotionKind::Implicit => match it.state.motion {
-            _ if m.target.is_empty() && m.arc.is_empty() && m.polar_radius.is_none() => return Ok(()),
+            _ if m.target.is_empty() && m.arc.is_empty() && m.polar_radius.is_none() && m.polar_angle.is_none() => {
+                return Ok(())
+            }
             ModalMotion::Move(k) => k,
             ModalMotion::Cycle(kind) => return implicit_cycle(it, kind, m, block, exprs),
             ModalMotion::None if has(block, |k| matches!(k, StmtKind::CycleCancel)) => {
@@ -81,14 +82,8 @@ fn straight(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block
     let mut to = target(it, axes, exprs, if machine { Frame::Machine } else { Frame::Program })?;
     let polar = polar(it, m, exprs)?;
     if let Some((x, y)) = polar {
-        let (x, y) = (it.state.to_mm(x), it.state.to_mm(y));
-        if it.state.absolute {
-            to[0] = x;
-            to[1] = y;
-        } else {
-            to[0] = it.state.pos[0] + x;
-            to[1] = it.state.pos[1] + y;
-        }
+        to[0] = it.state.to_mm(x);
+        to[1] = it.state.to_mm(y);
     }
     let to = pose6(&it.state, &to);
     if axes.is_empty() && polar.is_none() {
@@ -200,10 +195,6 @@ fn cycle_block(it: &mut Interp<'_, '_>, c: &CannedCycle, block: &Block, exprs: &
 
 fn implicit_cycle(it: &mut Interp<'_, '_>, kind: CycleKind, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     let mut cb = base_block(it, kind, &m.target, exprs)?;
-    if let Some((x, y)) = polar(it, m, exprs)? {
-        cb.axes[0] = Some(x);
-        cb.axes[1] = Some(y);
-    }
     cb.r = match num(it, &m.arc.radius, exprs)? {
         Some(r) => Some(r),
         None => aux::block_word(it, block, 'R', exprs)?,
@@ -217,6 +208,9 @@ fn implicit_cycle(it: &mut Interp<'_, '_>, kind: CycleKind, m: &Motion, block: &
     cb.i = aux::block_word(it, block, 'I', exprs)?;
     cb.j = aux::block_word(it, block, 'J', exprs)?;
     cb.k = aux::block_word(it, block, 'K', exprs)?;
+    if m.polar_radius.is_some() || m.polar_angle.is_some() {
+        return polar_cycle(it, cb, m, block, exprs);
+    }
     run_cycle(it, cb, block)
 }
 
@@ -249,15 +243,39 @@ fn spindle_sync(it: &mut Interp<'_, '_>, rigid: bool, axes: &Axes, exprs: &Arena
     Ok(())
 }
 
-/// LinuxCNC polar words `@` (distance) and `^` (angle, degrees) as X and
-/// Y words (program units): from the origin under G90, increments under
-/// G91. A missing one keeps the current point's distance or angle.
+/// LinuxCNC polar words `@` (distance) and `^` (angle, degrees): the
+/// absolute X Y (program units) they give. Under G90 a missing word keeps
+/// the current point's distance or angle from the origin; under G91 both
+/// are increments to the current point's distance and angle.
 fn polar(it: &mut Interp<'_, '_>, m: &Motion, exprs: &Arena<Expr>) -> Result<Option<(f64, f64)>, Stop> {
     if m.polar_radius.is_none() && m.polar_angle.is_none() {
         return Ok(None);
     }
     let (cx, cy) = (it.state.to_prog(it.state.pos[0]), it.state.to_prog(it.state.pos[1]));
-    let r = num(it, &m.polar_radius, exprs)?.unwrap_or(cx.hypot(cy));
-    let a = num(it, &m.polar_angle, exprs)?.map(f64::to_radians).unwrap_or(cy.atan2(cx));
+    let (cr, ca) = (cx.hypot(cy), cy.atan2(cx));
+    let r = num(it, &m.polar_radius, exprs)?;
+    let a = num(it, &m.polar_angle, exprs)?.map(f64::to_radians);
+    let (r, a) = if it.state.absolute {
+        (r.unwrap_or(cr), a.unwrap_or(ca))
+    } else {
+        (cr + r.unwrap_or(0.0), ca + a.unwrap_or(0.0))
+    };
     Ok(Some((r * a.cos(), r * a.sin())))
+}
+
+/// A cycle block with polar words: each repeat steps in polar terms, so
+/// the holes are run one by one.
+fn polar_cycle(it: &mut Interp<'_, '_>, mut cb: CycleBlock, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    let n = cb.repeat.unwrap_or(1.0).max(1.0) as u64;
+    for k in 0..n.min(100_000) {
+        let Some((x, y)) = polar(it, m, exprs)? else { break };
+        let (cx, cy) = (it.state.to_prog(it.state.pos[0]), it.state.to_prog(it.state.pos[1]));
+        let (x, y) = if cb.incremental { (x - cx, y - cy) } else { (x, y) };
+        cb.axes[0] = Some(x);
+        cb.axes[1] = Some(y);
+        cb.repeat = Some(1.0);
+        cb.code_in_block = cb.code_in_block && k == 0;
+        run_cycle(it, cb.clone(), block)?;
+    }
+    Ok(())
 }
