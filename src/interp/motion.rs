@@ -86,9 +86,8 @@ fn straight(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block
         to[1] = it.state.to_mm(y);
     }
     let to = pose6(&it.state, &to);
-    if axes.is_empty() && polar.is_none() {
-        return Ok(());
-    }
+    // An explicit G0/G1 without axis words moves to where the tool is
+    // (rs274 prints it); an implicit one was dropped by the caller.
     if kind == MotionKind::Rapid {
         return it.straight_move(MoveKind::Rapid, to);
     }
