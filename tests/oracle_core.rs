@@ -18,7 +18,6 @@ use std::path::{Path, PathBuf};
 const KNOWN: &[(&str, &str)] = &[
     ("p10-cutter-comp", "G41.1/G42.1 (D is a diameter) share G41/G42's meaning in the IR"),
     ("p18-params-expr", "predefined parameters (#<_abs_x>) belong to the walker's work"),
-    ("p24-g52-m70", "M70..M73 (save/restore modal state) not run yet"),
     ("p25-splines", "G5/G5.1/G5.2 splines (NURBS_FEED) not run"),
     ("p26-io-orient-thread", "M19 Q is rejected by the reader; G76 threading not run"),
 ];

@@ -1,6 +1,6 @@
 //! Machine functions kept by code (`StmtKind::Aux`): LinuxCNC's override
-//! switches M48..M53, M61, the I/O codes M62..M68, lathe G7/G8 and the
-//! spindle-synchronised motions G33/G33.1. They have no neutral
+//! switches M48..M53, M61, the I/O codes M62..M68, lathe G7/G8, the
+//! spindle-synchronised motions G33/G33.1 and M70..M73 (modal state). They have no neutral
 //! meaning in the dialect specs yet, so they are told apart by number
 //! here: [`AUX`] is the one table to extend.
 
@@ -28,6 +28,12 @@ enum AuxFn {
     DigitalOut { motion: bool, on: bool },
     /// M67/M68 E Q: analog output (motion-synchronised?).
     AnalogOut { motion: bool },
+    /// M70 / M73 (true: restore on return).
+    SaveModal { auto: bool },
+    /// M71.
+    InvalidateModal,
+    /// M72.
+    RestoreModal,
     /// G7 (true) / G8: lathe diameter / radius mode for X.
     LatheDiameter(bool),
     /// G33 K (false) / G33.1 K (true, rigid tapping): spindle-synchronised
@@ -50,6 +56,10 @@ const AUX: &[(char, i64, AuxFn)] = &[
     ('M', 650, AuxFn::DigitalOut { motion: false, on: false }),
     ('M', 670, AuxFn::AnalogOut { motion: true }),
     ('M', 680, AuxFn::AnalogOut { motion: false }),
+    ('M', 700, AuxFn::SaveModal { auto: false }),
+    ('M', 710, AuxFn::InvalidateModal),
+    ('M', 720, AuxFn::RestoreModal),
+    ('M', 730, AuxFn::SaveModal { auto: true }),
     ('G', 70, AuxFn::LatheDiameter(true)),
     ('G', 80, AuxFn::LatheDiameter(false)),
     ('G', 330, AuxFn::SpindleSync { rigid: false }),
@@ -131,6 +141,13 @@ pub fn exec(it: &mut Interp<'_, '_>, letter: char, code: f64, words: &[Word], ex
             let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0);
             let what = if motion { "SET_MOTION_OUTPUT_VALUE" } else { "SET_AUX_OUTPUT_VALUE" };
             it.out(Canon::Io(format!("{what}({e},{q:.6})")));
+        }
+        AuxFn::SaveModal { auto } => super::modal_save::save(it, auto),
+        AuxFn::InvalidateModal => super::modal_save::invalidate(it),
+        AuxFn::RestoreModal => {
+            if !super::modal_save::restore_saved(it) {
+                return Err(it.error_at(it.span, Code::BadWordValue, "Cannot restore context: no valid context saved by M70"));
+            }
         }
         AuxFn::LatheDiameter(on) => {
             if on != it.state.lathe_diameter {

@@ -140,6 +140,7 @@ impl Interp<'_, '_> {
             return;
         }
         self.block_span = block.span;
+        super::modal_save::check_auto(self);
         if self.state.resync {
             self.state.resync = false;
             self.state.pos = self.state.canon_pos;

@@ -28,6 +28,7 @@ pub mod tools;
 pub mod aux;
 pub mod target;
 pub mod arcs;
+pub mod modal_save;
 
 pub use options::{Limits, Options};
 
@@ -72,11 +73,14 @@ pub struct Interp<'a, 's> {
     pub tool_table: tooltable::ToolTable,
     /// The span of the block being run.
     pub block_span: Span,
+    /// M70's saved modal state; M73's, with the call level that restores it.
+    pub saved_modal: Option<Box<State>>,
+    pub auto_restore: Vec<(usize, Box<State>)>,
 }
 
 impl<'a, 's> Interp<'a, 's> {
     pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
-        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new(), cycles: cycles::CycleMemory::new(), comp: comp::RadiusComp::new(), comp_tags: std::collections::VecDeque::new(), tool_table: opts.tool_table.clone(), block_span: Span::default() }
+        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new(), cycles: cycles::CycleMemory::new(), comp: comp::RadiusComp::new(), comp_tags: std::collections::VecDeque::new(), tool_table: opts.tool_table.clone(), block_span: Span::default(), saved_modal: None, auto_restore: Vec::new() }
     }
 
     /// Emits one call, tagged with the current statement's span.
