@@ -17,6 +17,8 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
     use StmtKind::*;
     it.begin_block(block);
     match &s.kind {
+        // rs274 ignores comments on o-word lines.
+        Comment { .. } if block.stmts.iter().any(|s| is_oword(&s.kind)) => Ok(()),
         Comment { text, style } => comment(it, text, *style),
         Message(m) => {
             it.out(Canon::Message(m.clone().unwrap_or_default()));
@@ -72,6 +74,12 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
         Stop(k) => stop(it, *k),
         _ => Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet")),
     }
+}
+
+/// A control-flow statement (an o-word line in LinuxCNC).
+fn is_oword(k: &StmtKind) -> bool {
+    use StmtKind::*;
+    super::exec::phase(k) == 0 && !matches!(k, Tape | ProgramStart { .. } | Raw { .. } | Word(_) | Command { .. } | Assign { .. } | Declare { .. })
 }
 
 /// `( ... )`: COMMENT, or MESSAGE for `MSG,` and `DEBUG,`; `;` comments

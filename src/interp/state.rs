@@ -104,7 +104,7 @@ impl State {
             tool_selected: None,
             comp_side: CompSide::Off,
             comp_radius: 0.0,
-            retract_initial: true,
+            retract_initial: false,
             path: PathControl::Continuous { tolerance: 0.0, naive: 0.0 },
             flood: false,
             mist: false,
