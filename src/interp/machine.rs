@@ -172,7 +172,18 @@ impl Interp<'_, '_> {
         let span = self.span;
         let sink = &mut self.sink;
         let r = self.comp.straight(kind, from, to, &mut |c| sink(c, span));
+        self.note_compensated();
         r.map_err(|e| self.comp_error(e))
+    }
+
+    /// With compensation on, the canon layer's position is the tool's
+    /// compensated one (what a tool change re-reads).
+    pub fn note_compensated(&mut self) {
+        if let Some(c) = self.comp.compensated() {
+            for (i, v) in c.iter().enumerate() {
+                self.state.canon_pos[i] = self.state.to_mm(*v);
+            }
+        }
     }
 
     /// An arc in the active plane to `to` round `center` (plane axes).
@@ -183,6 +194,7 @@ impl Interp<'_, '_> {
         let sink = &mut self.sink;
         if self.state.plane == CanonPlane::XY {
             let r = self.comp.arc(from, to, center, rotation, &mut |c| sink(c, span));
+            self.note_compensated();
             return r.map_err(|e| self.comp_error(e));
         }
         self.comp.flush(&mut |c| sink(c, span));

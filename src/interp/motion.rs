@@ -133,10 +133,21 @@ fn probe(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Result<()
         let sink = &mut it.sink;
         it.comp.flush(&mut |c| sink(c, span));
     }
+    let from = super::host::MotionHost::position(it);
     it.out(Canon::TurnProbeOn);
-    it.set_position(&to);
     it.out(Canon::StraightProbe(to));
     it.out(Canon::TurnProbeOff);
+    // The simulated probe trips at the programmed point and the tool ends
+    // 0.254 mm (0.010 in) back along the move, as rs274 reports it.
+    let back = it.state.to_prog(0.254);
+    let len = straight_length(&from, &to);
+    let mut at = to;
+    if len > 0.0 {
+        for i in 0..3 {
+            at[i] -= (to[i] - from[i]) / len * back;
+        }
+    }
+    it.set_position(&at);
     for (i, v) in to.iter().enumerate() {
         it.params.set_numbered(5061 + i as u32, Some(*v));
     }

@@ -134,9 +134,18 @@ impl State {
         v * self.scale()
     }
 
-    /// A length in mm, in program units.
+    /// A length in mm, in program units; the noise of the round trip
+    /// through mm (1.5 in -> 38.1 mm -> 1.4999999999999998 in) is removed,
+    /// so that comparisons (R plane against the current level) see the
+    /// number as written.
     pub fn to_prog(&self, mm: f64) -> f64 {
-        mm / self.scale()
+        let v = mm / self.scale();
+        let snapped = (v * 1e9).round() / 1e9;
+        if (v - snapped).abs() < 1e-12 && v.abs() < 1e6 {
+            snapped
+        } else {
+            v
+        }
     }
 
     /// Is axis `i` (0..9) a length axis (X Y Z U V W) rather than an angle?
