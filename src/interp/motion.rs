@@ -12,7 +12,7 @@ use super::target::{target, written, Frame};
 use super::{arcs, aux, Interp, Stop};
 use crate::canon::{Canon, Pose};
 use crate::diag::Code;
-use crate::ir::{Arena, Axes, Block, CannedCycle, CycleKind, DwellUnit, Expr, FeedMode, Motion, MotionKind, Stmt, StmtKind, Value};
+use crate::ir::{Arena, Axes, Block, CannedCycle, CoordShift, CycleKind, DwellUnit, Expr, FeedMode, Motion, MotionKind, Stmt, StmtKind, Value};
 
 pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     it.begin_block(block);
@@ -41,7 +41,29 @@ fn has(block: &Block, f: impl Fn(&StmtKind) -> bool) -> bool {
     block.stmts.iter().any(|s| f(&s.kind))
 }
 
+/// Axis words the reader attached to a G92.1/G92.2/G92.3 in the block
+/// (those codes take none): they belong to the block's motion.
+fn stray_axes(block: &Block) -> Option<&Axes> {
+    block.stmts.iter().find_map(|s| match &s.kind {
+        StmtKind::CoordShift { kind, axes } if !matches!(kind, CoordShift::Set | CoordShift::Local) && !axes.is_empty() => {
+            Some(&**axes)
+        }
+        _ => None,
+    })
+}
+
 fn motion(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+    if m.target.is_empty() {
+        if let Some(axes) = stray_axes(block) {
+            let mut m2 = m.clone();
+            m2.target = axes.clone();
+            return motion_inner(it, &m2, block, exprs);
+        }
+    }
+    motion_inner(it, m, block, exprs)
+}
+
+fn motion_inner(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     let kind = match m.kind {
         MotionKind::Implicit => match it.state.motion {
             _ if m.target.is_empty() && m.arc.is_empty() && m.polar_radius.is_none() && m.polar_angle.is_none() => {

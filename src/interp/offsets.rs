@@ -195,6 +195,10 @@ fn set_tool(it: &mut Interp<'_, '_>, l: i64, p: Option<f64>, words: &[Word], exp
         slot.orientation = orientation;
     }
     it.out(Canon::SetToolTableEntry { row, tool: t, offset, diameter, front, back, orientation });
+    // The tool in the spindle also has row 0, which rs274 updates too.
+    if t == it.state.tool_in_spindle && t != 0 {
+        it.out(Canon::SetToolTableEntry { row: 0, tool: t, offset, diameter, front, back, orientation });
+    }
     Ok(())
 }
 
