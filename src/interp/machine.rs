@@ -13,6 +13,7 @@ use crate::span::Span;
 
 /// The calls every run starts with (LinuxCNC's `interp_init`).
 pub fn init_sequence(it: &mut Interp<'_, '_>) {
+    it.state.retract_initial = !it.spec.has(crate::dialect::Capability::CycleRetractRPlaneAtStart);
     it.emit(Canon::UseLengthUnits(CanonUnits::Mm));
     it.emit(Canon::SetG5xOffset { index: 1, offset: [0.0; 6] });
     it.emit(Canon::SetG92Offset([0.0; 6]));
