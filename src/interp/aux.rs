@@ -28,6 +28,8 @@ enum AuxFn {
     DigitalOut { motion: bool, on: bool },
     /// M67/M68 E Q: analog output (motion-synchronised?).
     AnalogOut { motion: bool },
+    /// M66: wait for an input; rs274's simulated machine prints nothing.
+    WaitInput,
     /// M70 / M73 (true: restore on return).
     SaveModal { auto: bool },
     /// M71.
@@ -56,6 +58,7 @@ const AUX: &[(char, i64, AuxFn)] = &[
     ('M', 650, AuxFn::DigitalOut { motion: false, on: false }),
     ('M', 670, AuxFn::AnalogOut { motion: true }),
     ('M', 680, AuxFn::AnalogOut { motion: false }),
+    ('M', 660, AuxFn::WaitInput),
     ('M', 700, AuxFn::SaveModal { auto: false }),
     ('M', 710, AuxFn::InvalidateModal),
     ('M', 720, AuxFn::RestoreModal),
@@ -142,6 +145,7 @@ pub fn exec(it: &mut Interp<'_, '_>, letter: char, code: f64, words: &[Word], ex
             let what = if motion { "SET_MOTION_OUTPUT_VALUE" } else { "SET_AUX_OUTPUT_VALUE" };
             it.out(Canon::Io(format!("{what}({e},{q:.6})")));
         }
+        AuxFn::WaitInput => {}
         AuxFn::SaveModal { auto } => super::modal_save::save(it, auto),
         AuxFn::InvalidateModal => super::modal_save::invalidate(it),
         AuxFn::RestoreModal => {
