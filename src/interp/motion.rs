@@ -156,6 +156,12 @@ fn probe(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Result<()
         it.comp.flush(&mut |c| sink(c, span));
     }
     let from = super::host::MotionHost::position(it);
+    if it.state.feed == 0.0 {
+        return Err(it.error_at(it.span, Code::NoFeedRate, "Cannot probe with zero feed rate"));
+    }
+    if straight_length(&from, &to) < it.state.to_prog(0.254) {
+        return Err(it.error_at(it.span, Code::BadWordValue, "Start point too close to probe point"));
+    }
     it.out(Canon::TurnProbeOn);
     it.out(Canon::StraightProbe(to));
     it.out(Canon::TurnProbeOff);
