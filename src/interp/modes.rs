@@ -64,10 +64,17 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
             Ok(())
         }
         ArcDistance(d) => {
-            it.state.arc_absolute = *d == DimMode::Absolute;
+            let abs = *d == DimMode::Absolute;
+            if abs != it.state.arc_absolute {
+                let what = if abs { "absolute" } else { "incremental" };
+                it.out(Canon::Comment(format!("interpreter: IJK distance mode changed to {what}")));
+            }
+            it.state.arc_absolute = abs;
             Ok(())
         }
         ReturnToInitial(b) => {
+            let what = if *b { "old_z" } else { "r_plane" };
+            it.out(Canon::Comment(format!("interpreter: retract mode set to {what}")));
             it.state.retract_initial = *b;
             Ok(())
         }

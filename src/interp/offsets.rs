@@ -150,8 +150,9 @@ fn set_work_offset(it: &mut Interp<'_, '_>, l20: bool, p: u32, words: &[Word], e
     if let Some(r) = r {
         it.state.g5x_rotation[index as usize] = r;
     }
-    it.out(Canon::Comment("interpreter: setting coordinate system origin".into()));
-    if index == it.state.g5x_index {
+    if index != it.state.g5x_index {
+        it.out(Canon::Comment("interpreter: setting coordinate system origin".into()));
+    } else {
         it.state.reframe(old);
         emit_g5x(it, index);
         it.out(Canon::SetXyRotation(it.state.g5x_rotation[index as usize]));
