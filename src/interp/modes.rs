@@ -126,7 +126,8 @@ fn substitute(it: &Interp<'_, '_>, text: &str) -> String {
         out.push_str(&rest[..i]);
         let after = &rest[i + 1..];
         if let Some(name) = after.strip_prefix('<').and_then(|a| a.find('>').map(|j| &a[..j])) {
-            let key = name.to_ascii_lowercase();
+            // Spaces inside a parameter name are ignored, as everywhere in a line.
+            let key: String = name.chars().filter(|c| !c.is_whitespace()).collect::<String>().to_ascii_lowercase();
             match it.read_named(&key) {
                 Some(v) => out.push_str(&format!("{v:.6}")),
                 None => out.push_str("######"),
