@@ -34,7 +34,7 @@ fn plane_letters(plane: CanonPlane) -> (char, char, char, char) {
     }
 }
 
-fn centre_word<'m>(m: &'m Motion, letter: char) -> Option<&'m Coord> {
+fn centre_word(m: &Motion, letter: char) -> Option<&Coord> {
     match letter {
         'I' => m.arc.i.as_ref(),
         'J' => m.arc.j.as_ref(),
