@@ -112,10 +112,10 @@ pub fn format_call(c: &Canon) -> String {
         RigidTap { x, y, z } => format!("RIGID_TAP({}, {}, {})", f4(*x), f4(*y), f4(*z)),
         TurnProbeOn => "TURN_PROBE_ON()".into(),
         TurnProbeOff => "TURN_PROBE_OFF()".into(),
-        SetToolTableEntry { row, tool, offset, diameter, front, back, orientation } => format!(
-            "SET_TOOL_TABLE_ENTRY({row}, {tool}, {}, {}, {}, {}, {orientation})",
-            pose(offset),
-            f4(*diameter),
+        // rs274 prints the nine offsets space-separated and no diameter.
+        SetToolTableEntry { row, tool, offset, diameter: _, front, back, orientation } => format!(
+            "SET_TOOL_TABLE_ENTRY({row}, {tool}, {}, {}, {}, {orientation})",
+            offset.iter().map(|v| f4(*v)).collect::<Vec<_>>().join(" "),
             f4(*front),
             f4(*back)
         ),

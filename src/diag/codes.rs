@@ -253,6 +253,12 @@ codes! {
     CompExitArc = "E0555", "comp-exit-arc", Error,
         "an arc as the first move after G40",
         "The move after cancelling compensation with G40 takes the tool off the compensated path and must be a straight line.";
+    BadWordValue = "E0511", "bad-word-value", Error,
+        "a word missing or with a value the controller rejects when the block runs",
+        "The block needs a word it lacks (G4 without P, G10 without P) or has one whose value is out of range (a negative F or S, G10 L2 P10, axis words with G80). The controller alarms here.";
+    ArcBadWords = "E0512", "arc-bad-words", Error,
+        "an arc without a centre or radius, or with both",
+        "G2/G3 need either the centre words (I J K for the active plane) or R, not both and not neither. A full circle needs the centre words.";
 }
 
 impl Code {

@@ -84,6 +84,10 @@ pub enum Capability {
     MessageComments,
     /// Fanuc `,C` (chamfer) and `,R` (corner rounding) words after a move.
     CommaCornerWords,
+    /// Canned cycles start retracting to R (G99), as LinuxCNC's
+    /// interpreter does; otherwise to the initial level (G98), as Fanuc,
+    /// Haas and Siemens controls do at power-on.
+    CycleRetractRPlaneAtStart,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -108,6 +112,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("unbracketed-expressions", Capability::UnbracketedExpressions),
     ("message-comments", Capability::MessageComments),
     ("comma-corner-words", Capability::CommaCornerWords),
+    ("cycle-retract-r-plane-at-start", Capability::CycleRetractRPlaneAtStart),
 ];
 
 impl Capability {

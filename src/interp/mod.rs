@@ -26,6 +26,10 @@ pub mod stream;
 pub mod state;
 pub mod tooltable;
 pub mod tools;
+pub mod aux;
+pub mod target;
+pub mod arcs;
+pub mod modal_save;
 
 pub use options::{Limits, Options};
 
@@ -62,11 +66,24 @@ pub struct Interp<'a, 's> {
     pub params: params::Params,
     /// Siemens programmable frame and modal cycle call.
     pub siemens: siemens::SiemensState,
+    /// Canned-cycle values that carry over between blocks.
+    pub cycles: cycles::CycleMemory,
+    /// Cutter radius compensation (every move goes through it).
+    pub comp: comp::RadiusComp,
+    /// Recent blocks' spans by compensation tag (errors name them).
+    pub comp_tags: std::collections::VecDeque<(u64, Span)>,
+    /// The tool table as the program changes it (G10 L1/L10/L11).
+    pub tool_table: tooltable::ToolTable,
+    /// The span of the block being run.
+    pub block_span: Span,
+    /// M70's saved modal state; M73's, with the call level that restores it.
+    pub saved_modal: Option<Box<State>>,
+    pub auto_restore: Vec<(usize, Box<State>)>,
 }
 
 impl<'a, 's> Interp<'a, 's> {
     pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
-        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new(), siemens: siemens::SiemensState::default() }
+        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new(), cycles: cycles::CycleMemory::new(), comp: comp::RadiusComp::new(), comp_tags: std::collections::VecDeque::new(), tool_table: opts.tool_table.clone(), block_span: Span::default(), saved_modal: None, auto_restore: Vec::new(), siemens: siemens::SiemensState::default() }
     }
 
     /// Emits one call, tagged with the current statement's span.

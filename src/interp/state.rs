@@ -58,6 +58,27 @@ pub struct State {
     pub path: PathControl,
     pub flood: bool,
     pub mist: bool,
+    /// M48..M51: feed and spindle-speed overrides enabled.
+    pub feed_override: bool,
+    pub speed_override: bool,
+    /// Tool number set by M61 (reported, not used for G43).
+    pub tool_number: i64,
+    /// G53 in force for the block being run.
+    pub machine_coords: bool,
+    /// Constant surface speed maximum (G96 D), 0 when off.
+    pub css_max: f64,
+    /// G7: X words are diameters (halved).
+    pub lathe_diameter: bool,
+    /// G33/G33.1 K: distance per spindle revolution.
+    pub sync_pitch: f64,
+    /// The block of the last M61 (G43 in that block uses its tool).
+    pub m61_block: Option<crate::span::Span>,
+    /// Where the canon layer last put the tool (program frame, mm): the
+    /// current position without tool-length shifts since the last move.
+    pub canon_pos: [f64; 9],
+    /// A tool change happened: the next block re-reads the position from
+    /// the canon layer (as rs274 does), dropping tool-length shifts.
+    pub resync: bool,
 }
 
 impl State {
@@ -83,10 +104,20 @@ impl State {
             tool_selected: None,
             comp_side: CompSide::Off,
             comp_radius: 0.0,
-            retract_initial: true,
+            retract_initial: false,
             path: PathControl::Continuous { tolerance: 0.0, naive: 0.0 },
             flood: false,
             mist: false,
+            feed_override: true,
+            speed_override: true,
+            tool_number: 0,
+            machine_coords: false,
+            css_max: 0.0,
+            lathe_diameter: false,
+            sync_pitch: 0.0,
+            m61_block: None,
+            canon_pos: [0.0; 9],
+            resync: false,
         }
     }
 
@@ -103,9 +134,18 @@ impl State {
         v * self.scale()
     }
 
-    /// A length in mm, in program units.
+    /// A length in mm, in program units; the noise of the round trip
+    /// through mm (1.5 in -> 38.1 mm -> 1.4999999999999998 in) is removed,
+    /// so that comparisons (R plane against the current level) see the
+    /// number as written.
     pub fn to_prog(&self, mm: f64) -> f64 {
-        mm / self.scale()
+        let v = mm / self.scale();
+        let snapped = (v * 1e9).round() / 1e9;
+        if (v - snapped).abs() < 1e-12 && v.abs() < 1e6 {
+            snapped
+        } else {
+            v
+        }
     }
 
     /// Is axis `i` (0..9) a length axis (X Y Z U V W) rather than an angle?
@@ -128,5 +168,37 @@ impl State {
 impl Default for State {
     fn default() -> Self {
         State::new()
+    }
+}
+
+impl State {
+    /// The origin of the program frame in machine coordinates, mm:
+    /// work offset plus G92 offset (when applied) plus tool length offset.
+    pub fn origin(&self) -> [f64; 9] {
+        let mut o = [0.0; 9];
+        for (i, v) in o.iter_mut().enumerate() {
+            let g92 = if self.g92_applied { self.g92[i] } else { 0.0 };
+            *v = self.g5x[self.g5x_index as usize][i] + g92 + self.tool_offset[i];
+        }
+        o
+    }
+
+    /// Moves the current position by the change of origin from `old`
+    /// (the tool stays where it is; its program coordinates change).
+    pub fn reframe(&mut self, old: [f64; 9]) {
+        let new = self.origin();
+        for i in 0..9 {
+            self.pos[i] += old[i] - new[i];
+            self.canon_pos[i] += old[i] - new[i];
+        }
+    }
+
+    /// As [`Self::reframe`] for a tool length change: the canon layer's
+    /// position is not shifted.
+    pub fn reframe_keep_canon(&mut self, old: [f64; 9]) {
+        let new = self.origin();
+        for i in 0..9 {
+            self.pos[i] += old[i] - new[i];
+        }
     }
 }

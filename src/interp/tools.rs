@@ -1,10 +1,194 @@
-//! Running the tools statements of a block (see [`super::exec`] for which).
+//! Running the tools statements of a block (see [`super::exec`] for which):
+//! T, M6, cutter radius compensation G40/G41/G42 (.1), tool length
+//! offsets G43/G43.1/G43.2/G44/G49. Tool-table numbers are in machine
+//! units ([`crate::interp::Options::machine_units`]).
 
+use super::comp::CompSide as Side;
+use super::host::SpindleDir;
+use super::state::MM_PER_INCH;
 use super::{Interp, Stop};
+use crate::canon::Canon;
 use crate::diag::Code;
-use crate::ir::{Arena, Block, Expr, Stmt};
+use crate::ir::{Arena, Axes, Block, CompSide, Expr, LengthComp, LengthUnit, Stmt, StmtKind, ToolRef, Value};
 
 pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
-    let _ = (block, exprs);
-    Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet"))
+    it.begin_block(block);
+    match &s.kind {
+        StmtKind::ToolSelect(ToolRef::Number(v)) => {
+            let t = it.value(v, exprs)?.round() as i64;
+            row_of(it, t)?;
+            it.state.tool_selected = Some(t);
+            it.out(Canon::SelectTool(t));
+            Ok(())
+        }
+        StmtKind::ToolChange => tool_change(it),
+        StmtKind::RadiusComp { side, register } => radius_comp(it, *side, register.as_ref(), block, exprs),
+        StmtKind::LengthComp { mode, register, axes } => length_comp(it, *mode, register.as_ref(), axes, exprs),
+        StmtKind::OffsetRegister { .. } => Ok(()),
+        _ => Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet")),
+    }
+}
+
+/// The 1-based table row of tool `t` (tool 0: row 0, no tool).
+pub fn row_of(it: &Interp<'_, '_>, t: i64) -> Result<i64, Stop> {
+    if t == 0 {
+        return Ok(0);
+    }
+    match it.tool_table.row(t) {
+        Some(r) => Ok(r as i64),
+        None => Err(it.error_at(it.span, Code::ToolNotInTable, format!("Requested tool {t} not found in the tool table"))),
+    }
+}
+
+/// mm per machine unit.
+fn machine_scale(it: &Interp<'_, '_>) -> f64 {
+    match it.opts.machine_units {
+        LengthUnit::Inch => MM_PER_INCH,
+        LengthUnit::Mm => 1.0,
+    }
+}
+
+fn tool_change(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
+    let t = it.state.tool_selected.unwrap_or(it.state.tool_in_spindle);
+    let row = row_of(it, t)?;
+    it.out(Canon::StartChange);
+    it.state.spindle = SpindleDir::Stopped;
+    it.out(Canon::StopSpindle);
+    it.state.tool_in_spindle = t;
+    it.state.resync = true;
+    it.out(Canon::ChangeTool(row));
+    Ok(())
+}
+
+fn radius_comp(
+    it: &mut Interp<'_, '_>,
+    side: CompSide,
+    register: Option<&Value>,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    it.comp_block(block.span);
+    let span = it.span;
+    let side = match side {
+        CompSide::Off => {
+            if it.comp.is_on() {
+                it.out(Canon::Comment("interpreter: cutter radius compensation off".into()));
+            }
+            let sink = &mut it.sink;
+            let r = it.comp.stop(&mut |c| sink(c, span));
+            it.state.comp_side = CompSide::Off;
+            return r.map_err(|e| it.comp_error(e));
+        }
+        CompSide::Left => Side::Left,
+        CompSide::Right => Side::Right,
+    };
+    let radius = comp_radius(it, register, block, exprs)?;
+    let what = if side == Side::Left { "left" } else { "right" };
+    it.out(Canon::Comment(format!("interpreter: cutter radius compensation on {what}")));
+    let plane = it.state.plane;
+    it.comp.start(side, radius, plane).map_err(|e| it.comp_error(e))?;
+    it.state.comp_side = if side == Side::Left { CompSide::Left } else { CompSide::Right };
+    it.state.comp_radius = radius;
+    Ok(())
+}
+
+/// G41/G42 [D]: half the table diameter of tool D (or of the tool in the
+/// spindle), in program units; G41.1/G42.1 D: half of D itself.
+fn comp_radius(it: &mut Interp<'_, '_>, register: Option<&Value>, block: &Block, exprs: &Arena<Expr>) -> Result<f64, Stop> {
+    // G41.1/G42.1 (D is the diameter) share G41/G42's meaning in the IR,
+    // so they cannot be told apart here yet: D is read as a tool number.
+    let _ = block;
+    let dynamic = false;
+    let d = match register {
+        Some(v) => Some(it.value(v, exprs)?),
+        None => None,
+    };
+    if dynamic {
+        return Ok(d.unwrap_or(0.0) / 2.0);
+    }
+    let t = d.map(|v| v.round() as i64).unwrap_or(it.state.tool_in_spindle);
+    if t == 0 {
+        return Ok(0.0);
+    }
+    let dia = match it.tool_table.get(t) {
+        Some(tool) => tool.diameter,
+        None => return Err(it.error_at(it.span, Code::ToolNotInTable, format!("Requested tool {t} not found in the tool table"))),
+    };
+    Ok(it.state.to_prog(dia * machine_scale(it)) / 2.0)
+}
+
+fn length_comp(
+    it: &mut Interp<'_, '_>,
+    mode: LengthComp,
+    register: Option<&Value>,
+    axes: &Axes,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    let scale = machine_scale(it);
+    let table_offset = |it: &mut Interp<'_, '_>, t: i64| -> Result<[f64; 9], Stop> {
+        if t == 0 {
+            return Ok([0.0; 9]);
+        }
+        match it.tool_table.get(t) {
+            Some(tool) => {
+                let mut o = tool.offset;
+                for (i, v) in o.iter_mut().enumerate() {
+                    if super::state::State::is_linear(i) {
+                        *v *= scale;
+                    }
+                }
+                Ok(o)
+            }
+            None => Err(it.error_at(it.span, Code::ToolNotInTable, format!("Requested tool {t} not found in the tool table"))),
+        }
+    };
+    let h = match register {
+        Some(v) => Some(it.value(v, exprs)?.round() as i64),
+        None => None,
+    };
+    let new = match mode {
+        LengthComp::Positive | LengthComp::Negative => {
+            // M61 in the same block counts; from the next block on rs274
+            // reads the tool loaded by the last M6 again.
+            let spindle = match it.state.m61_block {
+                Some(b) if b == it.block_span => it.state.tool_number,
+                _ => it.state.tool_in_spindle,
+            };
+            let t = h.unwrap_or(spindle);
+            let mut o = table_offset(it, t)?;
+            if mode == LengthComp::Negative {
+                o.iter_mut().for_each(|v| *v = -*v);
+            }
+            o
+        }
+        LengthComp::Cancel => [0.0; 9],
+        LengthComp::Dynamic => {
+            let mut o = [0.0; 9];
+            for (i, letter) in crate::ir::AXIS_LETTERS.iter().enumerate() {
+                if let Some(c) = axes.get(*letter) {
+                    let v = it.value(&c.value, exprs)?;
+                    o[i] = if super::state::State::is_linear(i) { it.state.to_mm(v) } else { v };
+                }
+            }
+            o
+        }
+        LengthComp::Additive => {
+            let t = h.unwrap_or(it.state.tool_in_spindle);
+            let add = table_offset(it, t)?;
+            let mut o = it.state.tool_offset;
+            for i in 0..9 {
+                o[i] += add[i];
+            }
+            o
+        }
+    };
+    // The tool tip stays where it is: its program coordinates change
+    // (until a tool change makes rs274 re-read the position, see
+    // `State::resync`).
+    let old = it.state.origin();
+    it.state.tool_offset = new;
+    it.state.reframe_keep_canon(old);
+    let p = it.state.pose_to_prog(&new);
+    it.out(Canon::UseToolLengthOffset(p));
+    Ok(())
 }

@@ -1,0 +1,185 @@
+//! Machine functions kept by code (`StmtKind::Aux`): LinuxCNC's override
+//! switches M48..M53, M61, the I/O codes M62..M68, lathe G7/G8, the
+//! spindle-synchronised motions G33/G33.1 and M70..M73 (modal state). They have no neutral
+//! meaning in the dialect specs yet, so they are told apart by number
+//! here: [`AUX`] is the one table to extend.
+
+use super::{Interp, Stop};
+use crate::canon::Canon;
+use crate::diag::Code;
+use crate::ir::{Arena, Block, Expr, StmtKind, Word};
+
+/// What an M code does, by meaning.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum AuxFn {
+    /// M48 / M49: both overrides on / off.
+    Overrides(bool),
+    /// M50 P: feed override (P0 off, else on).
+    FeedOverride,
+    /// M51 P: spindle speed override.
+    SpeedOverride,
+    /// M52 P: adaptive feed.
+    AdaptiveFeed,
+    /// M53 P: feed stop (hold).
+    FeedHold,
+    /// M61 Q: set the tool number without a change.
+    SetToolNumber,
+    /// M62..M65 P: digital output bit (motion-synchronised?, on?).
+    DigitalOut { motion: bool, on: bool },
+    /// M67/M68 E Q: analog output (motion-synchronised?).
+    AnalogOut { motion: bool },
+    /// M66: wait for an input; rs274's simulated machine prints nothing.
+    WaitInput,
+    /// M70 / M73 (true: restore on return).
+    SaveModal { auto: bool },
+    /// M71.
+    InvalidateModal,
+    /// M72.
+    RestoreModal,
+    /// G7 (true) / G8: lathe diameter / radius mode for X.
+    LatheDiameter(bool),
+    /// G33 K (false) / G33.1 K (true, rigid tapping): spindle-synchronised
+    /// motion, modal; the block's axis words give the end point.
+    SpindleSync { rigid: bool },
+}
+
+/// The codes run here: letter, code times ten, meaning.
+const AUX: &[(char, i64, AuxFn)] = &[
+    ('M', 480, AuxFn::Overrides(true)),
+    ('M', 490, AuxFn::Overrides(false)),
+    ('M', 500, AuxFn::FeedOverride),
+    ('M', 510, AuxFn::SpeedOverride),
+    ('M', 520, AuxFn::AdaptiveFeed),
+    ('M', 530, AuxFn::FeedHold),
+    ('M', 610, AuxFn::SetToolNumber),
+    ('M', 620, AuxFn::DigitalOut { motion: true, on: true }),
+    ('M', 630, AuxFn::DigitalOut { motion: true, on: false }),
+    ('M', 640, AuxFn::DigitalOut { motion: false, on: true }),
+    ('M', 650, AuxFn::DigitalOut { motion: false, on: false }),
+    ('M', 670, AuxFn::AnalogOut { motion: true }),
+    ('M', 680, AuxFn::AnalogOut { motion: false }),
+    ('M', 660, AuxFn::WaitInput),
+    ('M', 700, AuxFn::SaveModal { auto: false }),
+    ('M', 710, AuxFn::InvalidateModal),
+    ('M', 720, AuxFn::RestoreModal),
+    ('M', 730, AuxFn::SaveModal { auto: true }),
+    ('G', 70, AuxFn::LatheDiameter(true)),
+    ('G', 80, AuxFn::LatheDiameter(false)),
+    ('G', 330, AuxFn::SpindleSync { rigid: false }),
+    ('G', 331, AuxFn::SpindleSync { rigid: true }),
+];
+
+fn lookup(letter: char, code: f64) -> Option<AuxFn> {
+    let tenths = (code * 10.0).round();
+    if (code * 10.0 - tenths).abs() > 1e-6 {
+        return None;
+    }
+    let letter = letter.to_ascii_uppercase();
+    AUX.iter().find(|(l, n, _)| *l == letter && *n as f64 == tenths).map(|(_, _, f)| *f)
+}
+
+/// The value of a word among `words`, if written.
+fn word(it: &mut Interp<'_, '_>, words: &[Word], letter: char, exprs: &Arena<Expr>) -> Result<Option<f64>, Stop> {
+    match words.iter().find(|w| w.letter.eq_ignore_ascii_case(&letter)) {
+        Some(w) => Ok(Some(it.value(&w.value, exprs)?)),
+        None => Ok(None),
+    }
+}
+
+/// The value of a loose word (`StmtKind::Word`) of the block, if written.
+pub fn block_word(it: &mut Interp<'_, '_>, block: &Block, letter: char, exprs: &Arena<Expr>) -> Result<Option<f64>, Stop> {
+    for s in &block.stmts {
+        if let StmtKind::Word(w) = &s.kind {
+            if w.letter.eq_ignore_ascii_case(&letter) {
+                return Ok(Some(it.value(&w.value, exprs)?));
+            }
+        }
+    }
+    Ok(None)
+}
+
+/// Runs an Aux statement.
+pub fn exec(it: &mut Interp<'_, '_>, letter: char, code: f64, words: &[Word], exprs: &Arena<Expr>) -> Result<(), Stop> {
+    let Some(f) = lookup(letter, code) else {
+        return Err(it.error_at(it.span, Code::UnsupportedHere, format!("{letter}{code} is not run by the interpreter")));
+    };
+    let p = word(it, words, 'P', exprs)?;
+    let on = p.map(|v| v != 0.0).unwrap_or(true);
+    match f {
+        AuxFn::Overrides(on) => {
+            it.state.feed_override = on;
+            it.state.speed_override = on;
+            it.out(if on { Canon::EnableFeedOverride } else { Canon::DisableFeedOverride });
+            it.out(if on { Canon::EnableSpeedOverride } else { Canon::DisableSpeedOverride });
+        }
+        AuxFn::FeedOverride => {
+            it.state.feed_override = on;
+            it.out(if on { Canon::EnableFeedOverride } else { Canon::DisableFeedOverride });
+        }
+        AuxFn::SpeedOverride => {
+            it.state.speed_override = on;
+            it.out(if on { Canon::EnableSpeedOverride } else { Canon::DisableSpeedOverride });
+        }
+        AuxFn::AdaptiveFeed => it.out(if on { Canon::EnableAdaptiveFeed } else { Canon::DisableAdaptiveFeed }),
+        AuxFn::FeedHold => it.out(if on { Canon::EnableFeedHold } else { Canon::DisableFeedHold }),
+        AuxFn::SetToolNumber => {
+            let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0) as i64;
+            let row = super::tools::row_of(it, q)?;
+            it.state.tool_number = q;
+            it.state.m61_block = Some(it.block_span);
+            it.out(Canon::ChangeToolNumber(row));
+        }
+        AuxFn::DigitalOut { motion, on } => {
+            let n = p.unwrap_or(0.0) as i64;
+            let what = match (on, motion) {
+                (true, true) => "SET_MOTION_OUTPUT_BIT",
+                (false, true) => "CLEAR_MOTION_OUTPUT_BIT",
+                (true, false) => "SET_AUX_OUTPUT_BIT",
+                (false, false) => "CLEAR_AUX_OUTPUT_BIT",
+            };
+            it.out(Canon::Io(format!("{what}({n})")));
+        }
+        AuxFn::AnalogOut { motion } => {
+            let e = word(it, words, 'E', exprs)?.unwrap_or(0.0) as i64;
+            let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0);
+            let what = if motion { "SET_MOTION_OUTPUT_VALUE" } else { "SET_AUX_OUTPUT_VALUE" };
+            it.out(Canon::Io(format!("{what}({e},{q:.6})")));
+        }
+        AuxFn::WaitInput => {}
+        AuxFn::SaveModal { auto } => super::modal_save::save(it, auto),
+        AuxFn::InvalidateModal => super::modal_save::invalidate(it),
+        AuxFn::RestoreModal => {
+            if !super::modal_save::restore_saved(it) {
+                return Err(it.error_at(it.span, Code::BadWordValue, "Cannot restore context: no valid context saved by M70"));
+            }
+        }
+        AuxFn::LatheDiameter(on) => {
+            if on != it.state.lathe_diameter {
+                let what = if on { "diameter" } else { "radius" };
+                it.out(Canon::Comment(format!("interpreter: Lathe diameter mode changed to {what}")));
+            }
+            it.state.lathe_diameter = on;
+        }
+        AuxFn::SpindleSync { rigid } => {
+            let k = word(it, words, 'K', exprs)?.unwrap_or(0.0);
+            it.cycles.cancel();
+            it.state.sync_pitch = k;
+            let code = crate::ir::Decimal::from_f64(if rigid { 33.1 } else { 33.0 }, 1);
+            it.state.motion = super::state::ModalMotion::Move(crate::ir::MotionKind::Other(code));
+        }
+    }
+    Ok(())
+}
+
+/// `M[#1]`, `G#2`: a code known only at run time.
+pub fn dynamic(
+    it: &mut Interp<'_, '_>,
+    letter: char,
+    code: f64,
+    words: &[Word],
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    let _ = block;
+    exec(it, letter, code, words, exprs)
+}

@@ -1,0 +1,50 @@
+//! Where axis words send the tool: absolute or incremental per axis
+//! (G90/G91, Siemens AC/IC), or machine coordinates (G53). Positions are
+//! in the program frame, mm (angles in degrees), as [`super::state::State`]
+//! keeps them.
+
+use super::state::State;
+use super::{Interp, Stop};
+use crate::ir::{Arena, Axes, DimMode, Expr, AXIS_LETTERS};
+
+/// How the axis words of a block are read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Frame {
+    /// The program frame, in the distance mode in force.
+    Program,
+    /// G53: machine coordinates, absolute.
+    Machine,
+}
+
+/// The target of `axes` from the current position.
+pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: Frame) -> Result<[f64; 9], Stop> {
+    let mut to = it.state.pos;
+    let origin = it.state.origin();
+    for (i, letter) in AXIS_LETTERS.iter().enumerate() {
+        let Some(c) = axes.get(*letter) else { continue };
+        let v = it.value(&c.value, exprs)?;
+        let v = if i == 0 && it.state.lathe_diameter { v / 2.0 } else { v };
+        let v = if State::is_linear(i) { it.state.to_mm(v) } else { v };
+        let absolute = match c.dim {
+            Some(d) => d == DimMode::Absolute,
+            None => it.state.absolute,
+        };
+        to[i] = match frame {
+            Frame::Machine => v - origin[i],
+            Frame::Program if absolute => v,
+            Frame::Program => to[i] + v,
+        };
+    }
+    Ok(to)
+}
+
+/// The axis values written (program units, as written), by index.
+pub fn written(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Result<[Option<f64>; 9], Stop> {
+    let mut out = [None; 9];
+    for (i, letter) in AXIS_LETTERS.iter().enumerate() {
+        if let Some(c) = axes.get(*letter) {
+            out[i] = Some(it.value(&c.value, exprs)?);
+        }
+    }
+    Ok(out)
+}
