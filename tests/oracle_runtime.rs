@@ -10,13 +10,7 @@
 mod common;
 use common::*;
 
-const PENDING_CORE: &[&str] = &[
-    "linuxcnc/runtime/arc-end-not-on-circle.ngc",
-    "linuxcnc/runtime/arc-radius-too-small.ngc",
-    "linuxcnc/runtime/no-feed-rate.ngc",
-    "linuxcnc/runtime/tool-not-in-table.ngc",
-    "linuxcnc/runtime/comp-gouge.ngc",
-];
+const PENDING_CORE: &[&str] = &[];
 
 /// Subprogram files that programs here call (not run on their own).
 const HELPERS: &[&str] = &["linuxcnc/runtime/halve.ngc"];

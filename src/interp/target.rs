@@ -18,7 +18,14 @@ pub enum Frame {
 
 /// The target of `axes` from the current position.
 pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: Frame) -> Result<[f64; 9], Stop> {
+    // Under a Siemens programmable frame, words are read in the programmed
+    // system and the point is mapped to the work-offset frame after.
+    let framed = frame == Frame::Program && !it.siemens.frame.is_identity();
     let mut to = it.state.pos;
+    if framed {
+        let p = super::siemens::from_base(it, [to[0], to[1], to[2]]);
+        to[..3].copy_from_slice(&p);
+    }
     let origin = it.state.origin();
     for (i, letter) in AXIS_LETTERS.iter().enumerate() {
         let Some(c) = axes.get(*letter) else { continue };
@@ -34,6 +41,10 @@ pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: 
             Frame::Program if absolute => v,
             Frame::Program => to[i] + v,
         };
+    }
+    if framed {
+        let b = super::siemens::to_base(it, [to[0], to[1], to[2]]);
+        to[..3].copy_from_slice(&b);
     }
     Ok(to)
 }

@@ -171,7 +171,7 @@ fn program_errors() {
 /// The same kind of program through the whole interpreter (`interp::run`),
 /// with the core's motion statements.
 #[test]
-#[ignore = "needs the core's block statements (motion.rs, tools.rs, modes.rs), written in parallel; enable after the merge"]
+
 fn whole_interpreter_frames_and_mcall() {
     use crate::canon::format_call;
     let spec = crate::dialect::builtin::builtin("siemens840d").unwrap();
