@@ -6,15 +6,64 @@ use super::{Canon, CanonPlane, CanonUnits, MotionMode};
 use std::fmt::Write;
 
 fn f4(v: f64) -> String {
-    format!("{:.4}", v)
+    let mut s = String::with_capacity(12);
+    fixed(v, 4, &mut s);
+    s
 }
 
 fn f6(v: f64) -> String {
-    format!("{:.6}", v)
+    let mut s = String::with_capacity(14);
+    fixed(v, 6, &mut s);
+    s
+}
+
+/// `v` with `places` decimals, as C's `%.Nf` prints it (correctly rounded
+/// from the exact binary value; `-0.0000` for negatives that round to
+/// zero). Integer arithmetic where the rounding is unambiguous, the exact
+/// formatter otherwise.
+pub fn fixed(v: f64, places: u32, out: &mut String) {
+    use std::fmt::Write as _;
+    let (scale, p) = match places {
+        4 => (1e4, 10_000u64),
+        6 => (1e6, 1_000_000u64),
+        _ => (10f64.powi(places as i32), 10u64.pow(places)),
+    };
+    let r = (v * scale).abs();
+    let frac = r - r.trunc();
+    if !v.is_finite() || r >= 1e12 || (frac - 0.5).abs() < 1e-3 {
+        let _ = write!(out, "{:.*}", places as usize, v);
+        return;
+    }
+    let n = (r + 0.5) as u64;
+    if v.is_sign_negative() {
+        out.push('-');
+    }
+    push_digits(out, n / p, 1);
+    out.push('.');
+    push_digits(out, n % p, places as usize);
+}
+
+/// `n` in decimal, zero-padded to at least `width` digits.
+fn push_digits(out: &mut String, mut n: u64, width: usize) {
+    let mut buf = [b'0'; 20];
+    let mut i = buf.len();
+    while n > 0 || buf.len() - i < width.max(1) {
+        i -= 1;
+        buf[i] = b'0' + (n % 10) as u8;
+        n /= 10;
+    }
+    out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or("0"));
 }
 
 fn pose(p: &[f64]) -> String {
-    p.iter().map(|v| f4(*v)).collect::<Vec<_>>().join(", ")
+    let mut s = String::with_capacity(p.len() * 12);
+    for (i, v) in p.iter().enumerate() {
+        if i > 0 {
+            s.push_str(", ");
+        }
+        fixed(*v, 4, &mut s);
+    }
+    s
 }
 
 fn quoted(s: &str) -> String {
@@ -126,6 +175,29 @@ pub fn format_call(c: &Canon) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fixed_matches_the_exact_formatter() {
+        let mut state = 0x9e3779b97f4a7c15u64;
+        for i in 0..200_000u64 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let mag = [1e-6, 1e-3, 1.0, 1e2, 1e4, 1e7, 1e11][(i % 7) as usize];
+            let v = ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 2.0 * mag;
+            let v = if i % 5 == 0 { (v * 1e5).round() / 1e5 + 0.00005 } else { v };
+            for places in [4, 6] {
+                let mut s = String::new();
+                fixed(v, places, &mut s);
+                assert_eq!(s, format!("{:.*}", places as usize, v), "{v:e}");
+            }
+        }
+        for v in [0.0, -0.0, -0.00001, 0.00005, 1.00005, -2.5, f64::NAN, 1e300] {
+            let mut s = String::new();
+            fixed(v, 4, &mut s);
+            assert_eq!(s, format!("{:.4}", v));
+        }
+    }
     use crate::canon::Canon;
 
     #[test]
