@@ -162,6 +162,17 @@ pub fn check_stream(
     spec: &DialectSpec,
     mut on_block: impl FnMut(&Block, &Arena<Expr>),
 ) -> std::io::Result<StreamResult> {
+    check_stream_flagged(input, file, spec, |b, e, _| on_block(b, e))
+}
+
+/// [`check_stream`], telling `on_block` whether reading its line found an
+/// error (a run stops there, as a controller stops at a bad block).
+pub fn check_stream_flagged(
+    input: impl BufRead,
+    file: FileId,
+    spec: &DialectSpec,
+    mut on_block: impl FnMut(&Block, &Arena<Expr>, bool),
+) -> std::io::Result<StreamResult> {
     let mut reader = Reader::new(spec, file);
     let mut exprs = Arena::new();
     let mut diags = Vec::new();
@@ -173,7 +184,8 @@ pub fn check_stream(
         let off = u32::try_from(offset).map_err(|_| too_large())?;
         let before = diags.len();
         if reader.line_into(line, off, &mut exprs, &mut diags, &mut block) {
-            on_block(&block, &exprs);
+            let bad = diags[before..].iter().any(|d| d.is_error());
+            on_block(&block, &exprs, bad);
         }
         if diags.len() > before && kept.len() < crate::diag::MAX_KEPT {
             kept.push(KeptLine { line: line_no as usize, start: offset as usize, text: line.to_owned() });

@@ -11,7 +11,7 @@ use crate::cli::args::Format;
 use crate::cli::check::{keep_lines, read_head, read_whole};
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::canon::format_call;
-use crate::driver::{check_stream, FsLoader};
+use crate::driver::{check_stream_flagged, FsLoader};
 use crate::interp::{stream::StreamRun, tooltable::ToolTable, Interp, Options};
 use std::fs::File;
 use std::io::{BufReader, Write};
@@ -41,12 +41,6 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
     }
     let id = ctx.files.add_sparse(a.file.display().to_string(), Vec::new());
     let open = || File::open(a.file).map(|f| BufReader::with_capacity(1 << 16, f)).map_err(fail);
-    diags.extend(check_stream(open()?, id, &spec, |_, _| {}).map_err(fail)?.diagnostics);
-    if diags.iter().any(|d| d.is_error()) {
-        keep_lines(ctx, a.file, id, &diags)?;
-        ctx.print(&diags, a.format);
-        return Ok(EXIT_INPUT_ERRORS);
-    }
     let out = std::io::stdout();
     let mut out = std::io::BufWriter::new(out.lock());
     let mut io_error = None;
@@ -60,8 +54,20 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
     let mut it = Interp::new(&spec, &a.options, &mut sink);
     it.start();
     let mut stream = StreamRun::default();
-    check_stream(open()?, id, &spec, |b, e| stream.block(&mut it, b, e)).map_err(fail)?;
+    // One pass: each block runs as it is read; the first block that does
+    // not read cleanly stops the run there, as rs274 stops at a bad block.
+    let mut stopped = false;
+    let read = check_stream_flagged(open()?, id, &spec, |b, e, bad| {
+        stopped |= bad;
+        if !stopped {
+            stream.block(&mut it, b, e);
+        }
+    })
+    .map_err(fail)?;
+    diags.extend(read.diagnostics);
+    let read_errors = diags.iter().any(|d| d.is_error());
     let run = match stream.handover {
+        _ if read_errors => stream.abandon(&mut it),
         None => stream.finish(&mut it),
         Some(_) => {
             let program = read_whole(a.file, id, &spec)?;

@@ -72,6 +72,18 @@ impl StreamRun {
         }
     }
 
+    /// Ends a run cut short by a block that did not read cleanly: the
+    /// run-time diagnostics so far, and rs274's abort calls.
+    pub fn abandon(&mut self, it: &mut Interp<'_, '_>) -> Vec<Diagnostic> {
+        if !self.stopped {
+            machine::abort_sequence(it);
+            self.stopped = true;
+        }
+        let mut diags = std::mem::take(&mut it.diags);
+        diags.append(&mut self.diags);
+        diags
+    }
+
     /// Ends a run that was not handed over: its diagnostics, and the
     /// report of a program that fell off its end.
     pub fn finish(&mut self, it: &mut Interp<'_, '_>) -> Vec<Diagnostic> {
