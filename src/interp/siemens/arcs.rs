@@ -11,15 +11,17 @@
 //! Sources: SINUMERIK 840D programming manual "Circular interpolation" as
 //! summarised in `reference/dialects.md`; `[?]` marks assumptions.
 
+use crate::diag::Code;
 use crate::interp::host::plane_axes;
 use crate::interp::machine::pose6;
 use crate::interp::motion::check_feed;
 use crate::interp::target::{target, Frame};
 use crate::interp::{Interp, Stop};
-use crate::diag::Code;
 use crate::ir::{ArcDir, Arena, Block, Coord, DimMode, Expr, Motion, MotionKind};
 
 type P2 = (f64, f64);
+/// Start and end (programmed, mm, x y z) and the end in the base frame.
+type Ends = ([f64; 3], [f64; 3], [f64; 9]);
 const EPS: f64 = 1e-9;
 
 /// The centre of the arc from `s` to `e` with opening angle `deg`
@@ -112,7 +114,7 @@ fn mid_word(m: &Motion, index: usize) -> Option<&Coord> {
 }
 
 /// The programmed point (mm) of a Siemens arc's start, end (x y z).
-fn ends(it: &mut Interp<'_, '_>, m: &Motion, exprs: &Arena<Expr>) -> Result<([f64; 3], [f64; 3], [f64; 9]), Stop> {
+fn ends(it: &mut Interp<'_, '_>, m: &Motion, exprs: &Arena<Expr>) -> Result<Ends, Stop> {
     let p = it.state.pos;
     let s = super::from_base(it, [p[0], p[1], p[2]]);
     let base = target(it, &m.target, exprs, Frame::Program)?;
@@ -132,34 +134,11 @@ fn point_value(it: &mut Interp<'_, '_>, c: &Coord, start: f64, absolute: bool, e
 
 /// Runs a Siemens arc: `G2`/`G3` (any form), `CIP` or `CT`.
 pub fn arc(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
-    let (a, b, n) = plane_axes(it.state.plane);
+    let (a, b, _) = plane_axes(it.state.plane);
     let (s3, mut e3, mut base) = ends(it, m, exprs)?;
-    let (s, mut e) = ((s3[a], s3[b]), (e3[a], e3[b]));
-    let (centre, ccw) = match kind {
-        MotionKind::ArcThrough => {
-            let mut mp = [s3[0], s3[1], s3[2]];
-            for (i, v) in mp.iter_mut().enumerate() {
-                if let Some(c) = mid_word(m, i) {
-                    *v = point_value(it, c, s3[i], it.state.absolute, exprs)?;
-                }
-            }
-            circle_through(s, (mp[a], mp[b]), e)
-                .ok_or_else(|| it.error_at(it.span, Code::ArcBadWords, "CIP: start, intermediate and end points lie on a line"))?
-        }
-        MotionKind::ArcTangent => {
-            let t = it.siemens.tangent.unwrap_or([0.0; 3]);
-            match tangent_circle(s, (t[a], t[b]), e) {
-                Some(c) => c,
-                None if (t[a], t[b]) != (0.0, 0.0) => return tangent_straight(it, base, e3, s3),
-                None => return Err(it.error_at(it.span, Code::ArcBadWords, "CT: no previous path direction to be tangent to")),
-            }
-        }
-        MotionKind::Arc(dir) => {
-            let ccw = dir == ArcDir::Ccw;
-            let c = g2g3_centre(it, m, s3, &mut e, (a, b), ccw, exprs)?;
-            (c, ccw)
-        }
-        _ => return Err(it.error_at(it.span, Code::UnsupportedHere, "not a Siemens arc")),
+    let mut e = (e3[a], e3[b]);
+    let Some((centre, ccw)) = centre_of(it, kind, m, s3, &mut e, exprs)? else {
+        return tangent_straight(it, base, e3, s3);
     };
     e3[a] = e.0;
     e3[b] = e.1;
@@ -175,9 +154,9 @@ pub fn arc(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block,
     let mut c3 = s3;
     c3[a] = centre.0;
     c3[b] = centre.1;
-    let (eb, cb, rot) = super::arc_to_base(it, e3, c3, if ccw { r } else { -r }).map_err(|d| Stop::Error(d.primary(it.span, "this arc")))?;
+    let (eb, cb, rot) =
+        super::arc_to_base(it, e3, c3, if ccw { r } else { -r }).map_err(|d| Stop::Error(d.primary(it.span, "this arc")))?;
     base[..3].copy_from_slice(&eb);
-    let _ = n;
     let to = pose6(&it.state, &base);
     let centre_prog = (it.state.to_prog(cb[a]), it.state.to_prog(cb[b]));
     let d = end_direction(centre, e, ccw);
@@ -186,6 +165,47 @@ pub fn arc(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block,
     t[b] = d.1;
     it.siemens.tangent = Some(t);
     it.arc_move(to, centre_prog, rot)
+}
+
+/// The centre and direction of a Siemens arc (None: a `CT` along the
+/// tangent, a straight); `e` is the end in the plane, which `AR=` with a
+/// centre sets.
+fn centre_of(
+    it: &mut Interp<'_, '_>,
+    kind: MotionKind,
+    m: &Motion,
+    s3: [f64; 3],
+    e: &mut P2,
+    exprs: &Arena<Expr>,
+) -> Result<Option<(P2, bool)>, Stop> {
+    let (a, b, _) = plane_axes(it.state.plane);
+    let s = (s3[a], s3[b]);
+    let found = match kind {
+        MotionKind::ArcThrough => {
+            let mut mp = s3;
+            for (i, v) in mp.iter_mut().enumerate() {
+                if let Some(c) = mid_word(m, i) {
+                    *v = point_value(it, c, s3[i], it.state.absolute, exprs)?;
+                }
+            }
+            circle_through(s, (mp[a], mp[b]), *e)
+                .ok_or_else(|| it.error_at(it.span, Code::ArcBadWords, "CIP: start, intermediate and end points lie on a line"))?
+        }
+        MotionKind::ArcTangent => {
+            let t = it.siemens.tangent.unwrap_or([0.0; 3]);
+            match tangent_circle(s, (t[a], t[b]), *e) {
+                Some(c) => c,
+                None if (t[a], t[b]) != (0.0, 0.0) => return Ok(None),
+                None => return Err(it.error_at(it.span, Code::ArcBadWords, "CT: no previous path direction to be tangent to")),
+            }
+        }
+        MotionKind::Arc(dir) => {
+            let ccw = dir == ArcDir::Ccw;
+            (g2g3_centre(it, m, s3, e, (a, b), ccw, exprs)?, ccw)
+        }
+        _ => return Err(it.error_at(it.span, Code::UnsupportedHere, "not a Siemens arc")),
+    };
+    Ok(Some(found))
 }
 
 /// After a straight move from `from` (base, mm): keeps its direction in
@@ -242,8 +262,9 @@ fn g2g3_centre(
         return Ok(c);
     }
     if let Some(deg) = angle {
-        return centre_from_angle(s, *e, deg, ccw)
-            .ok_or_else(|| it.error_at(it.span, Code::ArcBadWords, "AR= needs an end point away from the start and an angle between 0 and 360"));
+        return centre_from_angle(s, *e, deg, ccw).ok_or_else(|| {
+            it.error_at(it.span, Code::ArcBadWords, "AR= needs an end point away from the start and an angle between 0 and 360")
+        });
     }
     if let Some(r) = &m.arc.radius {
         let r = it.value(r, exprs)?;
