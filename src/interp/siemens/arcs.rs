@@ -11,13 +11,14 @@
 //! Sources: SINUMERIK 840D programming manual "Circular interpolation" as
 //! summarised in `reference/dialects.md`; `[?]` marks assumptions.
 
+use crate::canon::Canon;
 use crate::diag::Code;
 use crate::interp::host::plane_axes;
 use crate::interp::machine::pose6;
 use crate::interp::motion::check_feed;
 use crate::interp::target::{target, Frame};
 use crate::interp::{Interp, Stop};
-use crate::ir::{ArcDir, Arena, Block, Coord, DimMode, Expr, Motion, MotionKind};
+use crate::ir::{ArcDir, Arena, Block, Coord, DimMode, Expr, FeedMode, Motion, MotionKind};
 
 type P2 = (f64, f64);
 /// Start and end (programmed, mm, x y z) and the end in the base frame.
@@ -164,7 +165,27 @@ pub fn arc(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block,
     t[a] = d.0;
     t[b] = d.1;
     it.siemens.tangent = Some(t);
+    if it.state.feed_mode == FeedMode::InverseTime {
+        let len = helix_length(s3, e3, c3, (a, b), if ccw { r } else { -r });
+        it.out(Canon::SetFeedRate(it.state.to_prog(len) * it.state.feed));
+    }
     it.arc_move(to, centre_prog, rot)
+}
+
+/// The length (mm) of an arc from `s` to `e` round `c` (programmed, mm)
+/// with `rotation` turns as printed (+ CCW), the helix rise included.
+pub fn helix_length(s: [f64; 3], e: [f64; 3], c: [f64; 3], (a, b): (usize, usize), rotation: i64) -> f64 {
+    let n = 3 - a - b;
+    let r = (s[a] - c[a]).hypot(s[b] - c[b]);
+    let a0 = (s[b] - c[b]).atan2(s[a] - c[a]);
+    let a1 = (e[b] - c[b]).atan2(e[a] - c[a]);
+    let tau = 2.0 * std::f64::consts::PI;
+    let mut sweep = if rotation > 0 { a1 - a0 } else { a0 - a1 };
+    if sweep <= 1e-12 {
+        sweep += tau;
+    }
+    sweep += (rotation.unsigned_abs().max(1) - 1) as f64 * tau;
+    (r * sweep).hypot(e[n] - s[n])
 }
 
 /// The centre and direction of a Siemens arc (None: a `CT` along the

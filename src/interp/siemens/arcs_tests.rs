@@ -61,6 +61,20 @@ fn ct_circle() {
     close(end_direction((0.0, 10.0), (10.0, 10.0), true), (0.0, 10.0));
 }
 
+#[test]
+fn helix_lengths() {
+    let pi = std::f64::consts::PI;
+    // A quarter circle of radius 10, CCW: 5π.
+    let l = helix_length([10.0, 0.0, 0.0], [0.0, 10.0, 0.0], [0.0; 3], (0, 1), 1);
+    assert!((l - 5.0 * pi).abs() < 1e-9);
+    // The same end CW: three quarters.
+    let l = helix_length([10.0, 0.0, 0.0], [0.0, 10.0, 0.0], [0.0; 3], (0, 1), -1);
+    assert!((l - 15.0 * pi).abs() < 1e-9);
+    // Two full turns of radius 1 rising 3 (G18: plane Z X, rise along Y).
+    let l = helix_length([1.0, 0.0, 0.0], [1.0, 3.0, 0.0], [0.0; 3], (2, 0), 2);
+    assert!((l - (4.0 * pi).hypot(3.0)).abs() < 1e-9);
+}
+
 /// The arc calls of a Siemens program run through the whole interpreter,
 /// or the first error message.
 fn arcs_of(src: &str) -> Vec<String> {
