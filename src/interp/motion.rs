@@ -85,8 +85,18 @@ fn motion_inner(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Aren
         }
     };
     it.comp_block(block.span);
+    let sinumerik = it.spec.family == crate::dialect::Family::Sinumerik;
     match kind {
+        MotionKind::Rapid | MotionKind::Linear if sinumerik => {
+            let from = it.state.pos;
+            straight(it, kind, m, block, exprs)?;
+            super::siemens::arcs::note_straight(it, from);
+            Ok(())
+        }
         MotionKind::Rapid | MotionKind::Linear => straight(it, kind, m, block, exprs),
+        MotionKind::Arc(_) | MotionKind::ArcThrough | MotionKind::ArcTangent if sinumerik => {
+            super::siemens::arcs::arc(it, kind, m, block, exprs)
+        }
         MotionKind::Arc(dir) => arcs::arc(it, dir, m, block, exprs),
         MotionKind::Probe { .. } => probe(it, &m.target, exprs),
         MotionKind::Other(code) if code.to_f64() == 33.0 || code.to_f64() == 33.1 => {

@@ -18,6 +18,7 @@
 //!
 //! [`MotionHost`]: crate::interp::host::MotionHost
 
+pub(crate) mod arcs;
 mod calls;
 mod edge;
 pub(crate) mod frame;
@@ -53,6 +54,8 @@ pub struct SiemensState {
     pub frame: ProgFrame,
     /// The modal cycle call in force.
     pub modal: Option<ModalCall>,
+    /// Direction of the last path move (programmed system), for `CT`.
+    pub tangent: Option<[f64; 3]>,
 }
 
 /// A programmed point (mm) in the base frame (mm): identity when no
