@@ -12,16 +12,32 @@ fn clean_programs_check_silently() {
         ("linuxcnc", "tests/programs/linuxcnc/subs.ngc"),
         ("siemens840d", "tests/programs/siemens840d/plate.mpf"),
     ] {
-        let o = cncc(&["check", "--dialect", dialect, file]);
+        let o = check_clean(dialect, file);
         assert_eq!(o.status.code(), Some(0), "{file}: {}", stderr(&o));
         assert_eq!(stdout(&o), "", "{file}");
         assert_eq!(stderr(&o), "", "{file}");
     }
 }
 
+/// `check` with the program's own tool table (`NAME.tbl` beside it) if it has one.
+fn check_clean(dialect: &str, file: &str) -> std::process::Output {
+    let table = std::path::Path::new(file).with_extension("tbl");
+    if root().join(&table).exists() {
+        cncc(&["check", "--dialect", dialect, "--tool-table", table.to_str().unwrap(), file])
+    } else {
+        cncc(&["check", "--dialect", dialect, file])
+    }
+}
+
 #[test]
 fn detection_without_dialect_is_quiet_on_clean_files() {
-    let o = cncc(&["check", "tests/programs/siemens840d/plate.mpf", "tests/programs/linuxcnc/subs.ngc"]);
+    let o = cncc(&[
+        "check",
+        "--tool-table",
+        "tests/programs/siemens840d/plate.tbl",
+        "tests/programs/siemens840d/plate.mpf",
+        "tests/programs/linuxcnc/subs.ngc",
+    ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert_eq!(stderr(&o), "");
 }
@@ -99,7 +115,7 @@ fn dialects_lists_the_built_ins() {
 #[test]
 fn aliases_resolve() {
     for alias in ["sinumerik", "840d"] {
-        let o = cncc(&["check", "--dialect", alias, "tests/programs/siemens840d/plate.mpf"]);
+        let o = cncc(&["check", "--dialect", alias, "tests/programs/siemens840d/control.mpf"]);
         assert_eq!(o.status.code(), Some(0), "{alias}: {}", stderr(&o));
     }
     let o = cncc(&["check", "--dialect", "rs274ngc", "tests/programs/linuxcnc/subs.ngc"]);

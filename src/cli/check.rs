@@ -77,8 +77,12 @@ fn check_file(ctx: &mut Context, path: &Path, a: &CheckArgs<'_>) -> Result<Vec<D
             }
         };
         // A statement cncc cannot run yet is our limit, not the program's
-        // mistake: the run stops there without a report.
-        run.retain(|d| d.code != Code::UnsupportedHere);
+        // mistake: said as a warning that the run-time checks stop there.
+        for d in run.iter_mut().filter(|d| d.code == Code::UnsupportedHere) {
+            d.code = Code::RunStoppedEarly;
+            d.severity = crate::diag::Severity::Warning;
+            d.help = Some("cncc cannot run this yet; run-time checks of the blocks after it were not made".into());
+        }
         diags.extend(run);
     }
     keep_lines(ctx, path, id, &diags)?;

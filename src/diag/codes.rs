@@ -208,6 +208,9 @@ codes! {
     UnsupportedHere = "E0510", "not-supported-here", Error,
         "a construct the interpreter cannot run",
         "The statement is read and kept, but cncc cannot run it (yet), so the canonical output would be wrong from here on. The run stops with this diagnostic.";
+    RunStoppedEarly = "W0511", "run-stopped-early", Warning,
+        "the run-time checks stop at a statement cncc cannot run",
+        "`check` runs the program to find run-time mistakes. This statement is read and kept, but cncc cannot run it yet, so the blocks after it were not checked at run time. The program itself may be right.";
     CannotExpandCycle = "W0510", "cycle-not-expanded", Warning,
         "a cycle the interpreter cannot expand into moves",
         "The cycle is kept in the program, but its documentation does not define its toolpath well enough for cncc to generate it; the canonical output skips its moves.";

@@ -21,6 +21,12 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
             it.out(Canon::SelectTool(t));
             Ok(())
         }
+        StmtKind::ToolSelect(ToolRef::Name(name)) => {
+            let t = tool_by_name(it, name)?;
+            it.state.tool_selected = Some(t);
+            it.out(Canon::SelectTool(t));
+            Ok(())
+        }
         StmtKind::ToolChange => tool_change(it),
         StmtKind::RadiusComp { side, register } => radius_comp(it, *side, register.as_ref(), block, exprs),
         StmtKind::LengthComp { mode, register, axes } => length_comp(it, *mode, register.as_ref(), axes, exprs),
@@ -38,6 +44,19 @@ pub fn row_of(it: &Interp<'_, '_>, t: i64) -> Result<i64, Stop> {
         Some(r) => Ok(r as i64),
         None => Err(it.error_at(it.span, Code::ToolNotInTable, format!("Requested tool {t} not found in the tool table"))),
     }
+}
+
+/// A tool called by name (Siemens `T="FACEMILL 63"`): the tool-table row
+/// whose comment is that name (case and surrounding spaces aside), since
+/// LinuxCNC tables have no name column.
+fn tool_by_name(it: &Interp<'_, '_>, name: &str) -> Result<i64, Stop> {
+    let wanted = name.trim();
+    it.tool_table.tools.iter().find(|t| t.comment.trim().eq_ignore_ascii_case(wanted)).map(|t| t.number).ok_or_else(|| {
+        match it.error_at(it.span, Code::ToolNotInTable, format!("no tool named \"{wanted}\" in the tool table")) {
+            Stop::Error(d) => Stop::Error(d.help(format!("name a tool by its comment in the tool table: `T5 P5 Z2.0 D2.48 ;{wanted}`"))),
+            other => other,
+        }
+    })
 }
 
 /// mm per machine unit.
