@@ -17,7 +17,10 @@ fn the_built_in_haas_does_not_know_the_shop_code() {
 fn a_shop_spec_extending_haas_adds_its_code() {
     let o = cncc(&["--dialect-file", "tests/dialects/shop-haas.xml", "check", "--dialect", "vf2", PROGRAM]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    assert_eq!(stderr(&o), "");
+    // Read clean; the shop's own code cannot be simulated, which `check`
+    // says as a warning (W0511) rather than passing over it.
+    assert!(!stderr(&o).contains("error["), "{}", stderr(&o));
+    assert!(stderr(&o).contains("W0511"), "{}", stderr(&o));
     let o = cncc(&["--dialect-file", "tests/dialects/shop-haas.xml", "dialects"]);
     assert!(stdout(&o).contains("shop-haas"), "{}", stdout(&o));
 }
