@@ -57,7 +57,20 @@ fn tool_change(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
     it.state.tool_in_spindle = t;
     it.state.resync = true;
     it.out(Canon::ChangeTool(row));
+    set_tool_parameters(it, t);
     Ok(())
+}
+
+/// #5400 (tool number), #5401..#5409 (its table offsets, machine units, as
+/// the table gives them) and #5410 (diameter): written by M6 only, as rs274
+/// does (M61 and G43 leave them; `T0 M6` leaves them too, checked with rs274).
+fn set_tool_parameters(it: &mut Interp<'_, '_>, t: i64) {
+    let Some(tool) = it.tool_table.get(t).cloned() else { return };
+    it.params.set_numbered(5400, Some(t as f64));
+    for (i, v) in tool.offset.iter().enumerate() {
+        it.params.set_numbered(5401 + i as u32, Some(*v));
+    }
+    it.params.set_numbered(5410, Some(tool.diameter));
 }
 
 fn radius_comp(
