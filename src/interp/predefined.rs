@@ -35,6 +35,7 @@ pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
         "_selected_tool" => Some(s.tool_selected.unwrap_or(-1) as f64),
         "_coord_system" => Some(match s.g5x_index {
             i @ 1..=6 => 530.0 + 10.0 * i as f64,
+            0 => 541.0, // Fanuc G54.1 P (extended)
             i => 590.0 + (i - 6) as f64,
         }),
         "_call_level" => Some((it.params.depth() - 1) as f64),
