@@ -46,6 +46,11 @@ pub enum Canon {
     OnReset,
     Comment(String),
     Message(String),
+    /// `(LOGOPEN,f)`, `(LOGAPPEND,f)`, `(LOG,text)`, `(LOGCLOSE)`.
+    LogOpen(String),
+    LogAppend(String),
+    Log(String),
+    LogClose,
     SetFeedRate(f64),
     /// Feed mode: 0 units/min, 1 units/rev (LinuxCNC prints spindle 0 first).
     SetFeedMode(u8),

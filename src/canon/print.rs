@@ -88,6 +88,10 @@ pub fn format_call(c: &Canon) -> String {
         OnReset => "ON_RESET()".into(),
         Comment(s) => format!("COMMENT({})", quoted(s)),
         Message(s) => format!("MESSAGE({})", quoted(s)),
+        LogOpen(s) => format!("LOGOPEN({})", quoted(s)),
+        LogAppend(s) => format!("LOGAPPEND({})", quoted(s)),
+        Log(s) => format!("LOG({})", quoted(s)),
+        LogClose => "LOGCLOSE()".into(),
         SetFeedRate(f) => format!("SET_FEED_RATE({})", f4(*f)),
         SetFeedMode(m) => format!("SET_FEED_MODE(0, {m})"),
         SelectPlane(p) => format!(

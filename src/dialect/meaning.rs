@@ -28,6 +28,8 @@ pub enum Meaning {
     ArcDistance(DimMode),
     FeedMode(FeedMode),
     RadiusComp(CompSide),
+    /// LinuxCNC G41.1/G42.1: the D word is the tool diameter itself.
+    RadiusCompDiameter(CompSide),
     LengthComp(LengthComp),
     /// G54.. with its index (see `StmtKind::WorkOffset`).
     WorkOffset(u32),
@@ -103,6 +105,8 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
     ("radius-comp.off", M::RadiusComp(CompSide::Off)),
     ("radius-comp.left", M::RadiusComp(CompSide::Left)),
     ("radius-comp.right", M::RadiusComp(CompSide::Right)),
+    ("radius-comp.left-diameter", M::RadiusCompDiameter(CompSide::Left)),
+    ("radius-comp.right-diameter", M::RadiusCompDiameter(CompSide::Right)),
     ("length-comp.positive", M::LengthComp(LengthComp::Positive)),
     ("length-comp.negative", M::LengthComp(LengthComp::Negative)),
     ("length-comp.cancel", M::LengthComp(LengthComp::Cancel)),

@@ -52,9 +52,13 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
             let _ = v;
         }
         K::CuttingEdge(v) => w.push_word(words, "D", v, NumKind::Int, span),
-        K::RadiusComp { side, register } => {
+        K::RadiusComp { side, register, diameter: false } => {
             w.push_code(words, Meaning::RadiusComp(*side), span);
             opt_word(w, words, "D", register.as_ref(), NumKind::Int, span);
+        }
+        K::RadiusComp { side, register, diameter: true } => {
+            w.push_code(words, Meaning::RadiusCompDiameter(*side), span);
+            opt_word(w, words, "D", register.as_ref(), NumKind::Length, span);
         }
         K::LengthComp { mode, register, axes } => {
             w.push_code(words, Meaning::LengthComp(*mode), span);

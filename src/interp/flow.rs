@@ -462,10 +462,12 @@ impl<'l> Walker<'l> {
                 }
             }
             SubEnd { value, .. } | Return { value, .. } => {
-                if let Some(v) = value {
-                    let v = it.eval(*v, exprs)?.unwrap_or(0.0);
-                    it.params.set_named("_value", v);
-                }
+                // Without a value LinuxCNC sets `_value` to 0 (retval.ngc).
+                let v = match value {
+                    Some(v) => it.eval(*v, exprs)?.unwrap_or(0.0),
+                    None => 0.0,
+                };
+                it.params.set_named("_value", v);
                 it.params.set_named("_value_returned", value.is_some() as i64 as f64);
                 Some(Next::Return)
             }

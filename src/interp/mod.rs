@@ -30,6 +30,7 @@ pub mod aux;
 pub mod target;
 pub mod arcs;
 pub mod modal_save;
+pub mod fanuc_xform;
 
 pub use options::{Limits, Options};
 
@@ -66,6 +67,8 @@ pub struct Interp<'a, 's> {
     pub params: params::Params,
     /// Siemens programmable frame and modal cycle call.
     pub siemens: siemens::SiemensState,
+    /// Fanuc G68/G51/G51.1 transforms (mapped through `siemens.frame`).
+    pub fanuc: fanuc_xform::FanucXform,
     /// Canned-cycle values that carry over between blocks.
     pub cycles: cycles::CycleMemory,
     /// Cutter radius compensation (every move goes through it).
@@ -83,7 +86,7 @@ pub struct Interp<'a, 's> {
 
 impl<'a, 's> Interp<'a, 's> {
     pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
-        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new(), cycles: cycles::CycleMemory::new(), comp: comp::RadiusComp::new(), comp_tags: std::collections::VecDeque::new(), tool_table: opts.tool_table.clone(), block_span: Span::default(), saved_modal: None, auto_restore: Vec::new(), siemens: siemens::SiemensState::default() }
+        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new(), cycles: cycles::CycleMemory::new(), comp: comp::RadiusComp::new(), comp_tags: std::collections::VecDeque::new(), tool_table: opts.tool_table.clone(), block_span: Span::default(), saved_modal: None, auto_restore: Vec::new(), siemens: siemens::SiemensState::default(), fanuc: fanuc_xform::FanucXform::default() }
     }
 
     /// Emits one call, tagged with the current statement's span.

@@ -105,11 +105,28 @@ fn comment(it: &mut Interp<'_, '_>, text: &str, style: CommentStyle) -> Result<(
         it.out(Canon::Message(msg));
     } else if let Some(rest) = strip_prefix_ci(text, "msg,") {
         it.out(Canon::Message(rest.to_string()));
-    } else if lower.starts_with("print,") || lower.starts_with("log") {
+    } else if let Some(call) = log_call(it, text) {
+        it.out(call);
+    } else if lower.starts_with("print,") {
     } else {
         it.out(Canon::Comment(text.to_string()));
     }
     Ok(())
+}
+
+/// `(LOGOPEN,f)`, `(LOGAPPEND,f)`, `(LOGCLOSE)`, `(LOG,text)` (parameters
+/// substituted as in DEBUG), as rs274 prints them.
+fn log_call(it: &Interp<'_, '_>, text: &str) -> Option<Canon> {
+    if let Some(f) = strip_prefix_ci(text, "logopen,") {
+        return Some(Canon::LogOpen(f.trim().to_string()));
+    }
+    if let Some(f) = strip_prefix_ci(text, "logappend,") {
+        return Some(Canon::LogAppend(f.trim().to_string()));
+    }
+    if strip_prefix_ci(text, "logclose").is_some() {
+        return Some(Canon::LogClose);
+    }
+    strip_prefix_ci(text, "log,").map(|rest| Canon::Log(substitute(it, rest)))
 }
 
 fn strip_prefix_ci<'t>(text: &'t str, prefix: &str) -> Option<&'t str> {

@@ -98,7 +98,7 @@ fn motion_inner(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Aren
             super::siemens::arcs::arc(it, kind, m, block, exprs)
         }
         MotionKind::Arc(dir) => arcs::arc(it, dir, m, block, exprs),
-        MotionKind::Probe { .. } => probe(it, &m.target, exprs),
+        MotionKind::Probe { error, .. } => probe(it, &m.target, error, exprs),
         MotionKind::Other(code) if code.to_f64() == 33.0 || code.to_f64() == 33.1 => {
             spindle_sync(it, code.to_f64() != 33.0, &m.target, exprs)
         }
@@ -157,7 +157,7 @@ pub fn straight_length(from: &Pose, to: &Pose) -> f64 {
 }
 
 /// G38.x: the simulated probe reaches the programmed point.
-fn probe(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn probe(it: &mut Interp<'_, '_>, axes: &Axes, error: bool, exprs: &Arena<Expr>) -> Result<(), Stop> {
     let to = target(it, axes, exprs, Frame::Program)?;
     let to = pose6(&it.state, &to);
     {
@@ -169,7 +169,8 @@ fn probe(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Result<()
     if it.state.feed == 0.0 {
         return Err(it.error_at(it.span, Code::NoFeedRate, "Cannot probe with zero feed rate"));
     }
-    if straight_length(&from, &to) < it.state.to_prog(0.254) {
+    // Only the probes that fail on no contact (G38.2/G38.4) check (rs274).
+    if error && straight_length(&from, &to) < it.state.to_prog(0.254) {
         return Err(it.error_at(it.span, Code::BadWordValue, "Start point too close to probe point"));
     }
     it.out(Canon::TurnProbeOn);

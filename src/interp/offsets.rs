@@ -1,5 +1,5 @@
 //! Running the offsets statements of a block (see [`super::exec`] for which):
-//! work offsets G54..G59.3, G10 L1/L2/L10/L11/L20, G92/G92.1/G92.2/G92.3,
+//! work offsets G54..G59.3 (and G54.1 P), G10 L1/L2/L10/L11/L20, G92..G92.3,
 //! G52, G28/G30 (and .1). G53 is read by the motion of its block.
 
 use super::machine::{g5x_pose, pose6};
@@ -18,6 +18,10 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
             work_offset(it, *index);
             Ok(())
         }
+        StmtKind::WorkOffset { extended: Some(p), .. } => {
+            let p = it.value(p, exprs)?;
+            extended_offset(it, p)
+        }
         StmtKind::MachineCoords => Ok(()),
         StmtKind::CoordShift { kind, axes } => coord_shift(it, *kind, axes, exprs),
         StmtKind::SetData { l, words } => {
@@ -25,6 +29,7 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
             set_data(it, l, words, exprs)
         }
         StmtKind::RefReturn { index, axes, store } => ref_return(it, *index, axes, *store, block, exprs),
+        StmtKind::Transform(t) => super::fanuc_xform::exec(it, t, exprs),
         _ => Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet")),
     }
 }
@@ -48,6 +53,31 @@ fn work_offset(it: &mut Interp<'_, '_>, index: u32) {
     emit_g5x(it, index);
     emit_g92(it);
     it.out(Canon::SetXyRotation(it.state.g5x_rotation[index as usize]));
+}
+
+/// Fanuc G54.1 P / Haas G154 P: an extended work offset (LinuxCNC has
+/// none). Its values are Fanuc's parameters #7001.. (P1 X at #7001, stride
+/// 20 per P: axis `i` of P`n` is #7001 + 20(n-1) + i, program units), read
+/// when selected into the spare work-offset slot 0 and printed as
+/// `SET_G5X_OFFSET(100 + n, ...)` (no LinuxCNC index exists).
+fn extended_offset(it: &mut Interp<'_, '_>, p: f64) -> Result<(), Stop> {
+    if p.fract() != 0.0 || !(1.0..=300.0).contains(&p) {
+        return Err(it.error_at(it.span, Code::BadWordValue, format!("extended work offset P{p} is not 1..300")));
+    }
+    let n = p as u32;
+    let old = it.state.origin();
+    for i in 0..9 {
+        let v = it.params.numbered(7001 + 20 * (n - 1) + i as u32).unwrap_or(0.0);
+        it.state.g5x[0][i] = if State::is_linear(i) { it.state.to_mm(v) } else { v };
+    }
+    it.state.g5x_rotation[0] = 0.0;
+    it.state.g5x_index = 0;
+    it.state.reframe(old);
+    let offset = g5x_pose(&it.state, 0);
+    it.out(Canon::SetG5xOffset { index: 100 + n, offset });
+    emit_g92(it);
+    it.out(Canon::SetXyRotation(0.0));
+    Ok(())
 }
 
 fn emit_g5x(it: &mut Interp<'_, '_>, index: u32) {

@@ -1,10 +1,12 @@
 //! LinuxCNC's predefined read-only named parameters (`#<_x>`,
 //! `#<_metric>`, ...) and the numbered system parameters that mirror the
-//! machine state (#5211 G92, #5220/#5221.. work offsets, #5400 tool,
+//! machine state (#5211 G92, #5220/#5221.. work offsets,
 //! #5420.. position), computed from the machine state when read.
 
 use super::Interp;
-use crate::ir::LengthUnit;
+use super::host::SpindleDir;
+use super::state::ModalMotion;
+use crate::ir::{ArcDir, CompSide, CycleKind, FeedMode, LengthUnit, MotionKind};
 
 /// The value of a predefined named parameter, if `name` is one.
 pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
@@ -33,6 +35,7 @@ pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
         "_selected_tool" => Some(s.tool_selected.unwrap_or(-1) as f64),
         "_coord_system" => Some(match s.g5x_index {
             i @ 1..=6 => 530.0 + 10.0 * i as f64,
+            0 => 541.0, // Fanuc G54.1 P (extended)
             i => 590.0 + (i - 6) as f64,
         }),
         "_call_level" => Some((it.params.depth() - 1) as f64),
@@ -46,9 +49,78 @@ pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
         // The standalone interpreter: no task, no remapping, overrides on.
         "_task" | "_remap_level" | "_feed_hold" | "_adaptive_feed" => Some(0.0),
         "_speed_override" | "_feed_override" => Some(1.0),
-        "_vmajor" => Some(2.0),
-        "_vminor" => Some(9.0),
+        // LinuxCNC 2.9 reports `_vmajor` 2.9 and `_vminor` 0 (rs274 2.9.x).
+        "_vmajor" => Some(2.9),
+        "_vminor" => Some(0.0),
+        _ => modal(it, name),
+    }
+}
+
+/// The modal-state parameters (`#<_motion_mode>`, `#<_ccomp>`, ...) and the
+/// absolute-position ones (`#<_abs_x>`: machine frame, program units).
+fn modal(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
+    let s = &it.state;
+    let b = |v: bool| Some(v as i64 as f64);
+    let lower = name.to_ascii_lowercase();
+    if let Some(axis) = lower.strip_prefix("_abs_") {
+        let i = "xyzabcuvw".find(axis).filter(|_| axis.len() == 1)?;
+        let v = s.pos[i] + s.origin()[i];
+        return Some(if super::state::State::is_linear(i) { s.to_prog(v) } else { v });
+    }
+    match lower.as_str() {
+        "_motion_mode" => Some(motion_code(s.motion)),
+        "_ccomp" => Some(match s.comp_side {
+            CompSide::Off => 400.0,
+            CompSide::Left => 410.0,
+            CompSide::Right => 420.0,
+        }),
+        "_inverse_time" => b(s.feed_mode == FeedMode::InverseTime),
+        "_units_per_minute" => b(s.feed_mode == FeedMode::PerMinute),
+        "_units_per_rev" => b(s.feed_mode == FeedMode::PerRevolution),
+        "_tool_offset" => b(s.tool_offset.iter().any(|v| *v != 0.0)),
+        "_retract_r_plane" => b(!s.retract_initial),
+        "_retract_old_z" => b(s.retract_initial),
+        "_spindle_rpm_mode" => b(s.css_max == 0.0),
+        "_spindle_css_mode" => b(s.css_max != 0.0),
+        "_ijk_absolute_mode" => b(s.arc_absolute),
+        "_lathe_diameter_mode" => b(s.lathe_diameter),
+        "_lathe_radius_mode" => b(!s.lathe_diameter),
+        "_spindle_on" => b(s.spindle != SpindleDir::Stopped),
+        "_spindle_cw" => b(s.spindle == SpindleDir::Cw),
         _ => None,
+    }
+}
+
+/// `#<_motion_mode>`: the G code of the modal motion times ten (G80: 800).
+fn motion_code(m: ModalMotion) -> f64 {
+    match m {
+        ModalMotion::None => 800.0,
+        ModalMotion::Move(k) => match k {
+            MotionKind::Rapid => 0.0,
+            MotionKind::Linear => 10.0,
+            MotionKind::Arc(ArcDir::Cw) => 20.0,
+            MotionKind::Arc(ArcDir::Ccw) => 30.0,
+            MotionKind::Probe { toward: true, error: true } => 382.0,
+            MotionKind::Probe { toward: true, error: false } => 383.0,
+            MotionKind::Probe { toward: false, error: true } => 384.0,
+            MotionKind::Probe { toward: false, error: false } => 385.0,
+            MotionKind::Other(d) => (d.to_f64() * 10.0).round(),
+            MotionKind::Implicit | MotionKind::ArcThrough | MotionKind::ArcTangent => 800.0,
+        },
+        ModalMotion::Cycle(c) => match c {
+            CycleKind::Drill => 810.0,
+            CycleKind::DrillDwell => 820.0,
+            CycleKind::Peck => 830.0,
+            CycleKind::ChipBreak => 730.0,
+            CycleKind::Tap => 840.0,
+            CycleKind::TapLeft => 740.0,
+            CycleKind::BoreFeedOut => 850.0,
+            CycleKind::BoreStopRapidOut => 860.0,
+            CycleKind::BackBore => 870.0,
+            CycleKind::BoreManual => 880.0,
+            CycleKind::BoreDwellFeedOut => 890.0,
+            CycleKind::FineBore => 760.0,
+        },
     }
 }
 
@@ -74,11 +146,7 @@ pub fn numbered(it: &Interp<'_, '_>, n: u32) -> Option<f64> {
                 _ => None,
             }
         }
-        5400 => Some(s.tool_in_spindle as f64),
-        5401..=5409 => {
-            let i = (n - 5401) as usize;
-            Some(len(i, s.tool_offset[i]))
-        }
+        // #5400..#5410 are stored parameters written by M6 (see tools.rs).
         5420..=5428 => named(it, ["_x", "_y", "_z", "_a", "_b", "_c", "_u", "_v", "_w"][(n - 5420) as usize]),
         _ => None,
     }

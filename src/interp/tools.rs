@@ -28,7 +28,7 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
             Ok(())
         }
         StmtKind::ToolChange => tool_change(it),
-        StmtKind::RadiusComp { side, register } => radius_comp(it, *side, register.as_ref(), block, exprs),
+        StmtKind::RadiusComp { side, register, diameter } => radius_comp(it, *side, register.as_ref(), *diameter, block, exprs),
         StmtKind::LengthComp { mode, register, axes } => length_comp(it, *mode, register.as_ref(), axes, exprs),
         StmtKind::OffsetRegister { .. } => Ok(()),
         _ => Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet")),
@@ -76,13 +76,27 @@ fn tool_change(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
     it.state.tool_in_spindle = t;
     it.state.resync = true;
     it.out(Canon::ChangeTool(row));
+    set_tool_parameters(it, t);
     Ok(())
+}
+
+/// #5400 (tool number), #5401..#5409 (its table offsets, machine units, as
+/// the table gives them) and #5410 (diameter): written by M6 only, as rs274
+/// does (M61 and G43 leave them; `T0 M6` leaves them too, checked with rs274).
+fn set_tool_parameters(it: &mut Interp<'_, '_>, t: i64) {
+    let Some(tool) = it.tool_table.get(t).cloned() else { return };
+    it.params.set_numbered(5400, Some(t as f64));
+    for (i, v) in tool.offset.iter().enumerate() {
+        it.params.set_numbered(5401 + i as u32, Some(*v));
+    }
+    it.params.set_numbered(5410, Some(tool.diameter));
 }
 
 fn radius_comp(
     it: &mut Interp<'_, '_>,
     side: CompSide,
     register: Option<&Value>,
+    diameter: bool,
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
@@ -101,7 +115,7 @@ fn radius_comp(
         CompSide::Left => Side::Left,
         CompSide::Right => Side::Right,
     };
-    let radius = comp_radius(it, register, block, exprs)?;
+    let radius = comp_radius(it, register, diameter, exprs)?;
     let what = if side == Side::Left { "left" } else { "right" };
     it.out(Canon::Comment(format!("interpreter: cutter radius compensation on {what}")));
     let plane = it.state.plane;
@@ -113,11 +127,7 @@ fn radius_comp(
 
 /// G41/G42 [D]: half the table diameter of tool D (or of the tool in the
 /// spindle), in program units; G41.1/G42.1 D: half of D itself.
-fn comp_radius(it: &mut Interp<'_, '_>, register: Option<&Value>, block: &Block, exprs: &Arena<Expr>) -> Result<f64, Stop> {
-    // G41.1/G42.1 (D is the diameter) share G41/G42's meaning in the IR,
-    // so they cannot be told apart here yet: D is read as a tool number.
-    let _ = block;
-    let dynamic = false;
+fn comp_radius(it: &mut Interp<'_, '_>, register: Option<&Value>, dynamic: bool, exprs: &Arena<Expr>) -> Result<f64, Stop> {
     let d = match register {
         Some(v) => Some(it.value(v, exprs)?),
         None => None,

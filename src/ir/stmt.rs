@@ -541,7 +541,14 @@ pub enum StmtKind {
     ToolChange,
     /// Siemens `D1`: cutting edge, activating its length and radius.
     CuttingEdge(Value),
-    RadiusComp { side: CompSide, register: Option<Value> },
+    /// G40/G41/G42 D (a tool or register number); `diameter`: LinuxCNC
+    /// G41.1/G42.1, where D is the tool diameter itself.
+    RadiusComp {
+        side: CompSide,
+        register: Option<Value>,
+        #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+        diameter: bool,
+    },
     LengthComp { mode: LengthComp, register: Option<Value>, axes: Box<Axes> },
     /// A register word standing alone: `H1` or `D2` without G43/G41.
     OffsetRegister { letter: char, value: Value },

@@ -149,22 +149,28 @@ fn modal_cycle_word(w: &WordSyntax, ctx: &Ctx<'_>) -> bool {
     letter.map(|c| matches!(c, 'Q' | 'P') || c == ctx.spec.repeat_letter).unwrap_or(false)
 }
 
+/// What the block offers the words nobody took.
+pub(super) struct Free<'a> {
+    /// The words of a dynamic code (`G[#1]`), if the block has one.
+    pub dynamic: Option<&'a mut Vec<Word>>,
+    /// The block moves in a modal cycle (`X.48 L6`).
+    pub implicit: bool,
+    /// Letters the block's codes declare in `uses` (kept silently).
+    pub declared: &'a [char],
+}
+
 /// Every word still free: given to a dynamic code if the block has one,
-/// otherwise reported (E0209 or W0004) and kept.
-pub(super) fn unused(
-    words: &mut Words,
-    dynamic: Option<&mut Vec<Word>>,
-    implicit: bool,
-    out: &mut Placement,
-    ctx: &mut Ctx<'_>,
-) {
+/// kept silently if a code of the block declares it, otherwise reported
+/// (E0209 or W0004) and kept.
+pub(super) fn unused(words: &mut Words, free_of: Free<'_>, out: &mut Placement, ctx: &mut Ctx<'_>) {
     let free = words.take_free();
-    if let Some(dynamic) = dynamic {
+    if let Some(dynamic) = free_of.dynamic {
         dynamic.extend(free.iter().map(as_word));
         return;
     }
     for w in free {
-        if !(implicit && modal_cycle_word(&w, ctx)) {
+        let declared = single_letter(&w.address).is_some_and(|c| free_of.declared.contains(&c.to_ascii_uppercase()));
+        if !declared && !(free_of.implicit && modal_cycle_word(&w, ctx)) {
             report_unused(&w, ctx);
         }
         out.push(place(keep(&w, ctx), w.span));

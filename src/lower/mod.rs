@@ -223,7 +223,11 @@ fn finish(s: &mut Sorted<'_>, words: &mut Words, ctx: &mut Ctx<'_>) {
     leftover::standalone(words, &mut s.out, ctx);
     let mut dynamic_words: Vec<Word> = Vec::new();
     let has_dynamic = !s.dynamic.is_empty();
-    leftover::unused(words, has_dynamic.then_some(&mut dynamic_words), implicit, &mut s.out, ctx);
+    // Letters a code of the block declares in `uses` (M19 R Q P) are kept
+    // for the interpreter even when the statement has no field for them.
+    let declared: Vec<char> = s.codes.iter().filter_map(|c| c.def).flat_map(|d| d.uses.iter().copied()).collect();
+    let free = leftover::Free { dynamic: has_dynamic.then_some(&mut dynamic_words), implicit, declared: &declared };
+    leftover::unused(words, free, &mut s.out, ctx);
     for (i, (letter, value, span)) in s.dynamic.iter().enumerate() {
         let words = if i == 0 { std::mem::take(&mut dynamic_words) } else { Vec::new() };
         s.out.push((span.start, Stmt::new(StmtKind::DynamicCode { letter: *letter, value: *value, words }, *span)));

@@ -356,3 +356,19 @@ fn modal_cycle_words_in_a_block_without_code_are_kept_quietly() {
     assert!(matches!(kinds(&o)[1], StmtKind::Word(Word { letter: 'L', .. })));
     assert_eq!(codes(&run(&linuxcnc(), "M3 L6")), vec![Code::WordNotAllowed], "no move: reported");
 }
+
+#[test]
+fn g41_1_d_is_a_diameter_and_m19_keeps_its_declared_words() {
+    let spec = crate::dialect::builtin::builtin("linuxcnc").expect("linuxcnc");
+    let o = run(&spec, "G41.1 D0.5");
+    assert!(o.diags.is_empty(), "{}", o.rendered);
+    assert!(kinds(&o).iter().any(|k| matches!(k, StmtKind::RadiusComp { side: CompSide::Left, diameter: true, .. })));
+    let o = run(&spec, "G41 D1");
+    assert!(kinds(&o).iter().any(|k| matches!(k, StmtKind::RadiusComp { side: CompSide::Left, diameter: false, .. })));
+    // M19 declares R Q P: Q and P stay in the block for the interpreter.
+    let o = run(&spec, "M19 R90 Q2 P1");
+    assert!(o.diags.is_empty(), "{}", o.rendered);
+    let ks = kinds(&o);
+    assert!(ks.iter().any(|k| matches!(k, StmtKind::Word(Word { letter: 'Q', .. }))));
+    assert!(ks.iter().any(|k| matches!(k, StmtKind::Word(Word { letter: 'P', .. }))));
+}

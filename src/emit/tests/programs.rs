@@ -27,7 +27,7 @@ fn word_common(b: &mut Builder) {
     b.line(vec![K::ProgramStart { number: Some(1234), name: None }, comment("PLATE")]);
     b.numbered(10, vec![
         K::Units { unit: LengthUnit::Mm, with_feeds: false }, K::Plane(Plane::XY), K::Distance(DimMode::Absolute),
-        K::FeedMode(FeedMode::PerMinute), K::RadiusComp { side: CompSide::Off, register: None },
+        K::FeedMode(FeedMode::PerMinute), K::RadiusComp { side: CompSide::Off, register: None, diameter: false },
         K::LengthComp { mode: LengthComp::Cancel, register: None, axes: Box::new(Axes::default()) }, K::CycleCancel,
     ]);
     b.numbered(20, vec![K::ToolSelect(ToolRef::Number(n("1"))), K::ToolChange]);
@@ -41,7 +41,7 @@ fn word_common(b: &mut Builder) {
     ]);
     let i = b.numbered(50, vec![motion(MotionKind::Linear, &[('Z', "-2")], |_| {}), K::Feed(n("100"))]);
     b.skip(i, 0);
-    let i = b.line(vec![K::RadiusComp { side: CompSide::Left, register: Some(n("11")) }, motion(MotionKind::Linear, &[('X', "5.5")], |_| {})]);
+    let i = b.line(vec![K::RadiusComp { side: CompSide::Left, register: Some(n("11")), diameter: false }, motion(MotionKind::Linear, &[('X', "5.5")], |_| {})]);
     b.skip(i, 2);
     b.line(vec![motion(MotionKind::Arc(ArcDir::Cw), &[('X', "10"), ('Y', "0")], |m| {
         m.arc.i = Some(c("2.5"));

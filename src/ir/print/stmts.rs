@@ -49,8 +49,11 @@ impl Printer<'_> {
             K::ToolSelect(ToolRef::Name(n)) => format!("tool-select {n:?}"),
             K::ToolChange => "tool-change".into(),
             K::CuttingEdge(v) => format!("cutting-edge {}", self.value(v)),
-            K::RadiusComp { side, register } => {
+            K::RadiusComp { side, register, diameter } => {
                 let mut s = format!("radius-comp {}", name(side));
+                if *diameter {
+                    s.push_str(" diameter");
+                }
                 self.kv(&mut s, "D", register);
                 s
             }

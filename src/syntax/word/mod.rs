@@ -73,7 +73,8 @@ impl WordFrontEnd {
         lexer::lex_into(input.text, &mut self.toks);
         let side = prefix::split(input, &self.toks, &mut self.feed, diags);
         let start = prefix::line_start(input, &mut line, &self.feed, diags);
-        prefix::retag_owords(&mut self.feed[start..]);
+        let keep = prefix::retag_owords(&mut self.feed[start..]);
+        self.feed.truncate(start + keep);
         let items = self.run_grammar(input, start, exprs, diags);
         line.items = merge(items, side);
         prefix::name_program(&mut line.items);

@@ -110,14 +110,20 @@ fn seq_number(text: &str, sp: Span, diags: &mut Vec<Diagnostic>) -> u32 {
 }
 
 /// Marks `O` as an o-word where a number or `<name>` and an o-word keyword
-/// follow (`o100 sub`), so the grammar tells it from `O1234`.
-pub fn retag_owords(feed: &mut [Spanned]) {
+/// follow (`o100 sub`), so the grammar tells it from `O1234`. Returns how
+/// many tokens to keep: LinuxCNC ignores whatever follows `oN else` on its
+/// line (`o100 else if [..]` is a plain `else`; checked with rs274).
+pub fn retag_owords(feed: &mut [Spanned]) -> usize {
     for i in 0..feed.len().saturating_sub(2) {
         let named = matches!(feed[i + 1].1, Tok::Number | Tok::Named);
         if feed[i].1 == Tok::O && named && is_oword_keyword(feed[i + 2].1) {
             feed[i].1 = Tok::OWord;
+            if feed[i + 2].1 == Tok::Kw(Kw::Else) {
+                return i + 3;
+            }
         }
     }
+    feed.len()
 }
 
 fn is_oword_keyword(t: Tok) -> bool {
