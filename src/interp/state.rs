@@ -140,8 +140,11 @@ impl State {
     /// number as written.
     pub fn to_prog(&self, mm: f64) -> f64 {
         let v = mm / self.scale();
-        let snapped = (v * 1e9).round() / 1e9;
-        if (v - snapped).abs() < 1e-12 && v.abs() < 1e6 {
+        if !(v.abs() < 1e6) {
+            return v;
+        }
+        let snapped = round_small(v * 1e9) / 1e9;
+        if (v - snapped).abs() < 1e-12 {
             snapped
         } else {
             v
@@ -162,6 +165,22 @@ impl State {
             }
         }
         out
+    }
+}
+
+/// `x.round()` (half away from zero) for `|x| < 2^52`, without a libm
+/// call: the integer part is exact there, and so is the remainder.
+fn round_small(x: f64) -> f64 {
+    let t = (x as i64) as f64;
+    let frac = x - t;
+    if frac >= 0.5 {
+        t + 1.0
+    } else if frac <= -0.5 {
+        t - 1.0
+    } else if t == 0.0 && x.is_sign_negative() {
+        -0.0
+    } else {
+        t
     }
 }
 
@@ -199,6 +218,27 @@ impl State {
         let new = self.origin();
         for i in 0..9 {
             self.pos[i] += old[i] - new[i];
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn round_small_is_round() {
+        let mut state = 0x2545f4914f6cdd1du64;
+        for i in 0..200_000u64 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let mag = [0.5, 1.0, 1e3, 1e9, 1e15][(i % 5) as usize];
+            let x = ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 2.0 * mag;
+            let x = if i % 3 == 0 { (x * 2.0).round() / 2.0 } else { x };
+            let (a, b) = (super::round_small(x), x.round());
+            assert!(a == b && a.is_sign_negative() == b.is_sign_negative(), "{x:e}: {a} {b}");
+        }
+        for x in [0.5, -0.5, 1.5, -2.5, 0.49999999999999994, -0.0, 0.0, -0.3, 4503599627370495.5] {
+            assert_eq!(super::round_small(x).to_bits(), x.round().to_bits(), "{x}");
         }
     }
 }
