@@ -24,8 +24,7 @@ pub fn init_sequence(it: &mut Interp<'_, '_>) {
 
 /// A pose of the first six axes in program units.
 pub fn pose6(s: &State, p: &[f64; 9]) -> Pose {
-    let q = s.pose_to_prog(p);
-    [q[0], q[1], q[2], q[3], q[4], q[5]]
+    s.pose6_to_prog(p)
 }
 
 /// The current work offset as printed (program units).

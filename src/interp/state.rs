@@ -79,6 +79,17 @@ pub struct State {
     /// A tool change happened: the next block re-reads the position from
     /// the canon layer (as rs274 does), dropping tool-length shifts.
     pub resync: bool,
+    /// The last pose converted by [`State::pose6_to_prog`] (moves convert
+    /// the same position several times).
+    prog_cache: std::cell::Cell<Option<ProgCache>>,
+}
+
+/// A pose in mm (as bits, so that -0 and 0 differ) and its conversion.
+#[derive(Clone, Copy, Debug)]
+struct ProgCache {
+    units: LengthUnit,
+    key: [u64; 6],
+    pose: [f64; 6],
 }
 
 impl State {
@@ -118,6 +129,7 @@ impl State {
             m61_block: None,
             canon_pos: [0.0; 9],
             resync: false,
+            prog_cache: std::cell::Cell::new(None),
         }
     }
 
@@ -139,7 +151,10 @@ impl State {
     /// so that comparisons (R plane against the current level) see the
     /// number as written.
     pub fn to_prog(&self, mm: f64) -> f64 {
-        let v = mm / self.scale();
+        let v = match self.units {
+            LengthUnit::Mm => mm,
+            LengthUnit::Inch => mm / MM_PER_INCH,
+        };
         if !(v.abs() < 1e6) {
             return v;
         }
@@ -154,6 +169,26 @@ impl State {
     /// Is axis `i` (0..9) a length axis (X Y Z U V W) rather than an angle?
     pub fn is_linear(i: usize) -> bool {
         !(3..6).contains(&i)
+    }
+
+    /// The first six axes of a pose in mm/degrees, in program units
+    /// (lengths only); the last conversion is remembered.
+    pub fn pose6_to_prog(&self, p: &[f64; 9]) -> [f64; 6] {
+        let mut key = [0u64; 6];
+        for (k, v) in key.iter_mut().zip(p) {
+            *k = v.to_bits();
+        }
+        if let Some(c) = self.prog_cache.get() {
+            if c.key == key && c.units == self.units {
+                return c.pose;
+            }
+        }
+        let mut pose = [0.0; 6];
+        for (i, v) in pose.iter_mut().enumerate() {
+            *v = if State::is_linear(i) { self.to_prog(p[i]) } else { p[i] };
+        }
+        self.prog_cache.set(Some(ProgCache { units: self.units, key, pose }));
+        pose
     }
 
     /// A pose in mm/degrees converted to program units (lengths only).

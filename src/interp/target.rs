@@ -26,7 +26,6 @@ pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: 
         let p = super::siemens::from_base(it, [to[0], to[1], to[2]]);
         to[..3].copy_from_slice(&p);
     }
-    let origin = it.state.origin();
     for (i, letter) in AXIS_LETTERS.iter().enumerate() {
         let Some(c) = axes.get(*letter) else { continue };
         let v = it.value(&c.value, exprs)?;
@@ -37,7 +36,7 @@ pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: 
             None => it.state.absolute,
         };
         to[i] = match frame {
-            Frame::Machine => v - origin[i],
+            Frame::Machine => v - it.state.origin()[i],
             Frame::Program if absolute => v,
             Frame::Program => to[i] + v,
         };
