@@ -10,14 +10,14 @@ use std::io::Write;
 /// zero). Integer arithmetic where the rounding is unambiguous, the exact
 /// formatter otherwise.
 fn fixed_bytes(v: f64, places: u32, out: &mut Vec<u8>) {
-    let (scale, p) = match places {
-        4 => (1e4, 10_000u64),
-        6 => (1e6, 1_000_000u64),
-        _ => (10f64.powi(places as i32), 10u64.pow(places)),
+    let scale = match places {
+        4 => 1e4,
+        6 => 1e6,
+        _ => 10f64.powi(places as i32),
     };
     let r = (v * scale).abs();
     // `r < 1e12` is false for NaN and infinities: they take the slow path.
-    let unambiguous = r < 1e12 && {
+    let unambiguous = places <= 12 && r < 1e12 && {
         let frac = r - (r as u64) as f64;
         (frac - 0.5).abs() >= 1e-3
     };
@@ -26,22 +26,44 @@ fn fixed_bytes(v: f64, places: u32, out: &mut Vec<u8>) {
         return;
     }
     let n = (r + 0.5) as u64;
-    if v.is_sign_negative() {
-        out.push(b'-');
+    // Written right to left into one buffer: fraction, point, integer
+    // part (at least one digit), sign.
+    let mut buf = [b'0'; 32];
+    let mut i = buf.len();
+    let mut rest = n;
+    for _ in 0..places {
+        i -= 1;
+        buf[i] = b'0' + (rest % 10) as u8;
+        rest /= 10;
     }
-    push_digits(out, n / p, 1);
-    out.push(b'.');
-    push_digits(out, n % p, places as usize);
+    i -= 1;
+    buf[i] = b'.';
+    loop {
+        i -= 1;
+        buf[i] = b'0' + (rest % 10) as u8;
+        rest /= 10;
+        if rest == 0 {
+            break;
+        }
+    }
+    if v.is_sign_negative() {
+        i -= 1;
+        buf[i] = b'-';
+    }
+    out.extend_from_slice(&buf[i..]);
 }
 
-/// `n` in decimal, zero-padded to at least `width` digits.
-fn push_digits(out: &mut Vec<u8>, mut n: u64, width: usize) {
+/// `n` in decimal.
+fn push_int(out: &mut Vec<u8>, mut n: u64) {
     let mut buf = [b'0'; 20];
     let mut i = buf.len();
-    while n > 0 || buf.len() - i < width.max(1) {
+    loop {
         i -= 1;
         buf[i] = b'0' + (n % 10) as u8;
         n /= 10;
+        if n == 0 {
+            break;
+        }
     }
     out.extend_from_slice(&buf[i..]);
 }
@@ -66,7 +88,7 @@ impl Out<'_> {
         if v < 0 {
             self.0.push(b'-');
         }
-        push_digits(self.0, v.unsigned_abs(), 1);
+        push_int(self.0, v.unsigned_abs());
         self
     }
     /// Numbers `%.4f`, separated by `sep`.

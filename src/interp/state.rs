@@ -175,11 +175,14 @@ impl State {
     /// (lengths only); the last conversion is remembered.
     pub fn pose6_to_prog(&self, p: &[f64; 9]) -> [f64; 6] {
         let mut key = [0u64; 6];
-        for (k, v) in key.iter_mut().zip(p) {
-            *k = v.to_bits();
+        let mut diff = 0u64;
+        let cached = self.prog_cache.get();
+        for (i, k) in key.iter_mut().enumerate() {
+            *k = p[i].to_bits();
+            diff |= *k ^ cached.map_or(!*k, |c| c.key[i]);
         }
-        if let Some(c) = self.prog_cache.get() {
-            if c.key == key && c.units == self.units {
+        if let Some(c) = cached {
+            if diff == 0 && c.units == self.units {
                 return c.pose;
             }
         }
