@@ -79,12 +79,12 @@ pub struct State {
     /// A tool change happened: the next block re-reads the position from
     /// the canon layer (as rs274 does), dropping tool-length shifts.
     pub resync: bool,
-    /// The last pose converted by [`State::pose6_to_prog`] (moves convert
-    /// the same position several times).
-    prog_cache: std::cell::Cell<Option<ProgCache>>,
+    /// The last values converted by [`State::pose6_to_prog`].
+    prog_cache: std::cell::Cell<ProgCache>,
 }
 
-/// A pose in mm (as bits, so that -0 and 0 differ) and its conversion.
+/// The last value converted on each axis, in mm (as bits, so that -0 and
+/// 0 differ), and its conversion.
 #[derive(Clone, Copy, Debug)]
 struct ProgCache {
     units: LengthUnit,
@@ -129,7 +129,7 @@ impl State {
             m61_block: None,
             canon_pos: [0.0; 9],
             resync: false,
-            prog_cache: std::cell::Cell::new(None),
+            prog_cache: std::cell::Cell::new(ProgCache { units: LengthUnit::Mm, key: [0; 6], pose: [0.0; 6] }),
         }
     }
 
@@ -172,26 +172,22 @@ impl State {
     }
 
     /// The first six axes of a pose in mm/degrees, in program units
-    /// (lengths only); the last conversion is remembered.
+    /// (lengths only). Each axis's last conversion is remembered: moves
+    /// convert the same values again and again.
     pub fn pose6_to_prog(&self, p: &[f64; 9]) -> [f64; 6] {
-        let mut key = [0u64; 6];
-        let mut diff = 0u64;
-        let cached = self.prog_cache.get();
-        for (i, k) in key.iter_mut().enumerate() {
-            *k = p[i].to_bits();
-            diff |= *k ^ cached.map_or(!*k, |c| c.key[i]);
-        }
-        if let Some(c) = cached {
-            if diff == 0 && c.units == self.units {
-                return c.pose;
+        let mut c = self.prog_cache.get();
+        let same_units = c.units == self.units;
+        c.units = self.units;
+        for i in 0..6 {
+            let bits = p[i].to_bits();
+            if same_units && c.key[i] == bits {
+                continue;
             }
+            c.key[i] = bits;
+            c.pose[i] = if State::is_linear(i) { self.to_prog(p[i]) } else { p[i] };
         }
-        let mut pose = [0.0; 6];
-        for (i, v) in pose.iter_mut().enumerate() {
-            *v = if State::is_linear(i) { self.to_prog(p[i]) } else { p[i] };
-        }
-        self.prog_cache.set(Some(ProgCache { units: self.units, key, pose }));
-        pose
+        self.prog_cache.set(c);
+        c.pose
     }
 
     /// A pose in mm/degrees converted to program units (lengths only).
