@@ -51,7 +51,7 @@ pub fn exec_block(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -
         present |= 1 << phase(&s.kind);
     }
     present &= !1;
-    if present & (present - 1) == 0 || in_phase_order(&block.stmts) {
+    if present.count_ones() <= 1 || in_phase_order(&block.stmts) {
         return run_phase(it, block, exprs, |p| p > 0);
     }
     while present != 0 {
