@@ -15,6 +15,10 @@ fn fixed_bytes(v: f64, places: u32, out: &mut Vec<u8>) {
         6 => 1e6,
         _ => 10f64.powi(places as i32),
     };
+    if v == 0.0 && places == 4 {
+        let zero: &[u8] = if v.is_sign_negative() { b"-0.0000" } else { b"0.0000" };
+        return out.extend_from_slice(zero);
+    }
     let r = (v * scale).abs();
     // `r < 1e12` is false for NaN and infinities: they take the slow path.
     let unambiguous = places <= 12 && r < 1e12 && {
@@ -31,7 +35,15 @@ fn fixed_bytes(v: f64, places: u32, out: &mut Vec<u8>) {
     let mut buf = [b'0'; 32];
     let mut i = buf.len();
     let mut rest = n;
-    for _ in 0..places {
+    let mut left = places;
+    while left >= 2 {
+        i -= 2;
+        let pair = (rest % 100) as usize * 2;
+        buf[i..i + 2].copy_from_slice(&PAIRS[pair..pair + 2]);
+        rest /= 100;
+        left -= 2;
+    }
+    if left == 1 {
         i -= 1;
         buf[i] = b'0' + (rest % 10) as u8;
         rest /= 10;
@@ -52,6 +64,13 @@ fn fixed_bytes(v: f64, places: u32, out: &mut Vec<u8>) {
     }
     out.extend_from_slice(&buf[i..]);
 }
+
+/// "00" to "99", for writing two digits at a time.
+const PAIRS: &[u8; 200] = b"0001020304050607080910111213141516171819\
+2021222324252627282930313233343536373839\
+4041424344454647484950515253545556575859\
+6061626364656667686970717273747576777879\
+8081828384858687888990919293949596979899";
 
 /// `n` in decimal.
 fn push_int(out: &mut Vec<u8>, mut n: u64) {
