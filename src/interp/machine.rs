@@ -167,7 +167,8 @@ impl Interp<'_, '_> {
 
     /// A straight move to `to` (program frame, program units).
     pub fn straight_move(&mut self, kind: MoveKind, to: Pose) -> Result<(), Stop> {
-        let from = MotionHost::position(self);
+        // Only compensation looks at where the move starts.
+        let from = if self.comp.is_on() { MotionHost::position(self) } else { to };
         self.set_position(&to);
         let span = self.span;
         let sink = &mut self.sink;
