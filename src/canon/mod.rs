@@ -7,7 +7,7 @@
 
 mod print;
 
-pub use print::format_call;
+pub use print::{format_call, write_call};
 
 /// Plane of an arc or cycle, as the canon names it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

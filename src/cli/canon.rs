@@ -10,12 +10,26 @@
 use crate::cli::args::Format;
 use crate::cli::check::{keep_lines, read_head, read_whole};
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
-use crate::canon::format_call;
+use crate::canon::write_call;
 use crate::driver::{check_stream_flagged, FsLoader};
 use crate::interp::{stream::StreamRun, tooltable::ToolTable, Interp, Options};
 use std::fs::File;
 use std::io::{BufReader, Write};
 use std::path::Path;
+
+/// How many bytes of calls are gathered before they are written out.
+const OUT_CHUNK: usize = 1 << 16;
+
+/// Writes the gathered calls out (keeping the first write error; after
+/// one, calls are dropped).
+fn flush_to(out: &mut impl Write, buf: &mut Vec<u8>, io_error: &mut Option<std::io::Error>) {
+    if io_error.is_none() {
+        if let Err(e) = out.write_all(buf) {
+            *io_error = Some(e);
+        }
+    }
+    buf.clear();
+}
 
 pub struct CanonArgs<'a> {
     pub file: &'a Path,
@@ -41,14 +55,15 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
     }
     let id = ctx.files.add_sparse(a.file.display().to_string(), Vec::new());
     let open = || File::open(a.file).map(|f| BufReader::with_capacity(1 << 16, f)).map_err(fail);
-    let out = std::io::stdout();
-    let mut out = std::io::BufWriter::new(out.lock());
+    let mut out = std::io::stdout().lock();
     let mut io_error = None;
+    // Calls are written into a buffer, handed to stdout in large chunks.
+    let mut buf: Vec<u8> = Vec::with_capacity(OUT_CHUNK + 4096);
     let mut sink = |call: crate::canon::Canon, _span| {
-        if io_error.is_none() {
-            if let Err(e) = writeln!(out, "{}", format_call(&call)) {
-                io_error = Some(e);
-            }
+        write_call(&mut buf, &call);
+        buf.push(b'\n');
+        if buf.len() >= OUT_CHUNK {
+            flush_to(&mut out, &mut buf, &mut io_error);
         }
     };
     let mut it = Interp::new(&spec, &a.options, &mut sink);
@@ -80,6 +95,7 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
     };
     diags.extend(run);
     drop(it);
+    flush_to(&mut out, &mut buf, &mut io_error);
     out.flush()?;
     if let Some(e) = io_error {
         return Err(e.into());

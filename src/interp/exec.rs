@@ -44,11 +44,36 @@ pub fn phase(kind: &StmtKind) -> u8 {
 
 /// Runs the machine statements of a block in Table 8 order.
 pub fn exec_block(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
-    let mut order: Vec<&Stmt> = block.stmts.iter().filter(|s| phase(&s.kind) > 0).collect();
-    order.sort_by_key(|s| phase(&s.kind));
-    for s in order {
-        it.span = s.span;
-        exec_stmt(it, s, block, exprs)?;
+    // The phases present, as bits; each is run in turn, its statements in
+    // written order (no allocation, as a stable sort would give).
+    let mut present = 0u32;
+    for s in &block.stmts {
+        present |= 1 << phase(&s.kind);
+    }
+    present &= !1;
+    if present.count_ones() <= 1 || in_phase_order(&block.stmts) {
+        return run_phase(it, block, exprs, |p| p > 0);
+    }
+    while present != 0 {
+        let p = present.trailing_zeros() as u8;
+        present &= present - 1;
+        run_phase(it, block, exprs, |q| q == p)?;
+    }
+    Ok(())
+}
+
+/// Are the statements already in phase order?
+fn in_phase_order(stmts: &[Stmt]) -> bool {
+    stmts.windows(2).all(|w| phase(&w[0].kind) <= phase(&w[1].kind))
+}
+
+/// Runs, in written order, the statements whose phase `keep` accepts.
+fn run_phase(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>, keep: impl Fn(u8) -> bool) -> Result<(), Stop> {
+    for s in &block.stmts {
+        if keep(phase(&s.kind)) {
+            it.span = s.span;
+            exec_stmt(it, s, block, exprs)?;
+        }
     }
     Ok(())
 }

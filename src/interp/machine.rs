@@ -24,8 +24,7 @@ pub fn init_sequence(it: &mut Interp<'_, '_>) {
 
 /// A pose of the first six axes in program units.
 pub fn pose6(s: &State, p: &[f64; 9]) -> Pose {
-    let q = s.pose_to_prog(p);
-    [q[0], q[1], q[2], q[3], q[4], q[5]]
+    s.pose6_to_prog(p)
 }
 
 /// The current work offset as printed (program units).
@@ -168,7 +167,8 @@ impl Interp<'_, '_> {
 
     /// A straight move to `to` (program frame, program units).
     pub fn straight_move(&mut self, kind: MoveKind, to: Pose) -> Result<(), Stop> {
-        let from = MotionHost::position(self);
+        // Only compensation looks at where the move starts.
+        let from = if self.comp.is_on() { MotionHost::position(self) } else { to };
         self.set_position(&to);
         let span = self.span;
         let sink = &mut self.sink;

@@ -123,9 +123,9 @@ fn straight(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block
     if kind == MotionKind::Rapid {
         return it.straight_move(MoveKind::Rapid, to);
     }
-    let from = super::host::MotionHost::position(it);
     check_feed(it, block, "Cannot do g1 with zero feed rate", "F word missing with inverse time g1 move")?;
     if it.state.feed_mode == FeedMode::InverseTime {
+        let from = super::host::MotionHost::position(it);
         let rate = straight_length(&from, &to) * it.state.feed;
         it.out(Canon::SetFeedRate(rate));
     }

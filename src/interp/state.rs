@@ -79,6 +79,17 @@ pub struct State {
     /// A tool change happened: the next block re-reads the position from
     /// the canon layer (as rs274 does), dropping tool-length shifts.
     pub resync: bool,
+    /// The last values converted by [`State::pose6_to_prog`].
+    prog_cache: std::cell::Cell<ProgCache>,
+}
+
+/// The last value converted on each axis, in mm (as bits, so that -0 and
+/// 0 differ), and its conversion.
+#[derive(Clone, Copy, Debug)]
+struct ProgCache {
+    units: LengthUnit,
+    key: [u64; 6],
+    pose: [f64; 6],
 }
 
 impl State {
@@ -118,6 +129,7 @@ impl State {
             m61_block: None,
             canon_pos: [0.0; 9],
             resync: false,
+            prog_cache: std::cell::Cell::new(ProgCache { units: LengthUnit::Mm, key: [0; 6], pose: [0.0; 6] }),
         }
     }
 
@@ -139,9 +151,15 @@ impl State {
     /// so that comparisons (R plane against the current level) see the
     /// number as written.
     pub fn to_prog(&self, mm: f64) -> f64 {
-        let v = mm / self.scale();
-        let snapped = (v * 1e9).round() / 1e9;
-        if (v - snapped).abs() < 1e-12 && v.abs() < 1e6 {
+        let v = match self.units {
+            LengthUnit::Mm => mm,
+            LengthUnit::Inch => mm / MM_PER_INCH,
+        };
+        if !(v.abs() < 1e6) {
+            return v;
+        }
+        let snapped = round_small(v * 1e9) / 1e9;
+        if (v - snapped).abs() < 1e-12 {
             snapped
         } else {
             v
@@ -153,6 +171,25 @@ impl State {
         !(3..6).contains(&i)
     }
 
+    /// The first six axes of a pose in mm/degrees, in program units
+    /// (lengths only). Each axis's last conversion is remembered: moves
+    /// convert the same values again and again.
+    pub fn pose6_to_prog(&self, p: &[f64; 9]) -> [f64; 6] {
+        let mut c = self.prog_cache.get();
+        let same_units = c.units == self.units;
+        c.units = self.units;
+        for i in 0..6 {
+            let bits = p[i].to_bits();
+            if same_units && c.key[i] == bits {
+                continue;
+            }
+            c.key[i] = bits;
+            c.pose[i] = if State::is_linear(i) { self.to_prog(p[i]) } else { p[i] };
+        }
+        self.prog_cache.set(c);
+        c.pose
+    }
+
     /// A pose in mm/degrees converted to program units (lengths only).
     pub fn pose_to_prog(&self, p: &[f64; 9]) -> [f64; 9] {
         let mut out = *p;
@@ -162,6 +199,22 @@ impl State {
             }
         }
         out
+    }
+}
+
+/// `x.round()` (half away from zero) for `|x| < 2^52`, without a libm
+/// call: the integer part is exact there, and so is the remainder.
+fn round_small(x: f64) -> f64 {
+    let t = (x as i64) as f64;
+    let frac = x - t;
+    if frac >= 0.5 {
+        t + 1.0
+    } else if frac <= -0.5 {
+        t - 1.0
+    } else if t == 0.0 && x.is_sign_negative() {
+        -0.0
+    } else {
+        t
     }
 }
 
@@ -199,6 +252,27 @@ impl State {
         let new = self.origin();
         for i in 0..9 {
             self.pos[i] += old[i] - new[i];
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn round_small_is_round() {
+        let mut state = 0x2545f4914f6cdd1du64;
+        for i in 0..200_000u64 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let mag = [0.5, 1.0, 1e3, 1e9, 1e15][(i % 5) as usize];
+            let x = ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 2.0 * mag;
+            let x = if i % 3 == 0 { (x * 2.0).round() / 2.0 } else { x };
+            let (a, b) = (super::round_small(x), x.round());
+            assert!(a == b && a.is_sign_negative() == b.is_sign_negative(), "{x:e}: {a} {b}");
+        }
+        for x in [0.5, -0.5, 1.5, -2.5, 0.49999999999999994, -0.0, 0.0, -0.3, 4503599627370495.5] {
+            assert_eq!(super::round_small(x).to_bits(), x.round().to_bits(), "{x}");
         }
     }
 }

@@ -5,7 +5,7 @@
 
 use super::state::State;
 use super::{Interp, Stop};
-use crate::ir::{Arena, Axes, DimMode, Expr, AXIS_LETTERS};
+use crate::ir::{Arena, Axes, Coord, DimMode, Expr};
 
 /// How the axis words of a block are read.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -26,9 +26,8 @@ pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: 
         let p = super::siemens::from_base(it, [to[0], to[1], to[2]]);
         to[..3].copy_from_slice(&p);
     }
-    let origin = it.state.origin();
-    for (i, letter) in AXIS_LETTERS.iter().enumerate() {
-        let Some(c) = axes.get(*letter) else { continue };
+    for (i, c) in slots(axes).into_iter().enumerate() {
+        let Some(c) = c else { continue };
         let v = it.value(&c.value, exprs)?;
         let v = if i == 0 && it.state.lathe_diameter { v / 2.0 } else { v };
         let v = if State::is_linear(i) { it.state.to_mm(v) } else { v };
@@ -37,7 +36,7 @@ pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: 
             None => it.state.absolute,
         };
         to[i] = match frame {
-            Frame::Machine => v - origin[i],
+            Frame::Machine => v - it.state.origin()[i],
             Frame::Program if absolute => v,
             Frame::Program => to[i] + v,
         };
@@ -52,10 +51,16 @@ pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: 
 /// The axis values written (program units, as written), by index.
 pub fn written(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Result<[Option<f64>; 9], Stop> {
     let mut out = [None; 9];
-    for (i, letter) in AXIS_LETTERS.iter().enumerate() {
-        if let Some(c) = axes.get(*letter) {
+    for (i, c) in slots(axes).into_iter().enumerate() {
+        if let Some(c) = c {
             out[i] = Some(it.value(&c.value, exprs)?);
         }
     }
     Ok(out)
+}
+
+/// The axis words by index, in the order of [`crate::ir::AXIS_LETTERS`].
+fn slots(axes: &Axes) -> [Option<&Coord>; 9] {
+    let Axes { x, y, z, a, b, c, u, v, w } = axes;
+    [x, y, z, a, b, c, u, v, w].map(Option::as_ref)
 }

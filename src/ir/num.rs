@@ -72,7 +72,13 @@ impl Decimal {
     pub fn to_f64(self) -> f64 {
         // Exact for the mantissas and scales programs use; division by an
         // exact power of ten gives the correctly rounded double.
-        self.mantissa as f64 / 10f64.powi(self.scale as i32)
+        // Powers of ten up to 1e22 are exact doubles (as powi gives them).
+        const POW10: [f64; 23] = [
+            1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17,
+            1e18, 1e19, 1e20, 1e21, 1e22,
+        ];
+        let p = POW10.get(self.scale as usize).copied().unwrap_or_else(|| 10f64.powi(self.scale as i32));
+        self.mantissa as f64 / p
     }
 
     /// The nearest decimal with at most `places` decimal places, from a double.
