@@ -1,4 +1,5 @@
-//! Throughput of `check` over large generated CAM programs.
+//! Throughput of reading and checking (`cncc check --no-run`) over large
+//! generated CAM programs; `benches/canon.rs` measures the runs.
 //!
 //! `cargo bench --bench throughput` generates programs of about 3 MB and
 //! 30 MB with `../shared/bench/gen_program.py` (the 30 MB one also with
@@ -81,7 +82,7 @@ fn main() {
             let mb = bytes as f64 / 1e6;
             println!(
                 "{:<34} {:>8.1} {:>10.3} {:>10.1} {:>14.1}{}",
-                format!("check {name} ({dialect})"),
+                format!("check --no-run {name} ({dialect})"),
                 mb,
                 secs,
                 mb / secs,

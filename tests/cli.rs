@@ -164,3 +164,13 @@ fn failed_port_writes_nothing() {
     assert_eq!(o.status.code(), Some(1));
     assert!(!out.exists(), "a failed port left a file");
 }
+
+#[test]
+fn no_run_only_reads() {
+    let file = "tests/programs/linuxcnc/runtime/division-by-zero.ngc";
+    let o = cncc(&["check", file]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("E0503"));
+    let o = cncc(&["check", "--no-run", file]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}

@@ -50,6 +50,9 @@ pub enum Command {
         /// A tool table in LinuxCNC's .tbl format, for running the program.
         #[arg(long = "tool-table", value_name = "T.tbl")]
         tool_table: Option<PathBuf>,
+        /// Only read the program (syntax, words, structure): do not run it.
+        #[arg(long = "no-run")]
+        no_run: bool,
         #[command(flatten)]
         run: RunArgs,
     },

@@ -25,6 +25,8 @@ pub struct CheckArgs<'a> {
     pub format: Format,
     pub verbose: bool,
     pub tool_table: Option<&'a Path>,
+    /// Run the program after reading it (run-time checks).
+    pub run: bool,
     pub options: Options,
 }
 
@@ -62,9 +64,14 @@ fn check_file(ctx: &mut Context, path: &Path, a: &CheckArgs<'_>) -> Result<Vec<D
     let mut it = Interp::new(&spec, &a.options, &mut discard);
     it.start();
     let mut stream = StreamRun::default();
-    let result = check_stream(input, id, &spec, |b, e| stream.block(&mut it, b, e)).map_err(fail)?;
+    let result = check_stream(input, id, &spec, |b, e| {
+        if a.run {
+            stream.block(&mut it, b, e)
+        }
+    })
+    .map_err(fail)?;
     let mut diags = result.diagnostics;
-    if !diags.iter().any(Diagnostic::is_error) {
+    if a.run && !diags.iter().any(Diagnostic::is_error) {
         let mut run = match stream.handover {
             None => stream.finish(&mut it),
             Some(_) => {

@@ -26,7 +26,7 @@ pub fn run(cli: Cli) -> i32 {
         Err(code) => return code,
     };
     let result = match &cli.command {
-        Command::Check { files, dialect, format, verbose, tool_table, run } => check::run(
+        Command::Check { files, dialect, format, verbose, tool_table, no_run, run } => check::run(
             &mut ctx,
             check::CheckArgs {
                 files,
@@ -34,6 +34,7 @@ pub fn run(cli: Cli) -> i32 {
                 format: *format,
                 verbose: *verbose,
                 tool_table: tool_table.as_deref(),
+                run: !*no_run,
                 options: run.options(),
             },
         ),
