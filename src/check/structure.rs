@@ -17,24 +17,9 @@ use crate::span::Span;
 use jumps::Labels;
 use std::collections::HashMap;
 
-/// The kinds of structure an opener starts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Opener {
-    If,
-    While,
-    Do,
-    Repeat,
-    For,
-    Loop,
-    RepeatUntil,
-    Sub,
-}
+use crate::ir::FlowKind as Opener;
 
 impl Opener {
-    fn is_loop(self) -> bool {
-        !matches!(self, Opener::If | Opener::Sub)
-    }
-
     fn word(self) -> &'static str {
         match self {
             Opener::If => "IF",

@@ -84,6 +84,11 @@ pub enum Capability {
     MessageComments,
     /// Fanuc `,C` (chamfer) and `,R` (corner rounding) words after a move.
     CommaCornerWords,
+    /// EQ/NE compare within 0.0001 (LinuxCNC's TOLERANCE_EQUAL).
+    EqTolerance,
+    /// Arcs are built in the programmed system and mapped through the
+    /// programmable frame, with the CIP/CT/AR= forms (Sinumerik).
+    FrameArcs,
     /// Canned cycles start retracting to R (G99), as LinuxCNC's
     /// interpreter does; otherwise to the initial level (G98), as Fanuc,
     /// Haas and Siemens controls do at power-on.
@@ -112,6 +117,8 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("unbracketed-expressions", Capability::UnbracketedExpressions),
     ("message-comments", Capability::MessageComments),
     ("comma-corner-words", Capability::CommaCornerWords),
+    ("eq-tolerance", Capability::EqTolerance),
+    ("frame-arcs", Capability::FrameArcs),
     ("cycle-retract-r-plane-at-start", Capability::CycleRetractRPlaneAtStart),
 ];
 

@@ -81,7 +81,7 @@ impl Interp<'_, '_> {
         let t = |c: bool| c as i64 as f64;
         // LinuxCNC's EQ/NE compare within 0.0001 (its TOLERANCE_EQUAL);
         // probed: `[0.00005 EQ 0]` is 1 in rs274.
-        let tol = if self.spec.has(Capability::OWords) { EQ_TOLERANCE } else { 0.0 };
+        let tol = if self.spec.has(Capability::EqTolerance) { EQ_TOLERANCE } else { 0.0 };
         let equal = if tol > 0.0 { (a - b).abs() < tol } else { a == b };
         Ok(match op {
             Add => a + b,

@@ -5,18 +5,7 @@
 use crate::ir::{Block, CallTarget, FlowId, Program, StmtKind};
 use std::collections::HashMap;
 
-/// The kind of structure an opener starts (matched to its closers).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Kind {
-    If,
-    While,
-    Do,
-    Repeat,
-    For,
-    Loop,
-    RepeatUntil,
-    Sub,
-}
+use crate::ir::FlowKind as Kind;
 
 #[derive(Clone, Debug, Default)]
 pub struct FlowIndex {
@@ -48,7 +37,7 @@ impl FlowIndex {
         let mut last_branch: HashMap<usize, usize> = HashMap::new();
         for (i, b) in p.blocks.iter().enumerate() {
             ix.note_targets(i, b);
-            if let Some(&(_, top)) = stack.iter().rev().find(|((k, _), _)| is_loop(*k)) {
+            if let Some(&(_, top)) = stack.iter().rev().find(|((k, _), _)| k.is_loop()) {
                 ix.loop_of.insert(i, top);
             }
             for s in &b.stmts {
@@ -143,9 +132,6 @@ impl FlowIndex {
     }
 }
 
-fn is_loop(k: Kind) -> bool {
-    matches!(k, Kind::While | Kind::Do | Kind::Repeat | Kind::For | Kind::Loop | Kind::RepeatUntil)
-}
 
 fn find_open(stack: &[((Kind, FlowId), usize)], kind: Kind, id: &FlowId) -> Option<usize> {
     stack.iter().rev().find(|((k, f), _)| *k == kind && f == id).map(|(_, i)| *i)

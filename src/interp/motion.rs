@@ -85,7 +85,7 @@ fn motion_inner(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Aren
         }
     };
     it.comp_block(block.span);
-    let sinumerik = it.spec.family == crate::dialect::Family::Sinumerik;
+    let sinumerik = it.spec.has(crate::dialect::Capability::FrameArcs);
     match kind {
         MotionKind::Rapid | MotionKind::Linear if sinumerik => {
             let from = it.state.pos;

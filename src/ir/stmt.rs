@@ -434,6 +434,27 @@ pub enum JumpDir {
     EitherNoAlarm,
 }
 
+/// The kind of control-flow structure an opener starts (matched to its
+/// closers by the structure checker and the interpreter's flow index).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FlowKind {
+    If,
+    While,
+    Do,
+    Repeat,
+    For,
+    Loop,
+    RepeatUntil,
+    Sub,
+}
+
+impl FlowKind {
+    /// Loops (what `break` and `continue` act on).
+    pub fn is_loop(self) -> bool {
+        !matches!(self, FlowKind::If | FlowKind::Sub)
+    }
+}
+
 /// Identifies which opener a closer belongs to.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Serialize)]
 pub enum FlowId {
