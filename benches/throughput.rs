@@ -54,7 +54,13 @@ fn bench_check(path: &Path, dialect: &str) -> (f64, u64, usize) {
         .map(|_| {
             let f = std::fs::File::open(path).expect("open");
             let start = Instant::now();
-            let r = check_stream(BufReader::with_capacity(1 << 16, f), FileId(0), &spec, |_, _| {}).expect("read");
+            let r = check_stream(
+                BufReader::with_capacity(1 << 16, f),
+                FileId(0),
+                &spec,
+                |_, _| {},
+            )
+            .expect("read");
             (start.elapsed().as_secs_f64(), r.bytes, r.diagnostics.len())
         })
         .min_by(|a, b| a.0.total_cmp(&b.0))
@@ -65,7 +71,10 @@ fn bench_check(path: &Path, dialect: &str) -> (f64, u64, usize) {
 fn main() {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/bench-programs");
     std::fs::create_dir_all(&dir).expect("mkdir");
-    println!("{:<34} {:>8} {:>10} {:>10} {:>14}", "program", "MB", "seconds", "MB/s", "peak RSS MiB");
+    println!(
+        "{:<34} {:>8} {:>10} {:>10} {:>14}",
+        "program", "MB", "seconds", "MB/s", "peak RSS MiB"
+    );
     let programs: [(u64, &[&str], &str); 4] = [
         (215_000, &[], "cam-3MB.ngc"),
         (2_150_000, &[], "cam-30MB.ngc"),
@@ -87,7 +96,11 @@ fn main() {
                 secs,
                 mb / secs,
                 peak_rss_mib(),
-                if ndiag > 0 { format!("  ({ndiag} diagnostics)") } else { String::new() }
+                if ndiag > 0 {
+                    format!("  ({ndiag} diagnostics)")
+                } else {
+                    String::new()
+                }
             );
         }
     }

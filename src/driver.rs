@@ -9,9 +9,9 @@ use crate::diag::Diagnostic;
 use crate::dialect::{DialectSpec, Family};
 use crate::ir::{Arena, Block, Expr, Program};
 use crate::lower::Lowering;
-use crate::span::Span;
 use crate::source::KeptLine;
 use crate::span::FileId;
+use crate::span::Span;
 use crate::syntax::sinumerik::SinumerikFrontEnd;
 use crate::syntax::word::WordFrontEnd;
 use crate::syntax::{FrontEnd, LineInput};
@@ -58,7 +58,8 @@ impl<'s> Reader<'s> {
         diags: &mut Vec<Diagnostic>,
     ) -> Option<Block> {
         let mut block = empty_block();
-        self.line_into(text, offset, exprs, diags, &mut block).then_some(block)
+        self.line_into(text, offset, exprs, diags, &mut block)
+            .then_some(block)
     }
 
     /// [`Reader::line`] into `block`, whose statements vector is reused;
@@ -71,10 +72,18 @@ impl<'s> Reader<'s> {
         diags: &mut Vec<Diagnostic>,
         block: &mut Block,
     ) -> bool {
-        let input = LineInput { text, file: self.file, offset, spec: self.spec };
-        let Some(mut syntax) = self.front.parse_line(&input, exprs, diags) else { return false };
+        let input = LineInput {
+            text,
+            file: self.file,
+            offset,
+            spec: self.spec,
+        };
+        let Some(mut syntax) = self.front.parse_line(&input, exprs, diags) else {
+            return false;
+        };
         self.lowering.recycle(&mut block.stmts);
-        self.lowering.lower(&mut syntax.items, exprs, diags, &mut block.stmts);
+        self.lowering
+            .lower(&mut syntax.items, exprs, diags, &mut block.stmts);
         self.front.recycle(syntax.items);
         block.span = syntax.span;
         block.skip = syntax.skip;
@@ -92,7 +101,13 @@ impl<'s> Reader<'s> {
 }
 
 fn empty_block() -> Block {
-    Block { span: Span::default(), skip: None, number: None, label: None, stmts: Vec::new() }
+    Block {
+        span: Span::default(),
+        skip: None,
+        number: None,
+        label: None,
+        stmts: Vec::new(),
+    }
 }
 
 /// Splits text into lines without their endings (`\n` or `\r\n`), with the
@@ -188,7 +203,11 @@ pub fn check_stream_flagged(
             on_block(&block, &exprs, bad);
         }
         if diags.len() > before && kept.len() < crate::diag::MAX_KEPT {
-            kept.push(KeptLine { line: line_no as usize, start: offset as usize, text: line.to_owned() });
+            kept.push(KeptLine {
+                line: line_no as usize,
+                start: offset as usize,
+                text: line.to_owned(),
+            });
         }
         if diags.len() > crate::diag::MAX_KEPT {
             diags.truncate(crate::diag::MAX_KEPT);
@@ -199,7 +218,12 @@ pub fn check_stream_flagged(
         Ok(true)
     })?;
     diags.extend(reader.finish());
-    Ok(StreamResult { diagnostics: diags, kept_lines: kept, bytes: offset, lines: line_no })
+    Ok(StreamResult {
+        diagnostics: diags,
+        kept_lines: kept,
+        bytes: offset,
+        lines: line_no,
+    })
 }
 
 /// A line without its ending (`\n`, `\r\n`).
@@ -314,8 +338,17 @@ pub struct FsLoader<'a> {
 }
 
 impl<'a> FsLoader<'a> {
-    pub fn new(dir: std::path::PathBuf, spec: std::sync::Arc<DialectSpec>, files: &'a mut crate::source::SourceMap) -> Self {
-        FsLoader { dir, spec, files, diags: Vec::new() }
+    pub fn new(
+        dir: std::path::PathBuf,
+        spec: std::sync::Arc<DialectSpec>,
+        files: &'a mut crate::source::SourceMap,
+    ) -> Self {
+        FsLoader {
+            dir,
+            spec,
+            files,
+            diags: Vec::new(),
+        }
     }
 
     fn candidates(&self, target: &crate::ir::CallTarget) -> Vec<std::path::PathBuf> {
@@ -323,9 +356,19 @@ impl<'a> FsLoader<'a> {
         let stems: Vec<String> = match target {
             CallTarget::Name(n) => {
                 let n = n.trim_matches(|c| c == '<' || c == '>');
-                vec![n.to_string(), n.to_ascii_lowercase(), n.to_ascii_uppercase()]
+                vec![
+                    n.to_string(),
+                    n.to_ascii_lowercase(),
+                    n.to_ascii_uppercase(),
+                ]
             }
-            CallTarget::Number(n) => vec![format!("O{n}"), format!("O{n:04}"), format!("o{n}"), n.to_string(), format!("L{n}")],
+            CallTarget::Number(n) => vec![
+                format!("O{n}"),
+                format!("O{n:04}"),
+                format!("o{n}"),
+                n.to_string(),
+                format!("L{n}"),
+            ],
             CallTarget::Computed(_) => Vec::new(),
         };
         let mut exts: Vec<String> = self.spec.extensions.clone();
@@ -367,7 +410,11 @@ pub fn lines_at(input: impl BufRead, offsets: &[u32]) -> std::io::Result<Vec<Kep
     for_each_line(input, |text| {
         let end = offset + text.len() as u64;
         if wanted[next] < end || (wanted[next] == end && !text.ends_with('\n')) {
-            out.push(KeptLine { line: line_no, start: offset as usize, text: strip_ending(text).to_owned() });
+            out.push(KeptLine {
+                line: line_no,
+                start: offset as usize,
+                text: strip_ending(text).to_owned(),
+            });
             while next < wanted.len() && wanted[next] <= end {
                 next += 1;
             }

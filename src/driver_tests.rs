@@ -38,9 +38,15 @@ fn streamed(bytes: &[u8], capacity: usize) -> Vec<(String, u64)> {
 fn streamed_lines_match_the_decoded_text() {
     for bytes in samples() {
         let text = decode(&bytes);
-        let whole: Vec<(String, u64)> = lines(&text).map(|(l, o)| (l.to_owned(), o as u64)).collect();
+        let whole: Vec<(String, u64)> = lines(&text)
+            .map(|(l, o)| (l.to_owned(), o as u64))
+            .collect();
         for capacity in [1, 2, 3, 5, 8, 64, 1 << 16] {
-            assert_eq!(streamed(&bytes, capacity), whole, "capacity {capacity}, text {text:?}");
+            assert_eq!(
+                streamed(&bytes, capacity),
+                whole,
+                "capacity {capacity}, text {text:?}"
+            );
         }
     }
 }
@@ -54,13 +60,20 @@ fn streamed_check_matches_whole_read() {
         whole.truncate(crate::diag::MAX_KEPT);
         for capacity in [1, 3, 7, 1 << 16] {
             let mut blocks = Vec::new();
-            let r = check_stream(BufReader::with_capacity(capacity, &bytes[..]), FileId(0), &spec, |b, _| {
-                blocks.push(b.clone())
-            })
+            let r = check_stream(
+                BufReader::with_capacity(capacity, &bytes[..]),
+                FileId(0),
+                &spec,
+                |b, _| blocks.push(b.clone()),
+            )
             .unwrap();
             assert_eq!(r.bytes, text.len() as u64);
             assert_eq!(r.diagnostics, whole, "capacity {capacity}, text {text:?}");
-            let spans: Vec<_> = program.blocks.iter().map(|b| (b.span, b.stmts.len())).collect();
+            let spans: Vec<_> = program
+                .blocks
+                .iter()
+                .map(|b| (b.span, b.stmts.len()))
+                .collect();
             let got: Vec<_> = blocks.iter().map(|b| (b.span, b.stmts.len())).collect();
             assert_eq!(got, spans);
         }
@@ -76,8 +89,16 @@ fn lines_at_finds_lines_across_reads() {
     assert_eq!(want.len(), 4);
     for capacity in [1, 2, 5] {
         let got = lines_at(BufReader::with_capacity(capacity, &bytes[..]), &offsets).unwrap();
-        assert_eq!(got.iter().map(|k| (&k.text, k.start, k.line)).collect::<Vec<_>>(),
-                   want.iter().map(|k| (&k.text, k.start, k.line)).collect::<Vec<_>>());
+        assert_eq!(
+            got.iter()
+                .map(|k| (&k.text, k.start, k.line))
+                .collect::<Vec<_>>(),
+            want.iter()
+                .map(|k| (&k.text, k.start, k.line))
+                .collect::<Vec<_>>()
+        );
     }
-    assert!(lines_at(BufReader::new(&bytes[..]), &[]).unwrap().is_empty());
+    assert!(lines_at(BufReader::new(&bytes[..]), &[])
+        .unwrap()
+        .is_empty());
 }

@@ -37,7 +37,9 @@ pub struct SourceMap {
 }
 
 fn line_starts(text: &str) -> Vec<usize> {
-    std::iter::once(0).chain(text.match_indices('\n').map(|(i, _)| i + 1)).collect()
+    std::iter::once(0)
+        .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+        .collect()
 }
 
 impl SourceMap {
@@ -49,7 +51,12 @@ impl SourceMap {
     pub fn add(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
         let view = text.into();
         let view_starts = line_starts(&view);
-        self.files.push(SourceFile { name: name.into(), view, view_starts, sparse: None });
+        self.files.push(SourceFile {
+            name: name.into(),
+            view,
+            view_starts,
+            sparse: None,
+        });
         FileId(self.files.len() as u32 - 1)
     }
 
@@ -95,11 +102,17 @@ impl SourceMap {
         match &f.sparse {
             None => offset.min(f.view.len()),
             Some(map) => {
-                let i = map.partition_point(|&(_, start)| start <= offset).saturating_sub(1);
+                let i = map
+                    .partition_point(|&(_, start)| start <= offset)
+                    .saturating_sub(1);
                 match map.get(i) {
                     Some(&(_, start)) => {
                         let vs = f.view_starts[i];
-                        let ve = f.view_starts.get(i + 1).map(|e| e - 1).unwrap_or(f.view.len());
+                        let ve = f
+                            .view_starts
+                            .get(i + 1)
+                            .map(|e| e - 1)
+                            .unwrap_or(f.view.len());
                         (vs + offset.saturating_sub(start)).min(ve)
                     }
                     None => 0,
@@ -114,7 +127,11 @@ impl SourceMap {
         let v = self.to_view(id, offset);
         let li = f.view_starts.partition_point(|&s| s <= v).saturating_sub(1);
         let start = f.view_starts[li];
-        let col = f.view.get(start..v).map(|s| s.chars().count()).unwrap_or(v - start);
+        let col = f
+            .view
+            .get(start..v)
+            .map(|s| s.chars().count())
+            .unwrap_or(v - start);
         (self.real_line(f, li) + 1, col + 1)
     }
 
@@ -132,16 +149,24 @@ impl<'a> Files<'a> for SourceMap {
     type Source = &'a str;
 
     fn name(&'a self, id: usize) -> Result<&'a str, files::Error> {
-        self.files.get(id).map(|f| f.name.as_str()).ok_or(files::Error::FileMissing)
+        self.files
+            .get(id)
+            .map(|f| f.name.as_str())
+            .ok_or(files::Error::FileMissing)
     }
 
     fn source(&'a self, id: usize) -> Result<&'a str, files::Error> {
-        self.files.get(id).map(|f| f.view.as_str()).ok_or(files::Error::FileMissing)
+        self.files
+            .get(id)
+            .map(|f| f.view.as_str())
+            .ok_or(files::Error::FileMissing)
     }
 
     fn line_index(&'a self, id: usize, byte_index: usize) -> Result<usize, files::Error> {
         let f = self.files.get(id).ok_or(files::Error::FileMissing)?;
-        Ok(f.view_starts.partition_point(|&s| s <= byte_index).saturating_sub(1))
+        Ok(f.view_starts
+            .partition_point(|&s| s <= byte_index)
+            .saturating_sub(1))
     }
 
     fn line_number(&'a self, id: usize, line_index: usize) -> Result<usize, files::Error> {
@@ -151,11 +176,18 @@ impl<'a> Files<'a> for SourceMap {
 
     fn line_range(&'a self, id: usize, line_index: usize) -> Result<Range<usize>, files::Error> {
         let f = self.files.get(id).ok_or(files::Error::FileMissing)?;
-        let start = *f.view_starts.get(line_index).ok_or(files::Error::LineTooLarge {
-            given: line_index,
-            max: f.view_starts.len() - 1,
-        })?;
-        let end = f.view_starts.get(line_index + 1).copied().unwrap_or(f.view.len());
+        let start = *f
+            .view_starts
+            .get(line_index)
+            .ok_or(files::Error::LineTooLarge {
+                given: line_index,
+                max: f.view_starts.len() - 1,
+            })?;
+        let end = f
+            .view_starts
+            .get(line_index + 1)
+            .copied()
+            .unwrap_or(f.view.len());
         Ok(start..end)
     }
 }

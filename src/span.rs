@@ -17,17 +17,29 @@ pub struct Span {
 
 impl Span {
     pub fn new(file: FileId, start: usize, end: usize) -> Self {
-        Span { file, start: start as u32, end: end as u32 }
+        Span {
+            file,
+            start: start as u32,
+            end: end as u32,
+        }
     }
 
     /// The smallest span covering both (same file assumed).
     pub fn to(self, other: Span) -> Span {
-        Span { file: self.file, start: self.start.min(other.start), end: self.end.max(other.end) }
+        Span {
+            file: self.file,
+            start: self.start.min(other.start),
+            end: self.end.max(other.end),
+        }
     }
 
     /// This span moved right by `offset` bytes (line-relative to file-relative).
     pub fn shifted(self, offset: u32) -> Span {
-        Span { file: self.file, start: self.start + offset, end: self.end + offset }
+        Span {
+            file: self.file,
+            start: self.start + offset,
+            end: self.end + offset,
+        }
     }
 
     pub fn range(self) -> std::ops::Range<usize> {

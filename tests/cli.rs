@@ -23,7 +23,14 @@ fn clean_programs_check_silently() {
 fn check_clean(dialect: &str, file: &str) -> std::process::Output {
     let table = std::path::Path::new(file).with_extension("tbl");
     if root().join(&table).exists() {
-        cncc(&["check", "--dialect", dialect, "--tool-table", table.to_str().unwrap(), file])
+        cncc(&[
+            "check",
+            "--dialect",
+            dialect,
+            "--tool-table",
+            table.to_str().unwrap(),
+            file,
+        ])
     } else {
         cncc(&["check", "--dialect", dialect, file])
     }
@@ -50,28 +57,58 @@ fn check_snapshot(name: &str, dialect: &str, file: &str) {
 
 #[test]
 fn fanuc_mistakes_are_all_reported() {
-    check_snapshot("check_fanuc_mistakes", "fanuc", "tests/programs/fanuc/mistakes.nc");
+    check_snapshot(
+        "check_fanuc_mistakes",
+        "fanuc",
+        "tests/programs/fanuc/mistakes.nc",
+    );
 }
 
 #[test]
 fn linuxcnc_mistakes_are_all_reported() {
-    check_snapshot("check_linuxcnc_mistakes", "linuxcnc", "tests/programs/linuxcnc/mistakes.ngc");
+    check_snapshot(
+        "check_linuxcnc_mistakes",
+        "linuxcnc",
+        "tests/programs/linuxcnc/mistakes.ngc",
+    );
 }
 
 #[test]
 fn siemens_mistakes_are_all_reported() {
-    check_snapshot("check_siemens_mistakes", "siemens840d", "tests/programs/siemens840d/mistakes.mpf");
+    check_snapshot(
+        "check_siemens_mistakes",
+        "siemens840d",
+        "tests/programs/siemens840d/mistakes.mpf",
+    );
 }
 
 #[test]
 fn json_diagnostics_one_object_per_line() {
-    let o = cncc(&["check", "--dialect", "fanuc", "--format", "json", "tests/programs/fanuc/mistakes.nc"]);
+    let o = cncc(&[
+        "check",
+        "--dialect",
+        "fanuc",
+        "--format",
+        "json",
+        "tests/programs/fanuc/mistakes.nc",
+    ]);
     assert_eq!(o.status.code(), Some(1));
     let text = stderr(&o);
     let mut n = 0;
     for line in text.lines() {
         let v: serde_json::Value = serde_json::from_str(line).expect("one JSON object per line");
-        for key in ["code", "name", "severity", "message", "file", "line", "column", "end_line", "end_column", "labels"] {
+        for key in [
+            "code",
+            "name",
+            "severity",
+            "message",
+            "file",
+            "line",
+            "column",
+            "end_line",
+            "end_column",
+            "labels",
+        ] {
             assert!(v.get(key).is_some(), "missing {key} in {line}");
         }
         n += 1;
@@ -81,7 +118,14 @@ fn json_diagnostics_one_object_per_line() {
 
 #[test]
 fn every_reported_code_is_explained() {
-    let o = cncc(&["check", "--dialect", "fanuc", "--format", "json", "tests/programs/fanuc/mistakes.nc"]);
+    let o = cncc(&[
+        "check",
+        "--dialect",
+        "fanuc",
+        "--format",
+        "json",
+        "tests/programs/fanuc/mistakes.nc",
+    ]);
     for line in stderr(&o).lines() {
         let v: serde_json::Value = serde_json::from_str(line).unwrap();
         let code = v["code"].as_str().unwrap();
@@ -115,10 +159,20 @@ fn dialects_lists_the_built_ins() {
 #[test]
 fn aliases_resolve() {
     for alias in ["sinumerik", "840d"] {
-        let o = cncc(&["check", "--dialect", alias, "tests/programs/siemens840d/control.mpf"]);
+        let o = cncc(&[
+            "check",
+            "--dialect",
+            alias,
+            "tests/programs/siemens840d/control.mpf",
+        ]);
         assert_eq!(o.status.code(), Some(0), "{alias}: {}", stderr(&o));
     }
-    let o = cncc(&["check", "--dialect", "rs274ngc", "tests/programs/linuxcnc/subs.ngc"]);
+    let o = cncc(&[
+        "check",
+        "--dialect",
+        "rs274ngc",
+        "tests/programs/linuxcnc/subs.ngc",
+    ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
 }
 
@@ -136,10 +190,33 @@ fn port_to_own_dialect_is_a_fixpoint() {
     ] {
         let once = dir.path().join(format!("once.{dialect}"));
         let twice = dir.path().join(format!("twice.{dialect}"));
-        let o = cncc(&["port", file, "--from", dialect, "--to", dialect, "-o", once.to_str().unwrap()]);
+        let o = cncc(&[
+            "port",
+            file,
+            "--from",
+            dialect,
+            "--to",
+            dialect,
+            "-o",
+            once.to_str().unwrap(),
+        ]);
         assert_eq!(o.status.code(), Some(0), "{file}: {}", stderr(&o));
-        let o = cncc(&["port", once.to_str().unwrap(), "--from", dialect, "--to", dialect, "-o", twice.to_str().unwrap()]);
-        assert_eq!(o.status.code(), Some(0), "{file} (second port): {}", stderr(&o));
+        let o = cncc(&[
+            "port",
+            once.to_str().unwrap(),
+            "--from",
+            dialect,
+            "--to",
+            dialect,
+            "-o",
+            twice.to_str().unwrap(),
+        ]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{file} (second port): {}",
+            stderr(&o)
+        );
         let a = std::fs::read_to_string(&once).unwrap();
         let b = std::fs::read_to_string(&twice).unwrap();
         assert_eq!(a, b, "{file}: porting the port changed it");
@@ -148,7 +225,14 @@ fn port_to_own_dialect_is_a_fixpoint() {
 
 #[test]
 fn fanuc_port_writes_decimal_points_on_lengths() {
-    let o = cncc(&["port", "tests/programs/linuxcnc/subs.ngc", "--from", "linuxcnc", "--to", "linuxcnc"]);
+    let o = cncc(&[
+        "port",
+        "tests/programs/linuxcnc/subs.ngc",
+        "--from",
+        "linuxcnc",
+        "--to",
+        "linuxcnc",
+    ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let o = cncc(&["port", "tests/programs/fanuc/bracket.nc", "--to", "fanuc"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
@@ -160,7 +244,14 @@ fn fanuc_port_writes_decimal_points_on_lengths() {
 fn failed_port_writes_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out.nc");
-    let o = cncc(&["port", "tests/programs/fanuc/mistakes.nc", "--to", "fanuc", "-o", out.to_str().unwrap()]);
+    let o = cncc(&[
+        "port",
+        "tests/programs/fanuc/mistakes.nc",
+        "--to",
+        "fanuc",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
     assert_eq!(o.status.code(), Some(1));
     assert!(!out.exists(), "a failed port left a file");
 }

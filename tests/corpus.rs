@@ -4,30 +4,53 @@
 //! meta-model unchanged.
 
 mod common;
-use common::*;
 use cncc::dialect::builtin::builtin;
 use cncc::driver::read_program;
 use cncc::emit::write_program;
 use cncc::source::SourceMap;
+use common::*;
 
 /// Files that cncc rejects, and the real mistake in each.
 const REJECTED: &[(&str, &str)] = &[
     // Four programs of a Fanuc-like cutting control (cnc-sprayer): Fanuc
     // program numbers are digits, and Macro B arithmetic in a word needs
     // brackets (`X[#114-#136]`).
-    ("fanuc/7997A.NC", "program number `O7997A` has a letter; `X#114-#136` lacks brackets"),
-    ("fanuc/CIRCLE.NC", "named program `OCIRCLE`; `X#140/2` lacks brackets"),
-    ("fanuc/RECTANGLE.NC", "named program `ORECTANGLE`; arithmetic after words lacks brackets"),
-    ("fanuc/WASHER.NC", "named program `OWASHER`; arithmetic after words lacks brackets"),
-    ("haas/MAZE_TEMPLATE-G91.nc", "an unfilled template: `O[your six digit birthdate]`, `G01 [your xy start position]`"),
-    ("siemens840d/123.mpf", "labels METKA_START, LAST and END are each defined twice; Sinumerik labels must be unique"),
-    ("siemens840d/holes2_test.mpf", "`IF HHGT GOTOF END` jumps to a label END that the program does not have"),
+    (
+        "fanuc/7997A.NC",
+        "program number `O7997A` has a letter; `X#114-#136` lacks brackets",
+    ),
+    (
+        "fanuc/CIRCLE.NC",
+        "named program `OCIRCLE`; `X#140/2` lacks brackets",
+    ),
+    (
+        "fanuc/RECTANGLE.NC",
+        "named program `ORECTANGLE`; arithmetic after words lacks brackets",
+    ),
+    (
+        "fanuc/WASHER.NC",
+        "named program `OWASHER`; arithmetic after words lacks brackets",
+    ),
+    (
+        "haas/MAZE_TEMPLATE-G91.nc",
+        "an unfilled template: `O[your six digit birthdate]`, `G01 [your xy start position]`",
+    ),
+    (
+        "siemens840d/123.mpf",
+        "labels METKA_START, LAST and END are each defined twice; Sinumerik labels must be unique",
+    ),
+    (
+        "siemens840d/holes2_test.mpf",
+        "`IF HHGT GOTOF END` jumps to a label END that the program does not have",
+    ),
 ];
 
 const DIALECTS: &[&str] = &["fanuc", "haas", "linuxcnc", "siemens840d"];
 
 fn corpus_files() -> Vec<(String, std::path::PathBuf)> {
-    let Some(shared) = shared() else { return Vec::new() };
+    let Some(shared) = shared() else {
+        return Vec::new();
+    };
     let mut out = Vec::new();
     for d in DIALECTS {
         for f in files_in(&shared.join("corpus").join(d)) {
@@ -55,7 +78,10 @@ fn corpus_programs_are_accepted_or_rejected_for_a_real_mistake() {
         let name = rel(dialect, path);
         let listed = REJECTED.iter().any(|(f, _)| *f == name);
         if !errors.is_empty() && !listed {
-            failures.push(format!("{name} rejected:\n{}", cncc::diag::render::human(&errors, &sm, false)));
+            failures.push(format!(
+                "{name} rejected:\n{}",
+                cncc::diag::render::human(&errors, &sm, false)
+            ));
         }
         if errors.is_empty() && listed {
             failures.push(format!("{name} is listed as rejected but is accepted"));
@@ -91,7 +117,10 @@ fn round_trip(dialect: &str, path: &std::path::Path) -> Result<(), String> {
     let (p2, d2) = read_program(&out1, id2, &spec);
     let errs: Vec<_> = d2.into_iter().filter(|d| d.is_error()).collect();
     if !errs.is_empty() {
-        return Err(format!("written program has errors:\n{}", cncc::diag::render::human(&errs, &sm, false)));
+        return Err(format!(
+            "written program has errors:\n{}",
+            cncc::diag::render::human(&errs, &sm, false)
+        ));
     }
     let (f1, f2) = (model_fingerprint(&p1), model_fingerprint(&p2));
     if let Some(d) = first_difference(&f1, &f2) {
@@ -99,7 +128,11 @@ fn round_trip(dialect: &str, path: &std::path::Path) -> Result<(), String> {
     }
     let out2 = write_program(&p2, &spec).map_err(|d| cncc::diag::render::human(&d, &sm, false))?;
     if out1 != out2 {
-        let line = out1.lines().zip(out2.lines()).position(|(a, b)| a != b).unwrap_or(0);
+        let line = out1
+            .lines()
+            .zip(out2.lines())
+            .position(|(a, b)| a != b)
+            .unwrap_or(0);
         return Err(format!(
             "not a fixpoint at output line {}: {:?} vs {:?}",
             line + 1,

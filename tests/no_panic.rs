@@ -8,10 +8,11 @@ const DIALECTS: &[&str] = &["fanuc", "haas", "linuxcnc", "siemens840d"];
 
 /// Fragments that exercise the grammars' corners.
 const PIECES: &[&str] = &[
-    "G1", "X10.", "Y-2.5", "#1=", "[", "]", "#[#2]", "IF", "GOTO", "WHILE", "DO1", "END1", "(", ")", ";",
-    "o100", "sub", "endsub", "call", "if", "endif", "#<a>", "**", "R1=", "DEF REAL", "IFR1>2", "GOTOF",
-    "L:", "CYCLE81(", ",", ")", "MCALL", "\"", "AC(", "CR=", "FOR", "ENDFOR", "N10", "/", "%", "1.2.3",
-    "M98P", "G65", "ATAN", "SQRT", "=", "+", "-", "*", "\n", " ", "\t", "\r\n", "é", "\u{0}",
+    "G1", "X10.", "Y-2.5", "#1=", "[", "]", "#[#2]", "IF", "GOTO", "WHILE", "DO1", "END1", "(",
+    ")", ";", "o100", "sub", "endsub", "call", "if", "endif", "#<a>", "**", "R1=", "DEF REAL",
+    "IFR1>2", "GOTOF", "L:", "CYCLE81(", ",", ")", "MCALL", "\"", "AC(", "CR=", "FOR", "ENDFOR",
+    "N10", "/", "%", "1.2.3", "M98P", "G65", "ATAN", "SQRT", "=", "+", "-", "*", "\n", " ", "\t",
+    "\r\n", "é", "\u{0}",
 ];
 
 proptest! {

@@ -25,18 +25,57 @@ use std::process::Command;
 const LINUXCNC_DIFFERENCES: &[(&str, &str)] = &[
     // Free text after M2: rs274 stops reading at M2; cncc reads (checks) the
     // whole file and reports the text as a read error.
-    (concat!("sample/usr/share/doc/linuxcnc/examples/sample-configs/sim/", "qtdragon/qtdragon_multi_joint/on_abort.ngc"), "prose after M2: rs274 stops reading at M2, cncc checks the whole file"),
-    (concat!("sample/usr/share/doc/linuxcnc/examples/sample-configs/sim/", "qtdragon/qtdragon_xyz/on_abort.ngc"), "prose after M2: rs274 stops reading at M2, cncc checks the whole file"),
-    (concat!("sample/usr/share/doc/linuxcnc/examples/sample-configs/sim/", "qtdragon_hd/qtdragon_hd_xyz/on_abort.ngc"), "prose after M2: rs274 stops reading at M2, cncc checks the whole file"),
-    (concat!("sample/usr/share/doc/linuxcnc/examples/sample-configs/sim/", "qtvcp_screens/qtdragon/on_abort.ngc"), "prose after M2: rs274 stops reading at M2, cncc checks the whole file"),
+    (
+        concat!(
+            "sample/usr/share/doc/linuxcnc/examples/sample-configs/sim/",
+            "qtdragon/qtdragon_multi_joint/on_abort.ngc"
+        ),
+        "prose after M2: rs274 stops reading at M2, cncc checks the whole file",
+    ),
+    (
+        concat!(
+            "sample/usr/share/doc/linuxcnc/examples/sample-configs/sim/",
+            "qtdragon/qtdragon_xyz/on_abort.ngc"
+        ),
+        "prose after M2: rs274 stops reading at M2, cncc checks the whole file",
+    ),
+    (
+        concat!(
+            "sample/usr/share/doc/linuxcnc/examples/sample-configs/sim/",
+            "qtdragon_hd/qtdragon_hd_xyz/on_abort.ngc"
+        ),
+        "prose after M2: rs274 stops reading at M2, cncc checks the whole file",
+    ),
+    (
+        concat!(
+            "sample/usr/share/doc/linuxcnc/examples/sample-configs/sim/",
+            "qtvcp_screens/qtdragon/on_abort.ngc"
+        ),
+        "prose after M2: rs274 stops reading at M2, cncc checks the whole file",
+    ),
     // User M codes defined by an INI [RS274NGC]REMAP (out of scope): rs274
     // never runs the sub that uses them; cncc checks every block.
-    ("sample/usr/share/linuxcnc/ncfiles/g882.ngc", "M75 is a remapped user M code (INI REMAP); cncc rejects unknown M codes in every block"),
-    ("sample/usr/share/linuxcnc/ncfiles/m6remap.ngc", "M69 is a remapped user M code (INI REMAP); cncc rejects unknown M codes in every block"),
+    (
+        "sample/usr/share/linuxcnc/ncfiles/g882.ngc",
+        "M75 is a remapped user M code (INI REMAP); cncc rejects unknown M codes in every block",
+    ),
+    (
+        "sample/usr/share/linuxcnc/ncfiles/m6remap.ngc",
+        "M69 is a remapped user M code (INI REMAP); cncc rejects unknown M codes in every block",
+    ),
     // Lathe profile cycles: out of scope for a milling compiler.
-    ("sample/usr/share/linuxcnc/ncfiles/lathe_g70_71_demo.ngc", "G70-G72 lathe profile cycles: out of scope (milling)"),
-    ("sample/usr/share/linuxcnc/ncfiles/lathe_g7x_face_boring.ngc", "G70-G72 lathe profile cycles: out of scope (milling)"),
-    ("sample/usr/share/linuxcnc/ncfiles/lathe_g7x_quadrants.ngc", "G70-G72 lathe profile cycles: out of scope (milling)"),
+    (
+        "sample/usr/share/linuxcnc/ncfiles/lathe_g70_71_demo.ngc",
+        "G70-G72 lathe profile cycles: out of scope (milling)",
+    ),
+    (
+        "sample/usr/share/linuxcnc/ncfiles/lathe_g7x_face_boring.ngc",
+        "G70-G72 lathe profile cycles: out of scope (milling)",
+    ),
+    (
+        "sample/usr/share/linuxcnc/ncfiles/lathe_g7x_quadrants.ngc",
+        "G70-G72 lathe profile cycles: out of scope (milling)",
+    ),
 ];
 
 /// OUR gaps: programs cncc does not yet run as rs274 does. Each entry is a
@@ -44,16 +83,26 @@ const LINUXCNC_DIFFERENCES: &[(&str, &str)] = &[
 const KNOWN_GAPS: &[&str] = &include!("oracle_known_gaps.in");
 
 /// Calls that are the interpreter's notes, not machining (as `canon-diff`).
-const IGNORED: &[&str] = &["SET_NAIVECAM_TOLERANCE", "SET_MOTION_CONTROL_MODE", "ON_RESET", "START_CHANGE"];
+const IGNORED: &[&str] = &[
+    "SET_NAIVECAM_TOLERANCE",
+    "SET_MOTION_CONTROL_MODE",
+    "ON_RESET",
+    "START_CHANGE",
+];
 
 const TOLERANCE: f64 = 1e-4 + 1e-9;
 
 fn require() -> bool {
-    std::env::var("CNCC_REQUIRE_ORACLE").map(|v| v == "1").unwrap_or(false)
+    std::env::var("CNCC_REQUIRE_ORACLE")
+        .map(|v| v == "1")
+        .unwrap_or(false)
 }
 
 fn skip(why: &str) {
-    assert!(!require(), "CNCC_REQUIRE_ORACLE=1 but the oracle tests were skipped: {why}");
+    assert!(
+        !require(),
+        "CNCC_REQUIRE_ORACLE=1 but the oracle tests were skipped: {why}"
+    );
     eprintln!("note: oracle test skipped: {why}");
 }
 
@@ -84,10 +133,17 @@ fn split_numbers(line: &str) -> (String, Vec<f64>) {
     let mut i = 0;
     while i < b.len() {
         let starts = b[i].is_ascii_digit()
-            || ((b[i] == b'-' || b[i] == b'+' || b[i] == b'.') && b.get(i + 1).is_some_and(|c| c.is_ascii_digit() || *c == b'.'));
+            || ((b[i] == b'-' || b[i] == b'+' || b[i] == b'.')
+                && b.get(i + 1)
+                    .is_some_and(|c| c.is_ascii_digit() || *c == b'.'));
         let in_word = i > 0 && (b[i - 1].is_ascii_alphabetic() || b[i - 1] == b'_');
         if starts && !in_word {
-            let j = i + 1 + b[i + 1..].iter().take_while(|c| c.is_ascii_digit() || **c == b'.').count();
+            let j = i
+                + 1
+                + b[i + 1..]
+                    .iter()
+                    .take_while(|c| c.is_ascii_digit() || **c == b'.')
+                    .count();
             match line[i..j].parse::<f64>() {
                 Ok(v) => {
                     nums.push(v);
@@ -156,7 +212,11 @@ fn cncc_canon(file: &Path, table: &Path) -> Run {
 fn verdict(expected_code: i32, expected: &str, got: &Run) -> Option<String> {
     if expected_code == 0 {
         if got.code != 0 {
-            let first = got.stderr.lines().find(|l| !l.trim().is_empty()).unwrap_or("");
+            let first = got
+                .stderr
+                .lines()
+                .find(|l| !l.trim().is_empty())
+                .unwrap_or("");
             return Some(format!("cncc exit {} ({first})", got.code));
         }
         return compare(expected, &got.stdout);
@@ -166,10 +226,14 @@ fn verdict(expected_code: i32, expected: &str, got: &Run) -> Option<String> {
 
 /// Splits failures into the unexpected ones and the gaps that now pass.
 fn judge(name: &str, results: &[(String, Option<String>)]) {
-    let excused = |p: &str| KNOWN_GAPS.contains(&p) || LINUXCNC_DIFFERENCES.iter().any(|(n, _)| *n == p);
+    let excused =
+        |p: &str| KNOWN_GAPS.contains(&p) || LINUXCNC_DIFFERENCES.iter().any(|(n, _)| *n == p);
     let failed: Vec<_> = results.iter().filter(|(_, v)| v.is_some()).collect();
     let unexpected: Vec<_> = failed.iter().filter(|(p, _)| !excused(p)).collect();
-    let fixed: Vec<_> = results.iter().filter(|(p, v)| v.is_none() && KNOWN_GAPS.contains(&p.as_str())).collect();
+    let fixed: Vec<_> = results
+        .iter()
+        .filter(|(p, v)| v.is_none() && KNOWN_GAPS.contains(&p.as_str()))
+        .collect();
     eprintln!(
         "{name}: {} programs, {} match, {} differ ({} listed gaps, {} unexpected); {} listed gaps now pass",
         results.len(),
@@ -184,28 +248,50 @@ fn judge(name: &str, results: &[(String, Option<String>)]) {
     }
     if std::env::var("CNCC_ORACLE_LIST").is_ok() {
         for (p, v) in &failed {
-            println!("    \"{p}\", // {}", v.as_deref().unwrap_or("").replace('\n', " "));
+            println!(
+                "    \"{p}\", // {}",
+                v.as_deref().unwrap_or("").replace('\n', " ")
+            );
         }
     }
-    let report: Vec<String> = unexpected.iter().map(|(p, v)| format!("{p}: {}", v.as_deref().unwrap_or(""))).collect();
-    assert!(report.is_empty(), "{name}: {} unexpected differences:\n{}", report.len(), report.join("\n"));
+    let report: Vec<String> = unexpected
+        .iter()
+        .map(|(p, v)| format!("{p}: {}", v.as_deref().unwrap_or("")))
+        .collect();
+    assert!(
+        report.is_empty(),
+        "{name}: {} unexpected differences:\n{}",
+        report.len(),
+        report.join("\n")
+    );
 }
 
 #[test]
 fn probes_match_stored_rs274_output() {
-    let Some(dir) = probe_dir() else { return skip("../shared/reference/oracle-probe is absent") };
+    let Some(dir) = probe_dir() else {
+        return skip("../shared/reference/oracle-probe is absent");
+    };
     let mut programs: Vec<PathBuf> = std::fs::read_dir(&dir)
         .expect("probe dir")
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| p.extension().is_some_and(|x| x == "ngc"))
         .collect();
     programs.sort();
-    assert!(programs.len() >= 50, "expected the ~51 probes, found {}", programs.len());
+    assert!(
+        programs.len() >= 50,
+        "expected the ~51 probes, found {}",
+        programs.len()
+    );
     let mut results = Vec::new();
     for p in &programs {
         let expected = std::fs::read_to_string(p.with_extension("canon")).unwrap_or_default();
         let err = std::fs::read_to_string(p.with_extension("err")).unwrap_or_default();
-        let code = err.lines().next().and_then(|l| l.strip_prefix("exit ")).and_then(|n| n.trim().parse().ok()).unwrap_or(0);
+        let code = err
+            .lines()
+            .next()
+            .and_then(|l| l.strip_prefix("exit "))
+            .and_then(|n| n.trim().parse().ok())
+            .unwrap_or(0);
         let got = cncc_canon(p, &default_table());
         let name = p.file_name().unwrap().to_string_lossy().into_owned();
         results.push((format!("probe/{name}"), verdict(code, &expected, &got)));
@@ -227,12 +313,18 @@ fn ok_samples(dir: &Path) -> Vec<PathBuf> {
 }
 
 fn rs274_present() -> bool {
-    Command::new("sh").args(["-c", "command -v rs274"]).output().map(|o| o.status.success()).unwrap_or(false)
+    Command::new("sh")
+        .args(["-c", "command -v rs274"])
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false)
 }
 
 #[test]
 fn samples_match_live_rs274() {
-    let Some(dir) = probe_dir() else { return skip("../shared/reference/oracle-probe is absent") };
+    let Some(dir) = probe_dir() else {
+        return skip("../shared/reference/oracle-probe is absent");
+    };
     if !rs274_present() {
         return skip("rs274 is not installed (apt-get install linuxcnc-uspace)");
     }
@@ -247,7 +339,10 @@ fn samples_match_live_rs274() {
         let got = cncc_canon(p, &table);
         let v = match want.code {
             0 | 1 => verdict(want.code, &want.stdout, &got),
-            c => Some(format!("rs274-canon failed (exit {c}): {}", want.stderr.trim())),
+            c => Some(format!(
+                "rs274-canon failed (exit {c}): {}",
+                want.stderr.trim()
+            )),
         };
         (format!("sample{}", p.display()), v)
     });
@@ -258,8 +353,14 @@ fn samples_match_live_rs274() {
 fn parallel<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
     let half = items.len().div_ceil(2);
     std::thread::scope(|s| {
-        let chunks: Vec<_> = items.chunks(half.max(1)).map(|c| s.spawn(|| c.iter().map(&f).collect::<Vec<R>>())).collect();
-        chunks.into_iter().flat_map(|h| h.join().expect("worker")).collect()
+        let chunks: Vec<_> = items
+            .chunks(half.max(1))
+            .map(|c| s.spawn(|| c.iter().map(&f).collect::<Vec<R>>()))
+            .collect();
+        chunks
+            .into_iter()
+            .flat_map(|h| h.join().expect("worker"))
+            .collect()
     })
 }
 
@@ -271,6 +372,10 @@ fn comparison_normalises_like_canon_diff() {
     let c = "STRAIGHT_FEED(1.0003, 2.0000, -3.0000, 0.0000, 0.0000, 0.0000)\n";
     assert!(compare(a, c).is_some());
     assert!(compare("CHANGE_TOOL(1)\n", "CHANGE_TOOL(2)\n").is_some());
-    assert!(compare("SELECT_PLANE(CANON_PLANE_XY)\n", "SELECT_PLANE(CANON_PLANE_XZ)\n").is_some());
+    assert!(compare(
+        "SELECT_PLANE(CANON_PLANE_XY)\n",
+        "SELECT_PLANE(CANON_PLANE_XZ)\n"
+    )
+    .is_some());
     assert!(compare("A()\n", "A()\nB()\n").is_some());
 }

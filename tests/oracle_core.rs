@@ -16,10 +16,19 @@ use std::path::{Path, PathBuf};
 
 /// Probes known not to match yet, with the reason.
 const KNOWN: &[(&str, &str)] = &[
-    ("p10-cutter-comp", "G41.1/G42.1 (D is a diameter) share G41/G42's meaning in the IR"),
-    ("p18-params-expr", "predefined parameters (#<_abs_x>) belong to the walker's work"),
+    (
+        "p10-cutter-comp",
+        "G41.1/G42.1 (D is a diameter) share G41/G42's meaning in the IR",
+    ),
+    (
+        "p18-params-expr",
+        "predefined parameters (#<_abs_x>) belong to the walker's work",
+    ),
     ("p25-splines", "G5/G5.1/G5.2 splines (NURBS_FEED) not run"),
-    ("p26-io-orient-thread", "M19 Q is rejected by the reader; G76 threading not run"),
+    (
+        "p26-io-orient-thread",
+        "M19 Q is rejected by the reader; G76 threading not run",
+    ),
 ];
 
 fn probe_dir() -> Option<PathBuf> {
@@ -43,7 +52,11 @@ fn split(line: &str) -> (String, Vec<f64>) {
     };
     for ch in line.chars() {
         let numeric = ch.is_ascii_digit() || ch == '.' || (ch == '-' && cur.is_empty());
-        if numeric && !(text.ends_with(|c: char| c.is_ascii_alphabetic() || c == '_') && cur.is_empty() && ch != '-') {
+        if numeric
+            && !(text.ends_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+                && cur.is_empty()
+                && ch != '-')
+        {
             cur.push(ch);
         } else {
             flush(&mut cur, &mut text, &mut nums);
@@ -63,7 +76,10 @@ fn same(a: &str, b: &str) -> bool {
 }
 
 fn normalise(lines: impl Iterator<Item = String>) -> Vec<String> {
-    lines.map(|l| l.trim().to_string()).filter(|l| !l.is_empty() && !l.starts_with("COMMENT(\"interpreter:")).collect()
+    lines
+        .map(|l| l.trim().to_string())
+        .filter(|l| !l.is_empty() && !l.starts_with("COMMENT(\"interpreter:"))
+        .collect()
 }
 
 /// Runs one probe: Ok(()) when it matches, Err(why) otherwise.
@@ -73,25 +89,45 @@ fn run_probe(ngc: &Path, table: &ToolTable) -> Result<(), String> {
     let mut files = SourceMap::new();
     let id = files.add(ngc.display().to_string(), text.clone());
     let (program, diags) = read_program(&text, id, &spec);
-    let error_probe = ngc.file_name().is_some_and(|n| n.to_string_lossy().starts_with('e'));
+    let error_probe = ngc
+        .file_name()
+        .is_some_and(|n| n.to_string_lossy().starts_with('e'));
     if diags.iter().any(|d| d.is_error()) {
-        return if error_probe { Ok(()) } else { Err("rejected when read".into()) };
+        return if error_probe {
+            Ok(())
+        } else {
+            Err("rejected when read".into())
+        };
     }
-    let options = Options { tool_table: table.clone(), ..Options::default() };
+    let options = Options {
+        tool_table: table.clone(),
+        ..Options::default()
+    };
     let mut calls: Vec<Canon> = Vec::new();
     let mut sink = |c: Canon, _| calls.push(c);
     let dir = ngc.parent().map(Path::to_path_buf).unwrap_or_default();
     let mut loader = FsLoader::new(dir, spec.clone(), &mut files);
-    let run_diags = interp::run(std::rc::Rc::new(program), &spec, &options, &mut loader, &mut sink);
+    let run_diags = interp::run(
+        std::rc::Rc::new(program),
+        &spec,
+        &options,
+        &mut loader,
+        &mut sink,
+    );
     let failed = run_diags.iter().any(|d| d.is_error());
     if error_probe && !failed {
         return Err("no error reported".into());
     }
     if !error_probe && failed {
-        let msgs: Vec<_> = run_diags.iter().filter(|d| d.is_error()).map(|d| d.message.clone()).collect();
+        let msgs: Vec<_> = run_diags
+            .iter()
+            .filter(|d| d.is_error())
+            .map(|d| d.message.clone())
+            .collect();
         return Err(format!("error: {}", msgs.join("; ")));
     }
-    let expected = std::fs::read_to_string(ngc.with_extension("canon")).map_err(|e| e.to_string())?;
+    let expected =
+        std::fs::read_to_string(ngc.with_extension("canon")).map_err(|e| e.to_string())?;
     let expected = normalise(expected.lines().map(str::to_string));
     let actual = normalise(calls.iter().map(format_call));
     for (i, (e, a)) in expected.iter().zip(&actual).enumerate() {
@@ -100,7 +136,11 @@ fn run_probe(ngc: &Path, table: &ToolTable) -> Result<(), String> {
         }
     }
     if expected.len() != actual.len() {
-        return Err(format!("{} calls expected, {} made", expected.len(), actual.len()));
+        return Err(format!(
+            "{} calls expected, {} made",
+            expected.len(),
+            actual.len()
+        ));
     }
     Ok(())
 }
@@ -137,5 +177,9 @@ fn oracle_probes_match_rs274() {
         }
     }
     eprintln!("oracle probes: {passed} of {} match", probes.len());
-    assert!(unexpected.is_empty(), "probes that do not match:\n{}", unexpected.join("\n"));
+    assert!(
+        unexpected.is_empty(),
+        "probes that do not match:\n{}",
+        unexpected.join("\n")
+    );
 }

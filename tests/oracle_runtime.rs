@@ -26,7 +26,10 @@ fn programs() -> Vec<(String, String)> {
             .collect();
         files.sort();
         let rel = files.into_iter().map(|f| format!("{dialect}/runtime/{f}"));
-        out.extend(rel.filter(|r| !HELPERS.contains(&r.as_str())).map(|r| (dialect.to_string(), r)));
+        out.extend(
+            rel.filter(|r| !HELPERS.contains(&r.as_str()))
+                .map(|r| (dialect.to_string(), r)),
+        );
     }
     out
 }
@@ -36,16 +39,32 @@ fn runtime_errors_are_reported_with_their_spans() {
     let mut pending = Vec::new();
     for (dialect, rel) in programs() {
         let file = format!("tests/programs/{rel}");
-        let o = cncc(&["check", "--dialect", &dialect, "--max-loop", "10000", "--max-depth", "50", &file]);
+        let o = cncc(&[
+            "check",
+            "--dialect",
+            &dialect,
+            "--max-loop",
+            "10000",
+            "--max-depth",
+            "50",
+            &file,
+        ]);
         if o.status.code() == Some(0) && PENDING_CORE.contains(&rel.as_str()) {
             pending.push(rel);
             continue;
         }
         assert_eq!(o.status.code(), Some(1), "{file}: {}", stderr(&o));
-        let name = format!("runtime_{}", rel.replace(['/', '.'], "_").replace("_runtime_", "_"));
+        let name = format!(
+            "runtime_{}",
+            rel.replace(['/', '.'], "_").replace("_runtime_", "_")
+        );
         insta::assert_snapshot!(name, stderr(&o));
     }
     if !pending.is_empty() {
-        eprintln!("note: {} run-time checks wait for the interpreter core: {}", pending.len(), pending.join(", "));
+        eprintln!(
+            "note: {} run-time checks wait for the interpreter core: {}",
+            pending.len(),
+            pending.join(", ")
+        );
     }
 }

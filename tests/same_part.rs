@@ -26,7 +26,11 @@ const TOL: f64 = 1e-4;
 #[derive(Clone, Debug, PartialEq)]
 enum Cut {
     Line([f64; 3]),
-    Arc { end: [f64; 3], centre: [f64; 2], rotation: i64 },
+    Arc {
+        end: [f64; 3],
+        centre: [f64; 2],
+        rotation: i64,
+    },
     /// Vertical feeds at one X Y, by their deepest Z.
     Plunge([f64; 3]),
 }
@@ -36,15 +40,28 @@ fn dir() -> PathBuf {
 }
 
 fn cncc(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_cncc")).args(args).output().expect("cncc runs");
+    let out = Command::new(env!("CARGO_BIN_EXE_cncc"))
+        .args(args)
+        .output()
+        .expect("cncc runs");
     let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
-    (out.status.code().unwrap_or(-1), text(&out.stdout), text(&out.stderr))
+    (
+        out.status.code().unwrap_or(-1),
+        text(&out.stdout),
+        text(&out.stderr),
+    )
 }
 
 /// The numbers between the parentheses of a call.
 fn args(line: &str) -> Vec<f64> {
-    let inner = line.split_once('(').map(|(_, r)| r.trim_end_matches(')')).unwrap_or("");
-    inner.split(',').filter_map(|s| s.trim().parse::<f64>().ok()).collect()
+    let inner = line
+        .split_once('(')
+        .map(|(_, r)| r.trim_end_matches(')'))
+        .unwrap_or("");
+    inner
+        .split(',')
+        .filter_map(|s| s.trim().parse::<f64>().ok())
+        .collect()
 }
 
 fn same_xy(a: [f64; 3], b: [f64; 3]) -> bool {
@@ -82,7 +99,11 @@ fn cuts(canon: &str) -> Vec<Cut> {
             }
             "ARC_FEED" if a.len() >= 6 => {
                 let end = [a[0], a[1], a[5]];
-                out.push(Cut::Arc { end, centre: [a[2], a[3]], rotation: a[4] as i64 });
+                out.push(Cut::Arc {
+                    end,
+                    centre: [a[2], a[3]],
+                    rotation: a[4] as i64,
+                });
                 open = false;
                 pos = end;
             }
@@ -99,15 +120,28 @@ fn close(a: &[f64], b: &[f64]) -> bool {
 fn same_cut(a: &Cut, b: &Cut) -> bool {
     match (a, b) {
         (Cut::Line(p), Cut::Line(q)) | (Cut::Plunge(p), Cut::Plunge(q)) => close(p, q),
-        (Cut::Arc { end: e1, centre: c1, rotation: r1 }, Cut::Arc { end: e2, centre: c2, rotation: r2 }) => {
-            r1 == r2 && close(e1, e2) && close(c1, c2)
-        }
+        (
+            Cut::Arc {
+                end: e1,
+                centre: c1,
+                rotation: r1,
+            },
+            Cut::Arc {
+                end: e2,
+                centre: c2,
+                rotation: r2,
+            },
+        ) => r1 == r2 && close(e1, e2) && close(c1, c2),
         _ => false,
     }
 }
 
-const PROGRAMS: &[(&str, &str)] =
-    &[("part.nc", "fanuc"), ("part-haas.nc", "haas"), ("part.ngc", "linuxcnc"), ("part.mpf", "siemens840d")];
+const PROGRAMS: &[(&str, &str)] = &[
+    ("part.nc", "fanuc"),
+    ("part-haas.nc", "haas"),
+    ("part.ngc", "linuxcnc"),
+    ("part.mpf", "siemens840d"),
+];
 
 fn run(file: &str, dialect: &str) -> Vec<Cut> {
     let path = dir().join(file);
@@ -123,7 +157,10 @@ fn each_program_checks_clean() {
         let path = dir().join(file);
         let (code, out, err) = cncc(&["check", path.to_str().unwrap(), "--dialect", dialect]);
         assert_eq!(code, 0, "cncc check {file}: {out}{err}");
-        assert!(out.trim().is_empty() && err.trim().is_empty(), "cncc check {file} not silent: {out}{err}");
+        assert!(
+            out.trim().is_empty() && err.trim().is_empty(),
+            "cncc check {file} not silent: {out}{err}"
+        );
     }
 }
 
@@ -137,7 +174,10 @@ fn four_dialects_cut_the_same() {
     for (file, dialect) in &PROGRAMS[1..] {
         let cuts = run(file, dialect);
         for (k, (a, b)) in reference.iter().zip(&cuts).enumerate() {
-            assert!(same_cut(a, b), "{file}: cut {k} differs: {ref_file} {a:?}, {file} {b:?}");
+            assert!(
+                same_cut(a, b),
+                "{file}: cut {k} differs: {ref_file} {a:?}, {file} {b:?}"
+            );
         }
         assert_eq!(cuts.len(), reference.len(), "{file}: number of cuts");
     }
@@ -154,6 +194,10 @@ fn plunges_merge_pecks() {
                  STRAIGHT_FEED(19.0000, 5.0000, -1.0000, 0, 0, 0)\n";
     assert_eq!(
         cuts(canon),
-        vec![Cut::Plunge([5.0, 5.0, -8.0]), Cut::Plunge([9.0, 5.0, -1.0]), Cut::Line([19.0, 5.0, -1.0])]
+        vec![
+            Cut::Plunge([5.0, 5.0, -8.0]),
+            Cut::Plunge([9.0, 5.0, -1.0]),
+            Cut::Line([19.0, 5.0, -1.0])
+        ]
     );
 }

@@ -39,7 +39,10 @@ pub type Pose = [f64; 6];
 #[derive(Clone, Debug, PartialEq)]
 pub enum Canon {
     UseLengthUnits(CanonUnits),
-    SetG5xOffset { index: u32, offset: Pose },
+    SetG5xOffset {
+        index: u32,
+        offset: Pose,
+    },
     SetG92Offset(Pose),
     SetXyRotation(f64),
     SetFeedReference,
@@ -66,7 +69,10 @@ pub enum Canon {
     SetSpindleSpeed(f64),
     /// Constant-surface-speed maximum (0: CSS off).
     SetSpindleMode(f64),
-    OrientSpindle { angle: f64, mode: i64 },
+    OrientSpindle {
+        angle: f64,
+        mode: i64,
+    },
     WaitOrientComplete(f64),
     /// Tool length offset: x y z, a b c, u v w.
     UseToolLengthOffset([f64; 9]),
@@ -102,13 +108,28 @@ pub enum Canon {
     DisableAdaptiveFeed,
     EnableFeedHold,
     DisableFeedHold,
-    StartSpeedFeedSync { pitch: f64, velocity_mode: bool },
+    StartSpeedFeedSync {
+        pitch: f64,
+        velocity_mode: bool,
+    },
     StopSpeedFeedSync,
-    RigidTap { x: f64, y: f64, z: f64 },
+    RigidTap {
+        x: f64,
+        y: f64,
+        z: f64,
+    },
     TurnProbeOn,
     TurnProbeOff,
     /// SET_TOOL_TABLE_ENTRY(row, tool, 9 offsets, diameter, front, back, orientation).
-    SetToolTableEntry { row: i64, tool: i64, offset: [f64; 9], diameter: f64, front: f64, back: f64, orientation: i64 },
+    SetToolTableEntry {
+        row: i64,
+        tool: i64,
+        offset: [f64; 9],
+        diameter: f64,
+        front: f64,
+        back: f64,
+        orientation: i64,
+    },
     /// Digital/analog outputs M62..M68: kept as their printed text.
     Io(String),
 }

@@ -16,7 +16,11 @@ fn fixed_bytes(v: f64, places: u32, out: &mut Vec<u8>) {
         _ => 10f64.powi(places as i32),
     };
     if v == 0.0 && places == 4 {
-        let zero: &[u8] = if v.is_sign_negative() { b"-0.0000" } else { b"0.0000" };
+        let zero: &[u8] = if v.is_sign_negative() {
+            b"-0.0000"
+        } else {
+            b"0.0000"
+        };
         return out.extend_from_slice(zero);
     }
     let r = (v * scale).abs();
@@ -144,7 +148,15 @@ pub fn write_call(out: &mut Vec<u8>, c: &Canon) {
         StraightTraverse(p) => o.s("STRAIGHT_TRAVERSE(").list(p, ", ").s(")"),
         StraightFeed(p) => o.s("STRAIGHT_FEED(").list(p, ", ").s(")"),
         StraightProbe(p) => o.s("STRAIGHT_PROBE(").list(p, ", ").s(")"),
-        ArcFeed { first_end, second_end, first_axis, second_axis, rotation, axis_end, abc } => o
+        ArcFeed {
+            first_end,
+            second_end,
+            first_axis,
+            second_axis,
+            rotation,
+            axis_end,
+            abc,
+        } => o
             .s("ARC_FEED(")
             .list(&[*first_end, *second_end, *first_axis, *second_axis], ", ")
             .s(", ")
@@ -161,12 +173,22 @@ pub fn write_call(out: &mut Vec<u8>, c: &Canon) {
         LogAppend(s) => o.s("LOGAPPEND(").quoted(s).s(")"),
         Log(s) => o.s("LOG(").quoted(s).s(")"),
         LogClose => o.s("LOGCLOSE()"),
-        SetG5xOffset { index, offset } => o.s("SET_G5X_OFFSET(").int(*index as i64).s(", ").list(offset, ", ").s(")"),
+        SetG5xOffset { index, offset } => o
+            .s("SET_G5X_OFFSET(")
+            .int(*index as i64)
+            .s(", ")
+            .list(offset, ", ")
+            .s(")"),
         SetG92Offset(p) => o.s("SET_G92_OFFSET(").list(p, ", ").s(")"),
         SetXyRotation(r) => o.s("SET_XY_ROTATION(").f4(*r).s(")"),
         SetSpindleSpeed(s) => o.s("SET_SPINDLE_SPEED(0, ").f4(*s).s(")"),
         SetSpindleMode(m) => o.s("SET_SPINDLE_MODE(0 ").f4(*m).s(")"),
-        OrientSpindle { angle, mode } => o.s("ORIENT_SPINDLE(0, ").f4(*angle).s(", ").int(*mode as i64).s(")"),
+        OrientSpindle { angle, mode } => o
+            .s("ORIENT_SPINDLE(0, ")
+            .f4(*angle)
+            .s(", ")
+            .int(*mode as i64)
+            .s(")"),
         WaitOrientComplete(t) => o.s("SPINDLE.0.WAIT_ORIENT_COMPLETE(").f4(*t).s(")"),
         UseToolLengthOffset(v) => o
             .s("USE_TOOL_LENGTH_OFFSET(")
@@ -177,16 +199,31 @@ pub fn write_call(out: &mut Vec<u8>, c: &Canon) {
             .list(&v[6..9], " ")
             .s(")"),
         Dwell(t) => o.s("DWELL(").f4(*t).s(")"),
-        SetMotionControlMode(MotionMode::Continuous(t)) => {
-            o.s("SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, ").f6(*t).s(")")
-        }
+        SetMotionControlMode(MotionMode::Continuous(t)) => o
+            .s("SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, ")
+            .f6(*t)
+            .s(")"),
         SetNaivecamTolerance(t) => o.s("SET_NAIVECAM_TOLERANCE(").f4(*t).s(")"),
-        StartSpeedFeedSync { pitch, velocity_mode } => {
-            o.s("START_SPEED_FEED_SYNC(").f6(*pitch).s(",").int(*velocity_mode as i64).s(")")
-        }
+        StartSpeedFeedSync {
+            pitch,
+            velocity_mode,
+        } => o
+            .s("START_SPEED_FEED_SYNC(")
+            .f6(*pitch)
+            .s(",")
+            .int(*velocity_mode as i64)
+            .s(")"),
         RigidTap { x, y, z } => o.s("RIGID_TAP(").list(&[*x, *y, *z], ", ").s(")"),
         // rs274 prints the nine offsets space-separated and no diameter.
-        SetToolTableEntry { row, tool, offset, diameter: _, front, back, orientation } => {
+        SetToolTableEntry {
+            row,
+            tool,
+            offset,
+            diameter: _,
+            front,
+            back,
+            orientation,
+        } => {
             let _ = write!(o.0, "SET_TOOL_TABLE_ENTRY({row}, {tool}, ");
             o.list(offset, " ").s(", ").f4(*front).s(", ").f4(*back);
             let _ = write!(o.0, ", {orientation})");
@@ -239,11 +276,32 @@ fn fixed_text(c: &Canon) -> std::borrow::Cow<'static, str> {
         TurnProbeOn => "TURN_PROBE_ON()",
         TurnProbeOff => "TURN_PROBE_OFF()",
         // Written by `write_call` itself.
-        StraightTraverse(_) | StraightFeed(_) | StraightProbe(_) | ArcFeed { .. } | SetFeedRate(_) | Comment(_)
-        | Message(_) | SetG5xOffset { .. } | SetG92Offset(_) | SetXyRotation(_) | SetSpindleSpeed(_)
-        | SetSpindleMode(_) | OrientSpindle { .. } | WaitOrientComplete(_) | UseToolLengthOffset(_) | Dwell(_)
-        | SetMotionControlMode(MotionMode::Continuous(_)) | SetNaivecamTolerance(_) | StartSpeedFeedSync { .. }
-        | RigidTap { .. } | SetToolTableEntry { .. } | Io(_) | LogOpen(_) | LogAppend(_) | Log(_) | LogClose => "",
+        StraightTraverse(_)
+        | StraightFeed(_)
+        | StraightProbe(_)
+        | ArcFeed { .. }
+        | SetFeedRate(_)
+        | Comment(_)
+        | Message(_)
+        | SetG5xOffset { .. }
+        | SetG92Offset(_)
+        | SetXyRotation(_)
+        | SetSpindleSpeed(_)
+        | SetSpindleMode(_)
+        | OrientSpindle { .. }
+        | WaitOrientComplete(_)
+        | UseToolLengthOffset(_)
+        | Dwell(_)
+        | SetMotionControlMode(MotionMode::Continuous(_))
+        | SetNaivecamTolerance(_)
+        | StartSpeedFeedSync { .. }
+        | RigidTap { .. }
+        | SetToolTableEntry { .. }
+        | Io(_)
+        | LogOpen(_)
+        | LogAppend(_)
+        | Log(_)
+        | LogClose => "",
     };
     s.into()
 }
@@ -267,7 +325,11 @@ mod tests {
             state ^= state << 17;
             let mag = [1e-6, 1e-3, 1.0, 1e2, 1e4, 1e7, 1e11][(i % 7) as usize];
             let v = ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 2.0 * mag;
-            let v = if i % 5 == 0 { (v * 1e5).round() / 1e5 + 0.00005 } else { v };
+            let v = if i % 5 == 0 {
+                (v * 1e5).round() / 1e5 + 0.00005
+            } else {
+                v
+            };
             for places in [4, 6] {
                 let mut s = String::new();
                 fixed(v, places, &mut s);
@@ -285,7 +347,9 @@ mod tests {
     #[test]
     fn prints_like_rs274() {
         assert_eq!(
-            format_call(&Canon::StraightFeed([-2.24509, 2.2451, -1.0, 0.0, 0.0, 0.0])),
+            format_call(&Canon::StraightFeed([
+                -2.24509, 2.2451, -1.0, 0.0, 0.0, 0.0
+            ])),
             "STRAIGHT_FEED(-2.2451, 2.2451, -1.0000, 0.0000, 0.0000, 0.0000)"
         );
         assert_eq!(
@@ -308,8 +372,20 @@ mod tests {
             format_call(&Canon::SetMotionControlMode(MotionMode::Continuous(0.0))),
             "SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, 0.000000)"
         );
-        assert_eq!(format_call(&Canon::SetSpindleMode(2000.0)), "SET_SPINDLE_MODE(0 2000.0000)");
-        assert_eq!(format_call(&Canon::StartSpeedFeedSync { pitch: 0.5, velocity_mode: false }), "START_SPEED_FEED_SYNC(0.500000,0)");
-        assert_eq!(format_call(&Canon::SetXyRotation(-0.0)), "SET_XY_ROTATION(-0.0000)");
+        assert_eq!(
+            format_call(&Canon::SetSpindleMode(2000.0)),
+            "SET_SPINDLE_MODE(0 2000.0000)"
+        );
+        assert_eq!(
+            format_call(&Canon::StartSpeedFeedSync {
+                pitch: 0.5,
+                velocity_mode: false
+            }),
+            "START_SPEED_FEED_SYNC(0.500000,0)"
+        );
+        assert_eq!(
+            format_call(&Canon::SetXyRotation(-0.0)),
+            "SET_XY_ROTATION(-0.0000)"
+        );
     }
 }

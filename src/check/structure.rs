@@ -93,7 +93,11 @@ impl StructureChecker {
 
     /// Feeds the next block.
     pub fn block(&mut self, _index: usize, block: &Block, _exprs: &Arena<Expr>) {
-        if block.stmts.iter().any(|s| matches!(s.kind, StmtKind::ProgramStart { .. })) {
+        if block
+            .stmts
+            .iter()
+            .any(|s| matches!(s.kind, StmtKind::ProgramStart { .. }))
+        {
             self.labels.close_scope(&mut self.diags);
         }
         if let Some(n) = &block.number {
@@ -127,9 +131,12 @@ impl StructureChecker {
         let Some(last) = self.last_main else { return };
         if self.end_required && !self.saw_end {
             self.diags.push(
-                Diagnostic::new(Code::NoProgramEnd, "the program ends without M2, M30 or a closing `%`")
-                    .primary(last, "the program's last statement")
-                    .help("end the program with `M2` or `M30`"),
+                Diagnostic::new(
+                    Code::NoProgramEnd,
+                    "the program ends without M2, M30 or a closing `%`",
+                )
+                .primary(last, "the program's last statement")
+                .help("end the program with `M2` or `M30`"),
             );
         }
     }
@@ -164,9 +171,10 @@ impl StructureChecker {
             StmtKind::If { id, .. } => self.open(O::If, id, sp),
             StmtKind::ElseIf { id, .. } | StmtKind::Else { id } => self.middle(O::If, id, sp),
             StmtKind::EndIf { id } => self.close(&[O::If], id, sp, "ENDIF"),
-            StmtKind::While { id: id @ FlowId::OWord(_), .. } if self.top_is(O::Do, id) => {
-                self.close(&[O::Do], id, sp, "WHILE")
-            }
+            StmtKind::While {
+                id: id @ FlowId::OWord(_),
+                ..
+            } if self.top_is(O::Do, id) => self.close(&[O::Do], id, sp, "WHILE"),
             StmtKind::While { id, .. } => self.open(O::While, id, sp),
             StmtKind::EndWhile { id } => self.close(&[O::While, O::Do], id, sp, "ENDWHILE"),
             StmtKind::Do { id } => self.open(O::Do, id, sp),
@@ -184,7 +192,9 @@ impl StructureChecker {
             StmtKind::Return { .. } => self.misplaced_return(sp),
             StmtKind::Break { id } => self.misplaced_break(id, sp, "break"),
             StmtKind::Continue { id } => self.misplaced_break(id, sp, "continue"),
-            StmtKind::ProgramStart { number: Some(n), .. } => {
+            StmtKind::ProgramStart {
+                number: Some(n), ..
+            } => {
                 let first = self.programs.get(n).copied();
                 self.duplicate(first, sp, &format!("program O{n}"));
                 self.programs.entry(*n).or_insert(sp);
@@ -194,11 +204,18 @@ impl StructureChecker {
     }
 
     fn top_is(&self, kind: Opener, id: &FlowId) -> bool {
-        self.stack.last().map(|o| o.kind == kind && o.id == *id).unwrap_or(false)
+        self.stack
+            .last()
+            .map(|o| o.kind == kind && o.id == *id)
+            .unwrap_or(false)
     }
 
     fn open(&mut self, kind: Opener, id: &FlowId, span: Span) {
-        self.stack.push(Open { kind, id: id.clone(), span });
+        self.stack.push(Open {
+            kind,
+            id: id.clone(),
+            span,
+        });
     }
 
     /// `ELSE`/`ELSEIF`: the innermost open structure must be its `IF`.
@@ -231,24 +248,37 @@ impl StructureChecker {
 
     fn mismatch(&self, span: Span, word: &str, top: &Open) -> Diagnostic {
         let name = describe(top.kind, &top.id);
-        Diagnostic::new(Code::MismatchedEnd, format!("`{word}` does not close the innermost open `{name}`"))
-            .primary(span, "closes something else")
-            .secondary(top.span, format!("`{name}` opened here is still open"))
-            .help(format!("close `{name}` first, or correct the number or name of this end"))
+        Diagnostic::new(
+            Code::MismatchedEnd,
+            format!("`{word}` does not close the innermost open `{name}`"),
+        )
+        .primary(span, "closes something else")
+        .secondary(top.span, format!("`{name}` opened here is still open"))
+        .help(format!(
+            "close `{name}` first, or correct the number or name of this end"
+        ))
     }
 
     fn mismatch_or_unopened(&mut self, span: Span, word: &str, kind: Opener) {
         match self.stack.last().cloned() {
-            Some(top) if self.stack.iter().any(|o| o.kind == kind) => self.diags.push(self.mismatch(span, word, &top)),
+            Some(top) if self.stack.iter().any(|o| o.kind == kind) => {
+                self.diags.push(self.mismatch(span, word, &top))
+            }
             _ => self.unopened(span, word, kind),
         }
     }
 
     fn unopened(&mut self, span: Span, word: &str, kind: Opener) {
         self.diags.push(
-            Diagnostic::new(Code::UnbalancedBlock, format!("`{word}` without an open `{}`", kind.word()))
-                .primary(span, "nothing to close here")
-                .help(format!("add the `{}` this belongs to, or remove it", kind.word())),
+            Diagnostic::new(
+                Code::UnbalancedBlock,
+                format!("`{word}` without an open `{}`", kind.word()),
+            )
+            .primary(span, "nothing to close here")
+            .help(format!(
+                "add the `{}` this belongs to, or remove it",
+                kind.word()
+            )),
         );
     }
 
@@ -273,20 +303,35 @@ impl StructureChecker {
     }
 
     fn misplaced(&mut self, span: Span, msg: String, help: &str) {
-        self.diags.push(Diagnostic::new(Code::ControlOutsideSub, msg).primary(span, "not allowed here").help(help));
+        self.diags.push(
+            Diagnostic::new(Code::ControlOutsideSub, msg)
+                .primary(span, "not allowed here")
+                .help(help),
+        );
     }
 
     fn misplaced_return(&mut self, span: Span) {
         if !self.in_sub() {
-            self.misplaced(span, "`return` outside a subroutine".into(), "a return belongs inside a subroutine body");
+            self.misplaced(
+                span,
+                "`return` outside a subroutine".into(),
+                "a return belongs inside a subroutine body",
+            );
         }
     }
 
     fn misplaced_break(&mut self, id: &FlowId, span: Span, word: &str) {
-        let ok = self.stack.iter().any(|o| o.kind.is_loop() && (*id == FlowId::Nested || o.id == *id));
+        let ok = self
+            .stack
+            .iter()
+            .any(|o| o.kind.is_loop() && (*id == FlowId::Nested || o.id == *id));
         if !ok {
             let msg = format!("`{word}` outside a loop it could leave");
-            self.misplaced(span, msg, "put it inside the loop it belongs to, with that loop's number");
+            self.misplaced(
+                span,
+                msg,
+                "put it inside the loop it belongs to, with that loop's number",
+            );
         }
     }
 }

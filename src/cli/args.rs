@@ -5,7 +5,11 @@ use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 
 #[derive(Parser, Debug)]
-#[command(name = "cncc", version, about = "A compiler for CNC milling part programs")]
+#[command(
+    name = "cncc",
+    version,
+    about = "A compiler for CNC milling part programs"
+)]
 pub struct Cli {
     /// Load a dialect spec (XML) in addition to the built-in ones; it may
     /// extend a built-in dialect. Repeatable.

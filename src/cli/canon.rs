@@ -7,10 +7,10 @@
 //! such block and the walker goes on from there (see
 //! [`crate::interp::stream`]), so memory stays flat on large CAM files.
 
+use crate::canon::write_call;
 use crate::cli::args::Format;
 use crate::cli::check::{keep_lines, read_head, read_whole};
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
-use crate::canon::write_call;
 use crate::driver::{check_stream_flagged, FsLoader};
 use crate::interp::{stream::StreamRun, tooltable::ToolTable, Interp, Options};
 use std::fs::File;
@@ -53,8 +53,14 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
         diags.extend(d);
         a.options.tool_table = table;
     }
-    let id = ctx.files.add_sparse(a.file.display().to_string(), Vec::new());
-    let open = || File::open(a.file).map(|f| BufReader::with_capacity(1 << 16, f)).map_err(fail);
+    let id = ctx
+        .files
+        .add_sparse(a.file.display().to_string(), Vec::new());
+    let open = || {
+        File::open(a.file)
+            .map(|f| BufReader::with_capacity(1 << 16, f))
+            .map_err(fail)
+    };
     let mut out = std::io::stdout().lock();
     let mut io_error = None;
     // Calls are written into a buffer, handed to stdout in large chunks.
@@ -102,5 +108,9 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
     }
     keep_lines(ctx, a.file, id, &diags)?;
     ctx.print(&diags, a.format);
-    Ok(if diags.iter().any(|d| d.is_error()) { EXIT_INPUT_ERRORS } else { EXIT_OK })
+    Ok(if diags.iter().any(|d| d.is_error()) {
+        EXIT_INPUT_ERRORS
+    } else {
+        EXIT_OK
+    })
 }

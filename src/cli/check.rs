@@ -43,18 +43,29 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
     }
     ctx.print(&all, a.format);
     let errors = all.iter().filter(|d| d.severity == Severity::Error).count();
-    let warnings = all.iter().filter(|d| d.severity == Severity::Warning).count();
+    let warnings = all
+        .iter()
+        .filter(|d| d.severity == Severity::Warning)
+        .count();
     if a.format == Format::Human {
         if let Some(s) = summary_line(errors, warnings, 0) {
             eprintln!("{s}");
         }
     }
-    Ok(if errors > 0 { EXIT_INPUT_ERRORS } else { EXIT_OK })
+    Ok(if errors > 0 {
+        EXIT_INPUT_ERRORS
+    } else {
+        EXIT_OK
+    })
 }
 
 /// Streams one file through the reader (and the interpreter, until the
 /// program shows control flow); keeps only the lines diagnostics point at.
-fn check_file(ctx: &mut Context, path: &Path, a: &CheckArgs<'_>) -> Result<Vec<Diagnostic>, Failure> {
+fn check_file(
+    ctx: &mut Context,
+    path: &Path,
+    a: &CheckArgs<'_>,
+) -> Result<Vec<Diagnostic>, Failure> {
     let fail = |e: std::io::Error| Failure(format!("{}: {e}", path.display()));
     let head = read_head(path)?;
     let (spec, reason) = ctx.spec_for(a.dialect, path, &head)?;
@@ -88,7 +99,10 @@ fn check_file(ctx: &mut Context, path: &Path, a: &CheckArgs<'_>) -> Result<Vec<D
         for d in run.iter_mut().filter(|d| d.code == Code::UnsupportedHere) {
             d.code = Code::RunStoppedEarly;
             d.severity = crate::diag::Severity::Warning;
-            d.help = Some("cncc cannot run this yet; run-time checks of the blocks after it were not made".into());
+            d.help = Some(
+                "cncc cannot run this yet; run-time checks of the blocks after it were not made"
+                    .into(),
+            );
         }
         diags.extend(run);
     }
@@ -102,7 +116,12 @@ fn check_file(ctx: &mut Context, path: &Path, a: &CheckArgs<'_>) -> Result<Vec<D
 }
 
 /// Keeps, for a file read as a stream, the lines the diagnostics show.
-pub(crate) fn keep_lines(ctx: &mut Context, path: &Path, id: crate::span::FileId, diags: &[Diagnostic]) -> Result<(), Failure> {
+pub(crate) fn keep_lines(
+    ctx: &mut Context,
+    path: &Path,
+    id: crate::span::FileId,
+    diags: &[Diagnostic],
+) -> Result<(), Failure> {
     let offsets: Vec<u32> = diags
         .iter()
         .flat_map(|d| d.labels.iter())
@@ -116,7 +135,11 @@ pub(crate) fn keep_lines(ctx: &mut Context, path: &Path, id: crate::span::FileId
 }
 
 /// Reads a whole program (for the walker), with spans in file `id`.
-pub(crate) fn read_whole(path: &Path, id: crate::span::FileId, spec: &DialectSpec) -> Result<std::rc::Rc<crate::ir::Program>, Failure> {
+pub(crate) fn read_whole(
+    path: &Path,
+    id: crate::span::FileId,
+    spec: &DialectSpec,
+) -> Result<std::rc::Rc<crate::ir::Program>, Failure> {
     let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
     let text = crate::driver::decode(&bytes);
     drop(bytes);

@@ -49,7 +49,11 @@ impl Context {
     /// Loads the built-in dialects and the user's spec files. A broken spec
     /// is reported like a program error (exit 1).
     pub fn new(cli: &Cli, format: Format) -> Result<Context, i32> {
-        let mut ctx = Context { registry: Registry::with_builtins(), files: SourceMap::new(), color: cli.color };
+        let mut ctx = Context {
+            registry: Registry::with_builtins(),
+            files: SourceMap::new(),
+            color: cli.color,
+        };
         for path in &cli.dialect_files {
             let text = match read_text(path) {
                 Ok(t) => t,
@@ -109,5 +113,9 @@ pub fn read_text(path: &Path) -> Result<String, Failure> {
 
 /// Says which dialect was chosen and why, on stderr.
 pub fn report_detection(path: &Path, spec: &DialectSpec, reason: &str) {
-    eprintln!("note: reading {} as {} ({reason}); use --dialect to choose", path.display(), spec.id);
+    eprintln!(
+        "note: reading {} as {} ({reason}); use --dialect to choose",
+        path.display(),
+        spec.id
+    );
 }

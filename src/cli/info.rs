@@ -10,7 +10,10 @@ pub fn dialects(ctx: &Context) -> Result<i32, Failure> {
 
 pub fn explain(code: Option<&str>) -> Result<i32, Failure> {
     let text = match code {
-        None => Code::ALL.iter().map(|c| format!("{} {:<32} {}\n", c.code(), c.name(), c.summary())).collect(),
+        None => Code::ALL
+            .iter()
+            .map(|c| format!("{} {:<32} {}\n", c.code(), c.name(), c.summary()))
+            .collect(),
         Some(c) => match Code::lookup(c) {
             Some(c) => format!(
                 "{} {} ({})\n\n{}\n\n{}\n",

@@ -6,7 +6,12 @@ use crate::driver::read_program;
 use crate::ir::print::print_program;
 use std::path::Path;
 
-pub fn run(ctx: &mut Context, path: &Path, dialect: Option<&str>, format: Format) -> Result<i32, Failure> {
+pub fn run(
+    ctx: &mut Context,
+    path: &Path,
+    dialect: Option<&str>,
+    format: Format,
+) -> Result<i32, Failure> {
     let (id, text) = ctx.add_file(path)?;
     let (spec, reason) = ctx.spec_for(dialect, path, &text)?;
     if let Some(r) = reason {

@@ -26,7 +26,15 @@ pub fn run(cli: Cli) -> i32 {
         Err(code) => return code,
     };
     let result = match &cli.command {
-        Command::Check { files, dialect, format, verbose, tool_table, no_run, run } => check::run(
+        Command::Check {
+            files,
+            dialect,
+            format,
+            verbose,
+            tool_table,
+            no_run,
+            run,
+        } => check::run(
             &mut ctx,
             check::CheckArgs {
                 files,
@@ -38,12 +46,34 @@ pub fn run(cli: Cli) -> i32 {
                 options: run.options(),
             },
         ),
-        Command::Ir { file, dialect, format } => ir::run(&mut ctx, file, dialect.as_deref(), *format),
-        Command::Port { file, to, from, output, format } => port::run(
+        Command::Ir {
+            file,
+            dialect,
+            format,
+        } => ir::run(&mut ctx, file, dialect.as_deref(), *format),
+        Command::Port {
+            file,
+            to,
+            from,
+            output,
+            format,
+        } => port::run(
             &mut ctx,
-            port::PortArgs { file, to, from: from.as_deref(), output: output.as_deref(), format: *format },
+            port::PortArgs {
+                file,
+                to,
+                from: from.as_deref(),
+                output: output.as_deref(),
+                format: *format,
+            },
         ),
-        Command::Canon { file, dialect, tool_table, format, run } => canon::run(
+        Command::Canon {
+            file,
+            dialect,
+            tool_table,
+            format,
+            run,
+        } => canon::run(
             &mut ctx,
             canon::CanonArgs {
                 file,

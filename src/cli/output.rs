@@ -33,7 +33,12 @@ pub fn emit_output(output: Option<&Path>, text: &str) -> std::io::Result<()> {
 }
 
 /// Prints diagnostics on stderr in the chosen format.
-pub fn print_diagnostics(diags: &[Diagnostic], files: &SourceMap, format: Format, color: ColorChoice) {
+pub fn print_diagnostics(
+    diags: &[Diagnostic],
+    files: &SourceMap,
+    format: Format,
+    color: ColorChoice,
+) {
     if diags.is_empty() {
         return;
     }
@@ -56,7 +61,11 @@ pub fn summary_line(errors: usize, warnings: usize, dropped: usize) -> Option<St
     if errors == 0 && warnings == 0 {
         return None;
     }
-    let mut s = format!("{errors} error{}, {warnings} warning{}", plural(errors), plural(warnings));
+    let mut s = format!(
+        "{errors} error{}, {warnings} warning{}",
+        plural(errors),
+        plural(warnings)
+    );
     if dropped > 0 {
         s.push_str(&format!(" ({dropped} more not shown)"));
     }

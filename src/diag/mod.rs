@@ -53,13 +53,21 @@ impl Diagnostic {
 
     /// The place the problem is, underlined.
     pub fn primary(mut self, span: Span, message: impl Into<String>) -> Self {
-        self.labels.push(Label { span, message: message.into(), primary: true });
+        self.labels.push(Label {
+            span,
+            message: message.into(),
+            primary: true,
+        });
         self
     }
 
     /// A related place (where a mode came from, the other word of a pair).
     pub fn secondary(mut self, span: Span, message: impl Into<String>) -> Self {
-        self.labels.push(Label { span, message: message.into(), primary: false });
+        self.labels.push(Label {
+            span,
+            message: message.into(),
+            primary: false,
+        });
         self
     }
 
@@ -85,7 +93,11 @@ impl Diagnostic {
 
     /// The primary span, or the first label's.
     pub fn span(&self) -> Option<Span> {
-        self.labels.iter().find(|l| l.primary).or(self.labels.first()).map(|l| l.span)
+        self.labels
+            .iter()
+            .find(|l| l.primary)
+            .or(self.labels.first())
+            .map(|l| l.span)
     }
 }
 
@@ -152,7 +164,8 @@ impl Diagnostics {
 
     /// The kept diagnostics, sorted by file and position.
     pub fn into_sorted(mut self) -> Vec<Diagnostic> {
-        self.list.sort_by_key(|d| d.span().map(|s| (s.file, s.start)).unwrap_or_default());
+        self.list
+            .sort_by_key(|d| d.span().map(|s| (s.file, s.start)).unwrap_or_default());
         self.list
     }
 

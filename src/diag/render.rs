@@ -18,8 +18,13 @@ fn to_codespan(d: &Diagnostic, files: &SourceMap) -> cs::Diagnostic<usize> {
         .iter()
         .map(|l| {
             let f = l.span.file;
-            let range = files.to_view(f, l.span.start as usize)..files.to_view(f, l.span.end as usize);
-            let style = if l.primary { cs::LabelStyle::Primary } else { cs::LabelStyle::Secondary };
+            let range =
+                files.to_view(f, l.span.start as usize)..files.to_view(f, l.span.end as usize);
+            let style = if l.primary {
+                cs::LabelStyle::Primary
+            } else {
+                cs::LabelStyle::Secondary
+            };
             cs::Label::new(style, f.0 as usize, range).with_message(l.message.clone())
         })
         .collect();
@@ -36,13 +41,23 @@ fn to_codespan(d: &Diagnostic, files: &SourceMap) -> cs::Diagnostic<usize> {
 
 /// Renders for a person; `color` for a terminal.
 pub fn human(diags: &[Diagnostic], files: &SourceMap, color: bool) -> String {
-    let mut buf = if color { termcolor::Buffer::ansi() } else { termcolor::Buffer::no_color() };
+    let mut buf = if color {
+        termcolor::Buffer::ansi()
+    } else {
+        termcolor::Buffer::no_color()
+    };
     let config = term::Config::default();
     for d in diags {
         // Rendering only fails on a label outside its file; fall back to a line.
         if term::emit_to_write_style(&mut buf, &config, files, &to_codespan(d, files)).is_err() {
             use std::io::Write;
-            let _ = writeln!(buf, "{}[{}]: {}", d.severity_word(), d.code.code(), d.message);
+            let _ = writeln!(
+                buf,
+                "{}[{}]: {}",
+                d.severity_word(),
+                d.code.code(),
+                d.message
+            );
         }
     }
     String::from_utf8_lossy(buf.as_slice()).into_owned()
@@ -94,7 +109,14 @@ pub fn json(diags: &[Diagnostic], files: &SourceMap) -> String {
             .map(|l| {
                 let (line, column) = files.line_col(l.span.file, l.span.start as usize);
                 let (end_line, end_column) = files.line_col(l.span.file, l.span.end as usize);
-                JsonLabel { message: &l.message, primary: l.primary, line, column, end_line, end_column }
+                JsonLabel {
+                    message: &l.message,
+                    primary: l.primary,
+                    line,
+                    column,
+                    end_line,
+                    end_column,
+                }
             })
             .collect();
         let main = labels.iter().find(|l| l.primary).or(labels.first());

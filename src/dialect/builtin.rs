@@ -11,11 +11,31 @@ use std::sync::{Arc, OnceLock};
 /// The built-in specs in load order (a base before what extends it):
 /// (id, file name, text).
 pub const BUILTIN_SOURCES: &[(&str, &str, &str)] = &[
-    ("iso6983", "dialects/iso6983.xml", include_str!("../../dialects/iso6983.xml")),
-    ("fanuc", "dialects/fanuc.xml", include_str!("../../dialects/fanuc.xml")),
-    ("haas", "dialects/haas.xml", include_str!("../../dialects/haas.xml")),
-    ("linuxcnc", "dialects/linuxcnc.xml", include_str!("../../dialects/linuxcnc.xml")),
-    ("siemens840d", "dialects/siemens840d.xml", include_str!("../../dialects/siemens840d.xml")),
+    (
+        "iso6983",
+        "dialects/iso6983.xml",
+        include_str!("../../dialects/iso6983.xml"),
+    ),
+    (
+        "fanuc",
+        "dialects/fanuc.xml",
+        include_str!("../../dialects/fanuc.xml"),
+    ),
+    (
+        "haas",
+        "dialects/haas.xml",
+        include_str!("../../dialects/haas.xml"),
+    ),
+    (
+        "linuxcnc",
+        "dialects/linuxcnc.xml",
+        include_str!("../../dialects/linuxcnc.xml"),
+    ),
+    (
+        "siemens840d",
+        "dialects/siemens840d.xml",
+        include_str!("../../dialects/siemens840d.xml"),
+    ),
 ];
 
 /// Names of dialects cncc knows of but cannot read yet.
@@ -40,7 +60,9 @@ impl Registry {
 
     /// The built-in specs.
     pub fn with_builtins() -> Self {
-        Registry { specs: builtins().to_vec() }
+        Registry {
+            specs: builtins().to_vec(),
+        }
     }
 
     pub fn specs(&self) -> &[Arc<DialectSpec>] {
@@ -51,7 +73,9 @@ impl Registry {
     pub fn get(&self, name: &str) -> Option<Arc<DialectSpec>> {
         let n = name.trim().to_ascii_lowercase();
         let by_id = self.specs.iter().rev().find(|s| s.id == n);
-        by_id.or_else(|| self.specs.iter().rev().find(|s| s.aliases.contains(&n))).cloned()
+        by_id
+            .or_else(|| self.specs.iter().rev().find(|s| s.aliases.contains(&n)))
+            .cloned()
     }
 
     /// A spec by id or alias, or a diagnostic saying why there is none.
@@ -61,12 +85,23 @@ impl Registry {
         }
         let n = name.trim().to_ascii_lowercase();
         if let Some((_, id)) = PLANNED.iter().find(|(alias, _)| *alias == n) {
-            return Err(Diagnostic::new(Code::UnknownDialect, format!("the {id} dialect is not available yet"))
-                .note(format!("`{name}` names the {id} dialect, which cncc cannot read or write in this version"))
-                .help(format!("available dialects: {}", self.ids().join(", "))));
+            return Err(Diagnostic::new(
+                Code::UnknownDialect,
+                format!("the {id} dialect is not available yet"),
+            )
+            .note(format!(
+                "`{name}` names the {id} dialect, which cncc cannot read or write in this version"
+            ))
+            .help(format!("available dialects: {}", self.ids().join(", "))));
         }
-        Err(Diagnostic::new(Code::UnknownDialect, format!("unknown dialect `{name}`"))
-            .help(format!("available dialects: {} (`cncc dialects` lists their aliases)", self.ids().join(", "))))
+        Err(
+            Diagnostic::new(Code::UnknownDialect, format!("unknown dialect `{name}`")).help(
+                format!(
+                    "available dialects: {} (`cncc dialects` lists their aliases)",
+                    self.ids().join(", ")
+                ),
+            ),
+        )
     }
 
     pub fn ids(&self) -> Vec<String> {
@@ -104,7 +139,9 @@ pub fn builtin(id: &str) -> Option<Arc<DialectSpec>> {
     let n = id.trim().to_ascii_lowercase();
     let specs = builtins();
     let by_id = specs.iter().find(|s| s.id == n);
-    by_id.or_else(|| specs.iter().find(|s| s.aliases.contains(&n))).cloned()
+    by_id
+        .or_else(|| specs.iter().find(|s| s.aliases.contains(&n)))
+        .cloned()
 }
 
 #[cfg(test)]
@@ -129,10 +166,21 @@ mod tests {
 
     #[test]
     fn aliases_resolve() {
-        for (alias, id) in [("sinumerik", "siemens840d"), ("840D", "siemens840d"), ("siemens", "siemens840d"),
-            ("rs274ngc", "linuxcnc"), ("ngc", "linuxcnc"), ("emc", "linuxcnc"), ("fanuc", "fanuc"), ("HAAS", "haas")]
-        {
-            assert_eq!(builtin(alias).map(|s| s.id.clone()).as_deref(), Some(id), "{alias}");
+        for (alias, id) in [
+            ("sinumerik", "siemens840d"),
+            ("840D", "siemens840d"),
+            ("siemens", "siemens840d"),
+            ("rs274ngc", "linuxcnc"),
+            ("ngc", "linuxcnc"),
+            ("emc", "linuxcnc"),
+            ("fanuc", "fanuc"),
+            ("HAAS", "haas"),
+        ] {
+            assert_eq!(
+                builtin(alias).map(|s| s.id.clone()).as_deref(),
+                Some(id),
+                "{alias}"
+            );
         }
         assert!(builtin("nonsense").is_none());
     }
@@ -144,6 +192,10 @@ mod tests {
             let e = reg.resolve(name).unwrap_err();
             assert!(e.message.contains("not available yet"), "{}", e.message);
         }
-        assert!(reg.resolve("gibberish").unwrap_err().message.contains("unknown dialect"));
+        assert!(reg
+            .resolve("gibberish")
+            .unwrap_err()
+            .message
+            .contains("unknown dialect"));
     }
 }

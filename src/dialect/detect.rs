@@ -47,12 +47,18 @@ pub fn detect(reg: &Registry, path: Option<&Path>, text: &str) -> Detection {
     }
     match by_ext.first() {
         Some(id) => found(id, format!("extension .{ext}")),
-        None => found(DEFAULT_DIALECT, "no dialect-specific extension or content; the default".to_string()),
+        None => found(
+            DEFAULT_DIALECT,
+            "no dialect-specific extension or content; the default".to_string(),
+        ),
     }
 }
 
 fn found(id: &str, reason: String) -> Detection {
-    Detection { id: id.to_string(), reason }
+    Detection {
+        id: id.to_string(),
+        reason,
+    }
 }
 
 /// At most `n` bytes of `text`, cut at a character boundary.
@@ -94,7 +100,9 @@ fn content_hint(text: &str) -> Option<Detection> {
 /// `o100 sub`, `O<name> call`, `o101 if [...]` (not a Fanuc `O1234` program number).
 fn is_o_word(line: &str) -> bool {
     let line = strip_block_number(line);
-    let Some(rest) = line.strip_prefix('O') else { return false };
+    let Some(rest) = line.strip_prefix('O') else {
+        return false;
+    };
     let rest = if let Some(r) = rest.strip_prefix('<') {
         match r.find('>') {
             Some(end) => &r[end + 1..],
@@ -108,16 +116,35 @@ fn is_o_word(line: &str) -> bool {
         &rest[digits..]
     };
     const WORDS: &[&str] = &[
-        "SUB", "ENDSUB", "CALL", "RETURN", "IF", "ELSEIF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "DO",
-        "REPEAT", "ENDREPEAT", "BREAK", "CONTINUE",
+        "SUB",
+        "ENDSUB",
+        "CALL",
+        "RETURN",
+        "IF",
+        "ELSEIF",
+        "ELSE",
+        "ENDIF",
+        "WHILE",
+        "ENDWHILE",
+        "DO",
+        "REPEAT",
+        "ENDREPEAT",
+        "BREAK",
+        "CONTINUE",
     ];
-    let kw: String = rest.trim_start().chars().take_while(|c| c.is_ascii_alphabetic()).collect();
+    let kw: String = rest
+        .trim_start()
+        .chars()
+        .take_while(|c| c.is_ascii_alphabetic())
+        .collect();
     rest.starts_with(char::is_whitespace) && WORDS.contains(&kw.as_str())
 }
 
 fn strip_block_number(line: &str) -> &str {
     match line.strip_prefix('N') {
-        Some(r) if r.starts_with(|c: char| c.is_ascii_digit()) => r.trim_start_matches(|c: char| c.is_ascii_digit()).trim_start(),
+        Some(r) if r.starts_with(|c: char| c.is_ascii_digit()) => r
+            .trim_start_matches(|c: char| c.is_ascii_digit())
+            .trim_start(),
         _ => line,
     }
 }
@@ -135,8 +162,12 @@ fn siemens_hint(line: &str) -> Option<&'static str> {
         return Some(what);
     }
     let code = line.split(';').next().unwrap_or("");
-    let calls = ["CYCLE", "POCKET", "HOLES", "SLOT", "LONGHOLE"].iter().any(|c| has_call(code, c));
-    let jumps = ["GOTOF ", "GOTOB "].iter().any(|j| code.contains(j) && !in_paren_comment(code, j));
+    let calls = ["CYCLE", "POCKET", "HOLES", "SLOT", "LONGHOLE"]
+        .iter()
+        .any(|c| has_call(code, c));
+    let jumps = ["GOTOF ", "GOTOB "]
+        .iter()
+        .any(|j| code.contains(j) && !in_paren_comment(code, j));
     (calls || jumps).then_some("a Sinumerik cycle or jump")
 }
 
@@ -151,16 +182,25 @@ fn has_call(line: &str, name: &str) -> bool {
 
 /// Is the first occurrence of `what` inside a `( ... )` comment?
 fn in_paren_comment(line: &str, what: &str) -> bool {
-    let Some(at) = line.find(what) else { return false };
+    let Some(at) = line.find(what) else {
+        return false;
+    };
     let before = &line[..at];
-    before.matches('(').count() > before.matches(')').count() && !before.trim_end().ends_with(|c: char| c.is_ascii_alphanumeric())
+    before.matches('(').count() > before.matches(')').count()
+        && !before
+            .trim_end()
+            .ends_with(|c: char| c.is_ascii_alphanumeric())
 }
 
 fn haas_hint(line: &str) -> Option<&'static str> {
     if line.starts_with('(') && line.contains("HAAS") {
         return Some("a comment naming Haas");
     }
-    for (word, what) in [("G187", "Haas `G187`"), ("G154", "Haas `G154`"), ("M97", "Haas `M97`")] {
+    for (word, what) in [
+        ("G187", "Haas `G187`"),
+        ("G154", "Haas `G154`"),
+        ("M97", "Haas `M97`"),
+    ] {
         if has_word(line, word) {
             return Some(what);
         }
@@ -174,7 +214,8 @@ fn has_word(line: &str, word: &str) -> bool {
     line.match_indices(word).any(|(i, _)| {
         let before = line[..i].chars().last();
         let after = line[i + word.len()..].chars().next();
-        !before.is_some_and(|c| c.is_ascii_alphabetic()) && !after.is_some_and(|c| c.is_ascii_digit() || c == '.')
+        !before.is_some_and(|c| c.is_ascii_alphabetic())
+            && !after.is_some_and(|c| c.is_ascii_digit() || c == '.')
     })
 }
 
@@ -189,7 +230,10 @@ mod tests {
 
     #[test]
     fn by_extension() {
-        assert_eq!(det("a.MPF", "G0 X1"), found("siemens840d", "extension .mpf".into()));
+        assert_eq!(
+            det("a.MPF", "G0 X1"),
+            found("siemens840d", "extension .mpf".into())
+        );
         assert_eq!(det("a.spf", "").id, "siemens840d");
         assert_eq!(det("a.ngc", "G0 X1").id, "linuxcnc");
         assert_eq!(det("a.h", "").id, "heidenhain");
@@ -197,27 +241,38 @@ mod tests {
 
     #[test]
     fn by_content() {
-        assert_eq!(det("a.nc", "G0\no100 sub\n").reason, "O-word syntax on line 2");
+        assert_eq!(
+            det("a.nc", "G0\no100 sub\n").reason,
+            "O-word syntax on line 2"
+        );
         assert_eq!(det("a.nc", "o<drill> call [1]").id, "linuxcnc");
         assert_eq!(det("a.nc", "O1234\nG0 X1\nM30").id, "fanuc");
         assert_eq!(det("a.txt", "0 BEGIN PGM X MM").id, "heidenhain");
         assert_eq!(det("a.nc", "N10 G187 P1 E0.01").id, "haas");
         assert_eq!(det("a.nc", "G1 X1 (G1870 is not G187)").id, "fanuc");
         assert_eq!(det("a.nc", "N5 MCALL CYCLE81(1,2,3)").id, "siemens840d");
-        assert_eq!(det("prog", "G0 X1").reason, "no dialect-specific extension or content; the default");
+        assert_eq!(
+            det("prog", "G0 X1").reason,
+            "no dialect-specific extension or content; the default"
+        );
     }
 
     #[test]
     fn corpus_files() {
         let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus");
         if !root.exists() {
-            println!("note: {} absent, corpus detection test skipped", root.display());
+            println!(
+                "note: {} absent, corpus detection test skipped",
+                root.display()
+            );
             return;
         }
         let reg = Registry::with_builtins();
         let mut wrong = Vec::new();
         for dir in ["fanuc", "haas", "linuxcnc", "siemens840d", "heidenhain"] {
-            let Ok(entries) = std::fs::read_dir(root.join(dir)) else { continue };
+            let Ok(entries) = std::fs::read_dir(root.join(dir)) else {
+                continue;
+            };
             for e in entries.flatten() {
                 let bytes = std::fs::read(e.path()).unwrap_or_default();
                 let text = String::from_utf8_lossy(&bytes);
@@ -225,7 +280,12 @@ mod tests {
                 // Haas programs without Haas-only codes read as Fanuc.
                 let ok = d.id == dir || (dir == "haas" && d.id == "fanuc");
                 if !ok {
-                    wrong.push(format!("{dir}/{}: {} ({})", e.file_name().to_string_lossy(), d.id, d.reason));
+                    wrong.push(format!(
+                        "{dir}/{}: {} ({})",
+                        e.file_name().to_string_lossy(),
+                        d.id,
+                        d.reason
+                    ));
                 }
             }
         }

@@ -21,14 +21,26 @@ fn list(items: &[String], prefix: &str) -> String {
     if items.is_empty() {
         return "-".to_string();
     }
-    items.iter().map(|s| format!("{prefix}{s}")).collect::<Vec<_>>().join(" ")
+    items
+        .iter()
+        .map(|s| format!("{prefix}{s}"))
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 fn describe(out: &mut String, s: &DialectSpec) {
-    let caps: Vec<String> = s.capabilities.iter().map(|c| c.name().to_string()).collect();
+    let caps: Vec<String> = s
+        .capabilities
+        .iter()
+        .map(|c| c.name().to_string())
+        .collect();
     let _ = writeln!(out, "{}: {}", s.id, s.name);
     let _ = writeln!(out, "  family:       {}", s.family.name());
-    let _ = writeln!(out, "  extends:      {}", s.extends.as_deref().unwrap_or("-"));
+    let _ = writeln!(
+        out,
+        "  extends:      {}",
+        s.extends.as_deref().unwrap_or("-")
+    );
     let _ = writeln!(out, "  aliases:      {}", list(&s.aliases, ""));
     let _ = writeln!(out, "  extensions:   {}", list(&s.extensions, "."));
     let _ = writeln!(out, "  capabilities: {}", list(&caps, ""));

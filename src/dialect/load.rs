@@ -13,8 +13,20 @@ use std::sync::Arc;
 
 const ROOT_ATTRS: &[&str] = &["id", "name", "family", "extends", "repeat-letter"];
 const ELEMENTS: &[&str] = &[
-    "doc", "alias", "extension", "capability", "numbers", "group", "address", "code", "code-range",
-    "cycle", "function", "command", "variables", "remove",
+    "doc",
+    "alias",
+    "extension",
+    "capability",
+    "numbers",
+    "group",
+    "address",
+    "code",
+    "code-range",
+    "cycle",
+    "function",
+    "command",
+    "variables",
+    "remove",
 ];
 
 /// Reads one spec. `resolve_base` finds the (already loaded) spec that
@@ -36,17 +48,26 @@ pub fn load_spec(
     }
 }
 
-fn read_root(cx: &mut Ctx, root: &Node, resolve_base: &dyn Fn(&str) -> Option<Arc<DialectSpec>>) -> Option<DialectSpec> {
+fn read_root(
+    cx: &mut Ctx,
+    root: &Node,
+    resolve_base: &dyn Fn(&str) -> Option<Arc<DialectSpec>>,
+) -> Option<DialectSpec> {
     if root.name != "dialect" {
         cx.diags.push(
-            Diagnostic::new(Code::SpecUnknownItem, format!("the root element is `<{}>`", root.name))
-                .primary(root.span, "expected `<dialect>`")
-                .help("a dialect spec is one `<dialect id=\"...\" ...>` element"),
+            Diagnostic::new(
+                Code::SpecUnknownItem,
+                format!("the root element is `<{}>`", root.name),
+            )
+            .primary(root.span, "expected `<dialect>`")
+            .help("a dialect spec is one `<dialect id=\"...\" ...>` element"),
         );
         return None;
     }
     cx.check_attrs(root, ROOT_ATTRS);
-    let id = cx.req(root, "id").map(|a| a.value.trim().to_ascii_lowercase());
+    let id = cx
+        .req(root, "id")
+        .map(|a| a.value.trim().to_ascii_lowercase());
     let base = match root.attr("extends") {
         Some(a) => match resolve_base(a.value.trim()) {
             Some(b) => Some(b),
@@ -67,17 +88,35 @@ fn read_root(cx: &mut Ctx, root: &Node, resolve_base: &dyn Fn(&str) -> Option<Ar
 }
 
 /// The spec before the children are read: a copy of the base or empty.
-fn start_spec(cx: &mut Ctx, root: &Node, id: String, base: Option<&DialectSpec>) -> Option<DialectSpec> {
-    let family_attr = if base.is_some() { root.attr("family") } else { cx.req(root, "family") };
+fn start_spec(
+    cx: &mut Ctx,
+    root: &Node,
+    id: String,
+    base: Option<&DialectSpec>,
+) -> Option<DialectSpec> {
+    let family_attr = if base.is_some() {
+        root.attr("family")
+    } else {
+        cx.req(root, "family")
+    };
     let family = match family_attr {
-        Some(a) => Some(cx.parse(a, "a syntax family", "families: word-address, sinumerik, klartext", Family::parse)?),
+        Some(a) => Some(cx.parse(
+            a,
+            "a syntax family",
+            "families: word-address, sinumerik, klartext",
+            Family::parse,
+        )?),
         None => None,
     };
     let mut spec = match base {
         Some(b) => {
             if let (Some(f), Some(a)) = (family, family_attr) {
                 if f != b.family {
-                    cx.bad(a, &format!("the family of `{}` ({})", b.id, b.family.name()), "a spec extends a dialect of its own syntax family");
+                    cx.bad(
+                        a,
+                        &format!("the family of `{}` ({})", b.id, b.family.name()),
+                        "a spec extends a dialect of its own syntax family",
+                    );
                 }
             }
             let mut s = b.clone();
@@ -90,7 +129,10 @@ fn start_spec(cx: &mut Ctx, root: &Node, id: String, base: Option<&DialectSpec>)
         }
         None => DialectSpec::new(id.clone(), String::new(), family?, default_numbers()),
     };
-    spec.name = root.attr("name").map(|a| a.value.trim().to_string()).unwrap_or(id);
+    spec.name = root
+        .attr("name")
+        .map(|a| a.value.trim().to_string())
+        .unwrap_or(id);
     if let Some(a) = root.attr("repeat-letter") {
         if let Some(c) = cx.letter_attr(a) {
             spec.repeat_letter = c;
@@ -139,7 +181,12 @@ fn read_children(cx: &mut Ctx, root: &Node, spec: &mut DialectSpec) {
     // Groups first: codes refer to them wherever they are declared.
     for n in root.children.iter().filter(|n| n.name == "group") {
         if let Some(g) = read_group(cx, n) {
-            seen.check(cx, format!("group {}", g.name), &format!("group `{}`", g.name), n.span);
+            seen.check(
+                cx,
+                format!("group {}", g.name),
+                &format!("group `{}`", g.name),
+                n.span,
+            );
             upsert(&mut spec.groups, g, |a, b| a.name == b.name);
         }
     }
@@ -170,7 +217,12 @@ fn read_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen) {
         "alias" | "extension" | "capability" | "command" => read_name_entry(cx, n, spec, seen),
         "address" => {
             if let Some(a) = read_address(cx, n) {
-                seen.check(cx, format!("address {}", a.letter), &format!("address `{}`", a.letter), n.span);
+                seen.check(
+                    cx,
+                    format!("address {}", a.letter),
+                    &format!("address `{}`", a.letter),
+                    n.span,
+                );
                 upsert(&mut spec.addresses, a, |x, y| x.letter == y.letter);
             }
         }
@@ -186,19 +238,34 @@ fn read_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen) {
         }
         "cycle" => {
             if let Some(c) = read_cycle(cx, n) {
-                seen.check(cx, format!("cycle {}", c.name), &format!("cycle `{}`", c.name), n.span);
+                seen.check(
+                    cx,
+                    format!("cycle {}", c.name),
+                    &format!("cycle `{}`", c.name),
+                    n.span,
+                );
                 upsert(&mut spec.cycles, c, |x, y| x.name == y.name);
             }
         }
         "function" => {
             if let Some(f) = read_function(cx, n) {
-                seen.check(cx, format!("function {}", f.name), &format!("function `{}`", f.name), n.span);
+                seen.check(
+                    cx,
+                    format!("function {}", f.name),
+                    &format!("function `{}`", f.name),
+                    n.span,
+                );
                 upsert(&mut spec.functions, f, |x, y| x.name == y.name);
             }
         }
         "variables" => {
             if let Some(v) = read_variables(cx, n) {
-                seen.check(cx, format!("vars {}{}", v.prefix, v.first), &format!("variables from {}{}", v.prefix, v.first), n.span);
+                seen.check(
+                    cx,
+                    format!("vars {}{}", v.prefix, v.first),
+                    &format!("variables from {}{}", v.prefix, v.first),
+                    n.span,
+                );
                 add_variables(spec, v, seen);
             }
         }
@@ -209,12 +276,19 @@ fn read_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen) {
 fn add_code(cx: &mut Ctx, spec: &mut DialectSpec, seen: &mut Seen, c: CodeDef) {
     let key = format!("{}{}", c.letter, c.code.normalized().format(0, false));
     seen.check(cx, format!("code {key}"), &format!("code `{key}`"), c.span);
-    upsert(&mut spec.codes, c, |x, y| (x.letter, x.code.normalized()) == (y.letter, y.code.normalized()));
+    upsert(&mut spec.codes, c, |x, y| {
+        (x.letter, x.code.normalized()) == (y.letter, y.code.normalized())
+    });
 }
 
 /// The first `<variables>` of a spec replaces the inherited list.
 fn add_variables(spec: &mut DialectSpec, v: VarRange, seen: &Seen) {
-    let first_here = seen.items.iter().filter(|(k, _)| k.starts_with("vars ")).count() == 1;
+    let first_here = seen
+        .items
+        .iter()
+        .filter(|(k, _)| k.starts_with("vars "))
+        .count()
+        == 1;
     if first_here {
         spec.variables.clear();
     }
@@ -226,12 +300,26 @@ fn read_name_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Se
     cx.check_attrs(n, &["name", "doc", "confidence"]);
     let Some(a) = cx.req(n, "name") else { return };
     let v = a.value.trim().to_string();
-    seen.check(cx, format!("{} {}", n.name, v.to_ascii_lowercase()), &format!("{} `{v}`", n.name), n.span);
+    seen.check(
+        cx,
+        format!("{} {}", n.name, v.to_ascii_lowercase()),
+        &format!("{} `{v}`", n.name),
+        n.span,
+    );
     match n.name.as_str() {
         "alias" => spec.aliases.push(v.to_ascii_lowercase()),
-        "extension" => spec.extensions.push(v.trim_start_matches('.').to_ascii_lowercase()),
+        "extension" => spec
+            .extensions
+            .push(v.trim_start_matches('.').to_ascii_lowercase()),
         "capability" => {
-            let help = format!("capabilities: {}", CAPABILITIES.iter().map(|(n, _)| *n).collect::<Vec<_>>().join(", "));
+            let help = format!(
+                "capabilities: {}",
+                CAPABILITIES
+                    .iter()
+                    .map(|(n, _)| *n)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            );
             if let Some(c) = cx.parse(a, "a capability", &help, Capability::parse) {
                 spec.capabilities.insert(c);
             }
@@ -246,8 +334,16 @@ fn read_name_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Se
 
 fn read_numbers(cx: &mut Ctx, n: &Node, r: &mut NumberRules) {
     const ATTRS: &[&str] = &[
-        "integer-lengths", "increment-mm", "increment-inch", "length-places-mm", "length-places-inch",
-        "point-on-lengths", "feed-places", "angle-places", "doc", "confidence",
+        "integer-lengths",
+        "increment-mm",
+        "increment-inch",
+        "length-places-mm",
+        "length-places-inch",
+        "point-on-lengths",
+        "feed-places",
+        "angle-places",
+        "doc",
+        "confidence",
     ];
     cx.check_attrs(n, ATTRS);
     if let Some(a) = n.attr("integer-lengths") {
@@ -256,11 +352,19 @@ fn read_numbers(cx: &mut Ctx, n: &Node, r: &mut NumberRules) {
             "increments" => Some(IntegerLengths::Increments),
             _ => None,
         };
-        if let Some(v) = cx.parse(a, "`units` or `increments`", "`units`: X10 is 10 mm; `increments`: X10 is 10 least increments", parse) {
+        if let Some(v) = cx.parse(
+            a,
+            "`units` or `increments`",
+            "`units`: X10 is 10 mm; `increments`: X10 is 10 least increments",
+            parse,
+        ) {
             r.integer_lengths = v;
         }
     }
-    for (name, slot) in [("increment-mm", &mut r.increment_mm), ("increment-inch", &mut r.increment_inch)] {
+    for (name, slot) in [
+        ("increment-mm", &mut r.increment_mm),
+        ("increment-inch", &mut r.increment_inch),
+    ] {
         if let Some(a) = n.attr(name) {
             let parse = |s: &str| Decimal::parse(s).ok().filter(|d| !d.is_negative());
             if let Some(v) = cx.parse(a, "a positive decimal", "as in `0.001`", parse) {
@@ -276,7 +380,9 @@ fn read_numbers(cx: &mut Ctx, n: &Node, r: &mut NumberRules) {
     ];
     for (name, slot) in places {
         if let Some(a) = n.attr(name) {
-            if let Some(v) = cx.parse(a, "a count of places from 0 to 9", "as in `3`", |s| s.parse::<u8>().ok().filter(|p| *p < 10)) {
+            if let Some(v) = cx.parse(a, "a count of places from 0 to 9", "as in `3`", |s| {
+                s.parse::<u8>().ok().filter(|p| *p < 10)
+            }) {
                 *slot = v;
             }
         }
@@ -294,7 +400,14 @@ fn upsert<T>(list: &mut Vec<T>, item: T, same: impl Fn(&T, &T) -> bool) {
 
 /// `<remove letter= number=/>` or `<remove cycle|function|capability|command|address|group=/>`.
 fn read_remove(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec) {
-    const KINDS: &[&str] = &["cycle", "function", "capability", "command", "address", "group"];
+    const KINDS: &[&str] = &[
+        "cycle",
+        "function",
+        "capability",
+        "command",
+        "address",
+        "group",
+    ];
     let mut allowed = vec!["letter", "number", "doc"];
     allowed.extend(KINDS);
     cx.check_attrs(n, &allowed);
@@ -311,21 +424,34 @@ fn read_remove(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec) {
         return;
     };
     if let Some((false, a)) = found {
-        cx.bad(a, "an inherited entry", "`<remove>` drops an entry inherited from the base; check the name");
+        cx.bad(
+            a,
+            "an inherited entry",
+            "`<remove>` drops an entry inherited from the base; check the name",
+        );
     }
 }
 
-fn remove_code<'n>(cx: &mut Ctx, n: &'n Node, spec: &mut DialectSpec) -> Option<(bool, &'n xml::Attr)> {
+fn remove_code<'n>(
+    cx: &mut Ctx,
+    n: &'n Node,
+    spec: &mut DialectSpec,
+) -> Option<(bool, &'n xml::Attr)> {
     let letter = code_letter(cx, n);
     let num_attr = cx.req(n, "number")?;
     let code = code_number(cx, num_attr)?;
     let letter = letter?;
     let before = spec.codes.len();
-    spec.codes.retain(|c| !(c.letter == letter && c.code.normalized() == code.normalized()));
+    spec.codes
+        .retain(|c| !(c.letter == letter && c.code.normalized() == code.normalized()));
     Some((spec.codes.len() < before, num_attr))
 }
 
-fn remove_named<'n>(n: &'n Node, kind: &str, spec: &mut DialectSpec) -> Option<(bool, &'n xml::Attr)> {
+fn remove_named<'n>(
+    n: &'n Node,
+    kind: &str,
+    spec: &mut DialectSpec,
+) -> Option<(bool, &'n xml::Attr)> {
     let a = n.attr(kind)?;
     let v = a.value.trim();
     let before = count(spec);
@@ -334,12 +460,19 @@ fn remove_named<'n>(n: &'n Node, kind: &str, spec: &mut DialectSpec) -> Option<(
         "function" => spec.functions.retain(|f| !f.name.eq_ignore_ascii_case(v)),
         "capability" => spec.capabilities.retain(|c| c.name() != v),
         "command" => spec.commands.retain(|c| !c.eq_ignore_ascii_case(v)),
-        "address" => spec.addresses.retain(|x| !x.letter.to_string().eq_ignore_ascii_case(v)),
+        "address" => spec
+            .addresses
+            .retain(|x| !x.letter.to_string().eq_ignore_ascii_case(v)),
         _ => spec.groups.retain(|g| g.name != v),
     }
     Some((count(spec) < before, a))
 }
 
 fn count(s: &DialectSpec) -> usize {
-    s.cycles.len() + s.functions.len() + s.capabilities.len() + s.commands.len() + s.addresses.len() + s.groups.len()
+    s.cycles.len()
+        + s.functions.len()
+        + s.capabilities.len()
+        + s.commands.len()
+        + s.addresses.len()
+        + s.groups.len()
 }

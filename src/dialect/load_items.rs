@@ -23,9 +23,12 @@ impl Ctx {
         for a in &n.attrs {
             let ignorable = a.name.starts_with("xmlns") || a.name.starts_with("xsi:");
             if !ignorable && !allowed.contains(&a.name.as_str()) {
-                let d = Diagnostic::new(Code::SpecUnknownItem, format!("`<{}>` has no attribute `{}`", n.name, a.name))
-                    .primary(a.name_span, "unknown attribute")
-                    .help(format!("`<{}>` takes: {}", n.name, allowed.join(", ")));
+                let d = Diagnostic::new(
+                    Code::SpecUnknownItem,
+                    format!("`<{}>` has no attribute `{}`", n.name, a.name),
+                )
+                .primary(a.name_span, "unknown attribute")
+                .help(format!("`<{}>` takes: {}", n.name, allowed.join(", ")));
                 self.diags.push(d);
             }
         }
@@ -35,9 +38,12 @@ impl Ctx {
     pub fn req<'n>(&mut self, n: &'n Node, name: &str) -> Option<&'n Attr> {
         let a = n.attr(name);
         if a.is_none() {
-            let d = Diagnostic::new(Code::SpecMissing, format!("`<{}>` needs the attribute `{}`", n.name, name))
-                .primary(n.span, format!("`{name}` missing here"))
-                .help(format!("add `{name}=\"...\"` (see dialects/dialect.xsd)"));
+            let d = Diagnostic::new(
+                Code::SpecMissing,
+                format!("`<{}>` needs the attribute `{}`", n.name, name),
+            )
+            .primary(n.span, format!("`{name}` missing here"))
+            .help(format!("add `{name}=\"...\"` (see dialects/dialect.xsd)"));
             self.diags.push(d);
         }
         a
@@ -51,7 +57,13 @@ impl Ctx {
         self.diags.push(d);
     }
 
-    pub fn parse<T>(&mut self, a: &Attr, what: &str, help: &str, f: impl FnOnce(&str) -> Option<T>) -> Option<T> {
+    pub fn parse<T>(
+        &mut self,
+        a: &Attr,
+        what: &str,
+        help: &str,
+        f: impl FnOnce(&str) -> Option<T>,
+    ) -> Option<T> {
         let v = f(a.value.trim());
         if v.is_none() {
             self.bad(a, what, help);
@@ -61,21 +73,38 @@ impl Ctx {
 
     pub fn bool_attr(&mut self, n: &Node, name: &str, default: bool) -> bool {
         match n.attr(name) {
-            Some(a) => self.parse(a, "`true` or `false`", "write `true` or `false`", parse_bool).unwrap_or(default),
+            Some(a) => self
+                .parse(
+                    a,
+                    "`true` or `false`",
+                    "write `true` or `false`",
+                    parse_bool,
+                )
+                .unwrap_or(default),
             None => default,
         }
     }
 
     pub fn u32_attr(&mut self, a: &Attr) -> Option<u32> {
-        self.parse(a, "a whole number", "write digits only, as in `33`", |s| s.parse().ok())
+        self.parse(a, "a whole number", "write digits only, as in `33`", |s| {
+            s.parse().ok()
+        })
     }
 
     pub fn letter_attr(&mut self, a: &Attr) -> Option<char> {
-        self.parse(a, "a single letter", "write one letter, as in `X`", parse_letter)
+        self.parse(
+            a,
+            "a single letter",
+            "write one letter, as in `X`",
+            parse_letter,
+        )
     }
 
     pub fn doc(&self, n: &Node) -> String {
-        let doc = n.attr("doc").map(|a| a.value.trim().to_string()).unwrap_or_default();
+        let doc = n
+            .attr("doc")
+            .map(|a| a.value.trim().to_string())
+            .unwrap_or_default();
         match n.attr("confidence").map(|a| a.value.as_str()) {
             Some("?") => format!("[?] {doc}"),
             _ => doc,
@@ -94,7 +123,9 @@ pub fn parse_bool(s: &str) -> Option<bool> {
 pub fn parse_letter(s: &str) -> Option<char> {
     let mut cs = s.chars();
     match (cs.next(), cs.next()) {
-        (Some(c), None) if c.is_ascii_alphabetic() || c == '@' || c == '^' => Some(c.to_ascii_uppercase()),
+        (Some(c), None) if c.is_ascii_alphabetic() || c == '@' || c == '^' => {
+            Some(c.to_ascii_uppercase())
+        }
         _ => None,
     }
 }
@@ -102,13 +133,20 @@ pub fn parse_letter(s: &str) -> Option<char> {
 /// `P|X Q` to `[[P, X], [Q]]`.
 pub fn parse_requires(s: &str) -> Option<Vec<Vec<char>>> {
     s.split_whitespace()
-        .map(|alt| alt.split('|').map(parse_letter).collect::<Option<Vec<char>>>())
+        .map(|alt| {
+            alt.split('|')
+                .map(parse_letter)
+                .collect::<Option<Vec<char>>>()
+        })
         .collect()
 }
 
 /// `XYZRQF` to its letters.
 pub fn parse_uses(s: &str) -> Option<Vec<char>> {
-    s.chars().filter(|c| !c.is_whitespace()).map(|c| parse_letter(&c.to_string())).collect()
+    s.chars()
+        .filter(|c| !c.is_whitespace())
+        .map(|c| parse_letter(&c.to_string()))
+        .collect()
 }
 
 /// `P:ms X:s` to dwell units per word.
@@ -153,18 +191,60 @@ pub const FUNCS: &[(&str, Func)] = &[
 
 /// Cycle kinds a `<cycle kind=...>` may name.
 pub const CYCLE_KINDS: &[&str] = &[
-    "drill", "drill-dwell", "peck", "chip-break", "tap", "tap-left", "tap-float", "bore-feed-out",
-    "bore-stop-rapid-out", "back-bore", "bore-manual", "bore-dwell-feed-out", "fine-bore",
-    "pattern-row", "pattern-circle", "pattern-arc", "pattern-grid", "pocket-rect", "pocket-circ",
-    "pocket-contour", "slot-radial", "slot-circle", "slot-long", "slot-open", "spigot-rect",
-    "spigot-circ", "face", "contour", "thread-mill", "tolerance", "swivel", "blank", "other",
+    "drill",
+    "drill-dwell",
+    "peck",
+    "chip-break",
+    "tap",
+    "tap-left",
+    "tap-float",
+    "bore-feed-out",
+    "bore-stop-rapid-out",
+    "back-bore",
+    "bore-manual",
+    "bore-dwell-feed-out",
+    "fine-bore",
+    "pattern-row",
+    "pattern-circle",
+    "pattern-arc",
+    "pattern-grid",
+    "pocket-rect",
+    "pocket-circ",
+    "pocket-contour",
+    "slot-radial",
+    "slot-circle",
+    "slot-long",
+    "slot-open",
+    "spigot-rect",
+    "spigot-circ",
+    "face",
+    "contour",
+    "thread-mill",
+    "tolerance",
+    "swivel",
+    "blank",
+    "other",
 ];
 
 /// Address roles an `<address role=...>` may name.
 pub const ADDRESS_ROLES: &[&str] = &[
-    "axis", "rotary-axis", "arc-centre", "arc-radius", "feed", "spindle-speed", "tool",
-    "length-offset", "radius-offset", "cutting-edge", "sequence", "program", "parameter", "repeat", "code",
-    "polar", "aux",
+    "axis",
+    "rotary-axis",
+    "arc-centre",
+    "arc-radius",
+    "feed",
+    "spindle-speed",
+    "tool",
+    "length-offset",
+    "radius-offset",
+    "cutting-edge",
+    "sequence",
+    "program",
+    "parameter",
+    "repeat",
+    "code",
+    "polar",
+    "aux",
 ];
 
 fn parse_param_type(s: &str) -> Option<ParamType> {
@@ -192,7 +272,11 @@ pub fn read_group(cx: &mut Ctx, n: &Node) -> Option<GroupDef> {
     cx.check_attrs(n, &["name", "exclusive", "doc", "confidence"]);
     let name = cx.req(n, "name")?.value.trim().to_string();
     let exclusive = cx.bool_attr(n, "exclusive", true);
-    Some(GroupDef { name, exclusive, doc: cx.doc(n) })
+    Some(GroupDef {
+        name,
+        exclusive,
+        doc: cx.doc(n),
+    })
 }
 
 /// `<address letter= role= length= doc=/>`.
@@ -201,10 +285,16 @@ pub fn read_address(cx: &mut Ctx, n: &Node) -> Option<AddressDef> {
     let letter = cx.req(n, "letter").and_then(|a| cx.letter_attr(a));
     let role = cx.req(n, "role").and_then(|a| {
         let help = format!("roles: {}", ADDRESS_ROLES.join(", "));
-        cx.parse(a, "an address role", &help, |s| ADDRESS_ROLES.contains(&s).then(|| s.to_string()))
+        cx.parse(a, "an address role", &help, |s| {
+            ADDRESS_ROLES.contains(&s).then(|| s.to_string())
+        })
     });
     let length = cx.bool_attr(n, "length", false);
-    Some(AddressDef { letter: letter?, role: role?, length })
+    Some(AddressDef {
+        letter: letter?,
+        role: role?,
+        length,
+    })
 }
 
 /// The attributes of `<code>` and `<code-range>` shared by both.
@@ -218,14 +308,30 @@ pub struct CodeCommon {
     pub doc: String,
 }
 
-pub const CODE_ATTRS: &[&str] =
-    &["letter", "number", "group", "meaning", "requires", "uses", "dwell", "preferred", "doc", "confidence"];
+pub const CODE_ATTRS: &[&str] = &[
+    "letter",
+    "number",
+    "group",
+    "meaning",
+    "requires",
+    "uses",
+    "dwell",
+    "preferred",
+    "doc",
+    "confidence",
+];
 
 pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<CodeCommon> {
     let group = cx.req(n, "group").and_then(|a| {
         let known: Vec<&str> = groups.iter().map(|g| g.name.as_str()).collect();
-        let help = format!("declare it with `<group name=\"{}\"/>`, or use one of: {}", a.value, known.join(", "));
-        cx.parse(a, "a declared modal group", &help, |s| known.contains(&s).then(|| s.to_string()))
+        let help = format!(
+            "declare it with `<group name=\"{}\"/>`, or use one of: {}",
+            a.value,
+            known.join(", ")
+        );
+        cx.parse(a, "a declared modal group", &help, |s| {
+            known.contains(&s).then(|| s.to_string())
+        })
     });
     let meaning = cx.req(n, "meaning").and_then(|a| {
         cx.parse(a, "a meaning", "meanings are listed in dialects/dialect.xsd (e.g. `motion.rapid`, `work-offset.1`, `aux`)", Meaning::parse)
@@ -236,11 +342,21 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
         None => Some(Vec::new()),
     };
     let uses = match n.attr("uses") {
-        Some(a) => cx.parse(a, "a list of word letters", "letters only, as in `XYZRQF`", parse_uses),
+        Some(a) => cx.parse(
+            a,
+            "a list of word letters",
+            "letters only, as in `XYZRQF`",
+            parse_uses,
+        ),
         None => Some(Vec::new()),
     };
     let dwell_units = match n.attr("dwell") {
-        Some(a) => cx.parse(a, "a list of dwell units", "`LETTER:UNIT` with unit ms, s or rev, as in `P:ms X:s`", parse_dwell),
+        Some(a) => cx.parse(
+            a,
+            "a list of dwell units",
+            "`LETTER:UNIT` with unit ms, s or rev, as in `P:ms X:s`",
+            parse_dwell,
+        ),
         None => Some(Vec::new()),
     };
     let preferred = cx.bool_attr(n, "preferred", false);
@@ -265,9 +381,12 @@ pub fn code_letter(cx: &mut Ctx, n: &Node) -> Option<char> {
 }
 
 pub fn code_number(cx: &mut Ctx, a: &Attr) -> Option<Decimal> {
-    cx.parse(a, "a code number", "write the number as in `0`, `54.1`", |s| {
-        Decimal::parse(s).ok().filter(|d| !d.is_negative())
-    })
+    cx.parse(
+        a,
+        "a code number",
+        "write the number as in `0`, `54.1`",
+        |s| Decimal::parse(s).ok().filter(|d| !d.is_negative()),
+    )
 }
 
 /// `<code letter= number= group= meaning= .../>`.
@@ -293,7 +412,11 @@ pub fn read_code(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<CodeDef>
 /// `<code-range letter= first= last= .../>`: one code per whole number;
 /// a `work-offset.N` meaning counts up from N.
 pub fn read_code_range(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Vec<CodeDef> {
-    let mut allowed: Vec<&str> = CODE_ATTRS.iter().copied().filter(|a| *a != "number").collect();
+    let mut allowed: Vec<&str> = CODE_ATTRS
+        .iter()
+        .copied()
+        .filter(|a| *a != "number")
+        .collect();
     allowed.extend(["first", "last"]);
     cx.check_attrs(n, &allowed);
     let letter = code_letter(cx, n);
@@ -301,11 +424,17 @@ pub fn read_code_range(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Vec<CodeD
     let last_attr = cx.req(n, "last");
     let last = last_attr.and_then(|a| cx.u32_attr(a));
     let common = read_code_common(cx, n, groups);
-    let (Some(letter), Some(first), Some(last), Some(c), Some(la)) = (letter, first, last, common, last_attr) else {
+    let (Some(letter), Some(first), Some(last), Some(c), Some(la)) =
+        (letter, first, last, common, last_attr)
+    else {
         return Vec::new();
     };
     if last < first || last - first >= MAX_RANGE {
-        cx.bad(la, &format!("a last code from {first} to {}", first + MAX_RANGE - 1), "a range runs upwards and holds at most 1000 codes");
+        cx.bad(
+            la,
+            &format!("a last code from {first} to {}", first + MAX_RANGE - 1),
+            "a range runs upwards and holds at most 1000 codes",
+        );
         return Vec::new();
     }
     (first..=last)
@@ -330,10 +459,14 @@ pub fn read_code_range(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Vec<CodeD
 /// `<cycle name= kind= doc=>` with `<param name= type= doc=/>` children.
 pub fn read_cycle(cx: &mut Ctx, n: &Node) -> Option<CycleSig> {
     cx.check_attrs(n, &["name", "kind", "doc", "confidence"]);
-    let name = cx.req(n, "name").map(|a| a.value.trim().to_ascii_uppercase());
+    let name = cx
+        .req(n, "name")
+        .map(|a| a.value.trim().to_ascii_uppercase());
     let kind = cx.req(n, "kind").and_then(|a| {
         let help = format!("kinds: {}", CYCLE_KINDS.join(", "));
-        cx.parse(a, "a cycle kind", &help, |s| CYCLE_KINDS.contains(&s).then(|| s.to_string()))
+        cx.parse(a, "a cycle kind", &help, |s| {
+            CYCLE_KINDS.contains(&s).then(|| s.to_string())
+        })
     });
     let mut params: Vec<ParamSig> = Vec::new();
     for p in &n.children {
@@ -342,65 +475,138 @@ pub fn read_cycle(cx: &mut Ctx, n: &Node) -> Option<CycleSig> {
             continue;
         }
         if let Some(sig) = read_param(cx, p) {
-            if params.iter().any(|q| q.name.eq_ignore_ascii_case(&sig.name)) {
+            if params
+                .iter()
+                .any(|q| q.name.eq_ignore_ascii_case(&sig.name))
+            {
                 cx.diags.push(
-                    Diagnostic::new(Code::SpecDuplicate, format!("parameter `{}` is listed twice", sig.name))
-                        .primary(p.span, "second definition")
-                        .help("each parameter name appears once in a cycle signature"),
+                    Diagnostic::new(
+                        Code::SpecDuplicate,
+                        format!("parameter `{}` is listed twice", sig.name),
+                    )
+                    .primary(p.span, "second definition")
+                    .help("each parameter name appears once in a cycle signature"),
                 );
             }
             params.push(sig);
         }
     }
-    Some(CycleSig { name: name?, kind: kind?, params, doc: cx.doc(n), span: n.span })
+    Some(CycleSig {
+        name: name?,
+        kind: kind?,
+        params,
+        doc: cx.doc(n),
+        span: n.span,
+    })
 }
 
 fn read_param(cx: &mut Ctx, n: &Node) -> Option<ParamSig> {
     cx.check_attrs(n, &["name", "type", "doc", "confidence"]);
     let name = cx.req(n, "name").map(|a| a.value.trim().to_string());
-    let ty = cx.req(n, "type").and_then(|a| cx.parse(a, "a parameter type", "types: real, int, string, any", parse_param_type));
-    Some(ParamSig { name: name?, ty: ty?, doc: cx.doc(n) })
+    let ty = cx.req(n, "type").and_then(|a| {
+        cx.parse(
+            a,
+            "a parameter type",
+            "types: real, int, string, any",
+            parse_param_type,
+        )
+    });
+    Some(ParamSig {
+        name: name?,
+        ty: ty?,
+        doc: cx.doc(n),
+    })
 }
 
 /// `<function name= func= arity= doc=/>`.
 pub fn read_function(cx: &mut Ctx, n: &Node) -> Option<FunctionDef> {
     cx.check_attrs(n, &["name", "func", "arity", "doc", "confidence"]);
-    let name = cx.req(n, "name").map(|a| a.value.trim().to_ascii_uppercase());
+    let name = cx
+        .req(n, "name")
+        .map(|a| a.value.trim().to_ascii_uppercase());
     let func = cx.req(n, "func").and_then(|a| {
         let names: Vec<&str> = FUNCS.iter().map(|(n, _)| *n).collect();
         let help = format!("functions: {}", names.join(", "));
-        cx.parse(a, "a function meaning", &help, |s| FUNCS.iter().find(|(n, _)| *n == s).map(|(_, f)| *f))
+        cx.parse(a, "a function meaning", &help, |s| {
+            FUNCS.iter().find(|(n, _)| *n == s).map(|(_, f)| *f)
+        })
     });
-    let arity = cx.req(n, "arity").and_then(|a| cx.parse(a, "an argument count from 0 to 9", "write 1 or 2", |s| s.parse::<usize>().ok().filter(|n| *n < 10)));
-    Some(FunctionDef { name: name?, func: func?, arity: arity? })
+    let arity = cx.req(n, "arity").and_then(|a| {
+        cx.parse(a, "an argument count from 0 to 9", "write 1 or 2", |s| {
+            s.parse::<usize>().ok().filter(|n| *n < 10)
+        })
+    });
+    Some(FunctionDef {
+        name: name?,
+        func: func?,
+        arity: arity?,
+    })
 }
 
 /// `<variables prefix= first= last= class= writable= doc=/>`.
 pub fn read_variables(cx: &mut Ctx, n: &Node) -> Option<VarRange> {
-    cx.check_attrs(n, &["prefix", "first", "last", "class", "writable", "doc", "confidence"]);
-    let prefix = cx.req(n, "prefix").and_then(|a| cx.parse(a, "`#` or `R`", "numbered variables are `#n` or `Rn`", |s| match s {
-        "#" => Some('#'),
-        "R" => Some('R'),
-        _ => None,
-    }));
+    cx.check_attrs(
+        n,
+        &[
+            "prefix",
+            "first",
+            "last",
+            "class",
+            "writable",
+            "doc",
+            "confidence",
+        ],
+    );
+    let prefix = cx.req(n, "prefix").and_then(|a| {
+        cx.parse(
+            a,
+            "`#` or `R`",
+            "numbered variables are `#n` or `Rn`",
+            |s| match s {
+                "#" => Some('#'),
+                "R" => Some('R'),
+                _ => None,
+            },
+        )
+    });
     let first = cx.req(n, "first").and_then(|a| cx.u32_attr(a));
     let last_attr = cx.req(n, "last");
     let last = last_attr.and_then(|a| cx.u32_attr(a));
-    let class = cx.req(n, "class").and_then(|a| cx.parse(a, "a variable class", "classes: local, common, retained, system", parse_class));
+    let class = cx.req(n, "class").and_then(|a| {
+        cx.parse(
+            a,
+            "a variable class",
+            "classes: local, common, retained, system",
+            parse_class,
+        )
+    });
     let writable = cx.bool_attr(n, "writable", true);
     let (first, last, la) = (first?, last?, last_attr?);
     if last < first {
-        cx.bad(la, &format!("a last number not below {first}"), "a range runs upwards");
+        cx.bad(
+            la,
+            &format!("a last number not below {first}"),
+            "a range runs upwards",
+        );
         return None;
     }
-    Some(VarRange { prefix: prefix?, first, last, class: class?, writable })
+    Some(VarRange {
+        prefix: prefix?,
+        first,
+        last,
+        class: class?,
+        writable,
+    })
 }
 
 /// Reports an element the schema does not allow here.
 pub fn unknown_element(cx: &mut Ctx, n: &Node, parent: &str, allowed: &[&str]) {
     cx.diags.push(
-        Diagnostic::new(Code::SpecUnknownItem, format!("`<{}>` is not an element of {parent}", n.name))
-            .primary(n.span, "unknown element")
-            .help(format!("{parent} contains: {}", allowed.join(", "))),
+        Diagnostic::new(
+            Code::SpecUnknownItem,
+            format!("`<{}>` is not an element of {parent}", n.name),
+        )
+        .primary(n.span, "unknown element")
+        .help(format!("{parent} contains: {}", allowed.join(", "))),
     );
 }

@@ -8,7 +8,12 @@ use crate::diag::Code;
 use crate::ir::{Decimal, DwellUnit};
 use crate::source::SourceMap;
 
-fn load(text: &str) -> (Result<std::sync::Arc<super::DialectSpec>, Vec<crate::diag::Diagnostic>>, SourceMap) {
+fn load(
+    text: &str,
+) -> (
+    Result<std::sync::Arc<super::DialectSpec>, Vec<crate::diag::Diagnostic>>,
+    SourceMap,
+) {
     let mut files = SourceMap::new();
     let f = files.add("my.xml", text);
     let mut reg = Registry::with_builtins();
@@ -36,7 +41,10 @@ fn user_spec_extends_haas() {
     let (r, _) = load(HAAS_VARIANT);
     let s = r.unwrap();
     assert_eq!(s.extends.as_deref(), Some("haas"));
-    assert_eq!(s.code('M', num("130")).map(|c| c.meaning), Some(Meaning::Aux));
+    assert_eq!(
+        s.code('M', num("130")).map(|c| c.meaning),
+        Some(Meaning::Aux)
+    );
     assert!(s.code('M', num("97")).is_none());
     assert!(s.code('G', num("154")).is_some(), "inherited from haas");
     assert!(s.code('G', num("1")).is_some(), "inherited from iso6983");
@@ -51,38 +59,70 @@ fn builtin_tables_say_what_the_manuals_say() {
     let reg = Registry::with_builtins();
     let fanuc = reg.get("fanuc").unwrap();
     let g4 = fanuc.code('G', num("4")).unwrap();
-    assert_eq!(g4.dwell_units, vec![('P', DwellUnit::Milliseconds), ('X', DwellUnit::Seconds)]);
+    assert_eq!(
+        g4.dwell_units,
+        vec![('P', DwellUnit::Milliseconds), ('X', DwellUnit::Seconds)]
+    );
     assert_eq!(fanuc.repeat_letter, 'K');
     assert!(fanuc.code('G', num("54.1")).is_some());
     let haas = reg.get("haas").unwrap();
     assert!(haas.code('G', num("54.1")).is_none());
-    assert_eq!(haas.code('G', num("110")).unwrap().meaning, Meaning::WorkOffset(7));
+    assert_eq!(
+        haas.code('G', num("110")).unwrap().meaning,
+        Meaning::WorkOffset(7)
+    );
     assert_eq!(haas.code_for(Meaning::LocalCall).unwrap().code, num("97"));
     let lcnc = reg.get("linuxcnc").unwrap();
-    assert_eq!(lcnc.code('G', num("4")).unwrap().dwell_units, vec![('P', DwellUnit::Seconds)]);
+    assert_eq!(
+        lcnc.code('G', num("4")).unwrap().dwell_units,
+        vec![('P', DwellUnit::Seconds)]
+    );
     assert!(lcnc.code('M', num("101")).is_some());
     assert!(lcnc.function("POW").is_none());
     let sie = reg.get("siemens840d").unwrap();
-    assert_eq!(sie.code('G', num("599")).unwrap().meaning, Meaning::WorkOffset(99));
-    assert_eq!(sie.code('G', num("4")).unwrap().dwell_units, vec![('F', DwellUnit::Seconds), ('S', DwellUnit::Revolutions)]);
-    assert_eq!(sie.code_for(Meaning::MachineCoords).unwrap().code, num("53"));
+    assert_eq!(
+        sie.code('G', num("599")).unwrap().meaning,
+        Meaning::WorkOffset(99)
+    );
+    assert_eq!(
+        sie.code('G', num("4")).unwrap().dwell_units,
+        vec![('F', DwellUnit::Seconds), ('S', DwellUnit::Revolutions)]
+    );
+    assert_eq!(
+        sie.code_for(Meaning::MachineCoords).unwrap().code,
+        num("53")
+    );
 }
 
 #[test]
 fn corpus_cycle_calls_fit_their_signatures() {
     let sie = Registry::with_builtins().get("siemens840d").unwrap();
     // Argument counts of calls in shared/corpus/siemens840d.
-    for (name, args) in [("CYCLE81", 9), ("CYCLE83", 20), ("POCKET4", 25), ("CYCLE800", 16), ("CYCLE61", 16),
-        ("WORKPIECE", 12), ("CYCLE82", 6), ("HOLES1", 6), ("HOLES2", 6), ("CYCLE801", 7)]
-    {
+    for (name, args) in [
+        ("CYCLE81", 9),
+        ("CYCLE83", 20),
+        ("POCKET4", 25),
+        ("CYCLE800", 16),
+        ("CYCLE61", 16),
+        ("WORKPIECE", 12),
+        ("CYCLE82", 6),
+        ("HOLES1", 6),
+        ("HOLES2", 6),
+        ("CYCLE801", 7),
+    ] {
         let c = sie.cycle(name).unwrap_or_else(|| panic!("{name} missing"));
-        assert!(c.params.len() >= args, "{name}: {} params < {args}", c.params.len());
+        assert!(
+            c.params.len() >= args,
+            "{name}: {} params < {args}",
+            c.params.len()
+        );
     }
 }
 
 #[test]
 fn e0401_malformed() {
-    let (codes, text) = errors("<dialect id=\"x\" family=\"word-address\">\n  <code letter=\"G\"\n</dialect>");
+    let (codes, text) =
+        errors("<dialect id=\"x\" family=\"word-address\">\n  <code letter=\"G\"\n</dialect>");
     assert_eq!(codes, vec![Code::SpecMalformed]);
     insta::assert_snapshot!(text);
 }
@@ -108,7 +148,11 @@ fn e0403_bad_value() {
 #[test]
 fn e0404_missing() {
     let (codes, _) = errors("<dialect id=\"x\">\n</dialect>");
-    assert_eq!(codes, vec![Code::SpecMissing], "a spec without a base needs its family");
+    assert_eq!(
+        codes,
+        vec![Code::SpecMissing],
+        "a spec without a base needs its family"
+    );
     let (codes, text) = errors("<dialect id=\"x\" extends=\"fanuc\">\n  <code letter=\"M\" number=\"130\" meaning=\"aux\"/>\n</dialect>");
     assert_eq!(codes, vec![Code::SpecMissing]);
     insta::assert_snapshot!(text);
@@ -132,7 +176,8 @@ fn e0406_duplicate() {
 
 #[test]
 fn removing_what_is_not_there_is_an_error() {
-    let (codes, _) = errors("<dialect id=\"x\" extends=\"fanuc\">\n  <remove cycle=\"CYCLE81\"/>\n</dialect>");
+    let (codes, _) =
+        errors("<dialect id=\"x\" extends=\"fanuc\">\n  <remove cycle=\"CYCLE81\"/>\n</dialect>");
     assert_eq!(codes, vec![Code::SpecBadValue]);
 }
 
@@ -166,15 +211,39 @@ fn schema_matches_the_loader_tables() {
             n.children.iter().for_each(|c| walk(c, out));
         }
         let mut out = Vec::new();
-        let t = root.children.iter().find(|c| c.attr("name").is_some_and(|a| a.value == type_name));
+        let t = root
+            .children
+            .iter()
+            .find(|c| c.attr("name").is_some_and(|a| a.value == type_name));
         walk(t.unwrap_or_else(|| panic!("type {type_name}")), &mut out);
         out
     };
-    let caps: Vec<String> = super::CAPABILITIES.iter().map(|(n, _)| n.to_string()).collect();
+    let caps: Vec<String> = super::CAPABILITIES
+        .iter()
+        .map(|(n, _)| n.to_string())
+        .collect();
     assert_eq!(values("capability"), caps);
-    let meanings: Vec<String> = super::meaning::MEANINGS.iter().map(|(n, _)| n.to_string()).collect();
+    let meanings: Vec<String> = super::meaning::MEANINGS
+        .iter()
+        .map(|(n, _)| n.to_string())
+        .collect();
     assert_eq!(values("meaning"), meanings);
-    assert_eq!(values("cycleKind"), CYCLE_KINDS.iter().map(|s| s.to_string()).collect::<Vec<_>>());
-    assert_eq!(values("addressRole"), ADDRESS_ROLES.iter().map(|s| s.to_string()).collect::<Vec<_>>());
-    assert_eq!(values("func"), FUNCS.iter().map(|(n, _)| n.to_string()).collect::<Vec<_>>());
+    assert_eq!(
+        values("cycleKind"),
+        CYCLE_KINDS
+            .iter()
+            .map(|s| s.to_string())
+            .collect::<Vec<_>>()
+    );
+    assert_eq!(
+        values("addressRole"),
+        ADDRESS_ROLES
+            .iter()
+            .map(|s| s.to_string())
+            .collect::<Vec<_>>()
+    );
+    assert_eq!(
+        values("func"),
+        FUNCS.iter().map(|(n, _)| n.to_string()).collect::<Vec<_>>()
+    );
 }

@@ -23,7 +23,10 @@ pub enum Meaning {
     CycleCancel,
     Dwell,
     Plane(Plane),
-    Units { unit: LengthUnit, with_feeds: bool },
+    Units {
+        unit: LengthUnit,
+        with_feeds: bool,
+    },
     Distance(DimMode),
     ArcDistance(DimMode),
     FeedMode(FeedMode),
@@ -38,7 +41,10 @@ pub enum Meaning {
     MachineCoords,
     CoordShift(CoordShift),
     SetData,
-    RefReturn { index: u8, store: bool },
+    RefReturn {
+        index: u8,
+        store: bool,
+    },
     PathMode(PathMode),
     /// G98 = true (initial level), G99 = false (R plane).
     ReturnMode(bool),
@@ -70,10 +76,34 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
     ("motion.arc-ccw", M::Motion(MotionKind::Arc(ArcDir::Ccw))),
     ("motion.arc-through", M::Motion(MotionKind::ArcThrough)),
     ("motion.arc-tangent", M::Motion(MotionKind::ArcTangent)),
-    ("motion.probe-toward", M::Motion(MotionKind::Probe { toward: true, error: true })),
-    ("motion.probe-toward-noerror", M::Motion(MotionKind::Probe { toward: true, error: false })),
-    ("motion.probe-away", M::Motion(MotionKind::Probe { toward: false, error: true })),
-    ("motion.probe-away-noerror", M::Motion(MotionKind::Probe { toward: false, error: false })),
+    (
+        "motion.probe-toward",
+        M::Motion(MotionKind::Probe {
+            toward: true,
+            error: true,
+        }),
+    ),
+    (
+        "motion.probe-toward-noerror",
+        M::Motion(MotionKind::Probe {
+            toward: true,
+            error: false,
+        }),
+    ),
+    (
+        "motion.probe-away",
+        M::Motion(MotionKind::Probe {
+            toward: false,
+            error: true,
+        }),
+    ),
+    (
+        "motion.probe-away-noerror",
+        M::Motion(MotionKind::Probe {
+            toward: false,
+            error: false,
+        }),
+    ),
     ("cycle.drill", M::Cycle(CycleKind::Drill)),
     ("cycle.drill-dwell", M::Cycle(CycleKind::DrillDwell)),
     ("cycle.peck", M::Cycle(CycleKind::Peck)),
@@ -81,32 +111,74 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
     ("cycle.tap", M::Cycle(CycleKind::Tap)),
     ("cycle.tap-left", M::Cycle(CycleKind::TapLeft)),
     ("cycle.bore-feed-out", M::Cycle(CycleKind::BoreFeedOut)),
-    ("cycle.bore-stop-rapid-out", M::Cycle(CycleKind::BoreStopRapidOut)),
+    (
+        "cycle.bore-stop-rapid-out",
+        M::Cycle(CycleKind::BoreStopRapidOut),
+    ),
     ("cycle.back-bore", M::Cycle(CycleKind::BackBore)),
     ("cycle.bore-manual", M::Cycle(CycleKind::BoreManual)),
-    ("cycle.bore-dwell-feed-out", M::Cycle(CycleKind::BoreDwellFeedOut)),
+    (
+        "cycle.bore-dwell-feed-out",
+        M::Cycle(CycleKind::BoreDwellFeedOut),
+    ),
     ("cycle.fine-bore", M::Cycle(CycleKind::FineBore)),
     ("cycle.cancel", M::CycleCancel),
     ("dwell", M::Dwell),
     ("plane.xy", M::Plane(Plane::XY)),
     ("plane.zx", M::Plane(Plane::ZX)),
     ("plane.yz", M::Plane(Plane::YZ)),
-    ("units.inch", M::Units { unit: LengthUnit::Inch, with_feeds: false }),
-    ("units.mm", M::Units { unit: LengthUnit::Mm, with_feeds: false }),
-    ("units.inch-with-feeds", M::Units { unit: LengthUnit::Inch, with_feeds: true }),
-    ("units.mm-with-feeds", M::Units { unit: LengthUnit::Mm, with_feeds: true }),
+    (
+        "units.inch",
+        M::Units {
+            unit: LengthUnit::Inch,
+            with_feeds: false,
+        },
+    ),
+    (
+        "units.mm",
+        M::Units {
+            unit: LengthUnit::Mm,
+            with_feeds: false,
+        },
+    ),
+    (
+        "units.inch-with-feeds",
+        M::Units {
+            unit: LengthUnit::Inch,
+            with_feeds: true,
+        },
+    ),
+    (
+        "units.mm-with-feeds",
+        M::Units {
+            unit: LengthUnit::Mm,
+            with_feeds: true,
+        },
+    ),
     ("distance.absolute", M::Distance(DimMode::Absolute)),
     ("distance.incremental", M::Distance(DimMode::Incremental)),
     ("arc-distance.absolute", M::ArcDistance(DimMode::Absolute)),
-    ("arc-distance.incremental", M::ArcDistance(DimMode::Incremental)),
+    (
+        "arc-distance.incremental",
+        M::ArcDistance(DimMode::Incremental),
+    ),
     ("feed-mode.per-minute", M::FeedMode(FeedMode::PerMinute)),
-    ("feed-mode.per-revolution", M::FeedMode(FeedMode::PerRevolution)),
+    (
+        "feed-mode.per-revolution",
+        M::FeedMode(FeedMode::PerRevolution),
+    ),
     ("feed-mode.inverse-time", M::FeedMode(FeedMode::InverseTime)),
     ("radius-comp.off", M::RadiusComp(CompSide::Off)),
     ("radius-comp.left", M::RadiusComp(CompSide::Left)),
     ("radius-comp.right", M::RadiusComp(CompSide::Right)),
-    ("radius-comp.left-diameter", M::RadiusCompDiameter(CompSide::Left)),
-    ("radius-comp.right-diameter", M::RadiusCompDiameter(CompSide::Right)),
+    (
+        "radius-comp.left-diameter",
+        M::RadiusCompDiameter(CompSide::Left),
+    ),
+    (
+        "radius-comp.right-diameter",
+        M::RadiusCompDiameter(CompSide::Right),
+    ),
     ("length-comp.positive", M::LengthComp(LengthComp::Positive)),
     ("length-comp.negative", M::LengthComp(LengthComp::Negative)),
     ("length-comp.cancel", M::LengthComp(LengthComp::Cancel)),
@@ -120,15 +192,45 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
     ("coord-shift.restore", M::CoordShift(CoordShift::Restore)),
     ("coord-shift.local", M::CoordShift(CoordShift::Local)),
     ("set-data", M::SetData),
-    ("ref-return.1", M::RefReturn { index: 1, store: false }),
-    ("ref-return.2", M::RefReturn { index: 2, store: false }),
-    ("ref-return.store-1", M::RefReturn { index: 1, store: true }),
-    ("ref-return.store-2", M::RefReturn { index: 2, store: true }),
+    (
+        "ref-return.1",
+        M::RefReturn {
+            index: 1,
+            store: false,
+        },
+    ),
+    (
+        "ref-return.2",
+        M::RefReturn {
+            index: 2,
+            store: false,
+        },
+    ),
+    (
+        "ref-return.store-1",
+        M::RefReturn {
+            index: 1,
+            store: true,
+        },
+    ),
+    (
+        "ref-return.store-2",
+        M::RefReturn {
+            index: 2,
+            store: true,
+        },
+    ),
     ("path.exact-stop", M::PathMode(PathMode::ExactStop)),
-    ("path.exact-stop-block", M::PathMode(PathMode::ExactStopBlock)),
+    (
+        "path.exact-stop-block",
+        M::PathMode(PathMode::ExactStopBlock),
+    ),
     ("path.exact-path", M::PathMode(PathMode::ExactPath)),
     ("path.continuous", M::PathMode(PathMode::Continuous)),
-    ("path.corner-override", M::PathMode(PathMode::CornerOverride)),
+    (
+        "path.corner-override",
+        M::PathMode(PathMode::CornerOverride),
+    ),
     ("path.tapping", M::PathMode(PathMode::Tapping)),
     ("return.initial", M::ReturnMode(true)),
     ("return.r-plane", M::ReturnMode(false)),
@@ -179,7 +281,11 @@ impl Meaning {
         if let M::WorkOffset(i) = self {
             return format!("work-offset.{i}");
         }
-        MEANINGS.iter().find(|(_, m)| *m == self).map(|(n, _)| n.to_string()).unwrap_or_default()
+        MEANINGS
+            .iter()
+            .find(|(_, m)| *m == self)
+            .map(|(n, _)| n.to_string())
+            .unwrap_or_default()
     }
 }
 
@@ -193,6 +299,9 @@ mod tests {
             assert_eq!(Meaning::parse(name), Some(*m));
             assert_eq!(m.name(), *name);
         }
-        assert_eq!(Meaning::parse("work-offset.3"), Some(Meaning::WorkOffset(3)));
+        assert_eq!(
+            Meaning::parse("work-offset.3"),
+            Some(Meaning::WorkOffset(3))
+        );
     }
 }

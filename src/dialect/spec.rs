@@ -114,12 +114,18 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("named-cycles", Capability::NamedCycles),
     ("frames", Capability::Frames),
     ("g-code-transforms", Capability::GCodeTransforms),
-    ("unbracketed-expressions", Capability::UnbracketedExpressions),
+    (
+        "unbracketed-expressions",
+        Capability::UnbracketedExpressions,
+    ),
     ("message-comments", Capability::MessageComments),
     ("comma-corner-words", Capability::CommaCornerWords),
     ("eq-tolerance", Capability::EqTolerance),
     ("frame-arcs", Capability::FrameArcs),
-    ("cycle-retract-r-plane-at-start", Capability::CycleRetractRPlaneAtStart),
+    (
+        "cycle-retract-r-plane-at-start",
+        Capability::CycleRetractRPlaneAtStart,
+    ),
 ];
 
 impl Capability {
@@ -128,7 +134,11 @@ impl Capability {
     }
 
     pub fn name(self) -> &'static str {
-        CAPABILITIES.iter().find(|(_, c)| *c == self).map(|(n, _)| *n).unwrap_or("")
+        CAPABILITIES
+            .iter()
+            .find(|(_, c)| *c == self)
+            .map(|(n, _)| *n)
+            .unwrap_or("")
     }
 }
 
@@ -211,7 +221,9 @@ pub struct CycleSig {
 
 impl CycleSig {
     pub fn param_index(&self, name: &str) -> Option<usize> {
-        self.params.iter().position(|p| p.name.eq_ignore_ascii_case(name))
+        self.params
+            .iter()
+            .position(|p| p.name.eq_ignore_ascii_case(name))
     }
 }
 
@@ -302,12 +314,7 @@ struct CodeIndex {
 impl DialectSpec {
     /// Builds the lookup tables; call after filling the fields.
     #[allow(clippy::too_many_arguments)]
-    pub fn new(
-        id: String,
-        name: String,
-        family: Family,
-        numbers: NumberRules,
-    ) -> Self {
+    pub fn new(id: String, name: String, family: Family, numbers: NumberRules) -> Self {
         DialectSpec {
             id,
             name,
@@ -349,7 +356,10 @@ impl DialectSpec {
 
     /// The G or M code definition, if the dialect has it.
     pub fn code(&self, letter: char, code: Decimal) -> Option<&CodeDef> {
-        self.index.by_code.get(&(letter, code.normalized())).map(|&i| &self.codes[i])
+        self.index
+            .by_code
+            .get(&(letter, code.normalized()))
+            .map(|&i| &self.codes[i])
     }
 
     /// The code a writer uses for a meaning.
@@ -358,16 +368,23 @@ impl DialectSpec {
     }
 
     pub fn cycle(&self, name: &str) -> Option<&CycleSig> {
-        self.cycles.iter().find(|c| c.name.eq_ignore_ascii_case(name))
+        self.cycles
+            .iter()
+            .find(|c| c.name.eq_ignore_ascii_case(name))
     }
 
     pub fn function(&self, name: &str) -> Option<&FunctionDef> {
-        self.functions.iter().find(|f| f.name.eq_ignore_ascii_case(name))
+        self.functions
+            .iter()
+            .find(|f| f.name.eq_ignore_ascii_case(name))
     }
 
     /// The dialect's name for a function meaning (for writers).
     pub fn function_name(&self, func: Func) -> Option<&str> {
-        self.functions.iter().find(|f| f.func == func).map(|f| f.name.as_str())
+        self.functions
+            .iter()
+            .find(|f| f.func == func)
+            .map(|f| f.name.as_str())
     }
 
     pub fn is_command(&self, name: &str) -> bool {
@@ -375,7 +392,9 @@ impl DialectSpec {
     }
 
     pub fn address(&self, letter: char) -> Option<&AddressDef> {
-        self.addresses.iter().find(|a| a.letter == letter.to_ascii_uppercase())
+        self.addresses
+            .iter()
+            .find(|a| a.letter == letter.to_ascii_uppercase())
     }
 
     pub fn is_length_address(&self, letter: char) -> bool {
@@ -387,6 +406,8 @@ impl DialectSpec {
     }
 
     pub fn var_range(&self, prefix: char, n: u32) -> Option<&VarRange> {
-        self.variables.iter().find(|v| v.prefix == prefix && (v.first..=v.last).contains(&n))
+        self.variables
+            .iter()
+            .find(|v| v.prefix == prefix && (v.first..=v.last).contains(&n))
     }
 }

@@ -62,13 +62,16 @@ pub fn parse(text: &str, file: FileId) -> Result<Node, Diagnostic> {
                 attach(&mut stack, &mut root, n, tag)?;
             }
             Event::End(_) => {
-                let n = stack.pop().ok_or_else(|| malformed(file, before, after, "closing tag without opening tag"))?;
+                let n = stack.pop().ok_or_else(|| {
+                    malformed(file, before, after, "closing tag without opening tag")
+                })?;
                 attach(&mut stack, &mut root, n, tag)?;
             }
             Event::Text(t) => push_text(&mut stack, &t.xml10_content()),
             Event::CData(t) => push_text(&mut stack, &t),
             Event::GeneralRef(r) => {
-                let s = resolve_ref(&r).ok_or_else(|| malformed(file, before, after, "unknown entity reference"))?;
+                let s = resolve_ref(&r)
+                    .ok_or_else(|| malformed(file, before, after, "unknown entity reference"))?;
                 push_text(&mut stack, &s);
             }
             Event::Comment(_) | Event::Decl(_) | Event::PI(_) | Event::DocType(_) => {}
@@ -76,7 +79,12 @@ pub fn parse(text: &str, file: FileId) -> Result<Node, Diagnostic> {
         }
     }
     if let Some(open) = stack.last() {
-        return Err(malformed(file, open.span.start as usize, open.span.end as usize, &format!("element `{}` is not closed", open.name)));
+        return Err(malformed(
+            file,
+            open.span.start as usize,
+            open.span.end as usize,
+            &format!("element `{}` is not closed", open.name),
+        ));
     }
     root.ok_or_else(|| malformed(file, 0, 0, "the file has no root element"))
 }
@@ -103,21 +111,37 @@ fn resolve_ref(r: &quick_xml::events::BytesRef) -> Option<String> {
     Some(s.to_string())
 }
 
-fn attach(stack: &mut [Node], root: &mut Option<Node>, n: Node, at: Span) -> Result<(), Diagnostic> {
+fn attach(
+    stack: &mut [Node],
+    root: &mut Option<Node>,
+    n: Node,
+    at: Span,
+) -> Result<(), Diagnostic> {
     match stack.last_mut() {
         Some(parent) => parent.children.push(n),
         None if root.is_none() => *root = Some(n),
         None => {
-            return Err(malformed(at.file, at.start as usize, at.end as usize, "a second root element"));
+            return Err(malformed(
+                at.file,
+                at.start as usize,
+                at.end as usize,
+                "a second root element",
+            ));
         }
     }
     Ok(())
 }
 
 fn malformed(file: FileId, start: usize, end: usize, msg: &str) -> Diagnostic {
-    Diagnostic::new(Code::SpecMalformed, format!("the dialect spec is not well-formed XML: {msg}"))
-        .primary(Span::new(file, start, end.max(start)), "the XML reader stopped here")
-        .help("check that every tag is closed, attribute values are quoted, and `&` is written `&amp;`")
+    Diagnostic::new(
+        Code::SpecMalformed,
+        format!("the dialect spec is not well-formed XML: {msg}"),
+    )
+    .primary(
+        Span::new(file, start, end.max(start)),
+        "the XML reader stopped here",
+    )
+    .help("check that every tag is closed, attribute values are quoted, and `&` is written `&amp;`")
 }
 
 fn node(e: &BytesStart, text: &str, tag: Span) -> Result<Node, Diagnostic> {
@@ -129,13 +153,29 @@ fn node(e: &BytesStart, text: &str, tag: Span) -> Result<Node, Diagnostic> {
             // Attribute errors count from the byte after `<`.
             let at = (tag.start as usize + 1 + attr_error_offset(&err)).min(tag.end as usize);
             let start = Span::new(tag.file, tag.start as usize, tag.start as usize + 1);
-            malformed(tag.file, at, (at + 1).min(tag.end as usize), &err.to_string()).secondary(start, "in the tag that starts here")
+            malformed(
+                tag.file,
+                at,
+                (at + 1).min(tag.end as usize),
+                &err.to_string(),
+            )
+            .secondary(start, "in the tag that starts here")
         })?;
         let value = a
             .normalized_value(quick_xml::XmlVersion::Implicit1_0)
-            .map_err(|err| malformed(tag.file, tag.start as usize, tag.end as usize, &err.to_string()))?;
+            .map_err(|err| {
+                malformed(
+                    tag.file,
+                    tag.start as usize,
+                    tag.end as usize,
+                    &err.to_string(),
+                )
+            })?;
         let key: &str = a.key.as_ref();
-        let (ns, vs) = spans.get(i).copied().unwrap_or(((tag.start as usize, tag.end as usize), (tag.start as usize, tag.end as usize)));
+        let (ns, vs) = spans.get(i).copied().unwrap_or((
+            (tag.start as usize, tag.end as usize),
+            (tag.start as usize, tag.end as usize),
+        ));
         attrs.push(Attr {
             name: key.to_string(),
             value: value.into_owned(),
@@ -145,13 +185,23 @@ fn node(e: &BytesStart, text: &str, tag: Span) -> Result<Node, Diagnostic> {
     }
     let qname = e.name();
     let name: &str = qname.as_ref();
-    Ok(Node { name: name.to_string(), span: tag, attrs, children: Vec::new(), text: String::new() })
+    Ok(Node {
+        name: name.to_string(),
+        span: tag,
+        attrs,
+        children: Vec::new(),
+        text: String::new(),
+    })
 }
 
 fn attr_error_offset(e: &quick_xml::events::attributes::AttrError) -> usize {
     use quick_xml::events::attributes::AttrError as E;
     match *e {
-        E::ExpectedEq(p) | E::ExpectedValue(p) | E::UnquotedValue(p) | E::ExpectedQuote(p, _) | E::Duplicated(p, _) => p,
+        E::ExpectedEq(p)
+        | E::ExpectedValue(p)
+        | E::UnquotedValue(p)
+        | E::ExpectedQuote(p, _)
+        | E::Duplicated(p, _) => p,
     }
 }
 
@@ -186,7 +236,9 @@ fn attr_spans(raw: &str, base: usize) -> Vec<Range2> {
             return out;
         }
         let vs = i + 1;
-        let Some(len) = b[vs..].iter().position(|&c| c == q) else { return out };
+        let Some(len) = b[vs..].iter().position(|&c| c == q) else {
+            return out;
+        };
         let ve = vs + len;
         out.push(((base + ns, base + ne), (base + vs, base + ve)));
         i = ve + 1;

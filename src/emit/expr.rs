@@ -29,7 +29,11 @@ pub fn write_expr(w: &mut Writer<'_>, id: ExprId) -> Option<String> {
         ExprKind::Binary(op, a, b) => binary(w, *op, *a, *b, span),
         ExprKind::Call(f, args) => call(w, *f, args, span),
         ExprKind::Exists(name) => {
-            if !w.need(Capability::NamedParameters, span, "EXISTS[] on a named parameter") {
+            if !w.need(
+                Capability::NamedParameters,
+                span,
+                "EXISTS[] on a named parameter",
+            ) {
                 return None;
             }
             Some(format!("EXISTS[#<{name}>]"))
@@ -37,7 +41,11 @@ pub fn write_expr(w: &mut Writer<'_>, id: ExprId) -> Option<String> {
         ExprKind::AtanSlash(a, b) => atan_slash(w, *a, *b, span),
         ExprKind::Dimension(mode, a) => match w.style {
             Style::Sinumerik => {
-                let f = if *mode == DimMode::Absolute { "AC" } else { "IC" };
+                let f = if *mode == DimMode::Absolute {
+                    "AC"
+                } else {
+                    "IC"
+                };
                 Some(format!("{f}({})", write_expr(w, *a)?))
             }
             Style::Bracket => cannot(w, span, "a per-value AC()/IC() dimension"),
@@ -46,7 +54,11 @@ pub fn write_expr(w: &mut Writer<'_>, id: ExprId) -> Option<String> {
 }
 
 fn cannot(w: &mut Writer<'_>, span: crate::span::Span, what: &str) -> Option<String> {
-    w.cannot(span, what, "rewrite the expression with what the target dialect offers");
+    w.cannot(
+        span,
+        what,
+        "rewrite the expression with what the target dialect offers",
+    );
     None
 }
 
@@ -117,7 +129,11 @@ fn unary(w: &mut Writer<'_>, op: UnaryOp, a: ExprId, span: crate::span::Span) ->
         (UnaryOp::BitNot, Style::Bracket) => return cannot(w, span, "a bitwise NOT"),
     };
     let inner = write_expr(w, a)?;
-    let inner = if is_binary(w, a) { group(w, inner) } else { inner };
+    let inner = if is_binary(w, a) {
+        group(w, inner)
+    } else {
+        inner
+    };
     Some(format!("{prefix}{inner}"))
 }
 
@@ -192,7 +208,9 @@ fn is_logical(op: BinaryOp) -> bool {
 
 fn operand(w: &mut Writer<'_>, parent: BinaryOp, child: ExprId, right: bool) -> Option<String> {
     let text = write_expr(w, child)?;
-    let ExprKind::Binary(cop, ..) = w.prog.exprs[child].kind else { return Some(text) };
+    let ExprKind::Binary(cop, ..) = w.prog.exprs[child].kind else {
+        return Some(text);
+    };
     let (p, c) = (prec(w.style, parent), prec(w.style, cop));
     // Fanuc binds AND like `*` and OR like `+`: operands of logical
     // operators are always bracketed so every reader sees the same tree.
@@ -201,7 +219,13 @@ fn operand(w: &mut Writer<'_>, parent: BinaryOp, child: ExprId, right: bool) -> 
     Some(if need { group(w, text) } else { text })
 }
 
-fn binary(w: &mut Writer<'_>, op: BinaryOp, a: ExprId, b: ExprId, span: crate::span::Span) -> Option<String> {
+fn binary(
+    w: &mut Writer<'_>,
+    op: BinaryOp,
+    a: ExprId,
+    b: ExprId,
+    span: crate::span::Span,
+) -> Option<String> {
     let Some(t) = op_text(w, op) else {
         return cannot(w, span, &format!("the operator {op:?}"));
     };
@@ -222,7 +246,10 @@ fn atan_slash(w: &mut Writer<'_>, a: ExprId, b: ExprId, span: crate::span::Span)
     match w.style {
         Style::Sinumerik => call(w, Func::Atan2, &[a, b], span),
         Style::Bracket => {
-            let name = w.spec.function_name(Func::Atan2).or_else(|| w.spec.function_name(Func::Atan));
+            let name = w
+                .spec
+                .function_name(Func::Atan2)
+                .or_else(|| w.spec.function_name(Func::Atan));
             let Some(name) = name.map(str::to_string) else {
                 return cannot(w, span, "the function Atan");
             };

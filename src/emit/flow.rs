@@ -42,7 +42,15 @@ fn allowed(w: &mut Writer<'_>, id: &FlowId, span: Span, what: &str) -> bool {
 
 /// Writes one flow statement: `nested` keyword, o-word keyword, optional
 /// condition. `Do` ids are handled by the callers that have a form for them.
-pub fn keyword(w: &mut Writer<'_>, id: &FlowId, nested: Option<&str>, oword_kw: &str, c: Option<ExprId>, span: Span, words: &mut Vec<String>) {
+pub fn keyword(
+    w: &mut Writer<'_>,
+    id: &FlowId,
+    nested: Option<&str>,
+    oword_kw: &str,
+    c: Option<ExprId>,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     let what = oword_kw.to_string();
     if !allowed(w, id, span, &what) {
         return;
@@ -51,7 +59,11 @@ pub fn keyword(w: &mut Writer<'_>, id: &FlowId, nested: Option<&str>, oword_kw: 
         (FlowId::OWord(n), _) => format!("{} {oword_kw}", oword(n)),
         (FlowId::Nested, Some(k)) => k.to_string(),
         (FlowId::Nested, None) | (FlowId::Do(_), _) => {
-            return w.cannot(span, &format!("`{oword_kw}` in this form"), "use another loop form");
+            return w.cannot(
+                span,
+                &format!("`{oword_kw}` in this form"),
+                "use another loop form",
+            );
         }
     };
     let c = match c {
@@ -106,7 +118,14 @@ pub fn until(w: &mut Writer<'_>, c: ExprId, span: Span, words: &mut Vec<String>)
     }
 }
 
-pub fn for_(w: &mut Writer<'_>, var: &Var, from: ExprId, to: ExprId, span: Span, words: &mut Vec<String>) {
+pub fn for_(
+    w: &mut Writer<'_>,
+    var: &Var,
+    from: ExprId,
+    to: ExprId,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     if !structured(w, span, "a FOR loop") {
         return;
     }
@@ -126,7 +145,14 @@ pub fn jump_kw(dir: JumpDir) -> &'static str {
     }
 }
 
-pub fn case(w: &mut Writer<'_>, sel: ExprId, arms: &[CaseArm], default: Option<&(String, JumpDir)>, span: Span, words: &mut Vec<String>) {
+pub fn case(
+    w: &mut Writer<'_>,
+    sel: ExprId,
+    arms: &[CaseArm],
+    default: Option<&(String, JumpDir)>,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     if !structured(w, span, "a CASE jump") {
         return;
     }
@@ -137,12 +163,24 @@ pub fn case(w: &mut Writer<'_>, sel: ExprId, arms: &[CaseArm], default: Option<&
         out.extend([v, jump_kw(arm.dir).to_string(), arm.target.clone()]);
     }
     if let Some((target, dir)) = default {
-        out.extend(["DEFAULT".to_string(), jump_kw(*dir).to_string(), target.clone()]);
+        out.extend([
+            "DEFAULT".to_string(),
+            jump_kw(*dir).to_string(),
+            target.clone(),
+        ]);
     }
     words.extend(out);
 }
 
-pub fn section_repeat(w: &mut Writer<'_>, start: &str, end: Option<&str>, count: Option<ExprId>, single: bool, span: Span, words: &mut Vec<String>) {
+pub fn section_repeat(
+    w: &mut Writer<'_>,
+    start: &str,
+    end: Option<&str>,
+    count: Option<ExprId>,
+    single: bool,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     if !structured(w, span, "a section repeat") {
         return;
     }
@@ -156,13 +194,24 @@ pub fn section_repeat(w: &mut Writer<'_>, start: &str, end: Option<&str>, count:
     }
 }
 
-pub fn sub_start(w: &mut Writer<'_>, name: &str, params: &[VarDecl], id: &FlowId, span: Span, words: &mut Vec<String>) {
+pub fn sub_start(
+    w: &mut Writer<'_>,
+    name: &str,
+    params: &[VarDecl],
+    id: &FlowId,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     if !allowed(w, id, span, "subroutine") {
         return;
     }
     match id {
         FlowId::OWord(n) if params.is_empty() => words.extend([oword(n), "sub".to_string()]),
-        FlowId::OWord(_) => w.cannot(span, "declared subroutine parameters", "o-word subroutines take #1..#30"),
+        FlowId::OWord(_) => w.cannot(
+            span,
+            "declared subroutine parameters",
+            "o-word subroutines take #1..#30",
+        ),
         FlowId::Nested => words.push(proc_head(name, params)),
         FlowId::Do(_) => w.cannot(span, "a subroutine with a DO id", "this id is for loops"),
     }
@@ -178,14 +227,25 @@ fn proc_head(name: &str, params: &[VarDecl]) -> String {
 }
 
 /// `o100 endsub [v]`, `o100 return [v]`; Siemens `RET`.
-pub fn sub_exit(w: &mut Writer<'_>, id: &FlowId, value: Option<ExprId>, oword_kw: &str, span: Span, words: &mut Vec<String>) {
+pub fn sub_exit(
+    w: &mut Writer<'_>,
+    id: &FlowId,
+    value: Option<ExprId>,
+    oword_kw: &str,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     if !allowed(w, id, span, oword_kw) {
         return;
     }
     match (id, value) {
         (FlowId::OWord(_), _) => keyword(w, id, None, oword_kw, value, span, words),
         (FlowId::Nested, None) => words.push("RET".to_string()),
-        (FlowId::Nested, Some(_)) => w.cannot(span, "a subroutine returning a value", "pass the result in a variable"),
+        (FlowId::Nested, Some(_)) => w.cannot(
+            span,
+            "a subroutine returning a value",
+            "pass the result in a variable",
+        ),
         (FlowId::Do(_), _) => w.cannot(span, "a return with a DO id", "this id is for loops"),
     }
 }

@@ -44,16 +44,26 @@ pub fn write_program(p: &Program, spec: &DialectSpec) -> Result<String, Vec<Diag
 
 fn no_writer(p: &Program, spec: &DialectSpec) -> Diagnostic {
     let span = p.blocks.first().map(|b| b.span).unwrap_or_default();
-    Diagnostic::new(Code::CannotExpress, format!("there is no writer for the {} family yet", spec.family.name()))
-        .primary(span, "the program starts here")
-        .help("choose a word-address or Sinumerik target")
+    Diagnostic::new(
+        Code::CannotExpress,
+        format!(
+            "there is no writer for the {} family yet",
+            spec.family.name()
+        ),
+    )
+    .primary(span, "the program starts here")
+    .help("choose a word-address or Sinumerik target")
 }
 
 /// One block: `/1 N10 LABEL: words...`.
 fn block(w: &mut Writer<'_>, b: &Block) -> String {
     let mut words = Vec::new();
     if let Some(skip) = &b.skip {
-        words.push(if skip.node == 0 { "/".to_string() } else { format!("/{}", skip.node) });
+        words.push(if skip.node == 0 {
+            "/".to_string()
+        } else {
+            format!("/{}", skip.node)
+        });
     }
     if let Some(n) = &b.number {
         words.push(format!("N{}", n.node));
@@ -61,7 +71,11 @@ fn block(w: &mut Writer<'_>, b: &Block) -> String {
     if let Some(label) = &b.label {
         match w.style {
             Style::Sinumerik => words.push(format!("{}:", label.node)),
-            Style::Bracket => w.cannot(label.span, "a block label", "number the block and jump to its N number"),
+            Style::Bracket => w.cannot(
+                label.span,
+                "a block label",
+                "number the block and jump to its N number",
+            ),
         }
     }
     let n = b.stmts.len();

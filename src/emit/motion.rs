@@ -20,7 +20,11 @@ pub fn motion(w: &mut Writer<'_>, m: &Motion, span: Span, words: &mut Vec<String
     polar(w, m, span, words);
     if let Some((kind, v)) = &m.corner {
         if w.style == Style::Bracket {
-            w.cannot(span, "a contour corner element (CHF=, RND=)", "program the chamfer or rounding as moves");
+            w.cannot(
+                span,
+                "a contour corner element (CHF=, RND=)",
+                "program the chamfer or rounding as moves",
+            );
         } else {
             let addr = match kind {
                 CornerKind::Chamfer => "CHF",
@@ -40,7 +44,11 @@ fn motion_code(w: &mut Writer<'_>, kind: MotionKind, span: Span) -> Option<Strin
             if w.spec.code('G', code).is_some() {
                 Some(format!("G{}", code.format(0, false)))
             } else {
-                w.cannot(span, &format!("the motion code G{}", code.format(0, false)), "choose a target that has it");
+                w.cannot(
+                    span,
+                    &format!("the motion code G{}", code.format(0, false)),
+                    "choose a target that has it",
+                );
                 None
             }
         }
@@ -48,7 +56,14 @@ fn motion_code(w: &mut Writer<'_>, kind: MotionKind, span: Span) -> Option<Strin
             if w.spec.code_for(Meaning::Motion(kind)).is_some() {
                 return w.code(Meaning::Motion(kind), span);
             }
-            Some(if kind == MotionKind::ArcThrough { "CIP" } else { "CT" }.to_string())
+            Some(
+                if kind == MotionKind::ArcThrough {
+                    "CIP"
+                } else {
+                    "CT"
+                }
+                .to_string(),
+            )
         }
         MotionKind::Rapid
         | MotionKind::Linear
@@ -70,13 +85,23 @@ fn arc(w: &mut Writer<'_>, m: &Motion, span: Span, words: &mut Vec<String>) {
     }
     let siemens = w.style == Style::Sinumerik;
     if let Some(r) = &a.radius {
-        w.push_word(words, if siemens { "CR" } else { "R" }, r, NumKind::Length, span);
+        w.push_word(
+            words,
+            if siemens { "CR" } else { "R" },
+            r,
+            NumKind::Length,
+            span,
+        );
     }
     if let Some(v) = &a.angle {
         if siemens {
             w.push_word(words, "AR", v, NumKind::Angle, span);
         } else {
-            w.cannot(span, "an arc given by its opening angle (AR=)", "give the centre or the radius");
+            w.cannot(
+                span,
+                "an arc given by its opening angle (AR=)",
+                "give the centre or the radius",
+            );
         }
     }
     if let Some(mid) = &a.mid {
@@ -92,11 +117,21 @@ fn arc(w: &mut Writer<'_>, m: &Motion, span: Span, words: &mut Vec<String>) {
                 }
             }
         } else {
-            w.cannot(span, "an arc through an intermediate point (CIP)", "give the centre or the radius");
+            w.cannot(
+                span,
+                "an arc through an intermediate point (CIP)",
+                "give the centre or the radius",
+            );
         }
     }
     if let Some(t) = &a.turns {
-        w.push_word(words, if siemens { "TURN" } else { "P" }, t, NumKind::Int, span);
+        w.push_word(
+            words,
+            if siemens { "TURN" } else { "P" },
+            t,
+            NumKind::Int,
+            span,
+        );
     }
 }
 
@@ -137,11 +172,18 @@ fn orient_at(w: &mut Writer<'_>, angle: &Value, span: Span, words: &mut Vec<Stri
         w.push_word(words, "SPOS", angle, NumKind::Angle, span);
         return;
     }
-    let letter = w.spec.code_for(Meaning::Spindle(SpindleFn::Orient)).and_then(|c| c.uses.first().copied());
+    let letter = w
+        .spec
+        .code_for(Meaning::Spindle(SpindleFn::Orient))
+        .and_then(|c| c.uses.first().copied());
     w.push_code(words, Meaning::Spindle(SpindleFn::Orient), span);
     match letter {
         Some(l) => w.push_word(words, &l.to_string(), angle, NumKind::Angle, span),
-        None => w.cannot(span, "a spindle orientation angle", "the target's orient code takes no angle word"),
+        None => w.cannot(
+            span,
+            "a spindle orientation angle",
+            "the target's orient code takes no angle word",
+        ),
     }
 }
 
@@ -149,15 +191,22 @@ pub fn tool_select(w: &mut Writer<'_>, t: &ToolRef, span: Span, words: &mut Vec<
     match (t, w.style) {
         (ToolRef::Number(v), _) => w.push_word(words, "T", v, NumKind::Int, span),
         (ToolRef::Name(n), Style::Sinumerik) => words.push(format!("T=\"{n}\"")),
-        (ToolRef::Name(n), Style::Bracket) => {
-            w.cannot(span, &format!("a tool selected by name (`{n}`)"), "select the tool by its number")
-        }
+        (ToolRef::Name(n), Style::Bracket) => w.cannot(
+            span,
+            &format!("a tool selected by name (`{n}`)"),
+            "select the tool by its number",
+        ),
     }
 }
 
 pub fn transform(w: &mut Writer<'_>, t: &Transform, span: Span, words: &mut Vec<String>) {
     match t {
-        Transform::Frame { op, additive, axes, rpl } => {
+        Transform::Frame {
+            op,
+            additive,
+            axes,
+            rpl,
+        } => {
             if !w.need(Capability::Frames, span, "a programmable frame") {
                 return;
             }
@@ -167,7 +216,11 @@ pub fn transform(w: &mut Writer<'_>, t: &Transform, span: Span, words: &mut Vec<
                 FrameOp::Scale => ("SCALE", NumKind::Plain),
                 FrameOp::Mirror => ("MIRROR", NumKind::Length),
             };
-            words.push(if *additive { format!("A{name}") } else { name.to_string() });
+            words.push(if *additive {
+                format!("A{name}")
+            } else {
+                name.to_string()
+            });
             for (letter, c) in axes.iter() {
                 if let Some(s) = w.coord(&letter.to_string(), c, kind) {
                     words.push(s);
@@ -185,7 +238,11 @@ pub fn transform(w: &mut Writer<'_>, t: &Transform, span: Span, words: &mut Vec<
             }
         }
         Transform::RotateOff => w.push_code(words, Meaning::Rotate(false), span),
-        Transform::ScaleOn { center, factor, per_axis } => {
+        Transform::ScaleOn {
+            center,
+            factor,
+            per_axis,
+        } => {
             w.push_code(words, Meaning::Scale(true), span);
             w.push_axes(words, center);
             if let Some(v) = factor {
@@ -206,16 +263,29 @@ pub fn transform(w: &mut Writer<'_>, t: &Transform, span: Span, words: &mut Vec<
 
 /// `G4` with the time in a word and unit the target's dwell code takes,
 /// converted exactly between seconds and milliseconds when needed.
-pub fn dwell(w: &mut Writer<'_>, value: &Value, unit: DwellUnit, span: Span, words: &mut Vec<String>) {
+pub fn dwell(
+    w: &mut Writer<'_>,
+    value: &Value,
+    unit: DwellUnit,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     let Some(def) = w.spec.code_for(Meaning::Dwell) else {
         w.push_code(words, Meaning::Dwell, span);
         return;
     };
     let units = def.dwell_units.clone();
     w.push_code(words, Meaning::Dwell, span);
-    let pick = units.iter().find(|(_, u)| *u == unit).or_else(|| units.iter().find(|(_, u)| convertible(unit, *u)));
+    let pick = units
+        .iter()
+        .find(|(_, u)| *u == unit)
+        .or_else(|| units.iter().find(|(_, u)| convertible(unit, *u)));
     let Some(&(letter, to)) = pick else {
-        w.cannot(span, &format!("a dwell in {unit:?}"), "the target's dwell code takes no word in a unit this converts to");
+        w.cannot(
+            span,
+            &format!("a dwell in {unit:?}"),
+            "the target's dwell code takes no word in a unit this converts to",
+        );
         return;
     };
     let value = match (value, unit == to) {
@@ -228,7 +298,11 @@ pub fn dwell(w: &mut Writer<'_>, value: &Value, unit: DwellUnit, span: Span, wor
             }
         }
         (Value::Expr(_), false) => {
-            return w.cannot(span, "a computed dwell in another time unit", "give the dwell as a number");
+            return w.cannot(
+                span,
+                "a computed dwell in another time unit",
+                "give the dwell as a number",
+            );
         }
     };
     let kind = match to {
@@ -241,5 +315,8 @@ pub fn dwell(w: &mut Writer<'_>, value: &Value, unit: DwellUnit, span: Span, wor
 
 fn convertible(from: DwellUnit, to: DwellUnit) -> bool {
     use DwellUnit::*;
-    matches!((from, to), (Seconds, Milliseconds) | (Milliseconds, Seconds))
+    matches!(
+        (from, to),
+        (Seconds, Milliseconds) | (Milliseconds, Seconds)
+    )
 }

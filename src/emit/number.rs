@@ -24,7 +24,12 @@ pub enum NumKind {
 /// Writes `d` as `kind` under `rules` in `units`; `Err` says why it cannot.
 /// `units` is `None` before the program says its units (G20/G21): lengths
 /// then get the larger of the two precisions.
-pub fn format_number(d: Decimal, kind: NumKind, rules: &NumberRules, units: Option<LengthUnit>) -> Result<String, String> {
+pub fn format_number(
+    d: Decimal,
+    kind: NumKind,
+    rules: &NumberRules,
+    units: Option<LengthUnit>,
+) -> Result<String, String> {
     let n = d.normalized();
     let (places, point) = match kind {
         NumKind::Length => (Some(length_places(rules, units)), rules.point_on_lengths),
@@ -37,7 +42,10 @@ pub fn format_number(d: Decimal, kind: NumKind, rules: &NumberRules, units: Opti
         if n.scale > p {
             return Err(match kind {
                 NumKind::Int => format!("`{d}` is not a whole number"),
-                _ => format!("`{d}` has {} decimal places; the target writes at most {p}", n.scale),
+                _ => format!(
+                    "`{d}` has {} decimal places; the target writes at most {p}",
+                    n.scale
+                ),
             });
         }
     }
@@ -64,13 +72,27 @@ pub fn shift_decimal(d: Decimal, shift: i32) -> Option<Decimal> {
             left -= 1;
         }
         m = m.checked_mul(10i64.checked_pow(left as u32)?)?;
-        Some(Decimal { mantissa: m, scale: scale as u8, point: true }.normalized())
+        Some(
+            Decimal {
+                mantissa: m,
+                scale: scale as u8,
+                point: true,
+            }
+            .normalized(),
+        )
     } else {
         let scale = n.scale as i32 - shift;
         if scale > crate::ir::num::MAX_DIGITS as i32 {
             return None;
         }
-        Some(Decimal { mantissa: n.mantissa, scale: scale as u8, point: true }.normalized())
+        Some(
+            Decimal {
+                mantissa: n.mantissa,
+                scale: scale as u8,
+                point: true,
+            }
+            .normalized(),
+        )
     }
 }
 
@@ -98,20 +120,44 @@ mod tests {
 
     #[test]
     fn lengths_carry_a_point_and_no_trailing_zeros() {
-        assert_eq!(f("10", NumKind::Length, Some(LengthUnit::Mm)).unwrap(), "10.");
-        assert_eq!(f("-2.500", NumKind::Length, Some(LengthUnit::Mm)).unwrap(), "-2.5");
-        assert_eq!(f("-0.000", NumKind::Length, Some(LengthUnit::Mm)).unwrap(), "0.");
-        assert_eq!(f("1.2345", NumKind::Length, Some(LengthUnit::Inch)).unwrap(), "1.2345");
+        assert_eq!(
+            f("10", NumKind::Length, Some(LengthUnit::Mm)).unwrap(),
+            "10."
+        );
+        assert_eq!(
+            f("-2.500", NumKind::Length, Some(LengthUnit::Mm)).unwrap(),
+            "-2.5"
+        );
+        assert_eq!(
+            f("-0.000", NumKind::Length, Some(LengthUnit::Mm)).unwrap(),
+            "0."
+        );
+        assert_eq!(
+            f("1.2345", NumKind::Length, Some(LengthUnit::Inch)).unwrap(),
+            "1.2345"
+        );
         assert!(f("1.2345", NumKind::Length, Some(LengthUnit::Mm)).is_err());
     }
 
     #[test]
     fn feeds_ints_and_plain() {
-        assert_eq!(f("100.", NumKind::Feed, Some(LengthUnit::Mm)).unwrap(), "100");
-        assert_eq!(f("12.50", NumKind::Feed, Some(LengthUnit::Mm)).unwrap(), "12.5");
-        assert_eq!(f("1000.0", NumKind::Int, Some(LengthUnit::Mm)).unwrap(), "1000");
+        assert_eq!(
+            f("100.", NumKind::Feed, Some(LengthUnit::Mm)).unwrap(),
+            "100"
+        );
+        assert_eq!(
+            f("12.50", NumKind::Feed, Some(LengthUnit::Mm)).unwrap(),
+            "12.5"
+        );
+        assert_eq!(
+            f("1000.0", NumKind::Int, Some(LengthUnit::Mm)).unwrap(),
+            "1000"
+        );
         assert!(f("1.5", NumKind::Int, Some(LengthUnit::Mm)).is_err());
-        assert_eq!(f("0.123456", NumKind::Plain, Some(LengthUnit::Mm)).unwrap(), "0.123456");
+        assert_eq!(
+            f("0.123456", NumKind::Plain, Some(LengthUnit::Mm)).unwrap(),
+            "0.123456"
+        );
     }
 
     #[test]

@@ -6,22 +6,37 @@
 use super::flow;
 use super::number::NumKind;
 use super::writer::Writer;
-use crate::ir::{Arg, CallArgs, CallKind, CallTarget, CycleCall, ExprId, JumpDir, JumpTarget, Value, VarDecl, VarType};
+use crate::ir::{
+    Arg, CallArgs, CallKind, CallTarget, CycleCall, ExprId, JumpDir, JumpTarget, Value, VarDecl,
+    VarType,
+};
 use crate::span::Span;
 
 pub fn message(w: &mut Writer<'_>, text: Option<&str>, span: Span, words: &mut Vec<String>) {
     match text {
         None => words.push("MSG()".to_string()),
         Some(t) if !t.contains('"') => words.push(format!("MSG(\"{t}\")")),
-        Some(_) => w.cannot(span, "a message containing `\"`", "remove the quote from the text"),
+        Some(_) => w.cannot(
+            span,
+            "a message containing `\"`",
+            "remove the quote from the text",
+        ),
     }
 }
 
-pub fn program_start(w: &mut Writer<'_>, number: Option<u32>, name: Option<&str>, span: Span, words: &mut Vec<String>) {
+pub fn program_start(
+    w: &mut Writer<'_>,
+    number: Option<u32>,
+    name: Option<&str>,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     let base = match (name, number) {
         (Some(n), _) => n.to_string(),
         (None, Some(n)) => format!("O{n}"),
-        (None, None) => return w.cannot(span, "a program start without a name", "name the program"),
+        (None, None) => {
+            return w.cannot(span, "a program start without a name", "name the program")
+        }
     };
     let upper = base.to_ascii_uppercase();
     if upper.ends_with("_MPF") || upper.ends_with("_SPF") {
@@ -57,9 +72,15 @@ pub fn command(w: &mut Writer<'_>, name: &str, args: Option<&[Arg]>, words: &mut
 }
 
 pub fn cycle_call(w: &mut Writer<'_>, c: &CycleCall, words: &mut Vec<String>) {
-    let Some(t) = args_text(w, c.args.iter().map(|a| a.value)) else { return };
+    let Some(t) = args_text(w, c.args.iter().map(|a| a.value)) else {
+        return;
+    };
     let call = format!("{}({t})", c.name);
-    words.push(if c.modal { format!("MCALL {call}") } else { call });
+    words.push(if c.modal {
+        format!("MCALL {call}")
+    } else {
+        call
+    });
 }
 
 fn type_name(ty: VarType) -> &'static str {
@@ -99,7 +120,14 @@ pub fn declare(w: &mut Writer<'_>, ty: VarType, vars: &[VarDecl], words: &mut Ve
     words.push(format!("{head} {}", parts.join(", ")));
 }
 
-pub fn goto(w: &mut Writer<'_>, target: &JumpTarget, dir: JumpDir, cond: Option<ExprId>, span: Span, words: &mut Vec<String>) {
+pub fn goto(
+    w: &mut Writer<'_>,
+    target: &JumpTarget,
+    dir: JumpDir,
+    cond: Option<ExprId>,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     let dest = match target {
         JumpTarget::Label(l) => l.clone(),
         JumpTarget::Sequence(Value::Number(d)) => match w.num(*d, NumKind::Int, span) {
@@ -120,7 +148,15 @@ pub fn goto(w: &mut Writer<'_>, target: &JumpTarget, dir: JumpDir, cond: Option<
 }
 
 /// `L123 P2`, `L140(2)`, `NAME(1,,3)`, `NAME P3`.
-pub fn call(w: &mut Writer<'_>, kind: CallKind, target: &CallTarget, args: &CallArgs, repeat: Option<&Value>, span: Span, words: &mut Vec<String>) {
+pub fn call(
+    w: &mut Writer<'_>,
+    kind: CallKind,
+    target: &CallTarget,
+    args: &CallArgs,
+    repeat: Option<&Value>,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     match kind {
         CallKind::Subprogram | CallKind::Named | CallKind::OWord => {}
         CallKind::Local | CallKind::Macro | CallKind::ModalMacro => {
@@ -131,7 +167,13 @@ pub fn call(w: &mut Writer<'_>, kind: CallKind, target: &CallTarget, args: &Call
     let name = match target {
         CallTarget::Number(n) => format!("L{n}"),
         CallTarget::Name(n) => n.clone(),
-        CallTarget::Computed(_) => return w.cannot(span, "a call to a computed program number", "call the subprogram by name"),
+        CallTarget::Computed(_) => {
+            return w.cannot(
+                span,
+                "a call to a computed program number",
+                "call the subprogram by name",
+            )
+        }
     };
     let call = match args {
         CallArgs::None => name,
@@ -139,7 +181,13 @@ pub fn call(w: &mut Writer<'_>, kind: CallKind, target: &CallTarget, args: &Call
             Some(t) => format!("{name}({t})"),
             None => return,
         },
-        CallArgs::Letters(_) => return w.cannot(span, "letter arguments (G65 style)", "declare the parameters in a PROC and pass them positionally"),
+        CallArgs::Letters(_) => {
+            return w.cannot(
+                span,
+                "letter arguments (G65 style)",
+                "declare the parameters in a PROC and pass them positionally",
+            )
+        }
     };
     words.push(call);
     if let Some(r) = repeat {

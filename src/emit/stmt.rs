@@ -22,12 +22,23 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
         K::Message(text) if bracket => wa::message(w, text.as_deref(), span, words),
         K::Message(text) => sin::message(w, text.as_deref(), span, words),
         K::Tape => words.push("%".into()),
-        K::ProgramStart { number, name } if bracket => wa::program_start(w, *number, name.as_deref(), span, words),
-        K::ProgramStart { number, name } => sin::program_start(w, *number, name.as_deref(), span, words),
+        K::ProgramStart { number, name } if bracket => {
+            wa::program_start(w, *number, name.as_deref(), span, words)
+        }
+        K::ProgramStart { number, name } => {
+            sin::program_start(w, *number, name.as_deref(), span, words)
+        }
         K::Raw { dialect, text } => raw(w, dialect, text, span, words),
         K::Word(word) => w.push_words(words, std::slice::from_ref(word)),
         K::Units { unit, with_feeds } => {
-            w.push_code(words, Meaning::Units { unit: *unit, with_feeds: *with_feeds }, span);
+            w.push_code(
+                words,
+                Meaning::Units {
+                    unit: *unit,
+                    with_feeds: *with_feeds,
+                },
+                span,
+            );
             w.units = Some(*unit);
         }
         K::Plane(p) => w.push_code(words, Meaning::Plane(*p), span),
@@ -48,26 +59,50 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
         K::ToolSelect(t) => motion::tool_select(w, t, span, words),
         K::ToolChange => w.push_code(words, Meaning::ToolChange, span),
         K::CuttingEdge(v) if bracket => {
-            w.cannot(span, "a Siemens cutting edge `D` (length and radius together)", "use G43 H and G41/G42 D");
+            w.cannot(
+                span,
+                "a Siemens cutting edge `D` (length and radius together)",
+                "use G43 H and G41/G42 D",
+            );
             let _ = v;
         }
         K::CuttingEdge(v) => w.push_word(words, "D", v, NumKind::Int, span),
-        K::RadiusComp { side, register, diameter: false } => {
+        K::RadiusComp {
+            side,
+            register,
+            diameter: false,
+        } => {
             w.push_code(words, Meaning::RadiusComp(*side), span);
             opt_word(w, words, "D", register.as_ref(), NumKind::Int, span);
         }
-        K::RadiusComp { side, register, diameter: true } => {
+        K::RadiusComp {
+            side,
+            register,
+            diameter: true,
+        } => {
             w.push_code(words, Meaning::RadiusCompDiameter(*side), span);
             opt_word(w, words, "D", register.as_ref(), NumKind::Length, span);
         }
-        K::LengthComp { mode, register, axes } => {
+        K::LengthComp {
+            mode,
+            register,
+            axes,
+        } => {
             w.push_code(words, Meaning::LengthComp(*mode), span);
             w.push_axes(words, axes);
             opt_word(w, words, "H", register.as_ref(), NumKind::Int, span);
         }
-        K::OffsetRegister { letter, value } => w.push_word(words, &letter.to_string(), value, NumKind::Int, span),
-        K::WorkOffset { index, extended: None } => w.push_code(words, Meaning::WorkOffset(*index), span),
-        K::WorkOffset { index: _, extended: Some(p) } => {
+        K::OffsetRegister { letter, value } => {
+            w.push_word(words, &letter.to_string(), value, NumKind::Int, span)
+        }
+        K::WorkOffset {
+            index,
+            extended: None,
+        } => w.push_code(words, Meaning::WorkOffset(*index), span),
+        K::WorkOffset {
+            index: _,
+            extended: Some(p),
+        } => {
             w.push_code(words, Meaning::WorkOffsetExtended, span);
             w.push_word(words, "P", p, NumKind::Int, span);
         }
@@ -82,7 +117,14 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
             w.push_words(words, list);
         }
         K::RefReturn { index, axes, store } => {
-            w.push_code(words, Meaning::RefReturn { index: *index, store: *store }, span);
+            w.push_code(
+                words,
+                Meaning::RefReturn {
+                    index: *index,
+                    store: *store,
+                },
+                span,
+            );
             w.push_axes(words, axes);
         }
         K::PathMode { mode, words: list } => {
@@ -93,17 +135,35 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
         K::Transform(t) => motion::transform(w, t, span, words),
         K::Dwell { value, unit } => motion::dwell(w, value, *unit, span, words),
         K::Stop(k) => w.push_code(words, Meaning::Stop(*k), span),
-        K::Aux { letter, code, words: list } => {
+        K::Aux {
+            letter,
+            code,
+            words: list,
+        } => {
             words.push(format!("{letter}{}", code.format(0, false)));
             w.push_words(words, list);
         }
-        K::DynamicCode { letter, value, words: list } => {
-            w.push_word(words, &letter.to_string(), &crate::ir::Value::Expr(*value), NumKind::Int, span);
+        K::DynamicCode {
+            letter,
+            value,
+            words: list,
+        } => {
+            w.push_word(
+                words,
+                &letter.to_string(),
+                &crate::ir::Value::Expr(*value),
+                NumKind::Int,
+                span,
+            );
             w.push_words(words, list);
         }
         K::Command { name, args } if bracket => {
             let _ = args;
-            w.cannot(span, &format!("the Siemens command `{name}`"), "remove it or find the target's equivalent");
+            w.cannot(
+                span,
+                &format!("the Siemens command `{name}`"),
+                "remove it or find the target's equivalent",
+            );
         }
         K::Command { name, args } => sin::command(w, name, args.as_deref(), words),
         K::Motion(m) => motion::motion(w, m, span, words),
@@ -111,15 +171,25 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
         K::CycleCancel => w.push_code(words, Meaning::CycleCancel, span),
         K::CycleCall(c) if bracket => {
             let _ = c;
-            w.cannot(span, &format!("the named cycle call `{}`", c.name), "use the target's canned cycles (G81..G89)");
+            w.cannot(
+                span,
+                &format!("the named cycle call `{}`", c.name),
+                "use the target's canned cycles (G81..G89)",
+            );
         }
         K::CycleCall(c) => sin::cycle_call(w, c, words),
-        K::ModalCallCancel if bracket => w.cannot(span, "a modal cycle call cancel (`MCALL`)", "use G80"),
+        K::ModalCallCancel if bracket => {
+            w.cannot(span, "a modal cycle call cancel (`MCALL`)", "use G80")
+        }
         K::ModalCallCancel => words.push("MCALL".into()),
         K::Assign { var, value } => assign(w, var, *value, span, words),
         K::Declare { ty, vars } if bracket => {
             let _ = (ty, vars);
-            w.cannot(span, "a variable declaration (DEF)", "use numbered parameters");
+            w.cannot(
+                span,
+                "a variable declaration (DEF)",
+                "use numbered parameters",
+            );
         }
         K::Declare { ty, vars } => sin::declare(w, *ty, vars, words),
         K::Goto { target, dir, cond } if bracket => wa::goto(w, target, *dir, *cond, span, words),
@@ -127,10 +197,24 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
         K::IfThen { cond, then } if bracket => wa::if_then(w, *cond, then, span, words),
         K::IfThen { cond, then } => {
             let _ = (cond, then);
-            w.cannot(span, "a one-line IF ... THEN", "use IF ... ENDIF over several blocks");
+            w.cannot(
+                span,
+                "a one-line IF ... THEN",
+                "use IF ... ENDIF over several blocks",
+            );
         }
-        K::Call { kind, target, args, repeat } if bracket => wa::call(w, *kind, target, args, repeat.as_ref(), span, words),
-        K::Call { kind, target, args, repeat } => sin::call(w, *kind, target, args, repeat.as_ref(), span, words),
+        K::Call {
+            kind,
+            target,
+            args,
+            repeat,
+        } if bracket => wa::call(w, *kind, target, args, repeat.as_ref(), span, words),
+        K::Call {
+            kind,
+            target,
+            args,
+            repeat,
+        } => sin::call(w, *kind, target, args, repeat.as_ref(), span, words),
         K::SubReturn { to } => {
             w.push_code(words, Meaning::SubReturn, span);
             opt_word(w, words, "P", to.as_ref(), NumKind::Int, span);
@@ -152,10 +236,17 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
         K::EndLoop => flow::bare(w, "ENDLOOP", span, words),
         K::RepeatUntil => flow::bare(w, "REPEAT", span, words),
         K::Until { cond } => flow::until(w, *cond, span, words),
-        K::Case { selector, arms, default } => flow::case(w, *selector, arms, default.as_ref(), span, words),
-        K::SectionRepeat { start, end, count, single } => {
-            flow::section_repeat(w, start, end.as_deref(), *count, *single, span, words)
-        }
+        K::Case {
+            selector,
+            arms,
+            default,
+        } => flow::case(w, *selector, arms, default.as_ref(), span, words),
+        K::SectionRepeat {
+            start,
+            end,
+            count,
+            single,
+        } => flow::section_repeat(w, start, end.as_deref(), *count, *single, span, words),
         K::Break { id } => flow::keyword(w, id, None, "break", None, span, words),
         K::Continue { id } => flow::keyword(w, id, None, "continue", None, span, words),
         K::SubStart { name, params, id } => flow::sub_start(w, name, params, id, span, words),
@@ -164,7 +255,14 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
     }
 }
 
-fn opt_word(w: &mut Writer<'_>, words: &mut Vec<String>, addr: &str, v: Option<&Value>, kind: NumKind, span: crate::span::Span) {
+fn opt_word(
+    w: &mut Writer<'_>,
+    words: &mut Vec<String>,
+    addr: &str,
+    v: Option<&Value>,
+    kind: NumKind,
+    span: crate::span::Span,
+) {
     if let Some(v) = v {
         w.push_word(words, addr, v, kind, span);
     }
@@ -172,22 +270,41 @@ fn opt_word(w: &mut Writer<'_>, words: &mut Vec<String>, addr: &str, v: Option<&
 
 /// A comment in place as `( )` where the target has those (and the text
 /// allows), else as `;` text, which [`super::block`] moves to the block's end.
-fn comment(w: &mut Writer<'_>, text: &str, style: crate::ir::CommentStyle, span: crate::span::Span, last: bool, words: &mut Vec<String>) {
+fn comment(
+    w: &mut Writer<'_>,
+    text: &str,
+    style: crate::ir::CommentStyle,
+    span: crate::span::Span,
+    last: bool,
+    words: &mut Vec<String>,
+) {
     use crate::dialect::Capability::{ParenComments, SemicolonComments};
     use crate::ir::CommentStyle;
     // A `(` inside a comment read as `( )` reads back the same way.
-    let paren_ok = w.spec.has(ParenComments) && !text.contains(')') && (style == CommentStyle::Paren || !text.contains('('));
+    let paren_ok = w.spec.has(ParenComments)
+        && !text.contains(')')
+        && (style == CommentStyle::Paren || !text.contains('('));
     let semi = w.spec.has(SemicolonComments);
     if paren_ok && (style == CommentStyle::Paren || !semi || !last) {
         words.push(format!("({text})"));
     } else if semi {
         w.trailing.push(text.to_string());
     } else {
-        w.cannot(span, "a comment containing parentheses", "the target has only `( )` comments; remove the parentheses from the text");
+        w.cannot(
+            span,
+            "a comment containing parentheses",
+            "the target has only `( )` comments; remove the parentheses from the text",
+        );
     }
 }
 
-fn raw(w: &mut Writer<'_>, dialect: &str, text: &str, span: crate::span::Span, words: &mut Vec<String>) {
+fn raw(
+    w: &mut Writer<'_>,
+    dialect: &str,
+    text: &str,
+    span: crate::span::Span,
+    words: &mut Vec<String>,
+) {
     let spec = w.spec;
     if spec.id == dialect || spec.aliases.iter().any(|a| a == dialect) {
         words.push(text.to_string());
@@ -195,18 +312,32 @@ fn raw(w: &mut Writer<'_>, dialect: &str, text: &str, span: crate::span::Span, w
     }
     let d = crate::diag::Diagnostic::new(
         crate::diag::Code::RawInForeignDialect,
-        format!("text kept verbatim from {dialect} cannot be written as {}", spec.name),
+        format!(
+            "text kept verbatim from {dialect} cannot be written as {}",
+            spec.name
+        ),
     )
     .primary(span, format!("`{text}` was not understood, only kept"))
     .help("rewrite this part of the program by hand for the target");
     w.diags.push(d);
 }
 
-fn assign(w: &mut Writer<'_>, var: &crate::ir::Var, value: crate::ir::ExprId, span: crate::span::Span, words: &mut Vec<String>) {
+fn assign(
+    w: &mut Writer<'_>,
+    var: &crate::ir::Var,
+    value: crate::ir::ExprId,
+    span: crate::span::Span,
+    words: &mut Vec<String>,
+) {
     let lhs = super::expr::write_var(w, var, span);
     let rhs = w.expr(value);
-    let (Some(lhs), Some(rhs)) = (lhs, rhs) else { return };
-    let simple = matches!(w.prog.exprs[value].kind, crate::ir::ExprKind::Number(_) | crate::ir::ExprKind::Var(_));
+    let (Some(lhs), Some(rhs)) = (lhs, rhs) else {
+        return;
+    };
+    let simple = matches!(
+        w.prog.exprs[value].kind,
+        crate::ir::ExprKind::Number(_) | crate::ir::ExprKind::Var(_)
+    );
     if w.style == Style::Bracket && !simple {
         words.push(format!("{lhs}=[{rhs}]"));
     } else {

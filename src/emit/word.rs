@@ -6,7 +6,9 @@ use super::flow;
 use super::number::NumKind;
 use super::writer::Writer;
 use crate::dialect::{Capability, Meaning};
-use crate::ir::{CallArgs, CallKind, CallTarget, CannedCycle, ExprId, JumpDir, JumpTarget, Stmt, Value};
+use crate::ir::{
+    CallArgs, CallKind, CallTarget, CannedCycle, ExprId, JumpDir, JumpTarget, Stmt, Value,
+};
 use crate::span::Span;
 
 pub fn message(w: &mut Writer<'_>, text: Option<&str>, span: Span, words: &mut Vec<String>) {
@@ -15,17 +17,35 @@ pub fn message(w: &mut Writer<'_>, text: Option<&str>, span: Span, words: &mut V
     }
     match text {
         Some(t) if !t.contains(')') => words.push(format!("(MSG,{t})")),
-        Some(_) => w.cannot(span, "a message containing `)`", "remove the parenthesis from the text"),
-        None => w.cannot(span, "clearing the operator message", "remove the statement"),
+        Some(_) => w.cannot(
+            span,
+            "a message containing `)`",
+            "remove the parenthesis from the text",
+        ),
+        None => w.cannot(
+            span,
+            "clearing the operator message",
+            "remove the statement",
+        ),
     }
 }
 
-pub fn program_start(w: &mut Writer<'_>, number: Option<u32>, name: Option<&str>, span: Span, words: &mut Vec<String>) {
+pub fn program_start(
+    w: &mut Writer<'_>,
+    number: Option<u32>,
+    name: Option<&str>,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     if !w.need(Capability::NumberedPrograms, span, "a program number") {
         return;
     }
     let Some(n) = number else {
-        return w.cannot(span, "a program known only by name", "give the program a number");
+        return w.cannot(
+            span,
+            "a program known only by name",
+            "give the program a number",
+        );
     };
     words.push(format!("O{n:04}"));
     if let Some(name) = name {
@@ -60,29 +80,53 @@ pub fn cycle(w: &mut Writer<'_>, c: &CannedCycle, span: Span, words: &mut Vec<St
 /// reads `P` as milliseconds (Fanuc), otherwise a plain number (LinuxCNC
 /// seconds). The IR does not record the unit of a cycle's P.
 fn cycle_dwell_kind(w: &Writer<'_>) -> NumKind {
-    let p_unit = w.spec.code_for(Meaning::Dwell).and_then(|c| c.dwell_units.iter().find(|(l, _)| *l == 'P').map(|(_, u)| *u));
+    let p_unit = w.spec.code_for(Meaning::Dwell).and_then(|c| {
+        c.dwell_units
+            .iter()
+            .find(|(l, _)| *l == 'P')
+            .map(|(_, u)| *u)
+    });
     match p_unit {
         Some(crate::ir::DwellUnit::Milliseconds) => NumKind::Int,
-        Some(crate::ir::DwellUnit::Seconds | crate::ir::DwellUnit::Revolutions) | None => NumKind::Plain,
+        Some(crate::ir::DwellUnit::Seconds | crate::ir::DwellUnit::Revolutions) | None => {
+            NumKind::Plain
+        }
     }
 }
 
-pub fn goto(w: &mut Writer<'_>, target: &JumpTarget, dir: JumpDir, cond: Option<ExprId>, span: Span, words: &mut Vec<String>) {
+pub fn goto(
+    w: &mut Writer<'_>,
+    target: &JumpTarget,
+    dir: JumpDir,
+    cond: Option<ExprId>,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     if !w.need(Capability::MacroB, span, "a GOTO jump") {
         return;
     }
     if dir != JumpDir::Either {
-        return w.cannot(span, &format!("a directed jump ({})", flow::jump_kw(dir)), "use GOTO with a sequence number");
+        return w.cannot(
+            span,
+            &format!("a directed jump ({})", flow::jump_kw(dir)),
+            "use GOTO with a sequence number",
+        );
     }
     let JumpTarget::Sequence(v) = target else {
-        return w.cannot(span, "a jump to a label", "number the target block and jump to its N number");
+        return w.cannot(
+            span,
+            "a jump to a label",
+            "number the target block and jump to its N number",
+        );
     };
     let mut out = Vec::new();
     if let Some(c) = cond {
         let Some(c) = flow::cond(w, c) else { return };
         out.extend(["IF".to_string(), c]);
     }
-    let Some(n) = w.word("", v, NumKind::Int, span) else { return };
+    let Some(n) = w.word("", v, NumKind::Int, span) else {
+        return;
+    };
     out.extend(["GOTO".to_string(), n]);
     words.extend(out);
 }
@@ -98,7 +142,15 @@ pub fn if_then(w: &mut Writer<'_>, cond: ExprId, then: &Stmt, span: Span, words:
     words.extend(inner);
 }
 
-pub fn call(w: &mut Writer<'_>, kind: CallKind, target: &CallTarget, args: &CallArgs, repeat: Option<&Value>, span: Span, words: &mut Vec<String>) {
+pub fn call(
+    w: &mut Writer<'_>,
+    kind: CallKind,
+    target: &CallTarget,
+    args: &CallArgs,
+    repeat: Option<&Value>,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     let meaning = match kind {
         CallKind::OWord => return oword_call(w, target, args, repeat, span, words),
         CallKind::Subprogram | CallKind::Named => Meaning::SubCall,
@@ -110,7 +162,11 @@ pub fn call(w: &mut Writer<'_>, kind: CallKind, target: &CallTarget, args: &Call
         CallTarget::Number(n) => Value::Number(crate::ir::Decimal::from_int(*n as i64)),
         CallTarget::Computed(e) => Value::Expr(*e),
         CallTarget::Name(n) => {
-            return w.cannot(span, &format!("a call to the named subprogram `{n}`"), "number the subprogram (O-number) and call it by number");
+            return w.cannot(
+                span,
+                &format!("a call to the named subprogram `{n}`"),
+                "number the subprogram (O-number) and call it by number",
+            );
         }
     };
     w.push_code(words, meaning, span);
@@ -125,10 +181,18 @@ fn letter_args(w: &mut Writer<'_>, args: &CallArgs, span: Span, words: &mut Vec<
     match args {
         CallArgs::None => {}
         CallArgs::Positional(list) if list.is_empty() => {}
-        CallArgs::Positional(_) => w.cannot(span, "positional subprogram arguments", "pass values in #-variables or use G65 letter arguments"),
+        CallArgs::Positional(_) => w.cannot(
+            span,
+            "positional subprogram arguments",
+            "pass values in #-variables or use G65 letter arguments",
+        ),
         CallArgs::Letters(list) => {
             for (letter, v) in list {
-                let kind = if w.spec.is_length_address(*letter) { NumKind::Length } else { NumKind::Plain };
+                let kind = if w.spec.is_length_address(*letter) {
+                    NumKind::Length
+                } else {
+                    NumKind::Plain
+                };
                 w.push_word(words, &letter.to_string(), v, kind, span);
             }
         }
@@ -136,17 +200,34 @@ fn letter_args(w: &mut Writer<'_>, args: &CallArgs, span: Span, words: &mut Vec<
 }
 
 /// `o100 call [a] [b]`, `o<name> call`.
-fn oword_call(w: &mut Writer<'_>, target: &CallTarget, args: &CallArgs, repeat: Option<&Value>, span: Span, words: &mut Vec<String>) {
+fn oword_call(
+    w: &mut Writer<'_>,
+    target: &CallTarget,
+    args: &CallArgs,
+    repeat: Option<&Value>,
+    span: Span,
+    words: &mut Vec<String>,
+) {
     if !w.need(Capability::OWords, span, "an o-word subroutine call") {
         return;
     }
     let head = match target {
         CallTarget::Number(n) => flow::oword(&n.to_string()),
         CallTarget::Name(n) => flow::oword(n),
-        CallTarget::Computed(_) => return w.cannot(span, "an o-word call to a computed target", "call the subroutine by name"),
+        CallTarget::Computed(_) => {
+            return w.cannot(
+                span,
+                "an o-word call to a computed target",
+                "call the subroutine by name",
+            )
+        }
     };
     if repeat.is_some() {
-        return w.cannot(span, "a repeated o-word call", "wrap the call in `o.. repeat [n]`");
+        return w.cannot(
+            span,
+            "a repeated o-word call",
+            "wrap the call in `o.. repeat [n]`",
+        );
     }
     let mut out = vec![head, "call".to_string()];
     match args {
@@ -154,13 +235,23 @@ fn oword_call(w: &mut Writer<'_>, target: &CallTarget, args: &CallArgs, repeat: 
         CallArgs::Positional(list) => {
             for a in list {
                 let Some(e) = a else {
-                    return w.cannot(span, "an empty o-word call argument", "give every argument a value");
+                    return w.cannot(
+                        span,
+                        "an empty o-word call argument",
+                        "give every argument a value",
+                    );
                 };
                 let Some(s) = w.expr(*e) else { return };
                 out.push(format!("[{s}]"));
             }
         }
-        CallArgs::Letters(_) => return w.cannot(span, "letter arguments to an o-word call", "pass them positionally"),
+        CallArgs::Letters(_) => {
+            return w.cannot(
+                span,
+                "letter arguments to an o-word call",
+                "pass them positionally",
+            )
+        }
     }
     words.extend(out);
 }

@@ -30,14 +30,24 @@ pub struct Writer<'a> {
 
 impl<'a> Writer<'a> {
     pub fn new(prog: &'a Program, spec: &'a DialectSpec, style: Style) -> Self {
-        Writer { spec, prog, diags: Vec::new(), units: None, style, trailing: Vec::new() }
+        Writer {
+            spec,
+            prog,
+            diags: Vec::new(),
+            units: None,
+            style,
+            trailing: Vec::new(),
+        }
     }
 
     /// E0601: the target has no form for `what`.
     pub fn cannot(&mut self, span: Span, what: &str, help: &str) {
-        let d = Diagnostic::new(Code::CannotExpress, format!("{} cannot express {what}", self.spec.name))
-            .primary(span, format!("{what} written here"))
-            .help(help.to_string());
+        let d = Diagnostic::new(
+            Code::CannotExpress,
+            format!("{} cannot express {what}", self.spec.name),
+        )
+        .primary(span, format!("{what} written here"))
+        .help(help.to_string());
         self.diags.push(d);
     }
 
@@ -64,8 +74,15 @@ impl<'a> Writer<'a> {
         match self.spec.code_for(meaning) {
             Some(c) => Some(format!("{}{}", c.letter, c.code.format(0, false))),
             None => {
-                let what = format!("`{}` (no code for it in the target's table)", meaning.name());
-                self.cannot(span, &what, "choose a target dialect that has this function, or remove it");
+                let what = format!(
+                    "`{}` (no code for it in the target's table)",
+                    meaning.name()
+                );
+                self.cannot(
+                    span,
+                    &what,
+                    "choose a target dialect that has this function, or remove it",
+                );
                 None
             }
         }
@@ -98,20 +115,37 @@ impl<'a> Writer<'a> {
     pub fn word(&mut self, addr: &str, v: &Value, kind: NumKind, span: Span) -> Option<String> {
         let long = addr.chars().count() > 1;
         match (v, self.style) {
-            (Value::Number(d), Style::Bracket) => Some(format!("{addr}{}", self.num(*d, kind, span)?)),
+            (Value::Number(d), Style::Bracket) => {
+                Some(format!("{addr}{}", self.num(*d, kind, span)?))
+            }
             (Value::Number(d), Style::Sinumerik) => {
                 let n = self.num(*d, kind, span)?;
-                Some(if long { format!("{addr}={n}") } else { format!("{addr}{n}") })
+                Some(if long {
+                    format!("{addr}={n}")
+                } else {
+                    format!("{addr}{n}")
+                })
             }
             (Value::Expr(id), Style::Bracket) => {
                 let e = self.expr(*id)?;
-                Some(if self.atomic(*id) { format!("{addr}{e}") } else { format!("{addr}[{e}]") })
+                Some(if self.atomic(*id) {
+                    format!("{addr}{e}")
+                } else {
+                    format!("{addr}[{e}]")
+                })
             }
             (Value::Expr(id), Style::Sinumerik) => Some(format!("{addr}={}", self.expr(*id)?)),
         }
     }
 
-    pub fn push_word(&mut self, words: &mut Vec<String>, addr: &str, v: &Value, kind: NumKind, span: Span) {
+    pub fn push_word(
+        &mut self,
+        words: &mut Vec<String>,
+        addr: &str,
+        v: &Value,
+        kind: NumKind,
+        span: Span,
+    ) {
         if let Some(w) = self.word(addr, v, kind, span) {
             words.push(w);
         }
@@ -119,9 +153,15 @@ impl<'a> Writer<'a> {
 
     /// A coordinate, with Siemens `AC()`/`IC()` where it was written.
     pub fn coord(&mut self, addr: &str, c: &Coord, kind: NumKind) -> Option<String> {
-        let Some(dim) = c.dim else { return self.word(addr, &c.value, kind, c.span) };
+        let Some(dim) = c.dim else {
+            return self.word(addr, &c.value, kind, c.span);
+        };
         if self.style != Style::Sinumerik {
-            self.cannot(c.span, "a per-value AC()/IC() dimension", "use G90/G91 around the block instead");
+            self.cannot(
+                c.span,
+                "a per-value AC()/IC() dimension",
+                "use G90/G91 around the block instead",
+            );
             return None;
         }
         let inner = match &c.value {
@@ -147,7 +187,11 @@ impl<'a> Writer<'a> {
     /// Kept letter-value words, lengths by the target's address table.
     pub fn push_words(&mut self, words: &mut Vec<String>, list: &[Word]) {
         for w in list {
-            let kind = if self.spec.is_length_address(w.letter) { NumKind::Length } else { NumKind::Plain };
+            let kind = if self.spec.is_length_address(w.letter) {
+                NumKind::Length
+            } else {
+                NumKind::Plain
+            };
             self.push_word(words, &w.address(), &w.value, kind, w.span);
         }
     }

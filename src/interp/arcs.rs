@@ -10,7 +10,7 @@ use super::target::{target, Frame};
 use super::{Interp, Stop};
 use crate::canon::{Canon, CanonPlane, CanonUnits, Pose};
 use crate::diag::Code;
-use crate::ir::{Arena, ArcDir, Block, Coord, Expr, FeedMode, Motion};
+use crate::ir::{ArcDir, Arena, Block, Coord, Expr, FeedMode, Motion};
 use std::f64::consts::PI;
 
 /// LinuxCNC's tolerance for the two radii of a centre-format arc
@@ -42,23 +42,41 @@ fn centre_word(m: &Motion, letter: char) -> Option<&Coord> {
     }
 }
 
-pub fn arc(it: &mut Interp<'_, '_>, dir: ArcDir, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+pub fn arc(
+    it: &mut Interp<'_, '_>,
+    dir: ArcDir,
+    m: &Motion,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let plane = it.state.plane;
     let (ci, cj, _, _) = plane_letters(plane);
     let (wi, wj) = (centre_word(m, ci), centre_word(m, cj));
     let has_centre = wi.is_some() || wj.is_some();
     if m.arc.radius.is_some() && has_centre {
-        return Err(it.error_at(it.span, Code::ArcBadWords, "Mixed radius ijk format for arc"));
+        return Err(it.error_at(
+            it.span,
+            Code::ArcBadWords,
+            "Mixed radius ijk format for arc",
+        ));
     }
     if m.arc.radius.is_none() && !has_centre {
-        return Err(it.error_at(it.span, Code::ArcBadWords, "R i j k words all missing for arc"));
+        return Err(it.error_at(
+            it.span,
+            Code::ArcBadWords,
+            "R i j k words all missing for arc",
+        ));
     }
     let turns = match &m.arc.turns {
         Some(v) => it.value(v, exprs)?,
         None => 1.0,
     };
     if turns < 1.0 || turns.fract() != 0.0 {
-        return Err(it.error_at(it.span, Code::BadWordValue, "P value not an integer with G2 or G3"));
+        return Err(it.error_at(
+            it.span,
+            Code::BadWordValue,
+            "P value not an integer with G2 or G3",
+        ));
     }
     let from = MotionHost::position(it);
     let to = target(it, &m.target, exprs, Frame::Program)?;
@@ -79,12 +97,21 @@ pub fn arc(it: &mut Interp<'_, '_>, dir: ArcDir, m: &Motion, block: &Block, expr
                 Some(c) => it.value(&c.value, exprs)?,
                 None => 0.0,
             };
-            let c = if it.state.arc_absolute { (oi, oj) } else { (s.0 + oi, s.1 + oj) };
+            let c = if it.state.arc_absolute {
+                (oi, oj)
+            } else {
+                (s.0 + oi, s.1 + oj)
+            };
             check_radii(it, s, c, e)?;
             c
         }
     };
-    check_feed(it, block, "Cannot make arc with zero feed rate", "F word missing with inverse time arc move")?;
+    check_feed(
+        it,
+        block,
+        "Cannot make arc with zero feed rate",
+        "F word missing with inverse time arc move",
+    )?;
     let turns = turns as i64;
     let rotation = if dir == ArcDir::Ccw { turns } else { -turns };
     if it.state.feed_mode == FeedMode::InverseTime {
@@ -95,15 +122,29 @@ pub fn arc(it: &mut Interp<'_, '_>, dir: ArcDir, m: &Motion, block: &Block, expr
 }
 
 /// The centre of an R-format arc (LinuxCNC's construction).
-fn centre_from_radius(it: &Interp<'_, '_>, dir: ArcDir, s: (f64, f64), e: (f64, f64), r: f64) -> Result<(f64, f64), Stop> {
+fn centre_from_radius(
+    it: &Interp<'_, '_>,
+    dir: ArcDir,
+    s: (f64, f64),
+    e: (f64, f64),
+    r: f64,
+) -> Result<(f64, f64), Stop> {
     if s == e {
-        return Err(it.error_at(it.span, Code::ArcBadWords, "Current point same as end point of arc"));
+        return Err(it.error_at(
+            it.span,
+            Code::ArcBadWords,
+            "Current point same as end point of arc",
+        ));
     }
     let abs_r = r.abs();
     let mid = ((s.0 + e.0) / 2.0, (s.1 + e.1) / 2.0);
     let mut half = (mid.0 - e.0).hypot(mid.1 - e.1);
     if abs_r == 0.0 || half / abs_r > 1.0 + TINY {
-        return Err(it.error_at(it.span, Code::ArcRadiusTooSmall, "Arc radius too small to reach end point"));
+        return Err(it.error_at(
+            it.span,
+            Code::ArcRadiusTooSmall,
+            "Arc radius too small to reach end point",
+        ));
     }
     if half / abs_r > 1.0 - TINY {
         half = abs_r;
@@ -118,7 +159,12 @@ fn centre_from_radius(it: &Interp<'_, '_>, dir: ArcDir, s: (f64, f64), e: (f64, 
     Ok((mid.0 + offset * theta.cos(), mid.1 + offset * theta.sin()))
 }
 
-fn check_radii(it: &Interp<'_, '_>, s: (f64, f64), c: (f64, f64), e: (f64, f64)) -> Result<(), Stop> {
+fn check_radii(
+    it: &Interp<'_, '_>,
+    s: (f64, f64),
+    c: (f64, f64),
+    e: (f64, f64),
+) -> Result<(), Stop> {
     let r1 = (s.0 - c.0).hypot(s.1 - c.1);
     let r2 = (e.0 - c.0).hypot(e.1 - c.1);
     let abs_err = (r1 - r2).abs();

@@ -52,10 +52,38 @@ const AUX: &[(char, i64, AuxFn)] = &[
     ('M', 520, AuxFn::AdaptiveFeed),
     ('M', 530, AuxFn::FeedHold),
     ('M', 610, AuxFn::SetToolNumber),
-    ('M', 620, AuxFn::DigitalOut { motion: true, on: true }),
-    ('M', 630, AuxFn::DigitalOut { motion: true, on: false }),
-    ('M', 640, AuxFn::DigitalOut { motion: false, on: true }),
-    ('M', 650, AuxFn::DigitalOut { motion: false, on: false }),
+    (
+        'M',
+        620,
+        AuxFn::DigitalOut {
+            motion: true,
+            on: true,
+        },
+    ),
+    (
+        'M',
+        630,
+        AuxFn::DigitalOut {
+            motion: true,
+            on: false,
+        },
+    ),
+    (
+        'M',
+        640,
+        AuxFn::DigitalOut {
+            motion: false,
+            on: true,
+        },
+    ),
+    (
+        'M',
+        650,
+        AuxFn::DigitalOut {
+            motion: false,
+            on: false,
+        },
+    ),
     ('M', 670, AuxFn::AnalogOut { motion: true }),
     ('M', 680, AuxFn::AnalogOut { motion: false }),
     ('M', 660, AuxFn::WaitInput),
@@ -75,19 +103,34 @@ fn lookup(letter: char, code: f64) -> Option<AuxFn> {
         return None;
     }
     let letter = letter.to_ascii_uppercase();
-    AUX.iter().find(|(l, n, _)| *l == letter && *n as f64 == tenths).map(|(_, _, f)| *f)
+    AUX.iter()
+        .find(|(l, n, _)| *l == letter && *n as f64 == tenths)
+        .map(|(_, _, f)| *f)
 }
 
 /// The value of a word among `words`, if written.
-fn word(it: &mut Interp<'_, '_>, words: &[Word], letter: char, exprs: &Arena<Expr>) -> Result<Option<f64>, Stop> {
-    match words.iter().find(|w| w.letter.eq_ignore_ascii_case(&letter)) {
+fn word(
+    it: &mut Interp<'_, '_>,
+    words: &[Word],
+    letter: char,
+    exprs: &Arena<Expr>,
+) -> Result<Option<f64>, Stop> {
+    match words
+        .iter()
+        .find(|w| w.letter.eq_ignore_ascii_case(&letter))
+    {
         Some(w) => Ok(Some(it.value(&w.value, exprs)?)),
         None => Ok(None),
     }
 }
 
 /// The value of a loose word (`StmtKind::Word`) of the block, if written.
-pub fn block_word(it: &mut Interp<'_, '_>, block: &Block, letter: char, exprs: &Arena<Expr>) -> Result<Option<f64>, Stop> {
+pub fn block_word(
+    it: &mut Interp<'_, '_>,
+    block: &Block,
+    letter: char,
+    exprs: &Arena<Expr>,
+) -> Result<Option<f64>, Stop> {
     for s in &block.stmts {
         if let StmtKind::Word(w) = &s.kind {
             if w.letter.eq_ignore_ascii_case(&letter) {
@@ -99,9 +142,19 @@ pub fn block_word(it: &mut Interp<'_, '_>, block: &Block, letter: char, exprs: &
 }
 
 /// Runs an Aux statement.
-pub fn exec(it: &mut Interp<'_, '_>, letter: char, code: f64, words: &[Word], exprs: &Arena<Expr>) -> Result<(), Stop> {
+pub fn exec(
+    it: &mut Interp<'_, '_>,
+    letter: char,
+    code: f64,
+    words: &[Word],
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let Some(f) = lookup(letter, code) else {
-        return Err(it.error_at(it.span, Code::UnsupportedHere, format!("{letter}{code} is not run by the interpreter")));
+        return Err(it.error_at(
+            it.span,
+            Code::UnsupportedHere,
+            format!("{letter}{code} is not run by the interpreter"),
+        ));
     };
     let p = word(it, words, 'P', exprs)?;
     let on = p.map(|v| v != 0.0).unwrap_or(true);
@@ -109,19 +162,43 @@ pub fn exec(it: &mut Interp<'_, '_>, letter: char, code: f64, words: &[Word], ex
         AuxFn::Overrides(on) => {
             it.state.feed_override = on;
             it.state.speed_override = on;
-            it.out(if on { Canon::EnableFeedOverride } else { Canon::DisableFeedOverride });
-            it.out(if on { Canon::EnableSpeedOverride } else { Canon::DisableSpeedOverride });
+            it.out(if on {
+                Canon::EnableFeedOverride
+            } else {
+                Canon::DisableFeedOverride
+            });
+            it.out(if on {
+                Canon::EnableSpeedOverride
+            } else {
+                Canon::DisableSpeedOverride
+            });
         }
         AuxFn::FeedOverride => {
             it.state.feed_override = on;
-            it.out(if on { Canon::EnableFeedOverride } else { Canon::DisableFeedOverride });
+            it.out(if on {
+                Canon::EnableFeedOverride
+            } else {
+                Canon::DisableFeedOverride
+            });
         }
         AuxFn::SpeedOverride => {
             it.state.speed_override = on;
-            it.out(if on { Canon::EnableSpeedOverride } else { Canon::DisableSpeedOverride });
+            it.out(if on {
+                Canon::EnableSpeedOverride
+            } else {
+                Canon::DisableSpeedOverride
+            });
         }
-        AuxFn::AdaptiveFeed => it.out(if on { Canon::EnableAdaptiveFeed } else { Canon::DisableAdaptiveFeed }),
-        AuxFn::FeedHold => it.out(if on { Canon::EnableFeedHold } else { Canon::DisableFeedHold }),
+        AuxFn::AdaptiveFeed => it.out(if on {
+            Canon::EnableAdaptiveFeed
+        } else {
+            Canon::DisableAdaptiveFeed
+        }),
+        AuxFn::FeedHold => it.out(if on {
+            Canon::EnableFeedHold
+        } else {
+            Canon::DisableFeedHold
+        }),
         AuxFn::SetToolNumber => {
             let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0) as i64;
             let row = super::tools::row_of(it, q)?;
@@ -142,7 +219,11 @@ pub fn exec(it: &mut Interp<'_, '_>, letter: char, code: f64, words: &[Word], ex
         AuxFn::AnalogOut { motion } => {
             let e = word(it, words, 'E', exprs)?.unwrap_or(0.0) as i64;
             let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0);
-            let what = if motion { "SET_MOTION_OUTPUT_VALUE" } else { "SET_AUX_OUTPUT_VALUE" };
+            let what = if motion {
+                "SET_MOTION_OUTPUT_VALUE"
+            } else {
+                "SET_AUX_OUTPUT_VALUE"
+            };
             it.out(Canon::Io(format!("{what}({e},{q:.6})")));
         }
         AuxFn::WaitInput => {}
@@ -150,13 +231,19 @@ pub fn exec(it: &mut Interp<'_, '_>, letter: char, code: f64, words: &[Word], ex
         AuxFn::InvalidateModal => super::modal_save::invalidate(it),
         AuxFn::RestoreModal => {
             if !super::modal_save::restore_saved(it) {
-                return Err(it.error_at(it.span, Code::BadWordValue, "Cannot restore context: no valid context saved by M70"));
+                return Err(it.error_at(
+                    it.span,
+                    Code::BadWordValue,
+                    "Cannot restore context: no valid context saved by M70",
+                ));
             }
         }
         AuxFn::LatheDiameter(on) => {
             if on != it.state.lathe_diameter {
                 let what = if on { "diameter" } else { "radius" };
-                it.out(Canon::Comment(format!("interpreter: Lathe diameter mode changed to {what}")));
+                it.out(Canon::Comment(format!(
+                    "interpreter: Lathe diameter mode changed to {what}"
+                )));
             }
             it.state.lathe_diameter = on;
         }

@@ -35,7 +35,9 @@ impl Interp<'_, '_> {
         Ok(match &e.kind {
             ExprKind::Number(d) => Some(d.to_f64()),
             ExprKind::Bool(b) => Some(*b as i64 as f64),
-            ExprKind::Str(_) => return Err(self.error_at(span, Code::UnsupportedHere, "a string used as a number")),
+            ExprKind::Str(_) => {
+                return Err(self.error_at(span, Code::UnsupportedHere, "a string used as a number"))
+            }
             ExprKind::Var(v) => self.read_var(v, exprs, span)?,
             ExprKind::Unary(op, a) => {
                 let a = self.eval(*a, exprs)?.unwrap_or(0.0);
@@ -68,11 +70,21 @@ impl Interp<'_, '_> {
         })
     }
 
-    fn binary(&mut self, op: BinaryOp, a: Num, b: Num, span: crate::span::Span) -> Result<f64, Stop> {
+    fn binary(
+        &mut self,
+        op: BinaryOp,
+        a: Num,
+        b: Num,
+        span: crate::span::Span,
+    ) -> Result<f64, Stop> {
         use BinaryOp::*;
         // Vacant equals only vacant (Fanuc Macro B: dialects with a `#0`,
         // always vacant); elsewhere it reads as zero.
-        let vacancy = self.spec.variables.iter().any(|r| r.prefix == '#' && r.first == 0);
+        let vacancy = self
+            .spec
+            .variables
+            .iter()
+            .any(|r| r.prefix == '#' && r.first == 0);
         if vacancy && matches!(op, Eq | Ne) && (a.is_none() || b.is_none()) {
             let same = a.is_none() == b.is_none() && a.unwrap_or(0.0) == b.unwrap_or(0.0);
             return Ok(((op == Eq) == same) as i64 as f64);
@@ -81,8 +93,16 @@ impl Interp<'_, '_> {
         let t = |c: bool| c as i64 as f64;
         // LinuxCNC's EQ/NE compare within 0.0001 (its TOLERANCE_EQUAL);
         // probed: `[0.00005 EQ 0]` is 1 in rs274.
-        let tol = if self.spec.has(Capability::EqTolerance) { EQ_TOLERANCE } else { 0.0 };
-        let equal = if tol > 0.0 { (a - b).abs() < tol } else { a == b };
+        let tol = if self.spec.has(Capability::EqTolerance) {
+            EQ_TOLERANCE
+        } else {
+            0.0
+        };
+        let equal = if tol > 0.0 {
+            (a - b).abs() < tol
+        } else {
+            a == b
+        };
         Ok(match op {
             Add => a + b,
             Sub => a - b,
@@ -106,7 +126,13 @@ impl Interp<'_, '_> {
             BitAnd => ((a as i64) & (b as i64)) as f64,
             BitOr => ((a as i64) | (b as i64)) as f64,
             BitXor => ((a as i64) ^ (b as i64)) as f64,
-            Concat => return Err(self.error_at(span, Code::UnsupportedHere, "string concatenation is not evaluated")),
+            Concat => {
+                return Err(self.error_at(
+                    span,
+                    Code::UnsupportedHere,
+                    "string concatenation is not evaluated",
+                ))
+            }
         })
     }
 
@@ -137,13 +163,22 @@ impl Interp<'_, '_> {
             Func::Bin => bcd_to_bin(a),
             Func::Bcd => bin_to_bcd(a),
             Func::Asin | Func::Acos | Func::Sqrt | Func::Ln => {
-                return Err(self.error_at(span, Code::DomainError, format!("{f:?} of {a} is undefined")))
+                return Err(self.error_at(
+                    span,
+                    Code::DomainError,
+                    format!("{f:?} of {a} is undefined"),
+                ))
             }
         };
         Ok(r)
     }
 
-    fn read_var(&mut self, v: &Var, exprs: &Arena<Expr>, span: crate::span::Span) -> Result<Num, Stop> {
+    fn read_var(
+        &mut self,
+        v: &Var,
+        exprs: &Arena<Expr>,
+        span: crate::span::Span,
+    ) -> Result<Num, Stop> {
         Ok(match v {
             Var::Numbered(n) => {
                 self.check_number(*n, span)?;
@@ -172,11 +207,19 @@ impl Interp<'_, '_> {
             Var::User(name, _) => match self.params.user(name) {
                 Some(v) => Some(v),
                 None => {
-                    return Err(self.error_at(span, Code::UndefinedVariable, format!("variable {name} has no value")))
+                    return Err(self.error_at(
+                        span,
+                        Code::UndefinedVariable,
+                        format!("variable {name} has no value"),
+                    ))
                 }
             },
             Var::System(name, _) => {
-                return Err(self.error_at(span, Code::UnsupportedHere, format!("system variable {name} is not simulated")))
+                return Err(self.error_at(
+                    span,
+                    Code::UnsupportedHere,
+                    format!("system variable {name} is not simulated"),
+                ))
             }
         })
     }
@@ -188,14 +231,26 @@ impl Interp<'_, '_> {
         if ranges().next().is_none() || ranges().any(|r| (r.first..=r.last).contains(&n)) {
             return Ok(());
         }
-        Err(self.error_at(span, Code::UndefinedVariable, format!("parameter #{n} is out of range")))
+        Err(self.error_at(
+            span,
+            Code::UndefinedVariable,
+            format!("parameter #{n} is out of range"),
+        ))
     }
 
     /// Writing a read-only numbered parameter (Fanuc `#0`) is an error.
     pub fn check_writable(&self, n: u32, span: crate::span::Span) -> Result<(), Stop> {
-        let ro = self.spec.variables.iter().any(|r| r.prefix == '#' && !r.writable && (r.first..=r.last).contains(&n));
+        let ro = self
+            .spec
+            .variables
+            .iter()
+            .any(|r| r.prefix == '#' && !r.writable && (r.first..=r.last).contains(&n));
         if ro {
-            return Err(self.error_at(span, Code::UnsupportedHere, format!("parameter #{n} is read-only")));
+            return Err(self.error_at(
+                span,
+                Code::UnsupportedHere,
+                format!("parameter #{n} is read-only"),
+            ));
         }
         self.check_number(n, span)
     }
@@ -207,7 +262,9 @@ impl Interp<'_, '_> {
 
     /// `#<name>`, with LinuxCNC's predefined read-only ones.
     pub fn read_named(&self, name: &str) -> Option<f64> {
-        self.params.named(name).or_else(|| super::predefined::named(self, name))
+        self.params
+            .named(name)
+            .or_else(|| super::predefined::named(self, name))
     }
 
     /// A run-time error at a span: the run stops here.

@@ -34,11 +34,36 @@ pub fn phase(kind: &StmtKind) -> u8 {
         Stop(_) => 21,
         // Program content and control flow: the program walker runs these.
         Tape | ProgramStart { .. } | Raw { .. } | Word(_) | Command { .. } => 0,
-        Assign { .. } | Declare { .. } | Goto { .. } | IfThen { .. } | If { .. } | ElseIf { .. } | Else { .. }
-        | EndIf { .. } | While { .. } | EndWhile { .. } | Do { .. } | DoWhile { .. } | Repeat { .. }
-        | EndRepeat { .. } | For { .. } | EndFor | Loop | EndLoop | RepeatUntil | Until { .. } | Case { .. }
-        | SectionRepeat { .. } | Break { .. } | Continue { .. } | SubStart { .. } | SubEnd { .. }
-        | Return { .. } | Call { .. } | SubReturn { .. } | ModalMacroCancel => 0,
+        Assign { .. }
+        | Declare { .. }
+        | Goto { .. }
+        | IfThen { .. }
+        | If { .. }
+        | ElseIf { .. }
+        | Else { .. }
+        | EndIf { .. }
+        | While { .. }
+        | EndWhile { .. }
+        | Do { .. }
+        | DoWhile { .. }
+        | Repeat { .. }
+        | EndRepeat { .. }
+        | For { .. }
+        | EndFor
+        | Loop
+        | EndLoop
+        | RepeatUntil
+        | Until { .. }
+        | Case { .. }
+        | SectionRepeat { .. }
+        | Break { .. }
+        | Continue { .. }
+        | SubStart { .. }
+        | SubEnd { .. }
+        | Return { .. }
+        | Call { .. }
+        | SubReturn { .. }
+        | ModalMacroCancel => 0,
     }
 }
 
@@ -64,11 +89,18 @@ pub fn exec_block(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -
 
 /// Are the statements already in phase order?
 fn in_phase_order(stmts: &[Stmt]) -> bool {
-    stmts.windows(2).all(|w| phase(&w[0].kind) <= phase(&w[1].kind))
+    stmts
+        .windows(2)
+        .all(|w| phase(&w[0].kind) <= phase(&w[1].kind))
 }
 
 /// Runs, in written order, the statements whose phase `keep` accepts.
-fn run_phase(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>, keep: impl Fn(u8) -> bool) -> Result<(), Stop> {
+fn run_phase(
+    it: &mut Interp<'_, '_>,
+    block: &Block,
+    exprs: &Arena<Expr>,
+    keep: impl Fn(u8) -> bool,
+) -> Result<(), Stop> {
     for s in &block.stmts {
         if keep(phase(&s.kind)) {
             it.span = s.span;
@@ -78,18 +110,42 @@ fn run_phase(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>, keep: 
     Ok(())
 }
 
-fn exec_stmt(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn exec_stmt(
+    it: &mut Interp<'_, '_>,
+    s: &Stmt,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     use StmtKind::*;
     match &s.kind {
-        Comment { .. } | Message(_) | FeedMode(_) | Feed(_) | SpindleSpeed(_) | SpindleCss { .. } | Spindle(_)
-        | Coolant(_) | Aux { .. } | DynamicCode { .. } | Dwell { .. } | Plane(_) | Units { .. } | PathMode { .. }
-        | Distance(_) | ArcDistance(_) | ReturnToInitial(_) | Stop(_) => modes::exec(it, s, block, exprs),
-        ToolSelect(_) | ToolChange | RadiusComp { .. } | LengthComp { .. } | OffsetRegister { .. } => {
-            tools::exec(it, s, block, exprs)
-        }
-        WorkOffset { .. } | MachineCoords | CoordShift { .. } | SetData { .. } | RefReturn { .. } => {
-            offsets::exec(it, s, block, exprs)
-        }
+        Comment { .. }
+        | Message(_)
+        | FeedMode(_)
+        | Feed(_)
+        | SpindleSpeed(_)
+        | SpindleCss { .. }
+        | Spindle(_)
+        | Coolant(_)
+        | Aux { .. }
+        | DynamicCode { .. }
+        | Dwell { .. }
+        | Plane(_)
+        | Units { .. }
+        | PathMode { .. }
+        | Distance(_)
+        | ArcDistance(_)
+        | ReturnToInitial(_)
+        | Stop(_) => modes::exec(it, s, block, exprs),
+        ToolSelect(_)
+        | ToolChange
+        | RadiusComp { .. }
+        | LengthComp { .. }
+        | OffsetRegister { .. } => tools::exec(it, s, block, exprs),
+        WorkOffset { .. }
+        | MachineCoords
+        | CoordShift { .. }
+        | SetData { .. }
+        | RefReturn { .. } => offsets::exec(it, s, block, exprs),
         Transform(t) => match **t {
             crate::ir::Transform::Frame { .. } => siemens::exec(it, s, block, exprs),
             _ => offsets::exec(it, s, block, exprs),

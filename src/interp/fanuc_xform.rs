@@ -54,7 +54,11 @@ pub fn exec(it: &mut Interp<'_, '_>, t: &Transform, exprs: &Arena<Expr>) -> Resu
             x.rotate = about(c, ProgFrame::rot_about(axis, deg));
         }
         Transform::RotateOff => x.rotate = ProgFrame::identity(),
-        Transform::ScaleOn { center, factor, per_axis } => {
+        Transform::ScaleOn {
+            center,
+            factor,
+            per_axis,
+        } => {
             let c = centre(it, center, exprs)?;
             let p = opt(it, factor.as_ref(), exprs)?;
             let mut f = [p.unwrap_or(1.0); 3];
@@ -81,7 +85,9 @@ pub fn exec(it: &mut Interp<'_, '_>, t: &Transform, exprs: &Arena<Expr>) -> Resu
 
 /// `g` acting about the point `c`: `T(c) · g · T(-c)`.
 fn about(c: [f64; 3], g: ProgFrame) -> ProgFrame {
-    ProgFrame::trans(c).then(&g).then(&ProgFrame::trans(c.map(|v| -v)))
+    ProgFrame::trans(c)
+        .then(&g)
+        .then(&ProgFrame::trans(c.map(|v| -v)))
 }
 
 /// The centre written (mm), the current work position for words left out.
@@ -90,13 +96,21 @@ fn centre(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Result<[
     for (i, l) in ['X', 'Y', 'Z'].iter().enumerate() {
         if let Some(coord) = axes.get(*l) {
             let v = it.value(&coord.value, exprs)?;
-            c[i] = if State::is_linear(i) { it.state.to_mm(v) } else { v };
+            c[i] = if State::is_linear(i) {
+                it.state.to_mm(v)
+            } else {
+                v
+            };
         }
     }
     Ok(c)
 }
 
-fn opt(it: &mut Interp<'_, '_>, v: Option<&Value>, exprs: &Arena<Expr>) -> Result<Option<f64>, Stop> {
+fn opt(
+    it: &mut Interp<'_, '_>,
+    v: Option<&Value>,
+    exprs: &Arena<Expr>,
+) -> Result<Option<f64>, Stop> {
     match v {
         Some(v) => Ok(Some(it.value(v, exprs)?)),
         None => Ok(None),
@@ -113,7 +127,10 @@ mod tests {
 
     /// The motion calls of a Fanuc program (mm).
     fn moves(body: &str) -> Vec<String> {
-        calls(body).into_iter().filter(|c| c.starts_with("STRAIGHT")).collect()
+        calls(body)
+            .into_iter()
+            .filter(|c| c.starts_with("STRAIGHT"))
+            .collect()
     }
 
     /// Every call of a Fanuc program.
@@ -121,10 +138,19 @@ mod tests {
         let spec = builtin("fanuc").expect("fanuc");
         let text = format!("%\nO1000\nG21 G17 G90 G54\n{body}M30\n%\n");
         let (program, diags) = crate::driver::read_program(&text, FileId(0), &spec);
-        assert!(!diags.iter().any(|d| d.is_error()), "read errors: {diags:?}");
+        assert!(
+            !diags.iter().any(|d| d.is_error()),
+            "read errors: {diags:?}"
+        );
         let mut calls = Vec::new();
         let mut sink = |c: Canon, _| calls.push(format_call(&c));
-        let d = run(std::rc::Rc::new(program), &spec, &Options::default(), &mut NoLoader, &mut sink);
+        let d = run(
+            std::rc::Rc::new(program),
+            &spec,
+            &Options::default(),
+            &mut NoLoader,
+            &mut sink,
+        );
         assert!(!d.iter().any(|d| d.is_error()), "run errors: {d:?}");
         calls
     }
@@ -137,21 +163,44 @@ mod tests {
     fn g68_rotates_about_its_centre() {
         // (10,0) turned 90° about (5,0): (5,5); then (10,5) about the same: (0,5).
         let m = moves("G0 X0 Y0\nG68 X5. Y0 R90.\nG1 X10. Y0 F100.\nX10. Y5.\nG69\nX1. Y1.\n");
-        assert_eq!(m[1..], [feed("5.0000", "5.0000"), feed("0.0000", "5.0000"), feed("1.0000", "1.0000")]);
+        assert_eq!(
+            m[1..],
+            [
+                feed("5.0000", "5.0000"),
+                feed("0.0000", "5.0000"),
+                feed("1.0000", "1.0000")
+            ]
+        );
     }
 
     #[test]
     fn g51_scales_and_g51_1_mirrors() {
         // Scale 2 about (1,1): (3,2) -> (5,3). Mirror X about X2: (3,2) -> (1,2).
         let m = moves("G0 X0 Y0\nG51 X1. Y1. P2.\nG1 X3. Y2. F100.\nG50\nG51.1 X2.\nX3. Y2.\nG50.1\nX3. Y2.\n");
-        assert_eq!(m[1..], [feed("5.0000", "3.0000"), feed("1.0000", "2.0000"), feed("3.0000", "2.0000")]);
+        assert_eq!(
+            m[1..],
+            [
+                feed("5.0000", "3.0000"),
+                feed("1.0000", "2.0000"),
+                feed("3.0000", "2.0000")
+            ]
+        );
     }
 
     #[test]
     fn g54_1_reads_fanuc_7001_parameters() {
         // P2: X at #7021, Y at #7022.
         let c = calls("#7021 = 10.\n#7022 = 20.\nG54.1 P2\nG1 X1. Y1. F100.\n");
-        assert!(c.contains(&"SET_G5X_OFFSET(102, 10.0000, 20.0000, 0.0000, 0.0000, 0.0000, 0.0000)".to_string()), "{c:?}");
-        assert_eq!(moves("#7021 = 10.\n#7022 = 20.\nG54.1 P2\nG1 X1. Y1. F100.\n"), [feed("1.0000", "1.0000")]);
+        assert!(
+            c.contains(
+                &"SET_G5X_OFFSET(102, 10.0000, 20.0000, 0.0000, 0.0000, 0.0000, 0.0000)"
+                    .to_string()
+            ),
+            "{c:?}"
+        );
+        assert_eq!(
+            moves("#7021 = 10.\n#7022 = 20.\nG54.1 P2\nG1 X1. Y1. F100.\n"),
+            [feed("1.0000", "1.0000")]
+        );
     }
 }

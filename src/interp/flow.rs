@@ -6,7 +6,8 @@ use super::index::FlowIndex;
 use super::{Interp, Stop};
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{
-    Arena, CallArgs, CallKind, CallTarget, Expr, ExprId, JumpDir, JumpTarget, Program, Stmt, StmtKind, Value, Var,
+    Arena, CallArgs, CallKind, CallTarget, Expr, ExprId, JumpDir, JumpTarget, Program, Stmt,
+    StmtKind, Value, Var,
 };
 use std::collections::HashMap;
 
@@ -71,7 +72,11 @@ enum Next {
     Jump(usize),
     /// Enter a branch (If/ElseIf/Else/EndIf) by a jump.
     Enter(usize),
-    Call { prog: usize, at: usize, frame: Frame },
+    Call {
+        prog: usize,
+        at: usize,
+        frame: Frame,
+    },
     Return,
     End,
 }
@@ -80,7 +85,10 @@ impl<'l> Walker<'l> {
     pub fn new(main: std::rc::Rc<Program>, loader: &'l mut dyn ProgramLoader) -> Self {
         let index = std::rc::Rc::new(FlowIndex::build(&main));
         Walker {
-            progs: vec![Loaded { program: main, index }],
+            progs: vec![Loaded {
+                program: main,
+                index,
+            }],
             loader,
             frames: Vec::new(),
             loop_counts: HashMap::new(),
@@ -174,7 +182,8 @@ impl<'l> Walker<'l> {
         self.blocks_run += 1;
         if self.blocks_run > it.opts.limits.blocks {
             return Err(Stop::Error(
-                Diagnostic::new(Code::LimitExceeded, "more blocks run than the limit").primary(span, "here"),
+                Diagnostic::new(Code::LimitExceeded, "more blocks run than the limit")
+                    .primary(span, "here"),
             ));
         }
         Ok(())
@@ -182,8 +191,12 @@ impl<'l> Walker<'l> {
 
     /// A repeated call that has passes left: its start again.
     fn repeat_again(&mut self, it: &Interp<'_, '_>) -> Result<Option<(usize, usize)>, Stop> {
-        let Some(f) = self.frames.last_mut() else { return Ok(None) };
-        let Some((at, left)) = f.repeat else { return Ok(None) };
+        let Some(f) = self.frames.last_mut() else {
+            return Ok(None);
+        };
+        let Some((at, left)) = f.repeat else {
+            return Ok(None);
+        };
         if left <= 1 {
             return Ok(None);
         }
@@ -205,12 +218,22 @@ impl<'l> Walker<'l> {
 
     /// Runs one block: machine statements first (in Table 8 order), then
     /// assignments, then control flow.
-    fn block(&mut self, it: &mut Interp<'_, '_>, prog: usize, pc: usize, entered: bool) -> Result<Next, Stop> {
+    fn block(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        prog: usize,
+        pc: usize,
+        entered: bool,
+    ) -> Result<Next, Stop> {
         let program = self.progs[prog].program.clone();
         let block = &program.blocks[pc];
         let exprs = &program.exprs;
         // A sub definition met in sequence is skipped, not run.
-        if let Some(s) = block.stmts.iter().find(|s| matches!(s.kind, StmtKind::SubStart { .. })) {
+        if let Some(s) = block
+            .stmts
+            .iter()
+            .find(|s| matches!(s.kind, StmtKind::SubStart { .. }))
+        {
             it.span = s.span;
             return Ok(match self.progs[prog].index.partner.get(&pc) {
                 Some(&end) => Next::Jump(end + 1),
@@ -233,9 +256,20 @@ impl<'l> Walker<'l> {
 
     /// The `G66` hook: after a block that moves (and not inside the modal
     /// macro itself), the modal macro is called with its arguments.
-    fn modal_call(&mut self, it: &mut Interp<'_, '_>, prog: usize, pc: usize, block: &crate::ir::Block) -> Result<Next, Stop> {
-        let Some((target, values)) = self.modal.clone() else { return Ok(Next::Step) };
-        let moves = block.stmts.iter().any(|s| matches!(s.kind, StmtKind::Motion(_)));
+    fn modal_call(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        prog: usize,
+        pc: usize,
+        block: &crate::ir::Block,
+    ) -> Result<Next, Stop> {
+        let Some((target, values)) = self.modal.clone() else {
+            return Ok(Next::Step);
+        };
+        let moves = block
+            .stmts
+            .iter()
+            .any(|s| matches!(s.kind, StmtKind::Motion(_)));
         if !moves || self.frames.iter().any(|f| f.modal) {
             return Ok(Next::Step);
         }
@@ -247,7 +281,12 @@ impl<'l> Walker<'l> {
     }
 
     /// Evaluates every assignment's value first, then sets them all.
-    fn assignments(&mut self, it: &mut Interp<'_, '_>, stmts: &[Stmt], exprs: &Arena<Expr>) -> Result<(), Stop> {
+    fn assignments(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        stmts: &[Stmt],
+        exprs: &Arena<Expr>,
+    ) -> Result<(), Stop> {
         let mut sets = Vec::new();
         for s in stmts {
             if let StmtKind::Assign { var, value } = &s.kind {
@@ -264,9 +303,18 @@ impl<'l> Walker<'l> {
 
     /// A section repeat that reached the end of its section: the section
     /// again, or back after the `REPEAT` when no passes are left.
-    fn section_end(&mut self, it: &mut Interp<'_, '_>, prog: usize, pc: usize) -> Result<Option<(usize, usize)>, Stop> {
-        let Some(f) = self.frames.last_mut() else { return Ok(None) };
-        let Some((start, end, left)) = f.section else { return Ok(None) };
+    fn section_end(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        prog: usize,
+        pc: usize,
+    ) -> Result<Option<(usize, usize)>, Stop> {
+        let Some(f) = self.frames.last_mut() else {
+            return Ok(None);
+        };
+        let Some((start, end, left)) = f.section else {
+            return Ok(None);
+        };
         if f.prog != prog || pc != end + 1 {
             return Ok(None);
         }
@@ -281,18 +329,43 @@ impl<'l> Walker<'l> {
     /// Siemens `REPEAT start [end] P=n` / `REPEATB label P=n`: runs the
     /// section n times, then goes on after the `REPEAT`. Without an end
     /// label the section ends just before the `REPEAT`.
-    fn section_repeat(&mut self, it: &mut Interp<'_, '_>, prog: usize, pc: usize, s: &Stmt, exprs: &Arena<Expr>) -> Result<Next, Stop> {
-        let StmtKind::SectionRepeat { start, end, count, single } = &s.kind else { return Ok(Next::Step) };
+    fn section_repeat(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        prog: usize,
+        pc: usize,
+        s: &Stmt,
+        exprs: &Arena<Expr>,
+    ) -> Result<Next, Stop> {
+        let StmtKind::SectionRepeat {
+            start,
+            end,
+            count,
+            single,
+        } = &s.kind
+        else {
+            return Ok(Next::Step);
+        };
         let ix = self.progs[prog].index.clone();
         let find = |l: &str| ix.labels.get(&l.to_ascii_uppercase()).copied();
         let Some(first) = find(start) else {
-            return Err(it.error_at(s.span, Code::JumpTargetMissing, format!("REPEAT: label {start} not found")));
+            return Err(it.error_at(
+                s.span,
+                Code::JumpTargetMissing,
+                format!("REPEAT: label {start} not found"),
+            ));
         };
         let last = match (end, single) {
             (_, true) => first,
             (Some(e), false) => match find(e) {
                 Some(i) => i,
-                None => return Err(it.error_at(s.span, Code::JumpTargetMissing, format!("REPEAT: label {e} not found"))),
+                None => {
+                    return Err(it.error_at(
+                        s.span,
+                        Code::JumpTargetMissing,
+                        format!("REPEAT: label {e} not found"),
+                    ))
+                }
             },
             (None, false) => pc.saturating_sub(1),
         };
@@ -303,8 +376,21 @@ impl<'l> Walker<'l> {
         if n == 0 || last < first || (first <= pc && pc <= last) {
             return Ok(Next::Step);
         }
-        let frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: Some((first, last, n)), repeat: None, modal: false, call_span: s.span };
-        Ok(Next::Call { prog, at: first, frame })
+        let frame = Frame {
+            prog,
+            ret: pc + 1,
+            saved: Vec::new(),
+            new_scope: false,
+            section: Some((first, last, n)),
+            repeat: None,
+            modal: false,
+            call_span: s.span,
+        };
+        Ok(Next::Call {
+            prog,
+            at: first,
+            frame,
+        })
     }
 
     fn control(
@@ -334,7 +420,10 @@ impl<'l> Walker<'l> {
                         let v = it.eval(*value, exprs)?;
                         assign(it, var, v, exprs)?;
                     } else {
-                        return Ok(Some(self.control(it, prog, pc, then, exprs, false)?.unwrap_or(Next::Step)));
+                        return Ok(Some(
+                            self.control(it, prog, pc, then, exprs, false)?
+                                .unwrap_or(Next::Step),
+                        ));
                     }
                 }
                 None
@@ -399,8 +488,15 @@ impl<'l> Walker<'l> {
                 }
             }
             EndRepeat { .. } => {
-                let Some(&o) = ix.partner.get(&pc) else { return Ok(None) };
-                let left = self.repeat_left.get(&(prog, o)).copied().unwrap_or(1).saturating_sub(1);
+                let Some(&o) = ix.partner.get(&pc) else {
+                    return Ok(None);
+                };
+                let left = self
+                    .repeat_left
+                    .get(&(prog, o))
+                    .copied()
+                    .unwrap_or(1)
+                    .saturating_sub(1);
                 self.repeat_left.insert((prog, o), left);
                 if left > 0 {
                     self.count_loop(it, prog, o)?;
@@ -421,10 +517,15 @@ impl<'l> Walker<'l> {
                 }
             }
             EndFor => {
-                let Some(&o) = ix.partner.get(&pc) else { return Ok(None) };
+                let Some(&o) = ix.partner.get(&pc) else {
+                    return Ok(None);
+                };
                 let p = self.progs[prog].program.clone();
-                let Some(StmtKind::For { var, to, .. }) =
-                    p.blocks[o].stmts.iter().map(|s| &s.kind).find(|k| matches!(k, StmtKind::For { .. }))
+                let Some(StmtKind::For { var, to, .. }) = p.blocks[o]
+                    .stmts
+                    .iter()
+                    .map(|s| &s.kind)
+                    .find(|k| matches!(k, StmtKind::For { .. }))
                 else {
                     return Ok(None);
                 };
@@ -446,8 +547,16 @@ impl<'l> Walker<'l> {
                 }
                 e.map(|e| Next::Jump(e + 1))
             }
-            Continue { .. } => ix.loop_of.get(&pc).and_then(|o| ix.partner.get(o)).map(|&e| Next::Jump(e)),
-            Case { selector, arms, default } => {
+            Continue { .. } => ix
+                .loop_of
+                .get(&pc)
+                .and_then(|o| ix.partner.get(o))
+                .map(|&e| Next::Jump(e)),
+            Case {
+                selector,
+                arms,
+                default,
+            } => {
                 let v = it.eval(*selector, exprs)?.unwrap_or(0.0);
                 let mut chosen = None;
                 for arm in arms {
@@ -457,7 +566,9 @@ impl<'l> Walker<'l> {
                     }
                 }
                 match chosen.or_else(|| default.clone()) {
-                    Some((label, dir)) => Some(self.jump(it, prog, pc, &JumpTarget::Label(label), dir, exprs)?),
+                    Some((label, dir)) => {
+                        Some(self.jump(it, prog, pc, &JumpTarget::Label(label), dir, exprs)?)
+                    }
                     None => None,
                 }
             }
@@ -468,7 +579,8 @@ impl<'l> Walker<'l> {
                     None => 0.0,
                 };
                 it.params.set_named("_value", v);
-                it.params.set_named("_value_returned", value.is_some() as i64 as f64);
+                it.params
+                    .set_named("_value_returned", value.is_some() as i64 as f64);
                 Some(Next::Return)
             }
             ModalMacroCancel => {
@@ -486,7 +598,12 @@ impl<'l> Walker<'l> {
                 None
             }
             SubReturn { to } => Some(self.sub_return(it, to.as_ref(), exprs)?),
-            Call { kind, target, args, repeat } => Some(self.call(it, prog, pc, *kind, target, args, repeat.as_ref(), exprs)?),
+            Call {
+                kind,
+                target,
+                args,
+                repeat,
+            } => Some(self.call(it, prog, pc, *kind, target, args, repeat.as_ref(), exprs)?),
             SectionRepeat { .. } => Some(self.section_repeat(it, prog, pc, s, exprs)?),
             Tape => {
                 if pc == first_content_block(&self.progs[prog].program) && prog == 0 {
@@ -512,7 +629,11 @@ impl<'l> Walker<'l> {
         let c = self.loop_counts.entry((prog, at)).or_insert(0);
         *c += 1;
         if *c > it.opts.limits.loop_iterations {
-            return Err(limit(it, "a loop ran more times than the limit", "the program probably loops forever; raise --max-loop if it is right"));
+            return Err(limit(
+                it,
+                "a loop ran more times than the limit",
+                "the program probably loops forever; raise --max-loop if it is right",
+            ));
         }
         Ok(())
     }
@@ -554,7 +675,12 @@ impl<'l> Walker<'l> {
         }
     }
 
-    fn sub_return(&mut self, it: &mut Interp<'_, '_>, to: Option<&Value>, exprs: &Arena<Expr>) -> Result<Next, Stop> {
+    fn sub_return(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        to: Option<&Value>,
+        exprs: &Arena<Expr>,
+    ) -> Result<Next, Stop> {
         if self.frames.is_empty() {
             // M99 in a main program: start again from the top (bounded).
             self.count_loop(it, 0, 0)?;
@@ -569,11 +695,19 @@ impl<'l> Walker<'l> {
                     (f.prog, f.ret)
                 };
                 let (p, _) = self.pop_frame(it);
-                let at = self.progs[p].index.seq.get(&n).and_then(|l| l.first().copied());
+                let at = self.progs[p]
+                    .index
+                    .seq
+                    .get(&n)
+                    .and_then(|l| l.first().copied());
                 let _ = prog;
                 match at {
                     Some(i) => Ok(Next::Jump(i)),
-                    None => Err(it.error_at(it.span, Code::JumpTargetMissing, format!("M99 P{n}: no block N{n}"))),
+                    None => Err(it.error_at(
+                        it.span,
+                        Code::JumpTargetMissing,
+                        format!("M99 P{n}: no block N{n}"),
+                    )),
                 }
             }
         }
@@ -599,7 +733,9 @@ impl<'l> Walker<'l> {
             return Ok(Next::Step);
         }
         let target = match target {
-            CallTarget::Computed(e) => CallTarget::Number(it.eval(*e, exprs)?.unwrap_or(0.0).round() as u32),
+            CallTarget::Computed(e) => {
+                CallTarget::Number(it.eval(*e, exprs)?.unwrap_or(0.0).round() as u32)
+            }
             t => t.clone(),
         };
         let values = self.arg_values(it, args, exprs)?;
@@ -630,14 +766,29 @@ impl<'l> Walker<'l> {
                 return Err(it.error_at(
                     it.span,
                     Code::JumpTargetMissing,
-                    format!("subprogram {} not found in this file or beside it", target_name(&target)),
+                    format!(
+                        "subprogram {} not found in this file or beside it",
+                        target_name(&target)
+                    ),
                 ))
             }
         };
         let repeat = (passes > 1).then_some(((to_prog, at), passes));
         let call_span = it.span;
-        let mut frame = Frame { prog, ret: pc + 1, saved: Vec::new(), new_scope: false, section: None, repeat, modal: false, call_span };
-        if matches!(kind, CallKind::OWord | CallKind::Macro | CallKind::ModalMacro | CallKind::Named) {
+        let mut frame = Frame {
+            prog,
+            ret: pc + 1,
+            saved: Vec::new(),
+            new_scope: false,
+            section: None,
+            repeat,
+            modal: false,
+            call_span,
+        };
+        if matches!(
+            kind,
+            CallKind::OWord | CallKind::Macro | CallKind::ModalMacro | CallKind::Named
+        ) {
             frame.new_scope = true;
             for n in local_numbers(it.spec) {
                 frame.saved.push((n, it.params.numbered(n)));
@@ -652,17 +803,29 @@ impl<'l> Walker<'l> {
             } else {
                 // Siemens `PROC NAME(REAL A, ...)`: arguments by position.
                 for (i, name) in declared.iter().enumerate() {
-                    let v = values.iter().find(|(n, _)| *n == i as u32 + 1).and_then(|(_, v)| *v);
+                    let v = values
+                        .iter()
+                        .find(|(n, _)| *n == i as u32 + 1)
+                        .and_then(|(_, v)| *v);
                     it.params.declare_user(name, v.unwrap_or(0.0));
                 }
             }
         }
-        Ok(Next::Call { prog: to_prog, at, frame })
+        Ok(Next::Call {
+            prog: to_prog,
+            at,
+            frame,
+        })
     }
 
     /// The values a call passes: o-word `[a] [b]` → #1, #2; G65 letters by
     /// Fanuc's argument specification I.
-    fn arg_values(&mut self, it: &mut Interp<'_, '_>, args: &CallArgs, exprs: &Arena<Expr>) -> Result<Vec<(u32, Option<f64>)>, Stop> {
+    fn arg_values(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        args: &CallArgs,
+        exprs: &Arena<Expr>,
+    ) -> Result<Vec<(u32, Option<f64>)>, Stop> {
         let mut out = Vec::new();
         match args {
             CallArgs::None => {}
@@ -689,11 +852,18 @@ impl<'l> Walker<'l> {
     /// The program and the first block a call runs.
     /// The parameter names a subprogram declares (`PROC NAME(REAL A)`).
     fn declared_params(&self, prog: usize, at: usize) -> Vec<String> {
-        let Some(b) = at.checked_sub(1).and_then(|i| self.progs[prog].program.blocks.get(i)) else { return Vec::new() };
+        let Some(b) = at
+            .checked_sub(1)
+            .and_then(|i| self.progs[prog].program.blocks.get(i))
+        else {
+            return Vec::new();
+        };
         b.stmts
             .iter()
             .find_map(|s| match &s.kind {
-                StmtKind::SubStart { params, .. } => Some(params.iter().map(|p| p.name.clone()).collect()),
+                StmtKind::SubStart { params, .. } => {
+                    Some(params.iter().map(|p| p.name.clone()).collect())
+                }
                 _ => None,
             })
             .unwrap_or_default()
@@ -702,8 +872,15 @@ impl<'l> Walker<'l> {
     fn find(&mut self, prog: usize, target: &CallTarget, kind: CallKind) -> Option<(usize, usize)> {
         if kind == CallKind::Local {
             // Haas M97 P: a sequence number in this program.
-            let CallTarget::Number(n) = target else { return None };
-            return self.progs[prog].index.seq.get(n).and_then(|l| l.first()).map(|&i| (prog, i));
+            let CallTarget::Number(n) = target else {
+                return None;
+            };
+            return self.progs[prog]
+                .index
+                .seq
+                .get(n)
+                .and_then(|l| l.first())
+                .map(|&i| (prog, i));
         }
         for p in std::iter::once(prog).chain(0..self.progs.len()) {
             if let Some(i) = self.progs[p].index.call_target(target) {
@@ -729,7 +906,11 @@ fn target_name(t: &CallTarget) -> String {
 }
 
 fn limit(it: &Interp<'_, '_>, msg: &str, help: &str) -> Stop {
-    Stop::Error(Diagnostic::new(Code::LimitExceeded, msg).primary(it.span, "here").help(help.to_string()))
+    Stop::Error(
+        Diagnostic::new(Code::LimitExceeded, msg)
+            .primary(it.span, "here")
+            .help(help.to_string()),
+    )
 }
 
 fn truth(v: Option<f64>) -> bool {
@@ -762,7 +943,10 @@ fn pick(list: &[usize], pc: usize, dir: JumpDir) -> Option<usize> {
 }
 
 fn first_content_block(p: &Program) -> usize {
-    p.blocks.iter().position(|b| !b.stmts.is_empty()).unwrap_or(0)
+    p.blocks
+        .iter()
+        .position(|b| !b.stmts.is_empty())
+        .unwrap_or(0)
 }
 
 /// Fanuc G65 argument specification I: letter → local variable number.
@@ -794,14 +978,22 @@ pub fn fanuc_argument(letter: char) -> Option<u32> {
 }
 
 fn read_var(it: &mut Interp<'_, '_>, var: &Var, exprs: &Arena<Expr>) -> Result<f64, Stop> {
-    let id_free = Expr { kind: crate::ir::ExprKind::Var(var.clone()), span: it.span };
+    let id_free = Expr {
+        kind: crate::ir::ExprKind::Var(var.clone()),
+        span: it.span,
+    };
     let mut tmp = exprs.clone();
     let id: ExprId = tmp.alloc(id_free);
     Ok(it.eval(id, &tmp)?.unwrap_or(0.0))
 }
 
 /// Sets a variable.
-pub fn assign(it: &mut Interp<'_, '_>, var: &Var, v: Option<f64>, exprs: &Arena<Expr>) -> Result<(), Stop> {
+pub fn assign(
+    it: &mut Interp<'_, '_>,
+    var: &Var,
+    v: Option<f64>,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     match var {
         Var::Numbered(n) => {
             it.check_writable(*n, it.span)?;
@@ -820,7 +1012,11 @@ pub fn assign(it: &mut Interp<'_, '_>, var: &Var, v: Option<f64>, exprs: &Arena<
         }
         Var::User(name, _) => it.params.set_user(name, v.unwrap_or(0.0)),
         Var::System(name, _) => {
-            return Err(it.error_at(it.span, Code::UnsupportedHere, format!("writing system variable {name} is not simulated")))
+            return Err(it.error_at(
+                it.span,
+                Code::UnsupportedHere,
+                format!("writing system variable {name} is not simulated"),
+            ))
         }
     }
     Ok(())

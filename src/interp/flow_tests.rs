@@ -7,16 +7,25 @@ use crate::interp::Options;
 use crate::span::FileId;
 
 /// Runs `text` in `dialect`; returns the parameters and the stop.
-fn run_with(dialect: &str, text: &str, opts: &Options) -> (crate::interp::params::Params, Option<Diagnostic>) {
+fn run_with(
+    dialect: &str,
+    text: &str,
+    opts: &Options,
+) -> (crate::interp::params::Params, Option<Diagnostic>) {
     let spec = builtin(dialect).expect("dialect");
     let (program, diags) = crate::driver::read_program(text, FileId(0), &spec);
-    assert!(!diags.iter().any(|d| d.is_error()), "read errors: {diags:?}");
+    assert!(
+        !diags.iter().any(|d| d.is_error()),
+        "read errors: {diags:?}"
+    );
     let mut sink = |_: crate::canon::Canon, _: crate::span::Span| {};
     let mut it = Interp::new(&spec, opts, &mut sink);
     let r = Walker::new(std::rc::Rc::new(program), &mut NoLoader).run(&mut it);
     let err = match r {
         // M2/M30 while the core's statements are stubs: the end anyway.
-        Err(Stop::Error(d)) if d.code == crate::diag::Code::UnsupportedHere && at_end(text, &d) => None,
+        Err(Stop::Error(d)) if d.code == crate::diag::Code::UnsupportedHere && at_end(text, &d) => {
+            None
+        }
         Err(Stop::Error(d)) => Some(d),
         _ => None,
     };
@@ -24,7 +33,10 @@ fn run_with(dialect: &str, text: &str, opts: &Options) -> (crate::interp::params
 }
 
 fn at_end(text: &str, d: &Diagnostic) -> bool {
-    d.labels.first().and_then(|l| text.get(l.span.start as usize..l.span.end as usize)).is_some_and(|w| matches!(w, "M2" | "M30"))
+    d.labels
+        .first()
+        .and_then(|l| text.get(l.span.start as usize..l.span.end as usize))
+        .is_some_and(|w| matches!(w, "M2" | "M30"))
 }
 
 fn run(dialect: &str, text: &str) -> crate::interp::params::Params {
@@ -45,7 +57,11 @@ fn linuxcnc_while_if_and_assignment_timing() {
     );
     assert_eq!(g(&p, "_n"), 5.0);
     assert_eq!(g(&p, "_s"), 12.0);
-    assert_eq!(g(&p, "_t"), 1.0, "values on a line are read before any is set");
+    assert_eq!(
+        g(&p, "_t"),
+        1.0,
+        "values on a line are read before any is set"
+    );
 }
 
 #[test]
@@ -85,7 +101,11 @@ fn endless_loops_and_recursion_end_in_e0506() {
     opts.limits.loop_iterations = 1000;
     let (_, e) = run_with("linuxcnc", "o1 while [1]\no1 endwhile\n%\n", &opts);
     assert_eq!(e.expect("error").code, crate::diag::Code::LimitExceeded);
-    let (_, e) = run_with("linuxcnc", "o<r> sub\no<r> call\no<r> endsub\no<r> call\n%\n", &opts);
+    let (_, e) = run_with(
+        "linuxcnc",
+        "o<r> sub\no<r> call\no<r> endsub\no<r> call\n%\n",
+        &opts,
+    );
     assert_eq!(e.expect("error").code, crate::diag::Code::LimitExceeded);
     let (_, e) = run_with("fanuc", "O1000\nN1 #1 = 1\nGOTO 1\nM30\n", &opts);
     assert_eq!(e.expect("error").code, crate::diag::Code::LimitExceeded);
@@ -129,7 +149,11 @@ fn loop_limit_counts_per_run_of_a_loop() {
         &opts,
     );
     assert!(e.is_none(), "{e:?}");
-    assert_eq!(g(&p, "_t"), 400.0, "ten runs of a 40-pass loop stay under a limit of 50");
+    assert_eq!(
+        g(&p, "_t"),
+        400.0,
+        "ten runs of a 40-pass loop stay under a limit of 50"
+    );
 }
 
 #[test]

@@ -59,7 +59,9 @@ impl FlowIndex {
                 StmtKind::SubStart { name, .. } => {
                     self.subs.entry(name.to_ascii_lowercase()).or_insert(i);
                 }
-                StmtKind::ProgramStart { number: Some(n), .. } => {
+                StmtKind::ProgramStart {
+                    number: Some(n), ..
+                } => {
                     self.programs.entry(*n).or_insert(i);
                 }
                 _ => {}
@@ -112,7 +114,9 @@ impl FlowIndex {
         stack: &mut Vec<((Kind, FlowId), usize)>,
         last_branch: Option<&mut HashMap<usize, usize>>,
     ) {
-        let Some(pos) = stack.iter().rposition(|((k, f), _)| *k == kind && f == id) else { return };
+        let Some(pos) = stack.iter().rposition(|((k, f), _)| *k == kind && f == id) else {
+            return;
+        };
         let (_, o) = stack.remove(pos);
         self.partner.insert(o, i);
         self.partner.insert(i, o);
@@ -125,14 +129,21 @@ impl FlowIndex {
     /// The block a subprogram call goes to, if it is in this program.
     pub fn call_target(&self, t: &CallTarget) -> Option<usize> {
         match t {
-            CallTarget::Number(n) => self.programs.get(n).or_else(|| self.subs.get(&n.to_string())).copied(),
+            CallTarget::Number(n) => self
+                .programs
+                .get(n)
+                .or_else(|| self.subs.get(&n.to_string()))
+                .copied(),
             CallTarget::Name(s) => self.subs.get(&s.to_ascii_lowercase()).copied(),
             CallTarget::Computed(_) => None,
         }
     }
 }
 
-
 fn find_open(stack: &[((Kind, FlowId), usize)], kind: Kind, id: &FlowId) -> Option<usize> {
-    stack.iter().rev().find(|((k, f), _)| *k == kind && f == id).map(|(_, i)| *i)
+    stack
+        .iter()
+        .rev()
+        .find(|((k, f), _)| *k == kind && f == id)
+        .map(|(_, i)| *i)
 }

@@ -13,9 +13,14 @@ use crate::span::Span;
 
 /// The calls every run starts with (LinuxCNC's `interp_init`).
 pub fn init_sequence(it: &mut Interp<'_, '_>) {
-    it.state.retract_initial = !it.spec.has(crate::dialect::Capability::CycleRetractRPlaneAtStart);
+    it.state.retract_initial = !it
+        .spec
+        .has(crate::dialect::Capability::CycleRetractRPlaneAtStart);
     it.emit(Canon::UseLengthUnits(CanonUnits::Mm));
-    it.emit(Canon::SetG5xOffset { index: 1, offset: [0.0; 6] });
+    it.emit(Canon::SetG5xOffset {
+        index: 1,
+        offset: [0.0; 6],
+    });
     it.emit(Canon::SetG92Offset([0.0; 6]));
     it.emit(Canon::SetXyRotation(0.0));
     it.emit(Canon::SetFeedReference);
@@ -111,7 +116,9 @@ impl MotionHost for Interp<'_, '_> {
         match self.state.path {
             PathControl::ExactStop => (MotionMode::ExactStop, 0.0),
             PathControl::ExactPath => (MotionMode::ExactPath, 0.0),
-            PathControl::Continuous { tolerance, naive } => (MotionMode::Continuous(tolerance), naive),
+            PathControl::Continuous { tolerance, naive } => {
+                (MotionMode::Continuous(tolerance), naive)
+            }
         }
     }
 
@@ -128,7 +135,11 @@ impl Interp<'_, '_> {
     /// Sets the current position from a pose in program units.
     pub fn set_position(&mut self, p: &Pose) {
         for (i, v) in p.iter().enumerate() {
-            self.state.pos[i] = if State::is_linear(i) { self.state.to_mm(*v) } else { *v };
+            self.state.pos[i] = if State::is_linear(i) {
+                self.state.to_mm(*v)
+            } else {
+                *v
+            };
         }
         self.state.canon_pos = self.state.pos;
     }
@@ -168,7 +179,11 @@ impl Interp<'_, '_> {
     /// A straight move to `to` (program frame, program units).
     pub fn straight_move(&mut self, kind: MoveKind, to: Pose) -> Result<(), Stop> {
         // Only compensation looks at where the move starts.
-        let from = if self.comp.is_on() { MotionHost::position(self) } else { to };
+        let from = if self.comp.is_on() {
+            MotionHost::position(self)
+        } else {
+            to
+        };
         self.set_position(&to);
         let span = self.span;
         let sink = &mut self.sink;
@@ -194,7 +209,9 @@ impl Interp<'_, '_> {
         let span = self.span;
         let sink = &mut self.sink;
         if self.state.plane == CanonPlane::XY {
-            let r = self.comp.arc(from, to, center, rotation, &mut |c| sink(c, span));
+            let r = self
+                .comp
+                .arc(from, to, center, rotation, &mut |c| sink(c, span));
             self.note_compensated();
             return r.map_err(|e| self.comp_error(e));
         }
@@ -217,7 +234,11 @@ impl Interp<'_, '_> {
 
     /// Tags the calls that follow for compensation errors with this block.
     pub fn comp_block(&mut self, span: Span) {
-        let tag = self.comp_tags.back().map(|(t, s)| if *s == span { *t } else { t + 1 }).unwrap_or(1);
+        let tag = self
+            .comp_tags
+            .back()
+            .map(|(t, s)| if *s == span { *t } else { t + 1 })
+            .unwrap_or(1);
         if self.comp_tags.back().map(|(t, _)| *t) != Some(tag) {
             self.comp_tags.push_back((tag, span));
             if self.comp_tags.len() > 16 {
@@ -229,9 +250,16 @@ impl Interp<'_, '_> {
 
     /// A compensation error as the diagnostic that stops the run.
     pub fn comp_error(&self, e: CompError) -> Stop {
-        let span_of = |t: u64| self.comp_tags.iter().find(|(x, _)| *x == t).map(|(_, s)| *s);
+        let span_of = |t: u64| {
+            self.comp_tags
+                .iter()
+                .find(|(x, _)| *x == t)
+                .map(|(_, s)| *s)
+        };
         let span = span_of(e.block).unwrap_or(self.span);
-        let mut d = Diagnostic::new(e.kind.code(), e.kind.message()).primary(span, "found at this block").help(e.kind.hint());
+        let mut d = Diagnostic::new(e.kind.code(), e.kind.message())
+            .primary(span, "found at this block")
+            .help(e.kind.hint());
         if let Some(h) = e.held.and_then(span_of) {
             if h != span {
                 d = d.secondary(h, "the move held back from here");
@@ -260,7 +288,9 @@ impl Interp<'_, '_> {
 /// M2 / M30: the end sequence rs274 prints, resetting what it resets.
 pub fn program_end(it: &mut Interp<'_, '_>, rewind: bool) -> Result<(), Stop> {
     if it.comp.is_on() {
-        it.out(Canon::Comment("interpreter: cutter radius compensation off".into()));
+        it.out(Canon::Comment(
+            "interpreter: cutter radius compensation off".into(),
+        ));
         let span = it.span;
         let sink = &mut it.sink;
         let r = it.comp.stop(&mut |c| sink(c, span));
@@ -274,7 +304,10 @@ pub fn program_end(it: &mut Interp<'_, '_>, rewind: bool) -> Result<(), Stop> {
     let old = it.state.origin();
     it.state.g5x_index = 1;
     it.state.reframe(old);
-    it.emit(Canon::SetG5xOffset { index: 1, offset: g5x_pose(&it.state, 1) });
+    it.emit(Canon::SetG5xOffset {
+        index: 1,
+        offset: g5x_pose(&it.state, 1),
+    });
     it.emit(Canon::SetXyRotation(it.state.g5x_rotation[1]));
     if it.state.plane != CanonPlane::XY {
         it.state.plane = CanonPlane::XY;

@@ -6,15 +6,19 @@
 //! statements in the order NIST's Table 8 (and LinuxCNC) gives them;
 //! the program loop walks the blocks.
 
-pub mod cycle_io;
+pub mod arcs;
+pub mod aux;
 pub mod comp;
+pub mod cycle_io;
 pub mod cycles;
 pub mod eval;
 pub mod exec;
+pub mod fanuc_xform;
 pub mod flow;
-pub mod index;
 pub mod host;
+pub mod index;
 pub mod machine;
+pub mod modal_save;
 pub mod modes;
 pub mod motion;
 pub mod offsets;
@@ -22,15 +26,11 @@ pub mod options;
 pub mod params;
 pub mod predefined;
 pub mod siemens;
-pub mod stream;
 pub mod state;
-pub mod tooltable;
-pub mod tools;
-pub mod aux;
+pub mod stream;
 pub mod target;
-pub mod arcs;
-pub mod modal_save;
-pub mod fanuc_xform;
+pub mod tools;
+pub mod tooltable;
 
 pub use options::{Limits, Options};
 
@@ -86,7 +86,25 @@ pub struct Interp<'a, 's> {
 
 impl<'a, 's> Interp<'a, 's> {
     pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
-        Interp { spec, opts, state: State::new(), sink, diags: Vec::new(), span: Span::default(), ended: false, params: params::Params::new(), cycles: cycles::CycleMemory::new(), comp: comp::RadiusComp::new(), comp_tags: std::collections::VecDeque::new(), tool_table: opts.tool_table.clone(), block_span: Span::default(), saved_modal: None, auto_restore: Vec::new(), siemens: siemens::SiemensState::default(), fanuc: fanuc_xform::FanucXform::default() }
+        Interp {
+            spec,
+            opts,
+            state: State::new(),
+            sink,
+            diags: Vec::new(),
+            span: Span::default(),
+            ended: false,
+            params: params::Params::new(),
+            cycles: cycles::CycleMemory::new(),
+            comp: comp::RadiusComp::new(),
+            comp_tags: std::collections::VecDeque::new(),
+            tool_table: opts.tool_table.clone(),
+            block_span: Span::default(),
+            saved_modal: None,
+            auto_restore: Vec::new(),
+            siemens: siemens::SiemensState::default(),
+            fanuc: fanuc_xform::FanucXform::default(),
+        }
     }
 
     /// Emits one call, tagged with the current statement's span.

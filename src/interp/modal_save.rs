@@ -52,11 +52,17 @@ fn restore(it: &mut Interp<'_, '_>, s: &State) {
     let cur = it.state.clone();
     if s.units != cur.units {
         it.state.units = s.units;
-        it.out(Canon::UseLengthUnits(if s.units == LengthUnit::Mm { CanonUnits::Mm } else { CanonUnits::Inches }));
+        it.out(Canon::UseLengthUnits(if s.units == LengthUnit::Mm {
+            CanonUnits::Mm
+        } else {
+            CanonUnits::Inches
+        }));
     }
     if s.feed_mode != cur.feed_mode {
         it.state.feed_mode = s.feed_mode;
-        it.out(Canon::SetFeedMode(u8::from(s.feed_mode == FeedMode::PerRevolution)));
+        it.out(Canon::SetFeedMode(u8::from(
+            s.feed_mode == FeedMode::PerRevolution,
+        )));
     }
     if s.feed != cur.feed {
         it.state.feed = s.feed;
@@ -79,8 +85,14 @@ fn restore(it: &mut Interp<'_, '_>, s: &State) {
         it.out(Canon::SelectPlane(s.plane));
     }
     if s.absolute != cur.absolute {
-        let what = if s.absolute { "absolute" } else { "incremental" };
-        it.out(Canon::Comment(format!("interpreter: distance mode changed to {what}")));
+        let what = if s.absolute {
+            "absolute"
+        } else {
+            "incremental"
+        };
+        it.out(Canon::Comment(format!(
+            "interpreter: distance mode changed to {what}"
+        )));
         it.state.absolute = s.absolute;
     }
     it.state.arc_absolute = s.arc_absolute;

@@ -9,11 +9,16 @@ use crate::canon::{Canon, CanonPlane, CanonUnits, MotionMode};
 use crate::diag::Code;
 use crate::interp::host::SpindleDir;
 use crate::ir::{
-    Arena, Block, CommentStyle, Coolant, DimMode, DwellUnit, Expr, FeedMode, LengthUnit, PathMode, Plane,
-    SpindleState, Stmt, StmtKind, StopKind, Value, Word,
+    Arena, Block, CommentStyle, Coolant, DimMode, DwellUnit, Expr, FeedMode, LengthUnit, PathMode,
+    Plane, SpindleState, Stmt, StmtKind, StopKind, Value, Word,
 };
 
-pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+pub fn exec(
+    it: &mut Interp<'_, '_>,
+    s: &Stmt,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     use StmtKind::*;
     it.begin_block(block);
     match &s.kind {
@@ -38,8 +43,16 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
         }
         Spindle(st) => spindle(it, st, block, exprs),
         Coolant(c) => coolant(it, *c),
-        Aux { letter, code, words } => aux::exec(it, *letter, code.to_f64(), words, exprs),
-        DynamicCode { letter, value, words } => {
+        Aux {
+            letter,
+            code,
+            words,
+        } => aux::exec(it, *letter, code.to_f64(), words, exprs),
+        DynamicCode {
+            letter,
+            value,
+            words,
+        } => {
             let code = it.eval(*value, exprs)?.unwrap_or(0.0);
             aux::dynamic(it, *letter, code, words, block, exprs)
         }
@@ -58,7 +71,9 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
             let abs = *d == DimMode::Absolute;
             if abs != it.state.absolute {
                 let what = if abs { "absolute" } else { "incremental" };
-                it.out(Canon::Comment(format!("interpreter: distance mode changed to {what}")));
+                it.out(Canon::Comment(format!(
+                    "interpreter: distance mode changed to {what}"
+                )));
             }
             it.state.absolute = abs;
             Ok(())
@@ -67,26 +82,43 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
             let abs = *d == DimMode::Absolute;
             if abs != it.state.arc_absolute {
                 let what = if abs { "absolute" } else { "incremental" };
-                it.out(Canon::Comment(format!("interpreter: IJK distance mode changed to {what}")));
+                it.out(Canon::Comment(format!(
+                    "interpreter: IJK distance mode changed to {what}"
+                )));
             }
             it.state.arc_absolute = abs;
             Ok(())
         }
         ReturnToInitial(b) => {
             let what = if *b { "old_z" } else { "r_plane" };
-            it.out(Canon::Comment(format!("interpreter: retract mode set to {what}")));
+            it.out(Canon::Comment(format!(
+                "interpreter: retract mode set to {what}"
+            )));
             it.state.retract_initial = *b;
             Ok(())
         }
         Stop(k) => stop(it, *k),
-        _ => Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet")),
+        _ => Err(it.error_at(
+            s.span,
+            Code::UnsupportedHere,
+            "this statement is not run by the interpreter yet",
+        )),
     }
 }
 
 /// A control-flow statement (an o-word line in LinuxCNC).
 fn is_oword(k: &StmtKind) -> bool {
     use StmtKind::*;
-    super::exec::phase(k) == 0 && !matches!(k, Tape | ProgramStart { .. } | Raw { .. } | Word(_) | Command { .. } | Assign { .. } | Declare { .. })
+    super::exec::phase(k) == 0
+        && !matches!(
+            k,
+            Tape | ProgramStart { .. }
+                | Raw { .. }
+                | Word(_)
+                | Command { .. }
+                | Assign { .. }
+                | Declare { .. }
+        )
 }
 
 /// `( ... )`: COMMENT, or MESSAGE for `MSG,` and `DEBUG,`; `;` comments
@@ -132,7 +164,8 @@ fn log_call(it: &Interp<'_, '_>, text: &str) -> Option<Canon> {
 fn strip_prefix_ci<'t>(text: &'t str, prefix: &str) -> Option<&'t str> {
     let t = text.trim_start();
     let head = t.get(..prefix.len())?;
-    head.eq_ignore_ascii_case(prefix).then(|| &t[prefix.len()..])
+    head.eq_ignore_ascii_case(prefix)
+        .then(|| &t[prefix.len()..])
 }
 
 /// `#<name>` and `#123` in a DEBUG text replaced by their values (`%f`).
@@ -142,9 +175,16 @@ fn substitute(it: &Interp<'_, '_>, text: &str) -> String {
     while let Some(i) = rest.find('#') {
         out.push_str(&rest[..i]);
         let after = &rest[i + 1..];
-        if let Some(name) = after.strip_prefix('<').and_then(|a| a.find('>').map(|j| &a[..j])) {
+        if let Some(name) = after
+            .strip_prefix('<')
+            .and_then(|a| a.find('>').map(|j| &a[..j]))
+        {
             // Spaces inside a parameter name are ignored, as everywhere in a line.
-            let key: String = name.chars().filter(|c| !c.is_whitespace()).collect::<String>().to_ascii_lowercase();
+            let key: String = name
+                .chars()
+                .filter(|c| !c.is_whitespace())
+                .collect::<String>()
+                .to_ascii_lowercase();
             match it.read_named(&key) {
                 Some(v) => out.push_str(&format!("{v:.6}")),
                 None => out.push_str("######"),
@@ -171,7 +211,9 @@ fn feed_mode(it: &mut Interp<'_, '_>, m: FeedMode) -> Result<(), Stop> {
         FeedMode::InverseTime => ("inverse time", 0),
         FeedMode::PerRevolution => ("units per revolution", 1),
     };
-    it.out(Canon::Comment(format!("interpreter: feed mode set to {what}")));
+    it.out(Canon::Comment(format!(
+        "interpreter: feed mode set to {what}"
+    )));
     it.out(Canon::SetFeedMode(code));
     if m != FeedMode::InverseTime {
         it.out(Canon::SetFeedRate(0.0));
@@ -203,7 +245,12 @@ fn speed(it: &mut Interp<'_, '_>, v: &Value, exprs: &Arena<Expr>) -> Result<(), 
     Ok(())
 }
 
-fn spindle(it: &mut Interp<'_, '_>, st: &SpindleState, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn spindle(
+    it: &mut Interp<'_, '_>,
+    st: &SpindleState,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     match st {
         SpindleState::Cw => {
             it.state.spindle = SpindleDir::Cw;
@@ -249,13 +296,22 @@ fn coolant(it: &mut Interp<'_, '_>, c: Coolant) -> Result<(), Stop> {
             it.out(Canon::FloodOff);
         }
         Coolant::ThroughTool => {
-            return Err(it.error_at(it.span, Code::UnsupportedHere, "coolant through the tool has no canonical call"))
+            return Err(it.error_at(
+                it.span,
+                Code::UnsupportedHere,
+                "coolant through the tool has no canonical call",
+            ))
         }
     }
     Ok(())
 }
 
-fn dwell(it: &mut Interp<'_, '_>, v: &Value, unit: DwellUnit, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn dwell(
+    it: &mut Interp<'_, '_>,
+    v: &Value,
+    unit: DwellUnit,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let t = it.value(v, exprs)?;
     let seconds = match unit {
         DwellUnit::Seconds => t,
@@ -286,7 +342,13 @@ fn plane(it: &mut Interp<'_, '_>, p: Plane) -> Result<(), Stop> {
     Ok(())
 }
 
-fn path_mode(it: &mut Interp<'_, '_>, s: &Stmt, mode: PathMode, words: &[Word], exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn path_mode(
+    it: &mut Interp<'_, '_>,
+    s: &Stmt,
+    mode: PathMode,
+    words: &[Word],
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let word = |c: char| words.iter().find(|w| w.letter.eq_ignore_ascii_case(&c));
     match mode {
         PathMode::ExactStop => {
@@ -306,12 +368,19 @@ fn path_mode(it: &mut Interp<'_, '_>, s: &Stmt, mode: PathMode, words: &[Word], 
                 Some(w) => it.value(&w.value, exprs)?,
                 None => p,
             };
-            it.state.path = PathControl::Continuous { tolerance: p, naive: q };
+            it.state.path = PathControl::Continuous {
+                tolerance: p,
+                naive: q,
+            };
             it.out(Canon::SetMotionControlMode(MotionMode::Continuous(p)));
             it.out(Canon::SetNaivecamTolerance(q));
         }
         PathMode::ExactStopBlock | PathMode::CornerOverride | PathMode::Tapping => {
-            return Err(it.error_at(s.span, Code::UnsupportedHere, "this path mode is not run by the interpreter yet"))
+            return Err(it.error_at(
+                s.span,
+                Code::UnsupportedHere,
+                "this path mode is not run by the interpreter yet",
+            ))
         }
     }
     Ok(())

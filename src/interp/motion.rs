@@ -12,15 +12,28 @@ use super::target::{target, written, Frame};
 use super::{arcs, aux, Interp, Stop};
 use crate::canon::{Canon, Pose};
 use crate::diag::Code;
-use crate::ir::{Arena, Axes, Block, CannedCycle, CoordShift, CycleKind, DwellUnit, Expr, FeedMode, Motion, MotionKind, Stmt, StmtKind, Value};
+use crate::ir::{
+    Arena, Axes, Block, CannedCycle, CoordShift, CycleKind, DwellUnit, Expr, FeedMode, Motion,
+    MotionKind, Stmt, StmtKind, Value,
+};
 
-pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+pub fn exec(
+    it: &mut Interp<'_, '_>,
+    s: &Stmt,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     it.begin_block(block);
     match &s.kind {
         StmtKind::Motion(m) => motion(it, m, block, exprs),
         StmtKind::Cycle(c) => {
             let cb = cycle_block(it, c, block, exprs)?;
-            if let Some(StmtKind::Motion(m)) = block.stmts.iter().map(|s| &s.kind).find(|k| matches!(k, StmtKind::Motion(_))) {
+            if let Some(StmtKind::Motion(m)) = block
+                .stmts
+                .iter()
+                .map(|s| &s.kind)
+                .find(|k| matches!(k, StmtKind::Motion(_)))
+            {
                 if m.polar_radius.is_some() || m.polar_angle.is_some() {
                     return polar_cycle(it, cb, m, block, exprs);
                 }
@@ -30,10 +43,16 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
         StmtKind::CycleCancel => {
             it.cycles.cancel();
             it.state.motion = ModalMotion::None;
-            it.out(Canon::Comment("interpreter: motion mode set to none".into()));
+            it.out(Canon::Comment(
+                "interpreter: motion mode set to none".into(),
+            ));
             Ok(())
         }
-        _ => Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet")),
+        _ => Err(it.error_at(
+            s.span,
+            Code::UnsupportedHere,
+            "this statement is not run by the interpreter yet",
+        )),
     }
 }
 
@@ -45,14 +64,21 @@ fn has(block: &Block, f: impl Fn(&StmtKind) -> bool) -> bool {
 /// (those codes take none): they belong to the block's motion.
 fn stray_axes(block: &Block) -> Option<&Axes> {
     block.stmts.iter().find_map(|s| match &s.kind {
-        StmtKind::CoordShift { kind, axes } if !matches!(kind, CoordShift::Set | CoordShift::Local) && !axes.is_empty() => {
+        StmtKind::CoordShift { kind, axes }
+            if !matches!(kind, CoordShift::Set | CoordShift::Local) && !axes.is_empty() =>
+        {
             Some(&**axes)
         }
         _ => None,
     })
 }
 
-fn motion(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn motion(
+    it: &mut Interp<'_, '_>,
+    m: &Motion,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     if m.target.is_empty() {
         if let Some(axes) = stray_axes(block) {
             let mut m2 = m.clone();
@@ -63,19 +89,36 @@ fn motion(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr
     motion_inner(it, m, block, exprs)
 }
 
-fn motion_inner(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn motion_inner(
+    it: &mut Interp<'_, '_>,
+    m: &Motion,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let kind = match m.kind {
         MotionKind::Implicit => match it.state.motion {
-            _ if m.target.is_empty() && m.arc.is_empty() && m.polar_radius.is_none() && m.polar_angle.is_none() => {
+            _ if m.target.is_empty()
+                && m.arc.is_empty()
+                && m.polar_radius.is_none()
+                && m.polar_angle.is_none() =>
+            {
                 return Ok(())
             }
             ModalMotion::Move(k) => k,
             ModalMotion::Cycle(kind) => return implicit_cycle(it, kind, m, block, exprs),
             ModalMotion::None if has(block, |k| matches!(k, StmtKind::CycleCancel)) => {
-                return Err(it.error_at(it.span, Code::BadWordValue, "Cannot use axis values with g80"))
+                return Err(it.error_at(
+                    it.span,
+                    Code::BadWordValue,
+                    "Cannot use axis values with g80",
+                ))
             }
             ModalMotion::None => {
-                return Err(it.error_at(it.span, Code::BadWordValue, "Cannot use axis values without a g code that uses them"))
+                return Err(it.error_at(
+                    it.span,
+                    Code::BadWordValue,
+                    "Cannot use axis values without a g code that uses them",
+                ))
             }
         },
         k => {
@@ -102,16 +145,36 @@ fn motion_inner(it: &mut Interp<'_, '_>, m: &Motion, block: &Block, exprs: &Aren
         MotionKind::Other(code) if code.to_f64() == 33.0 || code.to_f64() == 33.1 => {
             spindle_sync(it, code.to_f64() != 33.0, &m.target, exprs)
         }
-        MotionKind::Implicit | MotionKind::ArcThrough | MotionKind::ArcTangent | MotionKind::Other(_) => {
-            Err(it.error_at(it.span, Code::UnsupportedHere, "this motion is not run by the interpreter yet"))
-        }
+        MotionKind::Implicit
+        | MotionKind::ArcThrough
+        | MotionKind::ArcTangent
+        | MotionKind::Other(_) => Err(it.error_at(
+            it.span,
+            Code::UnsupportedHere,
+            "this motion is not run by the interpreter yet",
+        )),
     }
 }
 
-fn straight(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn straight(
+    it: &mut Interp<'_, '_>,
+    kind: MotionKind,
+    m: &Motion,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let axes = &m.target;
     let machine = has(block, |k| matches!(k, StmtKind::MachineCoords));
-    let mut to = target(it, axes, exprs, if machine { Frame::Machine } else { Frame::Program })?;
+    let mut to = target(
+        it,
+        axes,
+        exprs,
+        if machine {
+            Frame::Machine
+        } else {
+            Frame::Program
+        },
+    )?;
     let polar = polar(it, m, exprs)?;
     if let Some((x, y)) = polar {
         to[0] = it.state.to_mm(x);
@@ -123,7 +186,12 @@ fn straight(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block
     if kind == MotionKind::Rapid {
         return it.straight_move(MoveKind::Rapid, to);
     }
-    check_feed(it, block, "Cannot do g1 with zero feed rate", "F word missing with inverse time g1 move")?;
+    check_feed(
+        it,
+        block,
+        "Cannot do g1 with zero feed rate",
+        "F word missing with inverse time g1 move",
+    )?;
     if it.state.feed_mode == FeedMode::InverseTime {
         let from = super::host::MotionHost::position(it);
         let rate = straight_length(&from, &to) * it.state.feed;
@@ -133,7 +201,12 @@ fn straight(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block
 }
 
 /// Errors for a feed move without a usable feed rate.
-pub fn check_feed(it: &Interp<'_, '_>, block: &Block, zero: &str, inverse: &str) -> Result<(), Stop> {
+pub fn check_feed(
+    it: &Interp<'_, '_>,
+    block: &Block,
+    zero: &str,
+    inverse: &str,
+) -> Result<(), Stop> {
     if it.state.feed_mode == FeedMode::InverseTime {
         if !has(block, |k| matches!(k, StmtKind::Feed(_))) {
             return Err(it.error_at(it.span, Code::NoFeedRate, inverse));
@@ -157,7 +230,12 @@ pub fn straight_length(from: &Pose, to: &Pose) -> f64 {
 }
 
 /// G38.x: the simulated probe reaches the programmed point.
-fn probe(it: &mut Interp<'_, '_>, axes: &Axes, error: bool, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn probe(
+    it: &mut Interp<'_, '_>,
+    axes: &Axes,
+    error: bool,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let to = target(it, axes, exprs, Frame::Program)?;
     let to = pose6(&it.state, &to);
     {
@@ -167,11 +245,19 @@ fn probe(it: &mut Interp<'_, '_>, axes: &Axes, error: bool, exprs: &Arena<Expr>)
     }
     let from = super::host::MotionHost::position(it);
     if it.state.feed == 0.0 {
-        return Err(it.error_at(it.span, Code::NoFeedRate, "Cannot probe with zero feed rate"));
+        return Err(it.error_at(
+            it.span,
+            Code::NoFeedRate,
+            "Cannot probe with zero feed rate",
+        ));
     }
     // Only the probes that fail on no contact (G38.2/G38.4) check (rs274).
     if error && straight_length(&from, &to) < it.state.to_prog(0.254) {
-        return Err(it.error_at(it.span, Code::BadWordValue, "Start point too close to probe point"));
+        return Err(it.error_at(
+            it.span,
+            Code::BadWordValue,
+            "Start point too close to probe point",
+        ));
     }
     it.out(Canon::TurnProbeOn);
     it.out(Canon::StraightProbe(to));
@@ -194,7 +280,11 @@ fn probe(it: &mut Interp<'_, '_>, axes: &Axes, error: bool, exprs: &Arena<Expr>)
     Ok(())
 }
 
-fn num(it: &mut Interp<'_, '_>, v: &Option<Value>, exprs: &Arena<Expr>) -> Result<Option<f64>, Stop> {
+fn num(
+    it: &mut Interp<'_, '_>,
+    v: &Option<Value>,
+    exprs: &Arena<Expr>,
+) -> Result<Option<f64>, Stop> {
     match v {
         Some(v) => Ok(Some(it.value(v, exprs)?)),
         None => Ok(None),
@@ -204,11 +294,21 @@ fn num(it: &mut Interp<'_, '_>, v: &Option<Value>, exprs: &Arena<Expr>) -> Resul
 fn dwell_unit(it: &Interp<'_, '_>) -> DwellUnit {
     it.spec
         .code_for(crate::dialect::Meaning::Dwell)
-        .and_then(|c| c.dwell_units.iter().find(|(l, _)| *l == 'P').map(|(_, u)| *u))
+        .and_then(|c| {
+            c.dwell_units
+                .iter()
+                .find(|(l, _)| *l == 'P')
+                .map(|(_, u)| *u)
+        })
         .unwrap_or(DwellUnit::Seconds)
 }
 
-fn base_block(it: &mut Interp<'_, '_>, kind: CycleKind, axes: &Axes, exprs: &Arena<Expr>) -> Result<CycleBlock, Stop> {
+fn base_block(
+    it: &mut Interp<'_, '_>,
+    kind: CycleKind,
+    axes: &Axes,
+    exprs: &Arena<Expr>,
+) -> Result<CycleBlock, Stop> {
     let w = written(it, axes, exprs)?;
     Ok(CycleBlock {
         kind,
@@ -228,7 +328,12 @@ fn base_block(it: &mut Interp<'_, '_>, kind: CycleKind, axes: &Axes, exprs: &Are
     })
 }
 
-fn cycle_block(it: &mut Interp<'_, '_>, c: &CannedCycle, block: &Block, exprs: &Arena<Expr>) -> Result<CycleBlock, Stop> {
+fn cycle_block(
+    it: &mut Interp<'_, '_>,
+    c: &CannedCycle,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<CycleBlock, Stop> {
     let _ = block;
     let mut cb = base_block(it, c.kind, &c.target, exprs)?;
     cb.r = num(it, &c.r, exprs)?;
@@ -242,7 +347,13 @@ fn cycle_block(it: &mut Interp<'_, '_>, c: &CannedCycle, block: &Block, exprs: &
     Ok(cb)
 }
 
-fn implicit_cycle(it: &mut Interp<'_, '_>, kind: CycleKind, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn implicit_cycle(
+    it: &mut Interp<'_, '_>,
+    kind: CycleKind,
+    m: &Motion,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let mut cb = base_block(it, kind, &m.target, exprs)?;
     cb.r = match num(it, &m.arc.radius, exprs)? {
         Some(r) => Some(r),
@@ -275,16 +386,28 @@ fn run_cycle(it: &mut Interp<'_, '_>, cb: CycleBlock, block: &Block) -> Result<(
 
 /// G33 (a synchronised feed) and G33.1 (rigid tapping: in and back out,
 /// so the position does not change).
-fn spindle_sync(it: &mut Interp<'_, '_>, rigid: bool, axes: &Axes, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn spindle_sync(
+    it: &mut Interp<'_, '_>,
+    rigid: bool,
+    axes: &Axes,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     if axes.is_empty() {
         return Ok(());
     }
     let to = target(it, axes, exprs, Frame::Program)?;
     let to = pose6(&it.state, &to);
     let pitch = it.state.sync_pitch;
-    it.out(Canon::StartSpeedFeedSync { pitch, velocity_mode: false });
+    it.out(Canon::StartSpeedFeedSync {
+        pitch,
+        velocity_mode: false,
+    });
     if rigid {
-        it.out(Canon::RigidTap { x: to[0], y: to[1], z: to[2] });
+        it.out(Canon::RigidTap {
+            x: to[0],
+            y: to[1],
+            z: to[2],
+        });
     } else {
         it.straight_move(MoveKind::Feed, to)?;
     }
@@ -296,11 +419,18 @@ fn spindle_sync(it: &mut Interp<'_, '_>, rigid: bool, axes: &Axes, exprs: &Arena
 /// absolute X Y (program units) they give. Under G90 a missing word keeps
 /// the current point's distance or angle from the origin; under G91 both
 /// are increments to the current point's distance and angle.
-fn polar(it: &mut Interp<'_, '_>, m: &Motion, exprs: &Arena<Expr>) -> Result<Option<(f64, f64)>, Stop> {
+fn polar(
+    it: &mut Interp<'_, '_>,
+    m: &Motion,
+    exprs: &Arena<Expr>,
+) -> Result<Option<(f64, f64)>, Stop> {
     if m.polar_radius.is_none() && m.polar_angle.is_none() {
         return Ok(None);
     }
-    let (cx, cy) = (it.state.to_prog(it.state.pos[0]), it.state.to_prog(it.state.pos[1]));
+    let (cx, cy) = (
+        it.state.to_prog(it.state.pos[0]),
+        it.state.to_prog(it.state.pos[1]),
+    );
     let (cr, ca) = (cx.hypot(cy), cy.atan2(cx));
     let r = num(it, &m.polar_radius, exprs)?;
     let a = num(it, &m.polar_angle, exprs)?.map(f64::to_radians);
@@ -314,12 +444,27 @@ fn polar(it: &mut Interp<'_, '_>, m: &Motion, exprs: &Arena<Expr>) -> Result<Opt
 
 /// A cycle block with polar words: each repeat steps in polar terms, so
 /// the holes are run one by one.
-fn polar_cycle(it: &mut Interp<'_, '_>, mut cb: CycleBlock, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn polar_cycle(
+    it: &mut Interp<'_, '_>,
+    mut cb: CycleBlock,
+    m: &Motion,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let n = cb.repeat.unwrap_or(1.0).max(1.0) as u64;
     for k in 0..n.min(100_000) {
-        let Some((x, y)) = polar(it, m, exprs)? else { break };
-        let (cx, cy) = (it.state.to_prog(it.state.pos[0]), it.state.to_prog(it.state.pos[1]));
-        let (x, y) = if cb.incremental { (x - cx, y - cy) } else { (x, y) };
+        let Some((x, y)) = polar(it, m, exprs)? else {
+            break;
+        };
+        let (cx, cy) = (
+            it.state.to_prog(it.state.pos[0]),
+            it.state.to_prog(it.state.pos[1]),
+        );
+        let (x, y) = if cb.incremental {
+            (x - cx, y - cy)
+        } else {
+            (x, y)
+        };
         cb.axes[0] = Some(x);
         cb.axes[1] = Some(y);
         cb.repeat = Some(1.0);

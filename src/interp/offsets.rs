@@ -10,15 +10,25 @@ use crate::canon::Canon;
 use crate::diag::Code;
 use crate::ir::{Arena, Axes, Block, CoordShift, Expr, LengthUnit, Stmt, StmtKind, Word};
 
-pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+pub fn exec(
+    it: &mut Interp<'_, '_>,
+    s: &Stmt,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     it.begin_block(block);
     let _ = block;
     match &s.kind {
-        StmtKind::WorkOffset { index, extended: None } if (1..=9).contains(index) => {
+        StmtKind::WorkOffset {
+            index,
+            extended: None,
+        } if (1..=9).contains(index) => {
             work_offset(it, *index);
             Ok(())
         }
-        StmtKind::WorkOffset { extended: Some(p), .. } => {
+        StmtKind::WorkOffset {
+            extended: Some(p), ..
+        } => {
             let p = it.value(p, exprs)?;
             extended_offset(it, p)
         }
@@ -28,9 +38,15 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
             let l = it.value(l, exprs)?;
             set_data(it, l, words, exprs)
         }
-        StmtKind::RefReturn { index, axes, store } => ref_return(it, *index, axes, *store, block, exprs),
+        StmtKind::RefReturn { index, axes, store } => {
+            ref_return(it, *index, axes, *store, block, exprs)
+        }
         StmtKind::Transform(t) => super::fanuc_xform::exec(it, t, exprs),
-        _ => Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet")),
+        _ => Err(it.error_at(
+            s.span,
+            Code::UnsupportedHere,
+            "this statement is not run by the interpreter yet",
+        )),
     }
 }
 
@@ -44,7 +60,9 @@ fn machine_scale(it: &Interp<'_, '_>) -> f64 {
 
 fn work_offset(it: &mut Interp<'_, '_>, index: u32) {
     if index == it.state.g5x_index {
-        it.out(Canon::Comment("interpreter: continuing to use same coordinate system".into()));
+        it.out(Canon::Comment(
+            "interpreter: continuing to use same coordinate system".into(),
+        ));
         return;
     }
     let old = it.state.origin();
@@ -62,19 +80,33 @@ fn work_offset(it: &mut Interp<'_, '_>, index: u32) {
 /// `SET_G5X_OFFSET(100 + n, ...)` (no LinuxCNC index exists).
 fn extended_offset(it: &mut Interp<'_, '_>, p: f64) -> Result<(), Stop> {
     if p.fract() != 0.0 || !(1.0..=300.0).contains(&p) {
-        return Err(it.error_at(it.span, Code::BadWordValue, format!("extended work offset P{p} is not 1..300")));
+        return Err(it.error_at(
+            it.span,
+            Code::BadWordValue,
+            format!("extended work offset P{p} is not 1..300"),
+        ));
     }
     let n = p as u32;
     let old = it.state.origin();
     for i in 0..9 {
-        let v = it.params.numbered(7001 + 20 * (n - 1) + i as u32).unwrap_or(0.0);
-        it.state.g5x[0][i] = if State::is_linear(i) { it.state.to_mm(v) } else { v };
+        let v = it
+            .params
+            .numbered(7001 + 20 * (n - 1) + i as u32)
+            .unwrap_or(0.0);
+        it.state.g5x[0][i] = if State::is_linear(i) {
+            it.state.to_mm(v)
+        } else {
+            v
+        };
     }
     it.state.g5x_rotation[0] = 0.0;
     it.state.g5x_index = 0;
     it.state.reframe(old);
     let offset = g5x_pose(&it.state, 0);
-    it.out(Canon::SetG5xOffset { index: 100 + n, offset });
+    it.out(Canon::SetG5xOffset {
+        index: 100 + n,
+        offset,
+    });
     emit_g92(it);
     it.out(Canon::SetXyRotation(0.0));
     Ok(())
@@ -86,20 +118,37 @@ fn emit_g5x(it: &mut Interp<'_, '_>, index: u32) {
 }
 
 fn emit_g92(it: &mut Interp<'_, '_>) {
-    let g = if it.state.g92_applied { it.state.g92 } else { [0.0; 9] };
+    let g = if it.state.g92_applied {
+        it.state.g92
+    } else {
+        [0.0; 9]
+    };
     let p = pose6(&it.state, &g);
     it.out(Canon::SetG92Offset(p));
 }
 
-fn coord_shift(it: &mut Interp<'_, '_>, kind: CoordShift, axes: &Axes, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn coord_shift(
+    it: &mut Interp<'_, '_>,
+    kind: CoordShift,
+    axes: &Axes,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let old = it.state.origin();
     let w = written(it, axes, exprs)?;
     match kind {
         CoordShift::Set => {
-            let cur = if it.state.g92_applied { it.state.g92 } else { [0.0; 9] };
+            let cur = if it.state.g92_applied {
+                it.state.g92
+            } else {
+                [0.0; 9]
+            };
             for i in 0..9 {
                 if let Some(v) = w[i] {
-                    let v = if State::is_linear(i) { it.state.to_mm(v) } else { v };
+                    let v = if State::is_linear(i) {
+                        it.state.to_mm(v)
+                    } else {
+                        v
+                    };
                     it.state.g92[i] = it.state.pos[i] + cur[i] - v;
                 } else {
                     it.state.g92[i] = cur[i];
@@ -110,7 +159,11 @@ fn coord_shift(it: &mut Interp<'_, '_>, kind: CoordShift, axes: &Axes, exprs: &A
         CoordShift::Local => {
             for i in 0..9 {
                 if let Some(v) = w[i] {
-                    it.state.g92[i] = if State::is_linear(i) { it.state.to_mm(v) } else { v };
+                    it.state.g92[i] = if State::is_linear(i) {
+                        it.state.to_mm(v)
+                    } else {
+                        v
+                    };
                 }
             }
             it.state.g92_applied = true;
@@ -128,15 +181,27 @@ fn coord_shift(it: &mut Interp<'_, '_>, kind: CoordShift, axes: &Axes, exprs: &A
 }
 
 /// The value of a G10 word.
-fn word(it: &mut Interp<'_, '_>, words: &[Word], letter: char, exprs: &Arena<Expr>) -> Result<Option<f64>, Stop> {
-    match words.iter().find(|w| w.letter.eq_ignore_ascii_case(&letter)) {
+fn word(
+    it: &mut Interp<'_, '_>,
+    words: &[Word],
+    letter: char,
+    exprs: &Arena<Expr>,
+) -> Result<Option<f64>, Stop> {
+    match words
+        .iter()
+        .find(|w| w.letter.eq_ignore_ascii_case(&letter))
+    {
         Some(w) => Ok(Some(it.value(&w.value, exprs)?)),
         None => Ok(None),
     }
 }
 
 /// G10 axis words, by index (program units as written).
-fn axis_words(it: &mut Interp<'_, '_>, words: &[Word], exprs: &Arena<Expr>) -> Result<[Option<f64>; 9], Stop> {
+fn axis_words(
+    it: &mut Interp<'_, '_>,
+    words: &[Word],
+    exprs: &Arena<Expr>,
+) -> Result<[Option<f64>; 9], Stop> {
     let mut out = [None; 9];
     for (i, letter) in crate::ir::AXIS_LETTERS.iter().enumerate() {
         out[i] = word(it, words, *letter, exprs)?;
@@ -144,7 +209,12 @@ fn axis_words(it: &mut Interp<'_, '_>, words: &[Word], exprs: &Arena<Expr>) -> R
     Ok(out)
 }
 
-fn set_data(it: &mut Interp<'_, '_>, l: f64, words: &[Word], exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn set_data(
+    it: &mut Interp<'_, '_>,
+    l: f64,
+    words: &[Word],
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let p = word(it, words, 'P', exprs)?;
     let l = l.round() as i64;
     match l {
@@ -152,25 +222,47 @@ fn set_data(it: &mut Interp<'_, '_>, l: f64, words: &[Word], exprs: &Arena<Expr>
             let p = match p {
                 Some(p) if (0.0..=9.0).contains(&p) && p.fract() == 0.0 => p as u32,
                 _ => {
-                    return Err(it.error_at(it.span, Code::BadWordValue, format!("P value out of range (0-9) with G10 L{l}")))
+                    return Err(it.error_at(
+                        it.span,
+                        Code::BadWordValue,
+                        format!("P value out of range (0-9) with G10 L{l}"),
+                    ))
                 }
             };
             set_work_offset(it, l == 20, p, words, exprs)
         }
         1 | 10 | 11 => set_tool(it, l, p, words, exprs),
-        _ => Err(it.error_at(it.span, Code::UnsupportedHere, format!("G10 L{l} is not run by the interpreter"))),
+        _ => Err(it.error_at(
+            it.span,
+            Code::UnsupportedHere,
+            format!("G10 L{l} is not run by the interpreter"),
+        )),
     }
 }
 
-fn set_work_offset(it: &mut Interp<'_, '_>, l20: bool, p: u32, words: &[Word], exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn set_work_offset(
+    it: &mut Interp<'_, '_>,
+    l20: bool,
+    p: u32,
+    words: &[Word],
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let index = if p == 0 { it.state.g5x_index } else { p };
     let w = axis_words(it, words, exprs)?;
     let r = word(it, words, 'R', exprs)?;
     let old = it.state.origin();
-    let g92 = if it.state.g92_applied { it.state.g92 } else { [0.0; 9] };
+    let g92 = if it.state.g92_applied {
+        it.state.g92
+    } else {
+        [0.0; 9]
+    };
     for i in 0..9 {
         let Some(v) = w[i] else { continue };
-        let v = if State::is_linear(i) { it.state.to_mm(v) } else { v };
+        let v = if State::is_linear(i) {
+            it.state.to_mm(v)
+        } else {
+            v
+        };
         it.state.g5x[index as usize][i] = if l20 {
             it.state.pos[i] + old[i] - g92[i] - it.state.tool_offset[i] - v
         } else {
@@ -181,7 +273,9 @@ fn set_work_offset(it: &mut Interp<'_, '_>, l20: bool, p: u32, words: &[Word], e
         it.state.g5x_rotation[index as usize] = r;
     }
     if index != it.state.g5x_index {
-        it.out(Canon::Comment("interpreter: setting coordinate system origin".into()));
+        it.out(Canon::Comment(
+            "interpreter: setting coordinate system origin".into(),
+        ));
     } else {
         it.state.reframe(old);
         emit_g5x(it, index);
@@ -191,14 +285,26 @@ fn set_work_offset(it: &mut Interp<'_, '_>, l20: bool, p: u32, words: &[Word], e
 }
 
 /// G10 L1 (values), L10/L11 (so that the current position reads as given).
-fn set_tool(it: &mut Interp<'_, '_>, l: i64, p: Option<f64>, words: &[Word], exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn set_tool(
+    it: &mut Interp<'_, '_>,
+    l: i64,
+    p: Option<f64>,
+    words: &[Word],
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let t = p.unwrap_or(0.0).round() as i64;
     let row = super::tools::row_of(it, t)?;
     let w = axis_words(it, words, exprs)?;
     let scale = machine_scale(it);
     let r = word(it, words, 'R', exprs)?;
-    let (i_w, j_w, q_w) = (word(it, words, 'I', exprs)?, word(it, words, 'J', exprs)?, word(it, words, 'Q', exprs)?);
-    let Some(tool) = it.tool_table.get(t).cloned() else { return Ok(()) };
+    let (i_w, j_w, q_w) = (
+        word(it, words, 'I', exprs)?,
+        word(it, words, 'J', exprs)?,
+        word(it, words, 'Q', exprs)?,
+    );
+    let Some(tool) = it.tool_table.get(t).cloned() else {
+        return Ok(());
+    };
     let mut offset = tool.offset;
     for i in 0..9 {
         let Some(v) = w[i] else { continue };
@@ -214,7 +320,9 @@ fn set_tool(it: &mut Interp<'_, '_>, l: i64, p: Option<f64>, words: &[Word], exp
         };
         offset[i] = if lin { mm / scale } else { mm };
     }
-    let diameter = r.map(|r| it.state.to_mm(r) * 2.0 / scale).unwrap_or(tool.diameter);
+    let diameter = r
+        .map(|r| it.state.to_mm(r) * 2.0 / scale)
+        .unwrap_or(tool.diameter);
     let front = i_w.unwrap_or(tool.front_angle);
     let back = j_w.unwrap_or(tool.back_angle);
     let orientation = q_w.map(|q| q as i64).unwrap_or(tool.orientation);
@@ -225,10 +333,26 @@ fn set_tool(it: &mut Interp<'_, '_>, l: i64, p: Option<f64>, words: &[Word], exp
         slot.back_angle = back;
         slot.orientation = orientation;
     }
-    it.out(Canon::SetToolTableEntry { row, tool: t, offset, diameter, front, back, orientation });
+    it.out(Canon::SetToolTableEntry {
+        row,
+        tool: t,
+        offset,
+        diameter,
+        front,
+        back,
+        orientation,
+    });
     // The tool in the spindle also has row 0, which rs274 updates too.
     if t == it.state.tool_in_spindle && t != 0 {
-        it.out(Canon::SetToolTableEntry { row: 0, tool: t, offset, diameter, front, back, orientation });
+        it.out(Canon::SetToolTableEntry {
+            row: 0,
+            tool: t,
+            offset,
+            diameter,
+            front,
+            back,
+            orientation,
+        });
     }
     Ok(())
 }
@@ -236,7 +360,14 @@ fn set_tool(it: &mut Interp<'_, '_>, l: i64, p: Option<f64>, words: &[Word], exp
 /// G28/G30: rapid through the given point, then to the stored position
 /// (#5161.. / #5181.., machine units) of those axes (all when none given);
 /// G28.1/G30.1 store the current position.
-fn ref_return(it: &mut Interp<'_, '_>, index: u8, axes: &Axes, store: bool, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+fn ref_return(
+    it: &mut Interp<'_, '_>,
+    index: u8,
+    axes: &Axes,
+    store: bool,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let base = if index == 1 { 5161 } else { 5181 };
     let scale = machine_scale(it);
     let origin = it.state.origin();
@@ -248,8 +379,15 @@ fn ref_return(it: &mut Interp<'_, '_>, index: u8, axes: &Axes, store: bool, bloc
         }
         return Ok(());
     }
-    let machine = block.stmts.iter().any(|s| matches!(s.kind, StmtKind::MachineCoords));
-    let frame = if machine { super::target::Frame::Machine } else { super::target::Frame::Program };
+    let machine = block
+        .stmts
+        .iter()
+        .any(|s| matches!(s.kind, StmtKind::MachineCoords));
+    let frame = if machine {
+        super::target::Frame::Machine
+    } else {
+        super::target::Frame::Program
+    };
     let via = super::target::target(it, axes, exprs, frame)?;
     it.comp_block(block.span);
     let via_pose = pose6(&it.state, &via);
@@ -260,7 +398,11 @@ fn ref_return(it: &mut Interp<'_, '_>, index: u8, axes: &Axes, store: bool, bloc
     for i in 0..6 {
         if all || given[i].is_some() {
             let stored = it.read_numbered(base + i as u32).unwrap_or(0.0);
-            let m = if State::is_linear(i) { stored * scale } else { stored };
+            let m = if State::is_linear(i) {
+                stored * scale
+            } else {
+                stored
+            };
             home[i] = m - origin[i];
         }
     }

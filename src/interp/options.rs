@@ -16,7 +16,11 @@ pub struct Limits {
 
 impl Default for Limits {
     fn default() -> Self {
-        Limits { loop_iterations: 1_000_000, call_depth: 64, blocks: 100_000_000 }
+        Limits {
+            loop_iterations: 1_000_000,
+            call_depth: 64,
+            blocks: 100_000_000,
+        }
     }
 }
 
@@ -33,6 +37,11 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Self {
-        Options { tool_table: ToolTable::builtin(), machine_units: LengthUnit::Inch, limits: Limits::default(), block_delete: false }
+        Options {
+            tool_table: ToolTable::builtin(),
+            machine_units: LengthUnit::Inch,
+            limits: Limits::default(),
+            block_delete: false,
+        }
     }
 }

@@ -17,7 +17,11 @@ pub struct Params {
 
 impl Params {
     pub fn new() -> Params {
-        Params { local_named: vec![HashMap::new()], user: vec![HashMap::new()], ..Default::default() }
+        Params {
+            local_named: vec![HashMap::new()],
+            user: vec![HashMap::new()],
+            ..Default::default()
+        }
     }
 
     /// `#n`: `None` when vacant.

@@ -3,9 +3,9 @@
 //! machine state (#5211 G92, #5220/#5221.. work offsets,
 //! #5420.. position), computed from the machine state when read.
 
-use super::Interp;
 use super::host::SpindleDir;
 use super::state::ModalMotion;
+use super::Interp;
 use crate::ir::{ArcDir, CompSide, CycleKind, FeedMode, LengthUnit, MotionKind};
 
 /// The value of a predefined named parameter, if `name` is one.
@@ -13,7 +13,11 @@ pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
     let s = &it.state;
     let axis = |i: usize| {
         let v = s.pos[i];
-        Some(if super::state::State::is_linear(i) { s.to_prog(v) } else { v })
+        Some(if super::state::State::is_linear(i) {
+            s.to_prog(v)
+        } else {
+            v
+        })
     };
     match name.to_ascii_lowercase().as_str() {
         "_x" => axis(0),
@@ -65,7 +69,11 @@ fn modal(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
     if let Some(axis) = lower.strip_prefix("_abs_") {
         let i = "xyzabcuvw".find(axis).filter(|_| axis.len() == 1)?;
         let v = s.pos[i] + s.origin()[i];
-        return Some(if super::state::State::is_linear(i) { s.to_prog(v) } else { v });
+        return Some(if super::state::State::is_linear(i) {
+            s.to_prog(v)
+        } else {
+            v
+        });
     }
     match lower.as_str() {
         "_motion_mode" => Some(motion_code(s.motion)),
@@ -100,10 +108,22 @@ fn motion_code(m: ModalMotion) -> f64 {
             MotionKind::Linear => 10.0,
             MotionKind::Arc(ArcDir::Cw) => 20.0,
             MotionKind::Arc(ArcDir::Ccw) => 30.0,
-            MotionKind::Probe { toward: true, error: true } => 382.0,
-            MotionKind::Probe { toward: true, error: false } => 383.0,
-            MotionKind::Probe { toward: false, error: true } => 384.0,
-            MotionKind::Probe { toward: false, error: false } => 385.0,
+            MotionKind::Probe {
+                toward: true,
+                error: true,
+            } => 382.0,
+            MotionKind::Probe {
+                toward: true,
+                error: false,
+            } => 383.0,
+            MotionKind::Probe {
+                toward: false,
+                error: true,
+            } => 384.0,
+            MotionKind::Probe {
+                toward: false,
+                error: false,
+            } => 385.0,
             MotionKind::Other(d) => (d.to_f64() * 10.0).round(),
             MotionKind::Implicit | MotionKind::ArcThrough | MotionKind::ArcTangent => 800.0,
         },
@@ -130,7 +150,13 @@ fn motion_code(m: ModalMotion) -> f64 {
 /// parameters: the core writes them with `params.set_numbered`.
 pub fn numbered(it: &Interp<'_, '_>, n: u32) -> Option<f64> {
     let s = &it.state;
-    let len = |i: usize, v: f64| if super::state::State::is_linear(i) { s.to_prog(v) } else { v };
+    let len = |i: usize, v: f64| {
+        if super::state::State::is_linear(i) {
+            s.to_prog(v)
+        } else {
+            v
+        }
+    };
     match n {
         5211..=5219 => {
             let i = (n - 5211) as usize;
@@ -147,7 +173,10 @@ pub fn numbered(it: &Interp<'_, '_>, n: u32) -> Option<f64> {
             }
         }
         // #5400..#5410 are stored parameters written by M6 (see tools.rs).
-        5420..=5428 => named(it, ["_x", "_y", "_z", "_a", "_b", "_c", "_u", "_v", "_w"][(n - 5420) as usize]),
+        5420..=5428 => named(
+            it,
+            ["_x", "_y", "_z", "_a", "_b", "_c", "_u", "_v", "_w"][(n - 5420) as usize],
+        ),
         _ => None,
     }
 }

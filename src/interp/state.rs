@@ -116,7 +116,10 @@ impl State {
             comp_side: CompSide::Off,
             comp_radius: 0.0,
             retract_initial: false,
-            path: PathControl::Continuous { tolerance: 0.0, naive: 0.0 },
+            path: PathControl::Continuous {
+                tolerance: 0.0,
+                naive: 0.0,
+            },
             flood: false,
             mist: false,
             feed_override: true,
@@ -129,7 +132,11 @@ impl State {
             m61_block: None,
             canon_pos: [0.0; 9],
             resync: false,
-            prog_cache: std::cell::Cell::new(ProgCache { units: LengthUnit::Mm, key: [0; 6], pose: [0.0; 6] }),
+            prog_cache: std::cell::Cell::new(ProgCache {
+                units: LengthUnit::Mm,
+                key: [0; 6],
+                pose: [0.0; 6],
+            }),
         }
     }
 
@@ -184,7 +191,11 @@ impl State {
                 continue;
             }
             c.key[i] = bits;
-            c.pose[i] = if State::is_linear(i) { self.to_prog(p[i]) } else { p[i] };
+            c.pose[i] = if State::is_linear(i) {
+                self.to_prog(p[i])
+            } else {
+                p[i]
+            };
         }
         self.prog_cache.set(c);
         c.pose
@@ -267,11 +278,28 @@ mod tests {
             state ^= state << 17;
             let mag = [0.5, 1.0, 1e3, 1e9, 1e15][(i % 5) as usize];
             let x = ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 2.0 * mag;
-            let x = if i % 3 == 0 { (x * 2.0).round() / 2.0 } else { x };
+            let x = if i % 3 == 0 {
+                (x * 2.0).round() / 2.0
+            } else {
+                x
+            };
             let (a, b) = (super::round_small(x), x.round());
-            assert!(a == b && a.is_sign_negative() == b.is_sign_negative(), "{x:e}: {a} {b}");
+            assert!(
+                a == b && a.is_sign_negative() == b.is_sign_negative(),
+                "{x:e}: {a} {b}"
+            );
         }
-        for x in [0.5, -0.5, 1.5, -2.5, 0.49999999999999994, -0.0, 0.0, -0.3, 4503599627370495.5] {
+        for x in [
+            0.5,
+            -0.5,
+            1.5,
+            -2.5,
+            0.49999999999999994,
+            -0.0,
+            0.0,
+            -0.3,
+            4503599627370495.5,
+        ] {
             assert_eq!(super::round_small(x).to_bits(), x.round().to_bits(), "{x}");
         }
     }

@@ -41,7 +41,8 @@ impl StreamRun {
         }
         self.blocks += 1;
         if self.blocks > it.opts.limits.blocks {
-            let d = Diagnostic::new(Code::LimitExceeded, "more blocks run than the limit").primary(b.span, "here");
+            let d = Diagnostic::new(Code::LimitExceeded, "more blocks run than the limit")
+                .primary(b.span, "here");
             return self.stop(it, Err(Stop::Error(d)));
         }
         let first = !self.seen_content;
@@ -97,7 +98,12 @@ impl StreamRun {
 
     /// Goes on with the walker over the whole program from the hand-over
     /// block; returns every diagnostic of the run.
-    pub fn continue_with(&mut self, it: &mut Interp<'_, '_>, program: std::rc::Rc<Program>, loader: &mut dyn ProgramLoader) -> Vec<Diagnostic> {
+    pub fn continue_with(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        program: std::rc::Rc<Program>,
+        loader: &mut dyn ProgramLoader,
+    ) -> Vec<Diagnostic> {
         let at = self.handover.unwrap_or(0);
         let mut walker = Walker::new(program, loader);
         walker.resume(at, self.percent_start, self.blocks);

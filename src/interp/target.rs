@@ -17,7 +17,12 @@ pub enum Frame {
 }
 
 /// The target of `axes` from the current position.
-pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: Frame) -> Result<[f64; 9], Stop> {
+pub fn target(
+    it: &mut Interp<'_, '_>,
+    axes: &Axes,
+    exprs: &Arena<Expr>,
+    frame: Frame,
+) -> Result<[f64; 9], Stop> {
     // Under a Siemens programmable frame, words are read in the programmed
     // system and the point is mapped to the work-offset frame after.
     let framed = frame == Frame::Program && !it.siemens.frame.is_identity();
@@ -29,8 +34,16 @@ pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: 
     for (i, c) in slots(axes).into_iter().enumerate() {
         let Some(c) = c else { continue };
         let v = it.value(&c.value, exprs)?;
-        let v = if i == 0 && it.state.lathe_diameter { v / 2.0 } else { v };
-        let v = if State::is_linear(i) { it.state.to_mm(v) } else { v };
+        let v = if i == 0 && it.state.lathe_diameter {
+            v / 2.0
+        } else {
+            v
+        };
+        let v = if State::is_linear(i) {
+            it.state.to_mm(v)
+        } else {
+            v
+        };
         let absolute = match c.dim {
             Some(d) => d == DimMode::Absolute,
             None => it.state.absolute,
@@ -49,7 +62,11 @@ pub fn target(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>, frame: 
 }
 
 /// The axis values written (program units, as written), by index.
-pub fn written(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Result<[Option<f64>; 9], Stop> {
+pub fn written(
+    it: &mut Interp<'_, '_>,
+    axes: &Axes,
+    exprs: &Arena<Expr>,
+) -> Result<[Option<f64>; 9], Stop> {
     let mut out = [None; 9];
     for (i, c) in slots(axes).into_iter().enumerate() {
         if let Some(c) = c {
@@ -61,6 +78,16 @@ pub fn written(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Res
 
 /// The axis words by index, in the order of [`crate::ir::AXIS_LETTERS`].
 fn slots(axes: &Axes) -> [Option<&Coord>; 9] {
-    let Axes { x, y, z, a, b, c, u, v, w } = axes;
+    let Axes {
+        x,
+        y,
+        z,
+        a,
+        b,
+        c,
+        u,
+        v,
+        w,
+    } = axes;
     [x, y, z, a, b, c, u, v, w].map(Option::as_ref)
 }

@@ -9,9 +9,16 @@ use super::state::MM_PER_INCH;
 use super::{Interp, Stop};
 use crate::canon::Canon;
 use crate::diag::Code;
-use crate::ir::{Arena, Axes, Block, CompSide, Expr, LengthComp, LengthUnit, Stmt, StmtKind, ToolRef, Value};
+use crate::ir::{
+    Arena, Axes, Block, CompSide, Expr, LengthComp, LengthUnit, Stmt, StmtKind, ToolRef, Value,
+};
 
-pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+pub fn exec(
+    it: &mut Interp<'_, '_>,
+    s: &Stmt,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     it.begin_block(block);
     match &s.kind {
         StmtKind::ToolSelect(ToolRef::Number(v)) => {
@@ -28,10 +35,22 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
             Ok(())
         }
         StmtKind::ToolChange => tool_change(it),
-        StmtKind::RadiusComp { side, register, diameter } => radius_comp(it, *side, register.as_ref(), *diameter, block, exprs),
-        StmtKind::LengthComp { mode, register, axes } => length_comp(it, *mode, register.as_ref(), axes, exprs),
+        StmtKind::RadiusComp {
+            side,
+            register,
+            diameter,
+        } => radius_comp(it, *side, register.as_ref(), *diameter, block, exprs),
+        StmtKind::LengthComp {
+            mode,
+            register,
+            axes,
+        } => length_comp(it, *mode, register.as_ref(), axes, exprs),
         StmtKind::OffsetRegister { .. } => Ok(()),
-        _ => Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the interpreter yet")),
+        _ => Err(it.error_at(
+            s.span,
+            Code::UnsupportedHere,
+            "this statement is not run by the interpreter yet",
+        )),
     }
 }
 
@@ -42,7 +61,11 @@ pub fn row_of(it: &Interp<'_, '_>, t: i64) -> Result<i64, Stop> {
     }
     match it.tool_table.row(t) {
         Some(r) => Ok(r as i64),
-        None => Err(it.error_at(it.span, Code::ToolNotInTable, format!("Requested tool {t} not found in the tool table"))),
+        None => Err(it.error_at(
+            it.span,
+            Code::ToolNotInTable,
+            format!("Requested tool {t} not found in the tool table"),
+        )),
     }
 }
 
@@ -51,12 +74,23 @@ pub fn row_of(it: &Interp<'_, '_>, t: i64) -> Result<i64, Stop> {
 /// LinuxCNC tables have no name column.
 fn tool_by_name(it: &Interp<'_, '_>, name: &str) -> Result<i64, Stop> {
     let wanted = name.trim();
-    it.tool_table.tools.iter().find(|t| t.comment.trim().eq_ignore_ascii_case(wanted)).map(|t| t.number).ok_or_else(|| {
-        match it.error_at(it.span, Code::ToolNotInTable, format!("no tool named \"{wanted}\" in the tool table")) {
-            Stop::Error(d) => Stop::Error(d.help(format!("name a tool by its comment in the tool table: `T5 P5 Z2.0 D2.48 ;{wanted}`"))),
-            other => other,
-        }
-    })
+    it.tool_table
+        .tools
+        .iter()
+        .find(|t| t.comment.trim().eq_ignore_ascii_case(wanted))
+        .map(|t| t.number)
+        .ok_or_else(|| {
+            match it.error_at(
+                it.span,
+                Code::ToolNotInTable,
+                format!("no tool named \"{wanted}\" in the tool table"),
+            ) {
+                Stop::Error(d) => Stop::Error(d.help(format!(
+                    "name a tool by its comment in the tool table: `T5 P5 Z2.0 D2.48 ;{wanted}`"
+                ))),
+                other => other,
+            }
+        })
 }
 
 /// mm per machine unit.
@@ -84,7 +118,9 @@ fn tool_change(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
 /// the table gives them) and #5410 (diameter): written by M6 only, as rs274
 /// does (M61 and G43 leave them; `T0 M6` leaves them too, checked with rs274).
 fn set_tool_parameters(it: &mut Interp<'_, '_>, t: i64) {
-    let Some(tool) = it.tool_table.get(t).cloned() else { return };
+    let Some(tool) = it.tool_table.get(t).cloned() else {
+        return;
+    };
     it.params.set_numbered(5400, Some(t as f64));
     for (i, v) in tool.offset.iter().enumerate() {
         it.params.set_numbered(5401 + i as u32, Some(*v));
@@ -105,7 +141,9 @@ fn radius_comp(
     let side = match side {
         CompSide::Off => {
             if it.comp.is_on() {
-                it.out(Canon::Comment("interpreter: cutter radius compensation off".into()));
+                it.out(Canon::Comment(
+                    "interpreter: cutter radius compensation off".into(),
+                ));
             }
             let sink = &mut it.sink;
             let r = it.comp.stop(&mut |c| sink(c, span));
@@ -117,17 +155,30 @@ fn radius_comp(
     };
     let radius = comp_radius(it, register, diameter, exprs)?;
     let what = if side == Side::Left { "left" } else { "right" };
-    it.out(Canon::Comment(format!("interpreter: cutter radius compensation on {what}")));
+    it.out(Canon::Comment(format!(
+        "interpreter: cutter radius compensation on {what}"
+    )));
     let plane = it.state.plane;
-    it.comp.start(side, radius, plane).map_err(|e| it.comp_error(e))?;
-    it.state.comp_side = if side == Side::Left { CompSide::Left } else { CompSide::Right };
+    it.comp
+        .start(side, radius, plane)
+        .map_err(|e| it.comp_error(e))?;
+    it.state.comp_side = if side == Side::Left {
+        CompSide::Left
+    } else {
+        CompSide::Right
+    };
     it.state.comp_radius = radius;
     Ok(())
 }
 
 /// G41/G42 [D]: half the table diameter of tool D (or of the tool in the
 /// spindle), in program units; G41.1/G42.1 D: half of D itself.
-fn comp_radius(it: &mut Interp<'_, '_>, register: Option<&Value>, dynamic: bool, exprs: &Arena<Expr>) -> Result<f64, Stop> {
+fn comp_radius(
+    it: &mut Interp<'_, '_>,
+    register: Option<&Value>,
+    dynamic: bool,
+    exprs: &Arena<Expr>,
+) -> Result<f64, Stop> {
     let d = match register {
         Some(v) => Some(it.value(v, exprs)?),
         None => None,
@@ -135,13 +186,21 @@ fn comp_radius(it: &mut Interp<'_, '_>, register: Option<&Value>, dynamic: bool,
     if dynamic {
         return Ok(d.unwrap_or(0.0) / 2.0);
     }
-    let t = d.map(|v| v.round() as i64).unwrap_or(it.state.tool_in_spindle);
+    let t = d
+        .map(|v| v.round() as i64)
+        .unwrap_or(it.state.tool_in_spindle);
     if t == 0 {
         return Ok(0.0);
     }
     let dia = match it.tool_table.get(t) {
         Some(tool) => tool.diameter,
-        None => return Err(it.error_at(it.span, Code::ToolNotInTable, format!("Requested tool {t} not found in the tool table"))),
+        None => {
+            return Err(it.error_at(
+                it.span,
+                Code::ToolNotInTable,
+                format!("Requested tool {t} not found in the tool table"),
+            ))
+        }
     };
     Ok(it.state.to_prog(dia * machine_scale(it)) / 2.0)
 }
@@ -168,7 +227,11 @@ fn length_comp(
                 }
                 Ok(o)
             }
-            None => Err(it.error_at(it.span, Code::ToolNotInTable, format!("Requested tool {t} not found in the tool table"))),
+            None => Err(it.error_at(
+                it.span,
+                Code::ToolNotInTable,
+                format!("Requested tool {t} not found in the tool table"),
+            )),
         }
     };
     let h = match register {
@@ -196,7 +259,11 @@ fn length_comp(
             for (i, letter) in crate::ir::AXIS_LETTERS.iter().enumerate() {
                 if let Some(c) = axes.get(*letter) {
                     let v = it.value(&c.value, exprs)?;
-                    o[i] = if super::state::State::is_linear(i) { it.state.to_mm(v) } else { v };
+                    o[i] = if super::state::State::is_linear(i) {
+                        it.state.to_mm(v)
+                    } else {
+                        v
+                    };
                 }
             }
             o

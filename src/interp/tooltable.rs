@@ -67,9 +67,12 @@ impl ToolTable {
                 Ok(Some(t)) => table.tools.push(t),
                 Ok(None) => {}
                 Err(msg) => diags.push(
-                    Diagnostic::new(Code::BadToolTable, format!("tool table line not read: {msg}"))
-                        .primary(Span::new(file, offset, offset + line.len()), "this line")
-                        .help("write `T<tool> P<pocket> Z<length> D<diameter> ;comment`"),
+                    Diagnostic::new(
+                        Code::BadToolTable,
+                        format!("tool table line not read: {msg}"),
+                    )
+                    .primary(Span::new(file, offset, offset + line.len()), "this line")
+                    .help("write `T<tool> P<pocket> Z<length> D<diameter> ;comment`"),
                 ),
             }
             offset += raw.len();
@@ -79,7 +82,10 @@ impl ToolTable {
 
     /// The 1-based row of a tool number.
     pub fn row(&self, number: i64) -> Option<usize> {
-        self.tools.iter().position(|t| t.number == number).map(|i| i + 1)
+        self.tools
+            .iter()
+            .position(|t| t.number == number)
+            .map(|i| i + 1)
     }
 
     pub fn get(&self, number: i64) -> Option<&Tool> {
@@ -95,11 +101,23 @@ fn parse_line(line: &str) -> Result<Option<Tool>, String> {
     if body.trim().is_empty() {
         return Ok(None);
     }
-    let mut t = Tool { number: -1, pocket: 0, offset: [0.0; 9], diameter: 0.0, front_angle: 0.0, back_angle: 0.0, orientation: 0, comment };
+    let mut t = Tool {
+        number: -1,
+        pocket: 0,
+        offset: [0.0; 9],
+        diameter: 0.0,
+        front_angle: 0.0,
+        back_angle: 0.0,
+        orientation: 0,
+        comment,
+    };
     for word in body.split_whitespace() {
         let mut chars = word.chars();
         let letter = chars.next().unwrap_or(' ').to_ascii_uppercase();
-        let value: f64 = chars.as_str().parse().map_err(|_| format!("`{word}` is not a letter and a number"))?;
+        let value: f64 = chars
+            .as_str()
+            .parse()
+            .map_err(|_| format!("`{word}` is not a letter and a number"))?;
         match letter {
             'T' => t.number = value as i64,
             'P' => t.pocket = value as i64,
@@ -126,7 +144,10 @@ mod tests {
 
     #[test]
     fn reads_linuxcnc_tables() {
-        let (t, d) = ToolTable::parse("T7 P3 Z1.5 D0.25 ;a\n\nT3 P1 D.5 Z+0.1\nbad line\n", FileId(0));
+        let (t, d) = ToolTable::parse(
+            "T7 P3 Z1.5 D0.25 ;a\n\nT3 P1 D.5 Z+0.1\nbad line\n",
+            FileId(0),
+        );
         assert_eq!(t.tools.len(), 2);
         assert_eq!(t.row(3), Some(2));
         assert_eq!(t.get(7).unwrap().offset[2], 1.5);

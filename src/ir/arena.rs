@@ -61,7 +61,10 @@ impl<T> Arena<T> {
     pub fn alloc(&mut self, value: T) -> Handle<T> {
         let index = u32::try_from(self.items.len()).expect("arena overflow");
         self.items.push(value);
-        Handle { index, _marker: PhantomData }
+        Handle {
+            index,
+            _marker: PhantomData,
+        }
     }
 
     pub fn len(&self) -> usize {
@@ -78,10 +81,15 @@ impl<T> Arena<T> {
     }
 
     pub fn iter(&self) -> impl Iterator<Item = (Handle<T>, &T)> {
-        self.items
-            .iter()
-            .enumerate()
-            .map(|(i, v)| (Handle { index: i as u32, _marker: PhantomData }, v))
+        self.items.iter().enumerate().map(|(i, v)| {
+            (
+                Handle {
+                    index: i as u32,
+                    _marker: PhantomData,
+                },
+                v,
+            )
+        })
     }
 }
 

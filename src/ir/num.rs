@@ -26,10 +26,18 @@ pub enum NumberError {
 }
 
 impl Decimal {
-    pub const ZERO: Decimal = Decimal { mantissa: 0, scale: 0, point: false };
+    pub const ZERO: Decimal = Decimal {
+        mantissa: 0,
+        scale: 0,
+        point: false,
+    };
 
     pub fn from_int(v: i64) -> Self {
-        Decimal { mantissa: v, scale: 0, point: false }
+        Decimal {
+            mantissa: v,
+            scale: 0,
+            point: false,
+        }
     }
 
     /// Reads `[+-]digits[.digits]` or `[+-].digits` exactly.
@@ -66,7 +74,11 @@ impl Decimal {
         if digits == 0 {
             return Err(NumberError::Malformed);
         }
-        Ok(Decimal { mantissa: if neg { -mantissa } else { mantissa }, scale, point })
+        Ok(Decimal {
+            mantissa: if neg { -mantissa } else { mantissa },
+            scale,
+            point,
+        })
     }
 
     pub fn to_f64(self) -> f64 {
@@ -74,17 +86,24 @@ impl Decimal {
         // exact power of ten gives the correctly rounded double.
         // Powers of ten up to 1e22 are exact doubles (as powi gives them).
         const POW10: [f64; 23] = [
-            1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17,
-            1e18, 1e19, 1e20, 1e21, 1e22,
+            1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+            1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
         ];
-        let p = POW10.get(self.scale as usize).copied().unwrap_or_else(|| 10f64.powi(self.scale as i32));
+        let p = POW10
+            .get(self.scale as usize)
+            .copied()
+            .unwrap_or_else(|| 10f64.powi(self.scale as i32));
         self.mantissa as f64 / p
     }
 
     /// The nearest decimal with at most `places` decimal places, from a double.
     pub fn from_f64(v: f64, places: u8) -> Decimal {
         let m = (v * 10f64.powi(places as i32)).round();
-        let mut d = Decimal { mantissa: m as i64, scale: places, point: true };
+        let mut d = Decimal {
+            mantissa: m as i64,
+            scale: places,
+            point: true,
+        };
         d.trim();
         d
     }
@@ -96,7 +115,8 @@ impl Decimal {
 
     /// The value as an integer, if it is one.
     pub fn as_int(self) -> Option<i64> {
-        self.is_integer().then(|| self.mantissa / 10i64.pow(self.scale as u32))
+        self.is_integer()
+            .then(|| self.mantissa / 10i64.pow(self.scale as u32))
     }
 
     pub fn is_negative(self) -> bool {
@@ -104,7 +124,10 @@ impl Decimal {
     }
 
     pub fn neg(self) -> Decimal {
-        Decimal { mantissa: -self.mantissa, ..self }
+        Decimal {
+            mantissa: -self.mantissa,
+            ..self
+        }
     }
 
     /// Drops trailing zero decimals (the value is unchanged).
@@ -164,7 +187,11 @@ impl std::hash::Hash for Decimal {
 /// As written, minimally: `10`, `10.`, `-0.5`.
 impl fmt::Display for Decimal {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let s = Decimal { point: false, ..*self }.format(self.scale, false);
+        let s = Decimal {
+            point: false,
+            ..*self
+        }
+        .format(self.scale, false);
         f.write_str(&s)?;
         if self.point && self.scale == 0 {
             f.write_str(".")?;
@@ -181,14 +208,23 @@ mod tests {
     fn reads_exactly() {
         let d = Decimal::parse("-0.0625").unwrap();
         assert_eq!((d.mantissa, d.scale, d.point), (-625, 4, true));
-        assert_eq!(Decimal::parse("10.").unwrap(), Decimal::parse("10").unwrap());
+        assert_eq!(
+            Decimal::parse("10.").unwrap(),
+            Decimal::parse("10").unwrap()
+        );
         assert!(Decimal::parse("10.").unwrap().point);
         assert!(!Decimal::parse("10").unwrap().point);
         assert_eq!(Decimal::parse(".5").unwrap().to_f64(), 0.5);
         assert_eq!(Decimal::parse("1.2.3"), Err(NumberError::Malformed));
         assert_eq!(Decimal::parse("."), Err(NumberError::Malformed));
-        assert_eq!(Decimal::parse("1234567890123456789"), Err(NumberError::TooLong));
-        assert_eq!(Decimal::parse("0000000000000000000001").unwrap(), Decimal::from_int(1));
+        assert_eq!(
+            Decimal::parse("1234567890123456789"),
+            Err(NumberError::TooLong)
+        );
+        assert_eq!(
+            Decimal::parse("0000000000000000000001").unwrap(),
+            Decimal::from_int(1)
+        );
     }
 
     #[test]

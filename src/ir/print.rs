@@ -42,7 +42,11 @@ struct Printer<'a> {
 impl Printer<'_> {
     fn num(&self, d: crate::ir::Decimal) -> String {
         if self.opts.by_value {
-            crate::ir::Decimal { point: false, ..d.normalized() }.to_string()
+            crate::ir::Decimal {
+                point: false,
+                ..d.normalized()
+            }
+            .to_string()
         } else {
             d.to_string()
         }
@@ -60,7 +64,11 @@ impl Printer<'_> {
             head.push(format!("N{}", n.node));
         }
         if let Some(s) = &b.skip {
-            head.push(if s.node == 0 { "/".to_string() } else { format!("/{}", s.node) });
+            head.push(if s.node == 0 {
+                "/".to_string()
+            } else {
+                format!("/{}", s.node)
+            });
         }
         if let Some(l) = &b.label {
             head.push(format!("{}:", l.node));
@@ -109,7 +117,12 @@ impl Printer<'_> {
             }
             ExprKind::Binary(op, a, b) => {
                 let p = op.precedence();
-                format!("{}{}{}", self.operand(*a, p, false), bin_sym(*op), self.operand(*b, p, true))
+                format!(
+                    "{}{}{}",
+                    self.operand(*a, p, false),
+                    bin_sym(*op),
+                    self.operand(*b, p, true)
+                )
             }
             ExprKind::Call(f, args) => {
                 let a: Vec<String> = args.iter().map(|x| self.expr(*x)).collect();
@@ -124,7 +137,9 @@ impl Printer<'_> {
     fn operand(&self, id: ExprId, parent: u8, right: bool) -> String {
         let s = self.expr(id);
         match &self.p.exprs[id].kind {
-            ExprKind::Binary(op, ..) if op.precedence() < parent || (right && op.precedence() == parent) => {
+            ExprKind::Binary(op, ..)
+                if op.precedence() < parent || (right && op.precedence() == parent) =>
+            {
                 format!("({s})")
             }
             _ => s,
@@ -174,11 +189,15 @@ impl Printer<'_> {
     }
 
     fn axes(&self, a: &Axes) -> String {
-        a.iter().map(|(l, c)| format!(" {l}={}", self.coord(c))).collect()
+        a.iter()
+            .map(|(l, c)| format!(" {l}={}", self.coord(c)))
+            .collect()
     }
 
     fn words(&self, ws: &[Word]) -> String {
-        ws.iter().map(|w| format!(" {}={}", w.address(), self.value(&w.value))).collect()
+        ws.iter()
+            .map(|w| format!(" {}={}", w.address(), self.value(&w.value)))
+            .collect()
     }
 
     fn cond(&self, c: ExprId) -> String {
@@ -276,12 +295,27 @@ mod tests {
     #[test]
     fn spans_on_request() {
         let mut b = Builder::new("fanuc");
-        b.numbered(10, vec![mv(MotionKind::Linear, &[('X', "10"), ('Y', "2.5")]), StmtKind::Feed(n("100"))]);
+        b.numbered(
+            10,
+            vec![
+                mv(MotionKind::Linear, &[('X', "10"), ('Y', "2.5")]),
+                StmtKind::Feed(n("100")),
+            ],
+        );
         b.line(vec![]);
         let plain = print_program(&b.p);
         assert_eq!(plain, "N10 motion linear X=10 Y=2.5 | feed 100\n(blank)\n");
-        let spanned = print_program_with(&b.p, PrintOptions { spans: true, ..Default::default() });
-        assert_eq!(spanned, "N10 @0..3 motion linear X=10 Y=2.5 @4..7 | feed 100 @8..11\n@16..19\n");
+        let spanned = print_program_with(
+            &b.p,
+            PrintOptions {
+                spans: true,
+                ..Default::default()
+            },
+        );
+        assert_eq!(
+            spanned,
+            "N10 @0..3 motion linear X=10 Y=2.5 @4..7 | feed 100 @8..11\n@16..19\n"
+        );
     }
 
     #[test]
@@ -292,7 +326,10 @@ mod tests {
         let sum = b.bin(Add, c1, c2);
         let prod = b.bin(Mul, a, sum);
         let sub = b.bin(Sub, prod, a);
-        b.line(vec![StmtKind::Assign { var: Var::Named("x".into()), value: sub }]);
+        b.line(vec![StmtKind::Assign {
+            var: Var::Named("x".into()),
+            value: sub,
+        }]);
         assert_eq!(print_program(&b.p), "assign #<x> = #1*(2+3)-#1\n");
     }
 }

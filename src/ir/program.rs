@@ -17,6 +17,11 @@ pub struct Program {
 
 impl Program {
     pub fn new(file: FileId, dialect: impl Into<String>) -> Self {
-        Program { file, dialect: dialect.into(), blocks: Vec::new(), exprs: Arena::new() }
+        Program {
+            file,
+            dialect: dialect.into(),
+            blocks: Vec::new(),
+            exprs: Arena::new(),
+        }
     }
 }

@@ -98,7 +98,9 @@ impl Axes {
 
     /// The axes given, in X Y Z A B C U V W order.
     pub fn iter(&self) -> impl Iterator<Item = (char, &Coord)> {
-        AXIS_LETTERS.iter().filter_map(move |&a| self.get(a).map(|c| (a, c)))
+        AXIS_LETTERS
+            .iter()
+            .filter_map(move |&a| self.get(a).map(|c| (a, c)))
     }
 
     pub fn is_empty(&self) -> bool {
@@ -144,7 +146,10 @@ pub enum MotionKind {
     /// Siemens `CT`: arc tangent to the previous path element.
     ArcTangent,
     /// G38.x probing: `toward` true for G38.2/3, `error` for G38.2/4.
-    Probe { toward: bool, error: bool },
+    Probe {
+        toward: bool,
+        error: bool,
+    },
     /// LinuxCNC G5/G5.1/G5.2 splines, G33 threading: kept by code.
     Other(Decimal),
 }
@@ -198,7 +203,14 @@ pub struct Motion {
 
 impl Motion {
     pub fn new(kind: MotionKind) -> Self {
-        Motion { kind, target: Axes::default(), arc: ArcData::default(), polar_radius: None, polar_angle: None, corner: None }
+        Motion {
+            kind,
+            target: Axes::default(),
+            arc: ArcData::default(),
+            polar_radius: None,
+            polar_angle: None,
+            corner: None,
+        }
     }
 }
 
@@ -367,15 +379,29 @@ pub enum FrameOp {
 pub enum Transform {
     /// Siemens programmable frame `TRANS`/`ATRANS`, `ROT`/`AROT` (with
     /// `RPL=`), `SCALE`/`ASCALE`, `MIRROR`/`AMIRROR`; no axes clears.
-    Frame { op: FrameOp, additive: bool, axes: Axes, rpl: Option<Value> },
+    Frame {
+        op: FrameOp,
+        additive: bool,
+        axes: Axes,
+        rpl: Option<Value>,
+    },
     /// Fanuc G68: rotation about a centre by R degrees.
-    RotateOn { center: Axes, angle: Option<Value> },
+    RotateOn {
+        center: Axes,
+        angle: Option<Value>,
+    },
     RotateOff,
     /// Fanuc G51: scaling about a centre by P (or per axis I J K).
-    ScaleOn { center: Axes, factor: Option<Value>, per_axis: Vec<(char, Value)> },
+    ScaleOn {
+        center: Axes,
+        factor: Option<Value>,
+        per_axis: Vec<(char, Value)>,
+    },
     ScaleOff,
     /// Fanuc G51.1: mirror about the given axis positions.
-    MirrorOn { axes: Axes },
+    MirrorOn {
+        axes: Axes,
+    },
     MirrorOff,
 }
 
@@ -516,7 +542,12 @@ pub struct Word {
 
 impl Word {
     pub fn new(letter: char, value: Value, span: Span) -> Self {
-        Word { letter, suffix: String::new(), value, span }
+        Word {
+            letter,
+            suffix: String::new(),
+            value,
+            span,
+        }
     }
 
     /// The address as written: `X`, `M1`.
@@ -534,20 +565,32 @@ pub enum ToolRef {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub enum StmtKind {
     // ---- program content
-    Comment { text: String, style: CommentStyle },
+    Comment {
+        text: String,
+        style: CommentStyle,
+    },
     /// An operator message: Siemens `MSG("...")`, LinuxCNC `(MSG,...)`.
     Message(Option<String>),
     /// `%` tape marker.
     Tape,
     /// A program's start: Fanuc `O1234`, Siemens `%_N_NAME_MPF`.
-    ProgramStart { number: Option<u32>, name: Option<String> },
+    ProgramStart {
+        number: Option<u32>,
+        name: Option<String>,
+    },
     /// Text understood only as text, writable back only into its dialect.
-    Raw { dialect: String, text: String },
+    Raw {
+        dialect: String,
+        text: String,
+    },
     /// A word no statement takes, kept (and reported as a warning).
     Word(Word),
 
     // ---- modes
-    Units { unit: LengthUnit, with_feeds: bool },
+    Units {
+        unit: LengthUnit,
+        with_feeds: bool,
+    },
     Plane(Plane),
     Distance(DimMode),
     ArcDistance(DimMode),
@@ -555,7 +598,10 @@ pub enum StmtKind {
     Feed(Value),
     SpindleSpeed(Value),
     /// G96 (constant surface speed, optional max RPM D) / G97.
-    SpindleCss { on: bool, max_rpm: Option<Value> },
+    SpindleCss {
+        on: bool,
+        max_rpm: Option<Value>,
+    },
     Spindle(SpindleState),
     Coolant(Coolant),
     ToolSelect(ToolRef),
@@ -570,36 +616,73 @@ pub enum StmtKind {
         #[serde(default, skip_serializing_if = "std::ops::Not::not")]
         diameter: bool,
     },
-    LengthComp { mode: LengthComp, register: Option<Value>, axes: Box<Axes> },
+    LengthComp {
+        mode: LengthComp,
+        register: Option<Value>,
+        axes: Box<Axes>,
+    },
     /// A register word standing alone: `H1` or `D2` without G43/G41.
-    OffsetRegister { letter: char, value: Value },
+    OffsetRegister {
+        letter: char,
+        value: Value,
+    },
     /// Work offset: 1 = G54 … 6 = G59, 7..9 = G59.1..3 (LinuxCNC),
     /// Siemens G505.. as 5..; 0 = Siemens G500 (none). `extended` is the
     /// P of G54.1 / G154.
-    WorkOffset { index: u32, extended: Option<Value> },
+    WorkOffset {
+        index: u32,
+        extended: Option<Value>,
+    },
     /// G53 / SUPA: this block in machine coordinates.
     MachineCoords,
-    CoordShift { kind: CoordShift, axes: Box<Axes> },
+    CoordShift {
+        kind: CoordShift,
+        axes: Box<Axes>,
+    },
     /// G10 data setting: L, P and the other words as written.
-    SetData { l: Value, words: Vec<Word> },
+    SetData {
+        l: Value,
+        words: Vec<Word>,
+    },
     /// G28/G30 (index 1/2) return via the given axes; `store` for G28.1/G30.1.
-    RefReturn { index: u8, axes: Box<Axes>, store: bool },
-    PathMode { mode: PathMode, words: Vec<Word> },
+    RefReturn {
+        index: u8,
+        axes: Box<Axes>,
+        store: bool,
+    },
+    PathMode {
+        mode: PathMode,
+        words: Vec<Word>,
+    },
     /// G98 (true: initial level) / G99 (false: R plane).
     ReturnToInitial(bool),
     Transform(Box<Transform>),
-    Dwell { value: Value, unit: DwellUnit },
+    Dwell {
+        value: Value,
+        unit: DwellUnit,
+    },
     Stop(StopKind),
     /// A machine function that has no neutral meaning (most M codes beyond
     /// the standard ones, G codes a spec marks `aux`), kept by code.
-    Aux { letter: char, code: Decimal, words: Vec<Word> },
+    Aux {
+        letter: char,
+        code: Decimal,
+        words: Vec<Word>,
+    },
     /// A G or M word whose number is an expression (`G#143`, `M[#1]`): it
     /// cannot be looked up before the program runs. `words` are the block's
     /// words that nothing else took (the code may use them).
-    DynamicCode { letter: char, value: ExprId, words: Vec<Word> },
+    DynamicCode {
+        letter: char,
+        value: ExprId,
+        words: Vec<Word>,
+    },
     /// Siemens keyword commands with no neutral meaning (`SOFT`, `FFWON`,
     /// `TRAORI`), with their arguments if written with parentheses.
-    Command { name: String, args: Option<Vec<Arg>> },
+    Command {
+        name: String,
+        args: Option<Vec<Arg>>,
+    },
 
     // ---- motion and cycles
     Motion(Box<Motion>),
@@ -611,43 +694,117 @@ pub enum StmtKind {
     ModalCallCancel,
 
     // ---- variables and control flow
-    Assign { var: Var, value: ExprId },
-    Declare { ty: VarType, vars: Vec<VarDecl> },
-    Goto { target: JumpTarget, dir: JumpDir, cond: Option<ExprId> },
+    Assign {
+        var: Var,
+        value: ExprId,
+    },
+    Declare {
+        ty: VarType,
+        vars: Vec<VarDecl>,
+    },
+    Goto {
+        target: JumpTarget,
+        dir: JumpDir,
+        cond: Option<ExprId>,
+    },
     /// Fanuc `IF [c] THEN stmt`.
-    IfThen { cond: ExprId, then: Box<Stmt> },
-    If { cond: ExprId, id: FlowId },
-    ElseIf { cond: ExprId, id: FlowId },
-    Else { id: FlowId },
-    EndIf { id: FlowId },
-    While { cond: ExprId, id: FlowId },
-    EndWhile { id: FlowId },
+    IfThen {
+        cond: ExprId,
+        then: Box<Stmt>,
+    },
+    If {
+        cond: ExprId,
+        id: FlowId,
+    },
+    ElseIf {
+        cond: ExprId,
+        id: FlowId,
+    },
+    Else {
+        id: FlowId,
+    },
+    EndIf {
+        id: FlowId,
+    },
+    While {
+        cond: ExprId,
+        id: FlowId,
+    },
+    EndWhile {
+        id: FlowId,
+    },
     /// LinuxCNC `o.. do`.
-    Do { id: FlowId },
+    Do {
+        id: FlowId,
+    },
     /// LinuxCNC `o.. while [c]` closing a `do`.
-    DoWhile { cond: ExprId, id: FlowId },
+    DoWhile {
+        cond: ExprId,
+        id: FlowId,
+    },
     /// LinuxCNC `o.. repeat [n]`.
-    Repeat { count: ExprId, id: FlowId },
-    EndRepeat { id: FlowId },
-    For { var: Var, from: ExprId, to: ExprId },
+    Repeat {
+        count: ExprId,
+        id: FlowId,
+    },
+    EndRepeat {
+        id: FlowId,
+    },
+    For {
+        var: Var,
+        from: ExprId,
+        to: ExprId,
+    },
     EndFor,
     Loop,
     EndLoop,
     /// Siemens `REPEAT` opening a REPEAT ... UNTIL loop.
     RepeatUntil,
-    Until { cond: ExprId },
-    Case { selector: ExprId, arms: Vec<CaseArm>, default: Option<(String, JumpDir)> },
+    Until {
+        cond: ExprId,
+    },
+    Case {
+        selector: ExprId,
+        arms: Vec<CaseArm>,
+        default: Option<(String, JumpDir)>,
+    },
     /// Siemens section repeat `REPEAT START [END] P=n` (REPEATB for one block).
-    SectionRepeat { start: String, end: Option<String>, count: Option<ExprId>, single: bool },
-    Break { id: FlowId },
-    Continue { id: FlowId },
+    SectionRepeat {
+        start: String,
+        end: Option<String>,
+        count: Option<ExprId>,
+        single: bool,
+    },
+    Break {
+        id: FlowId,
+    },
+    Continue {
+        id: FlowId,
+    },
     /// Subroutine definition start: LinuxCNC `o100 sub`, Siemens `PROC`.
-    SubStart { name: String, params: Vec<VarDecl>, id: FlowId },
-    SubEnd { id: FlowId, value: Option<ExprId> },
-    Return { id: FlowId, value: Option<ExprId> },
-    Call { kind: CallKind, target: CallTarget, args: CallArgs, repeat: Option<Value> },
+    SubStart {
+        name: String,
+        params: Vec<VarDecl>,
+        id: FlowId,
+    },
+    SubEnd {
+        id: FlowId,
+        value: Option<ExprId>,
+    },
+    Return {
+        id: FlowId,
+        value: Option<ExprId>,
+    },
+    Call {
+        kind: CallKind,
+        target: CallTarget,
+        args: CallArgs,
+        repeat: Option<Value>,
+    },
     /// Fanuc M99 (LinuxCNC Fanuc-style too); `P` returns to a sequence number.
-    SubReturn { to: Option<Value> },
+    SubReturn {
+        to: Option<Value>,
+    },
     /// G67: cancel the modal macro call.
     ModalMacroCancel,
 }

@@ -8,7 +8,8 @@ use super::words::Words;
 use super::Ctx;
 use crate::dialect::{Capability, Meaning, SpindleFn};
 use crate::ir::{
-    CallArgs, CallKind, CallTarget, Decimal, DwellUnit, SpindleState, StmtKind, Transform, Value, Word,
+    CallArgs, CallKind, CallTarget, Decimal, DwellUnit, SpindleState, StmtKind, Transform, Value,
+    Word,
 };
 use crate::syntax::WordSyntax;
 
@@ -32,11 +33,20 @@ fn used_words(cw: &CodeWord<'_>, words: &mut Words) -> Vec<Word> {
 
 /// The code kept by number (no neutral meaning, or not understood).
 pub(super) fn aux(cw: &CodeWord<'_>, words: &mut Words) -> StmtKind {
-    StmtKind::Aux { letter: cw.letter, code: cw.code, words: used_words(cw, words) }
+    StmtKind::Aux {
+        letter: cw.letter,
+        code: cw.code,
+        words: used_words(cw, words),
+    }
 }
 
 /// The statement for a code with a meaning.
-pub(super) fn code_stmt(cw: &CodeWord<'_>, meaning: Meaning, words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
+pub(super) fn code_stmt(
+    cw: &CodeWord<'_>,
+    meaning: Meaning,
+    words: &mut Words,
+    ctx: &mut Ctx<'_>,
+) -> StmtKind {
     use Meaning as M;
     match meaning {
         M::Motion(kind) => StmtKind::Motion(motion(kind, uses(cw), words, ctx)),
@@ -48,22 +58,51 @@ pub(super) fn code_stmt(cw: &CodeWord<'_>, meaning: Meaning, words: &mut Words, 
         M::Distance(d) => StmtKind::Distance(d),
         M::ArcDistance(d) => StmtKind::ArcDistance(d),
         M::FeedMode(f) => StmtKind::FeedMode(f),
-        M::RadiusComp(side) => StmtKind::RadiusComp { side, register: first_used(cw, words), diameter: false },
-        M::RadiusCompDiameter(side) => StmtKind::RadiusComp { side, register: first_used(cw, words), diameter: true },
+        M::RadiusComp(side) => StmtKind::RadiusComp {
+            side,
+            register: first_used(cw, words),
+            diameter: false,
+        },
+        M::RadiusCompDiameter(side) => StmtKind::RadiusComp {
+            side,
+            register: first_used(cw, words),
+            diameter: true,
+        },
         M::LengthComp(mode) => length_comp(cw, mode, words),
-        M::WorkOffset(index) => StmtKind::WorkOffset { index, extended: None },
-        M::WorkOffsetExtended => StmtKind::WorkOffset { index: 1, extended: words.value("P") },
+        M::WorkOffset(index) => StmtKind::WorkOffset {
+            index,
+            extended: None,
+        },
+        M::WorkOffsetExtended => StmtKind::WorkOffset {
+            index: 1,
+            extended: words.value("P"),
+        },
         M::MachineCoords => StmtKind::MachineCoords,
-        M::CoordShift(kind) => StmtKind::CoordShift { kind, axes: Box::new(words.take_axes()) },
+        M::CoordShift(kind) => StmtKind::CoordShift {
+            kind,
+            axes: Box::new(words.take_axes()),
+        },
         M::SetData => set_data(words, ctx),
-        M::RefReturn { index, store } => StmtKind::RefReturn { index, store, axes: Box::new(words.take_axes()) },
-        M::PathMode(mode) => StmtKind::PathMode { mode, words: used_words(cw, words) },
+        M::RefReturn { index, store } => StmtKind::RefReturn {
+            index,
+            store,
+            axes: Box::new(words.take_axes()),
+        },
+        M::PathMode(mode) => StmtKind::PathMode {
+            mode,
+            words: used_words(cw, words),
+        },
         M::ReturnMode(initial) => StmtKind::ReturnToInitial(initial),
         M::Rotate(on) => StmtKind::Transform(Box::new(rotate(on, words))),
         M::Scale(on) => StmtKind::Transform(Box::new(scale(on, words))),
-        M::Mirror(true) => StmtKind::Transform(Box::new(Transform::MirrorOn { axes: words.take_axes() })),
+        M::Mirror(true) => StmtKind::Transform(Box::new(Transform::MirrorOn {
+            axes: words.take_axes(),
+        })),
         M::Mirror(false) => StmtKind::Transform(Box::new(Transform::MirrorOff)),
-        M::Css(on) => StmtKind::SpindleCss { on, max_rpm: if on { first_used(cw, words) } else { None } },
+        M::Css(on) => StmtKind::SpindleCss {
+            on,
+            max_rpm: if on { first_used(cw, words) } else { None },
+        },
         M::MacroCall => macro_call(CallKind::Macro, cw, words, ctx),
         M::ModalMacroCall => macro_call(CallKind::ModalMacro, cw, words, ctx),
         M::ModalMacroCancel => StmtKind::ModalMacroCancel,
@@ -76,14 +115,24 @@ pub(super) fn code_stmt(cw: &CodeWord<'_>, meaning: Meaning, words: &mut Words, 
             sub_call(CallKind::Local, cw, words, ctx)
         }
         M::LocalCall | M::Aux => aux(cw, words),
-        M::SubReturn => StmtKind::SubReturn { to: words.value("P") },
+        M::SubReturn => StmtKind::SubReturn {
+            to: words.value("P"),
+        },
     }
 }
 
 fn length_comp(cw: &CodeWord<'_>, mode: crate::ir::LengthComp, words: &mut Words) -> StmtKind {
     let register = first_used(cw, words);
-    let axes = if mode == crate::ir::LengthComp::Dynamic { words.take_axes() } else { Default::default() };
-    StmtKind::LengthComp { mode, register, axes: Box::new(axes) }
+    let axes = if mode == crate::ir::LengthComp::Dynamic {
+        words.take_axes()
+    } else {
+        Default::default()
+    };
+    StmtKind::LengthComp {
+        mode,
+        register,
+        axes: Box::new(axes),
+    }
 }
 
 fn spindle(cw: &CodeWord<'_>, f: SpindleFn, words: &mut Words) -> SpindleState {
@@ -99,7 +148,10 @@ fn rotate(on: bool, words: &mut Words) -> Transform {
     if !on {
         return Transform::RotateOff;
     }
-    Transform::RotateOn { center: words.take_axes(), angle: words.value("R") }
+    Transform::RotateOn {
+        center: words.take_axes(),
+        angle: words.value("R"),
+    }
 }
 
 fn scale(on: bool, words: &mut Words) -> Transform {
@@ -108,8 +160,15 @@ fn scale(on: bool, words: &mut Words) -> Transform {
     }
     let center = words.take_axes();
     let factor = words.value("P");
-    let per_axis = ['I', 'J', 'K'].iter().filter_map(|c| words.value(*c).map(|v| (*c, v))).collect();
-    Transform::ScaleOn { center, factor, per_axis }
+    let per_axis = ['I', 'J', 'K']
+        .iter()
+        .filter_map(|c| words.value(*c).map(|v| (*c, v)))
+        .collect();
+    Transform::ScaleOn {
+        center,
+        factor,
+        per_axis,
+    }
 }
 
 /// G4: the first word its `dwell_units` name gives the time and unit.
@@ -118,7 +177,10 @@ fn dwell(cw: &CodeWord<'_>, words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
     for (letter, unit) in units {
         if let Some(w) = words.take(letter) {
             check_not_negative(&w.value, w.span, "dwell time", ctx.diags);
-            return StmtKind::Dwell { value: w.value, unit };
+            return StmtKind::Dwell {
+                value: w.value,
+                unit,
+            };
         }
     }
     // Missing time: reported by the required-word check; kept by code.
@@ -128,19 +190,28 @@ fn dwell(cw: &CodeWord<'_>, words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
 /// G10: L, and every other word as written (P, axes, R...).
 fn set_data(words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
     let l = words.take("L");
-    let is_l2 = l.as_ref().and_then(|w| w.value.number()).map(|d| d == Decimal::from_int(2)).unwrap_or(false);
+    let is_l2 = l
+        .as_ref()
+        .and_then(|w| w.value.number())
+        .map(|d| d == Decimal::from_int(2))
+        .unwrap_or(false);
     if is_l2 {
         if let Some(p) = words.get("P").cloned() {
             check_index(&p, "work offset number for G10 L2", Some(9), ctx.diags);
         }
     }
     let l = l.map(|w| w.value).unwrap_or(Value::Number(Decimal::ZERO));
-    StmtKind::SetData { l, words: words.take_all_letters(&[]) }
+    StmtKind::SetData {
+        l,
+        words: words.take_all_letters(&[]),
+    }
 }
 
 /// M98 / M97: target P (a number, packed `P00031234`, or computed), repeats L.
 fn sub_call(kind: CallKind, cw: &CodeWord<'_>, words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
-    let Some(p) = words.take("P") else { return aux(cw, words) };
+    let Some(p) = words.take("P") else {
+        return aux(cw, words);
+    };
     let mut repeat = words.take("L");
     if let Some(l) = &repeat {
         check_index(l, "repeat count", None, ctx.diags);
@@ -148,15 +219,24 @@ fn sub_call(kind: CallKind, cw: &CodeWord<'_>, words: &mut Words, ctx: &mut Ctx<
     let target = match &p.value {
         Value::Expr(e) => CallTarget::Computed(*e),
         Value::Number(_) => {
-            let n = check_index(&p, "program number", Some(u32::MAX as i64), ctx.diags).unwrap_or(0);
+            let n =
+                check_index(&p, "program number", Some(u32::MAX as i64), ctx.diags).unwrap_or(0);
             let (count, program) = unpack(&p, n, repeat.is_some());
             if count > 0 {
-                repeat = Some(WordSyntax { value: Value::Number(Decimal::from_int(count)), ..p.clone() });
+                repeat = Some(WordSyntax {
+                    value: Value::Number(Decimal::from_int(count)),
+                    ..p.clone()
+                });
             }
             CallTarget::Number(program as u32)
         }
     };
-    StmtKind::Call { kind, target, args: CallArgs::None, repeat: repeat.map(|w| w.value) }
+    StmtKind::Call {
+        kind,
+        target,
+        args: CallArgs::None,
+        repeat: repeat.map(|w| w.value),
+    }
 }
 
 /// Fanuc's packed `P00031234`: eight digits written, the first four the
@@ -172,15 +252,22 @@ fn unpack(p: &WordSyntax, n: i64, has_l: bool) -> (i64, i64) {
 
 /// G65 / G66: P the program, L the repeats, every other letter an argument.
 fn macro_call(kind: CallKind, cw: &CodeWord<'_>, words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
-    let Some(p) = words.take("P") else { return aux(cw, words) };
+    let Some(p) = words.take("P") else {
+        return aux(cw, words);
+    };
     let target = match &p.value {
         Value::Expr(e) => CallTarget::Computed(*e),
-        Value::Number(_) => {
-            CallTarget::Number(check_index(&p, "program number", Some(u32::MAX as i64), ctx.diags).unwrap_or(0) as u32)
-        }
+        Value::Number(_) => CallTarget::Number(
+            check_index(&p, "program number", Some(u32::MAX as i64), ctx.diags).unwrap_or(0) as u32,
+        ),
     };
     let repeat = words.value("L");
     let args = words.take_all_letters(&['L', 'N', 'O', 'P']);
     let args = CallArgs::Letters(args.into_iter().map(|w| (w.letter, w.value)).collect());
-    StmtKind::Call { kind, target, args, repeat }
+    StmtKind::Call {
+        kind,
+        target,
+        args,
+        repeat,
+    }
 }

@@ -33,7 +33,9 @@ fn required<'s>(cw: &CodeWord<'s>) -> Required<'s> {
         Some(Meaning::Motion(MotionKind::Arc(ArcDir::Cw | ArcDir::Ccw))) => ARC_WORDS,
         Some(Meaning::Motion(MotionKind::ArcThrough)) => CIP_WORDS,
         Some(Meaning::Cycle(CycleKind::Peck | CycleKind::ChipBreak)) => &["Q", "I"],
-        Some(Meaning::SubCall | Meaning::LocalCall | Meaning::MacroCall | Meaning::ModalMacroCall) => &["P"],
+        Some(
+            Meaning::SubCall | Meaning::LocalCall | Meaning::MacroCall | Meaning::ModalMacroCall,
+        ) => &["P"],
         Some(Meaning::SetData) => &["L"],
         Some(Meaning::Dwell) => {
             return match cw.def {
@@ -91,7 +93,10 @@ fn describe(alts: &[String]) -> String {
     if alts.len() == ARC_WORDS.len() && alts.iter().zip(ARC_WORDS).all(|(a, b)| a == b) {
         return "a centre (`I` `J` `K`), a radius (`R`, `CR=`) or an opening angle (`AR=`)".into();
     }
-    alts.iter().map(|a| format!("`{a}`")).collect::<Vec<_>>().join(" or ")
+    alts.iter()
+        .map(|a| format!("`{a}`"))
+        .collect::<Vec<_>>()
+        .join(" or ")
 }
 
 /// An arc given both a radius and a centre (E0207).
@@ -100,16 +105,24 @@ pub(super) fn check_arc_format(words: &Words, diags: &mut Vec<Diagnostic>) {
     let centre = ["I", "J", "K"].iter().find_map(|a| words.get_free(*a));
     if let (Some(r), Some(c)) = (radius, centre) {
         diags.push(
-            Diagnostic::new(Code::MixedArcFormat, "an arc is given both a radius and a centre")
-                .primary(r.span, "radius")
-                .secondary(c.span, "centre")
-                .help("give either the radius or the centre words, not both"),
+            Diagnostic::new(
+                Code::MixedArcFormat,
+                "an arc is given both a radius and a centre",
+            )
+            .primary(r.span, "radius")
+            .secondary(c.span, "centre")
+            .help("give either the radius or the centre words, not both"),
         );
     }
 }
 
 /// A negative number where only positive ones mean something (E0210).
-pub(super) fn check_not_negative(value: &Value, span: Span, what: &str, diags: &mut Vec<Diagnostic>) {
+pub(super) fn check_not_negative(
+    value: &Value,
+    span: Span,
+    what: &str,
+    diags: &mut Vec<Diagnostic>,
+) {
     if let Value::Number(d) = value {
         if d.is_negative() {
             diags.push(
@@ -123,16 +136,28 @@ pub(super) fn check_not_negative(value: &Value, span: Span, what: &str, diags: &
 
 /// The integer value of an index word (tool, register, program, repeat),
 /// reporting a non-integer, negative or too large number (E0213).
-pub(super) fn check_index(w: &WordSyntax, what: &str, max: Option<i64>, diags: &mut Vec<Diagnostic>) -> Option<i64> {
-    let Value::Number(d) = w.value else { return None };
+pub(super) fn check_index(
+    w: &WordSyntax,
+    what: &str,
+    max: Option<i64>,
+    diags: &mut Vec<Diagnostic>,
+) -> Option<i64> {
+    let Value::Number(d) = w.value else {
+        return None;
+    };
     let n = d.as_int().filter(|n| *n >= 0);
     let ok = n.filter(|n| max.map(|m| *n <= m).unwrap_or(true));
     if ok.is_none() {
-        let range = max.map(|m| format!("a whole number from 0 to {m}")).unwrap_or("a whole number, 0 or more".into());
+        let range = max
+            .map(|m| format!("a whole number from 0 to {m}"))
+            .unwrap_or("a whole number, 0 or more".into());
         diags.push(
-            Diagnostic::new(Code::InvalidValue, format!("`{}{}` is not a valid {what}", w.address, d))
-                .primary(w.span, format!("{what} must be {range}"))
-                .help("correct the number"),
+            Diagnostic::new(
+                Code::InvalidValue,
+                format!("`{}{}` is not a valid {what}", w.address, d),
+            )
+            .primary(w.span, format!("{what} must be {range}"))
+            .help("correct the number"),
         );
     }
     ok

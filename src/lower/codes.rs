@@ -29,7 +29,10 @@ impl CodeWord<'_> {
 
     /// Motion codes and fixed cycles: one of them per block.
     pub fn is_motion(&self) -> bool {
-        matches!(self.meaning, Some(Meaning::Motion(_)) | Some(Meaning::Cycle(_)))
+        matches!(
+            self.meaning,
+            Some(Meaning::Motion(_)) | Some(Meaning::Cycle(_))
+        )
     }
 
     fn group(&self) -> Option<&str> {
@@ -62,13 +65,17 @@ pub(super) struct Cache<'s> {
 
 impl Default for Cache<'_> {
     fn default() -> Self {
-        Cache { slots: vec![None; 2000] }
+        Cache {
+            slots: vec![None; 2000],
+        }
     }
 }
 
 impl<'s> Cache<'s> {
     fn code(&mut self, letter: char, code: Decimal, spec: &'s DialectSpec) -> Option<&'s CodeDef> {
-        let Some(i) = Self::slot(letter, code) else { return spec.code(letter, code) };
+        let Some(i) = Self::slot(letter, code) else {
+            return spec.code(letter, code);
+        };
         *self.slots[i].get_or_insert_with(|| spec.code(letter, code))
     }
 
@@ -97,12 +104,24 @@ pub(super) fn resolve<'s>(
     diags: &mut Vec<Diagnostic>,
 ) -> CodeWord<'s> {
     let def = cache.code(letter, code, spec);
-    let cw = CodeWord { letter, code, span, meaning: def.map(|d| d.meaning), def };
+    let cw = CodeWord {
+        letter,
+        code,
+        span,
+        meaning: def.map(|d| d.meaning),
+        def,
+    };
     if code.is_negative() || (letter == 'M' && !code.is_integer()) {
         diags.push(
-            Diagnostic::new(Code::InvalidValue, format!("`{letter}{code}` is not a valid {letter} code"))
-                .primary(span, "codes are whole numbers, G codes with at most one decimal")
-                .help("check the number"),
+            Diagnostic::new(
+                Code::InvalidValue,
+                format!("`{letter}{code}` is not a valid {letter} code"),
+            )
+            .primary(
+                span,
+                "codes are whole numbers, G codes with at most one decimal",
+            )
+            .help("check the number"),
         );
         return cw;
     }
@@ -115,23 +134,33 @@ pub(super) fn resolve<'s>(
 fn unknown(letter: char, code: Decimal, span: Span, spec: &DialectSpec) -> Diagnostic {
     let name = format!("{letter}{code}");
     if letter == 'G' {
-        return Diagnostic::new(Code::UnknownGCode, format!("`{name}` is not a G code of {}", spec.name))
-            .primary(span, "unknown G code")
-            .help("check the number, or load a dialect spec that defines it with `--dialect-file`");
+        return Diagnostic::new(
+            Code::UnknownGCode,
+            format!("`{name}` is not a G code of {}", spec.name),
+        )
+        .primary(span, "unknown G code")
+        .help("check the number, or load a dialect spec that defines it with `--dialect-file`");
     }
     let d = Diagnostic::new(Code::UnknownMCode, format!("`{name}` is not an M code of {}", spec.name))
         .help("machine builders add M codes: describe this one in a dialect spec loaded with `--dialect-file`");
     if spec.has(Capability::StrictMCodes) {
         d.primary(span, "unknown M code")
     } else {
-        d.with_severity(Severity::Warning).primary(span, "unknown M code, passed to the machine as written")
+        d.with_severity(Severity::Warning)
+            .primary(span, "unknown M code, passed to the machine as written")
     }
 }
 
 /// Reports two motion codes, or two codes of one modal group, in a block.
-pub(super) fn check_groups(codes: &[CodeWord<'_>], spec: &DialectSpec, diags: &mut Vec<Diagnostic>) {
+pub(super) fn check_groups(
+    codes: &[CodeWord<'_>],
+    spec: &DialectSpec,
+    diags: &mut Vec<Diagnostic>,
+) {
     for (i, later) in codes.iter().enumerate() {
-        let Some(first) = codes[..i].iter().find(|c| conflicts(c, later, spec)) else { continue };
+        let Some(first) = codes[..i].iter().find(|c| conflicts(c, later, spec)) else {
+            continue;
+        };
         diags.push(conflict(first, later));
     }
 }
@@ -147,14 +176,20 @@ fn conflicts(a: &CodeWord<'_>, b: &CodeWord<'_>, spec: &DialectSpec) -> bool {
 fn conflict(first: &CodeWord<'_>, later: &CodeWord<'_>) -> Diagnostic {
     let (a, b) = (first.name(), later.name());
     if first.is_motion() && later.is_motion() {
-        return Diagnostic::new(Code::TwoMotionCodes, format!("two motion codes in one block: `{a}` and `{b}`"))
-            .primary(later.span, "second motion code")
-            .secondary(first.span, "first motion code")
-            .help("a block asks for one motion: split it into two blocks or remove one code");
+        return Diagnostic::new(
+            Code::TwoMotionCodes,
+            format!("two motion codes in one block: `{a}` and `{b}`"),
+        )
+        .primary(later.span, "second motion code")
+        .secondary(first.span, "first motion code")
+        .help("a block asks for one motion: split it into two blocks or remove one code");
     }
     let group = first.group().unwrap_or_default();
-    Diagnostic::new(Code::ModalGroupConflict, format!("`{a}` and `{b}` are both in modal group `{group}`"))
-        .primary(later.span, "second code of the group")
-        .secondary(first.span, "first code of the group")
-        .help("codes of one modal group exclude each other: keep one per block")
+    Diagnostic::new(
+        Code::ModalGroupConflict,
+        format!("`{a}` and `{b}` are both in modal group `{group}`"),
+    )
+    .primary(later.span, "second code of the group")
+    .secondary(first.span, "first code of the group")
+    .help("codes of one modal group exclude each other: keep one per block")
 }

@@ -72,14 +72,25 @@ fn has_motion_words(words: &Words) -> bool {
 }
 
 /// Axis words in a block that cancels cycles and has no move (E0209).
-pub(super) fn reject_axes_after_cancel(cancel: Span, words: &mut Words, out: &mut Placement, ctx: &mut Ctx<'_>) {
+pub(super) fn reject_axes_after_cancel(
+    cancel: Span,
+    words: &mut Words,
+    out: &mut Placement,
+    ctx: &mut Ctx<'_>,
+) {
     for a in AXIS_LETTERS {
         let Some(w) = words.take(a) else { continue };
         ctx.diags.push(
-            Diagnostic::new(Code::WordNotAllowed, format!("axis word `{}` in a block that cancels the cycle", w.address))
-                .primary(w.span, "nothing moves to this position")
-                .secondary(cancel, "cycle cancelled here")
-                .help("add a motion code (`G0`, `G1`) or move the axis word to the next block"),
+            Diagnostic::new(
+                Code::WordNotAllowed,
+                format!(
+                    "axis word `{}` in a block that cancels the cycle",
+                    w.address
+                ),
+            )
+            .primary(w.span, "nothing moves to this position")
+            .secondary(cancel, "cycle cancelled here")
+            .help("add a motion code (`G0`, `G1`) or move the axis word to the next block"),
         );
         out.push(place(StmtKind::Word(Word::new(a, w.value, w.span)), w.span));
     }
@@ -134,11 +145,18 @@ fn tool_ref(w: &WordSyntax, ctx: &mut Ctx<'_>) -> ToolRef {
 fn register(w: &WordSyntax, ctx: &mut Ctx<'_>) -> StmtKind {
     check_index(w, "offset number", None, ctx.diags);
     let letter = single_letter(&w.address).unwrap_or('D');
-    let edge = ctx.spec.address(letter).map(|a| a.role == "cutting-edge").unwrap_or(false);
+    let edge = ctx
+        .spec
+        .address(letter)
+        .map(|a| a.role == "cutting-edge")
+        .unwrap_or(false);
     if edge {
         StmtKind::CuttingEdge(w.value.clone())
     } else {
-        StmtKind::OffsetRegister { letter, value: w.value.clone() }
+        StmtKind::OffsetRegister {
+            letter,
+            value: w.value.clone(),
+        }
     }
 }
 
@@ -146,7 +164,9 @@ fn register(w: &WordSyntax, ctx: &mut Ctx<'_>) -> StmtKind {
 /// (`X.48 L6` repeats the cycle): kept without a warning.
 fn modal_cycle_word(w: &WordSyntax, ctx: &Ctx<'_>) -> bool {
     let letter = single_letter(&w.address);
-    letter.map(|c| matches!(c, 'Q' | 'P') || c == ctx.spec.repeat_letter).unwrap_or(false)
+    letter
+        .map(|c| matches!(c, 'Q' | 'P') || c == ctx.spec.repeat_letter)
+        .unwrap_or(false)
 }
 
 /// What the block offers the words nobody took.
@@ -169,7 +189,8 @@ pub(super) fn unused(words: &mut Words, free_of: Free<'_>, out: &mut Placement, 
         return;
     }
     for w in free {
-        let declared = single_letter(&w.address).is_some_and(|c| free_of.declared.contains(&c.to_ascii_uppercase()));
+        let declared = single_letter(&w.address)
+            .is_some_and(|c| free_of.declared.contains(&c.to_ascii_uppercase()));
         if !declared && !(free_of.implicit && modal_cycle_word(&w, ctx)) {
             report_unused(&w, ctx);
         }
@@ -178,13 +199,20 @@ pub(super) fn unused(words: &mut Words, free_of: Free<'_>, out: &mut Placement, 
 }
 
 fn report_unused(w: &WordSyntax, ctx: &mut Ctx<'_>) {
-    let d = Diagnostic::new(Code::WordNotAllowed, format!("nothing in this block uses `{}`", w.address))
-        .help("remove the word, or add the code that uses it");
+    let d = Diagnostic::new(
+        Code::WordNotAllowed,
+        format!("nothing in this block uses `{}`", w.address),
+    )
+    .help("remove the word, or add the code that uses it");
     let d = if ctx.spec.has(Capability::StrictWords) {
         d.primary(w.span, "unused word")
     } else {
-        let d = Diagnostic { code: Code::SuspectWord, ..d };
-        d.with_severity(Severity::Warning).primary(w.span, "unused word, kept as written")
+        let d = Diagnostic {
+            code: Code::SuspectWord,
+            ..d
+        };
+        d.with_severity(Severity::Warning)
+            .primary(w.span, "unused word, kept as written")
     };
     ctx.diags.push(d);
 }
@@ -193,7 +221,10 @@ fn report_unused(w: &WordSyntax, ctx: &mut Ctx<'_>) {
 pub(super) fn keep(w: &WordSyntax, ctx: &Ctx<'_>) -> StmtKind {
     match (single_letter(&w.address), &w.value) {
         (Some(_), _) | (None, Value::Expr(_)) => StmtKind::Word(as_word(w)),
-        (None, Value::Number(d)) => StmtKind::Raw { dialect: ctx.spec.id.clone(), text: raw_text(w, *d) },
+        (None, Value::Number(d)) => StmtKind::Raw {
+            dialect: ctx.spec.id.clone(),
+            text: raw_text(w, *d),
+        },
     }
 }
 
@@ -209,5 +240,10 @@ fn raw_text(w: &WordSyntax, d: Decimal) -> String {
 pub(super) fn as_word(w: &WordSyntax) -> Word {
     let letter = w.address.chars().next().unwrap_or('?');
     let suffix = w.address.chars().skip(1).collect();
-    Word { letter, suffix, value: w.value.clone(), span: w.span }
+    Word {
+        letter,
+        suffix,
+        value: w.value.clone(),
+        span: w.span,
+    }
 }

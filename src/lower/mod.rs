@@ -61,10 +61,21 @@ impl Sorted<'_> {
 }
 
 /// Lowers one line's words to statements (see the module doc).
-pub fn lower_line(mut line: LineSyntax, spec: &DialectSpec, exprs: &Arena<Expr>, diags: &mut Vec<Diagnostic>) -> Block {
+pub fn lower_line(
+    mut line: LineSyntax,
+    spec: &DialectSpec,
+    exprs: &Arena<Expr>,
+    diags: &mut Vec<Diagnostic>,
+) -> Block {
     let mut stmts = Vec::new();
     Lowering::new(spec).lower(&mut line.items, exprs, diags, &mut stmts);
-    Block { span: line.span, skip: line.skip, number: line.number, label: line.label, stmts }
+    Block {
+        span: line.span,
+        skip: line.skip,
+        number: line.number,
+        label: line.label,
+        stmts,
+    }
 }
 
 /// The lowering of one file's lines, keeping its buffers from line to
@@ -107,16 +118,31 @@ impl<'s> Lowering<'s> {
 
     /// Lowers the items (which are taken, leaving the vector empty) into
     /// `stmts` (appended, in source order).
-    pub fn lower(&mut self, items: &mut Vec<Item>, exprs: &Arena<Expr>, diags: &mut Vec<Diagnostic>, stmts: &mut Vec<Stmt>) {
+    pub fn lower(
+        &mut self,
+        items: &mut Vec<Item>,
+        exprs: &Arena<Expr>,
+        diags: &mut Vec<Diagnostic>,
+        stmts: &mut Vec<Stmt>,
+    ) {
         let spec = self.spec;
-        let mut ctx = Ctx { spec, exprs, diags, spare_moves: &mut self.spare_moves };
+        let mut ctx = Ctx {
+            spec,
+            exprs,
+            diags,
+            spare_moves: &mut self.spare_moves,
+        };
         let s = &mut self.sorted;
         s.clear();
         self.words.clear();
         // Words go straight to the word set unless lengths are converted
         // first (which needs all of them).
         let direct = !words::converts_increments(spec);
-        let to = if direct { Some((&mut self.words, &mut self.repeated, &mut self.deferred)) } else { None };
+        let to = if direct {
+            Some((&mut self.words, &mut self.repeated, &mut self.deferred))
+        } else {
+            None
+        };
         sort_items(items, s, to, &mut self.codes, spec, ctx.diags);
         // Repeated words are reported after the codes, as when words come later.
         ctx.diags.append(&mut self.deferred);
@@ -132,7 +158,8 @@ impl<'s> Lowering<'s> {
         lower_codes(&s.codes, &mut self.words, &mut s.out, &mut ctx);
         finish(s, &mut self.words, &mut ctx);
         for w in self.repeated.drain(..) {
-            s.out.push((w.span.start, Stmt::new(leftover::keep(&w, &ctx), w.span)));
+            s.out
+                .push((w.span.start, Stmt::new(leftover::keep(&w, &ctx), w.span)));
         }
         s.out.drain_sorted_into(stmts);
     }
@@ -156,7 +183,13 @@ fn sort_items<'s>(
             b"M" => 'M',
             a => {
                 match codes::pseudo_motion(a) {
-                    Some(m) => s.codes.push(CodeWord { letter: '\0', code: crate::ir::Decimal::ZERO, span: w.span, meaning: Some(m), def: None }),
+                    Some(m) => s.codes.push(CodeWord {
+                        letter: '\0',
+                        code: crate::ir::Decimal::ZERO,
+                        span: w.span,
+                        meaning: Some(m),
+                        def: None,
+                    }),
                     None => match &mut direct {
                         Some((words, repeated, deferred)) => words.push(w, deferred, repeated),
                         None => s.plain.push(w.clone()),
@@ -166,7 +199,9 @@ fn sort_items<'s>(
             }
         };
         match w.value {
-            Value::Number(d) => s.codes.push(codes::resolve(letter, d, w.span, cache, spec, diags)),
+            Value::Number(d) => s
+                .codes
+                .push(codes::resolve(letter, d, w.span, cache, spec, diags)),
             Value::Expr(e) => s.dynamic.push((letter, e, w.span)),
         }
     }
@@ -209,11 +244,17 @@ fn lower_codes(codes: &[CodeWord<'_>], words: &mut Words, out: &mut Placement, c
 /// Everything after the codes: moves, standalone words, dynamic codes, and
 /// the words nobody took.
 fn finish(s: &mut Sorted<'_>, words: &mut Words, ctx: &mut Ctx<'_>) {
-    let cancel = s.codes.iter().find(|c| c.meaning == Some(Meaning::CycleCancel)).map(|c| c.span);
+    let cancel = s
+        .codes
+        .iter()
+        .find(|c| c.meaning == Some(Meaning::CycleCancel))
+        .map(|c| c.span);
     let has_motion = s.codes.iter().any(|c| c.is_motion());
     let mut implicit = false;
     match cancel {
-        Some(span) if !has_motion => leftover::reject_axes_after_cancel(span, words, &mut s.out, ctx),
+        Some(span) if !has_motion => {
+            leftover::reject_axes_after_cancel(span, words, &mut s.out, ctx)
+        }
         _ => {
             let m = leftover::implicit_motion(words, ctx);
             implicit = m.is_some();
@@ -225,11 +266,34 @@ fn finish(s: &mut Sorted<'_>, words: &mut Words, ctx: &mut Ctx<'_>) {
     let has_dynamic = !s.dynamic.is_empty();
     // Letters a code of the block declares in `uses` (M19 R Q P) are kept
     // for the interpreter even when the statement has no field for them.
-    let declared: Vec<char> = s.codes.iter().filter_map(|c| c.def).flat_map(|d| d.uses.iter().copied()).collect();
-    let free = leftover::Free { dynamic: has_dynamic.then_some(&mut dynamic_words), implicit, declared: &declared };
+    let declared: Vec<char> = s
+        .codes
+        .iter()
+        .filter_map(|c| c.def)
+        .flat_map(|d| d.uses.iter().copied())
+        .collect();
+    let free = leftover::Free {
+        dynamic: has_dynamic.then_some(&mut dynamic_words),
+        implicit,
+        declared: &declared,
+    };
     leftover::unused(words, free, &mut s.out, ctx);
     for (i, (letter, value, span)) in s.dynamic.iter().enumerate() {
-        let words = if i == 0 { std::mem::take(&mut dynamic_words) } else { Vec::new() };
-        s.out.push((span.start, Stmt::new(StmtKind::DynamicCode { letter: *letter, value: *value, words }, *span)));
+        let words = if i == 0 {
+            std::mem::take(&mut dynamic_words)
+        } else {
+            Vec::new()
+        };
+        s.out.push((
+            span.start,
+            Stmt::new(
+                StmtKind::DynamicCode {
+                    letter: *letter,
+                    value: *value,
+                    words,
+                },
+                *span,
+            ),
+        ));
     }
 }

@@ -10,16 +10,26 @@ use crate::ir::{Axes, CannedCycle, CornerKind, CycleKind, Motion, MotionKind};
 /// Arc words are read for arcs and for implicit moves (the modal motion
 /// may be an arc).
 fn takes_arc_words(kind: MotionKind) -> bool {
-    matches!(kind, MotionKind::Implicit | MotionKind::Arc(_) | MotionKind::ArcThrough | MotionKind::ArcTangent)
+    matches!(
+        kind,
+        MotionKind::Implicit | MotionKind::Arc(_) | MotionKind::ArcThrough | MotionKind::ArcTangent
+    )
 }
 
 /// Words that make a block without a motion code an implicit move.
-pub(super) const MOTION_WORDS: &[&str] =
-    &["I", "J", "K", "R", "CR", "AR", "TURN", "I1", "J1", "K1", "@", "^", "AP", "RP", "CHF", "CHR", "RND", "RNDM"];
+pub(super) const MOTION_WORDS: &[&str] = &[
+    "I", "J", "K", "R", "CR", "AR", "TURN", "I1", "J1", "K1", "@", "^", "AP", "RP", "CHF", "CHR",
+    "RND", "RNDM",
+];
 
 /// A move: its kind and the words it takes; `uses` adds the code's extra
 /// words (LinuxCNC `P` turns).
-pub(super) fn motion(kind: MotionKind, uses: &[char], words: &mut Words, ctx: &mut Ctx<'_>) -> Box<Motion> {
+pub(super) fn motion(
+    kind: MotionKind,
+    uses: &[char],
+    words: &mut Words,
+    ctx: &mut Ctx<'_>,
+) -> Box<Motion> {
     // Built in place, in the memory of an earlier move if there is one: a
     // move is large, and lines are many.
     let mut m = match ctx.spare_moves.pop() {
@@ -55,7 +65,12 @@ pub(super) fn motion(kind: MotionKind, uses: &[char], words: &mut Words, ctx: &m
 
 /// Siemens `CIP` intermediate point `I1= J1= K1=`.
 fn mid_point(words: &mut Words) -> Option<Axes> {
-    let mid = Axes { x: words.coord("I1"), y: words.coord("J1"), z: words.coord("K1"), ..Default::default() };
+    let mid = Axes {
+        x: words.coord("I1"),
+        y: words.coord("J1"),
+        z: words.coord("K1"),
+        ..Default::default()
+    };
     (!mid.is_empty()).then_some(mid)
 }
 
@@ -66,7 +81,9 @@ fn corner(words: &mut Words) -> Option<(CornerKind, crate::ir::Value)> {
         ("RND", CornerKind::Round),
         ("RNDM", CornerKind::RoundModal),
     ];
-    KINDS.iter().find_map(|(a, k)| words.value(*a).map(|v| (*k, v)))
+    KINDS
+        .iter()
+        .find_map(|(a, k)| words.value(*a).map(|v| (*k, v)))
 }
 
 /// A fixed cycle with its words.

@@ -10,13 +10,24 @@ use crate::syntax::{Item, LineSyntax, WordSyntax};
 
 /// One code: `def('G', "83", "cycle", "cycle.peck", "Q", "")`; `requires`
 /// lists alternatives with `|` and entries with `,`.
-pub fn def(letter: char, code: &str, group: &str, meaning: &str, requires: &str, uses: &str) -> CodeDef {
+pub fn def(
+    letter: char,
+    code: &str,
+    group: &str,
+    meaning: &str,
+    requires: &str,
+    uses: &str,
+) -> CodeDef {
     CodeDef {
         letter,
         code: Decimal::parse(code).unwrap(),
         group: group.into(),
         meaning: Meaning::parse(meaning).unwrap_or_else(|| panic!("meaning {meaning}")),
-        requires: requires.split(',').filter(|s| !s.is_empty()).map(|alt| alt.split('|').map(|s| s.chars().next().unwrap()).collect()).collect(),
+        requires: requires
+            .split(',')
+            .filter(|s| !s.is_empty())
+            .map(|alt| alt.split('|').map(|s| s.chars().next().unwrap()).collect())
+            .collect(),
         uses: uses.chars().collect(),
         dwell_units: Vec::new(),
         preferred: false,
@@ -40,10 +51,18 @@ fn rules(integer_lengths: IntegerLengths) -> NumberRules {
 
 fn addresses(spec: &mut DialectSpec, lengths: &str, others: &str) {
     for c in lengths.chars() {
-        spec.addresses.push(AddressDef { letter: c, role: "length".into(), length: true });
+        spec.addresses.push(AddressDef {
+            letter: c,
+            role: "length".into(),
+            length: true,
+        });
     }
     for c in others.chars() {
-        spec.addresses.push(AddressDef { letter: c, role: "other".into(), length: false });
+        spec.addresses.push(AddressDef {
+            letter: c,
+            role: "other".into(),
+            length: false,
+        });
     }
 }
 
@@ -84,7 +103,12 @@ fn common_codes(group_cycle: &str) -> Vec<CodeDef> {
 
 /// Fanuc-like: lengths without a point in increments, lenient words and M codes.
 pub fn fanuc() -> DialectSpec {
-    let mut s = DialectSpec::new("fanuc".into(), "Fanuc-like".into(), Family::WordAddress, rules(IntegerLengths::Increments));
+    let mut s = DialectSpec::new(
+        "fanuc".into(),
+        "Fanuc-like".into(),
+        Family::WordAddress,
+        rules(IntegerLengths::Increments),
+    );
     addresses(&mut s, "XYZABCUVWIJKRQ", "FSTDHPLNO");
     s.codes = common_codes("cycle");
     s.codes.extend([
@@ -94,19 +118,35 @@ pub fn fanuc() -> DialectSpec {
         def('G', "69", "rotation", "rotate.off", "", ""),
         def('M', "97", "", "sub.local-call", "", ""),
     ]);
-    s.capabilities = [Capability::MacroB, Capability::NumberedPrograms, Capability::LocalSubprogramCall].into();
+    s.capabilities = [
+        Capability::MacroB,
+        Capability::NumberedPrograms,
+        Capability::LocalSubprogramCall,
+    ]
+    .into();
     s.reindex();
     s
 }
 
 /// LinuxCNC-like: strict M codes and words, G80 in the motion group.
 pub fn linuxcnc() -> DialectSpec {
-    let mut s = DialectSpec::new("linuxcnc".into(), "LinuxCNC-like".into(), Family::WordAddress, rules(IntegerLengths::Units));
+    let mut s = DialectSpec::new(
+        "linuxcnc".into(),
+        "LinuxCNC-like".into(),
+        Family::WordAddress,
+        rules(IntegerLengths::Units),
+    );
     addresses(&mut s, "XYZABCUVWIJKRQ", "FSTDHPLN");
     s.codes = common_codes("motion");
-    s.codes.push(def('G', "64", "path", "path.continuous", "", "PQ"));
-    s.capabilities =
-        [Capability::StrictMCodes, Capability::StrictWords, Capability::ProgramEndRequired, Capability::OWords].into();
+    s.codes
+        .push(def('G', "64", "path", "path.continuous", "", "PQ"));
+    s.capabilities = [
+        Capability::StrictMCodes,
+        Capability::StrictWords,
+        Capability::ProgramEndRequired,
+        Capability::OWords,
+    ]
+    .into();
     s.repeat_letter = 'L';
     s.reindex();
     s
@@ -114,9 +154,18 @@ pub fn linuxcnc() -> DialectSpec {
 
 /// Siemens-like: `D` is a cutting edge.
 pub fn siemens() -> DialectSpec {
-    let mut s = DialectSpec::new("siemens840d".into(), "Siemens-like".into(), Family::Sinumerik, rules(IntegerLengths::Units));
+    let mut s = DialectSpec::new(
+        "siemens840d".into(),
+        "Siemens-like".into(),
+        Family::Sinumerik,
+        rules(IntegerLengths::Units),
+    );
     addresses(&mut s, "XYZABCIJK", "FST");
-    s.addresses.push(AddressDef { letter: 'D', role: "cutting-edge".into(), length: false });
+    s.addresses.push(AddressDef {
+        letter: 'D',
+        role: "cutting-edge".into(),
+        length: false,
+    });
     s.codes = common_codes("motion");
     s.capabilities = [Capability::StructuredControl].into();
     s.reindex();
@@ -128,16 +177,31 @@ fn word(tok: &str, span: Span, exprs: &mut Arena<Expr>) -> WordSyntax {
     let (address, value, extended) = match tok.split_once('=') {
         Some((a, v)) => (a.to_string(), v, true),
         None => {
-            let n = tok.find(|c: char| !(c.is_ascii_alphabetic() || c == '@' || c == '^')).unwrap_or(tok.len());
+            let n = tok
+                .find(|c: char| !(c.is_ascii_alphabetic() || c == '@' || c == '^'))
+                .unwrap_or(tok.len());
             (tok[..n].to_string(), &tok[n..], false)
         }
     };
     let value = match value.strip_prefix('#') {
-        Some(n) => Value::Expr(exprs.alloc(Expr { kind: ExprKind::Var(Var::Numbered(n.parse().unwrap())), span })),
+        Some(n) => Value::Expr(exprs.alloc(Expr {
+            kind: ExprKind::Var(Var::Numbered(n.parse().unwrap())),
+            span,
+        })),
         None => Value::Number(Decimal::parse(if value.is_empty() { "0" } else { value }).unwrap()),
     };
-    let address_span = Span { end: span.start + address.len() as u32, ..span };
-    WordSyntax { address: address.into(), value, dim: None, extended, span, address_span }
+    let address_span = Span {
+        end: span.start + address.len() as u32,
+        ..span
+    };
+    WordSyntax {
+        address: address.into(),
+        value,
+        dim: None,
+        extended,
+        span,
+        address_span,
+    }
 }
 
 /// Splits a line on spaces into words; `N10` becomes the line number.
@@ -151,7 +215,11 @@ pub fn line(text: &str, file: FileId, offset: u32, exprs: &mut Arena<Expr>) -> L
     };
     let mut pos = 0usize;
     for tok in text.split(' ') {
-        let span = Span::new(file, offset as usize + pos, offset as usize + pos + tok.len());
+        let span = Span::new(
+            file,
+            offset as usize + pos,
+            offset as usize + pos + tok.len(),
+        );
         pos += tok.len() + 1;
         if tok.is_empty() {
             continue;

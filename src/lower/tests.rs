@@ -22,7 +22,11 @@ fn run(spec: &DialectSpec, text: &str) -> Out {
     let mut diags = Vec::new();
     let block = lower_line(l, spec, &exprs, &mut diags);
     let rendered = render::human(&diags, &map, false);
-    Out { block, diags, rendered }
+    Out {
+        block,
+        diags,
+        rendered,
+    }
 }
 
 fn kinds(o: &Out) -> Vec<&StmtKind> {
@@ -72,7 +76,11 @@ fn lengths_without_point_are_increments_once_per_line() {
     let x = m.target.x.as_ref().unwrap().value.number().unwrap();
     assert_eq!((x.mantissa, x.scale, x.point), (10, 3, true));
     assert_eq!(m.target.z.as_ref().unwrap().value, num("-0.025"));
-    assert_eq!(kinds(&o)[1], &StmtKind::Feed(num("100")), "F is not a length");
+    assert_eq!(
+        kinds(&o)[1],
+        &StmtKind::Feed(num("100")),
+        "F is not a length"
+    );
     assert_eq!(codes(&o), vec![Code::LengthWithoutPoint]);
     insta::assert_snapshot!(o.rendered);
     assert!(run(&linuxcnc(), "G1 X10").diags.is_empty());
@@ -85,15 +93,24 @@ fn two_motion_codes() {
     insta::assert_snapshot!(o.rendered);
     let o = run(&fanuc(), "G1 G81 X1. Z-1. R1.");
     assert_eq!(codes(&o), vec![Code::TwoMotionCodes]);
-    assert!(run(&fanuc(), "G80 G0 Z10.").diags.is_empty(), "G80 is its own group in Fanuc");
+    assert!(
+        run(&fanuc(), "G80 G0 Z10.").diags.is_empty(),
+        "G80 is its own group in Fanuc"
+    );
 }
 
 #[test]
 fn two_codes_of_one_group() {
     let o = run(&fanuc(), "G90 G91 G92 G28 X0");
-    assert_eq!(codes(&o), vec![Code::ModalGroupConflict, Code::ModalGroupConflict]);
+    assert_eq!(
+        codes(&o),
+        vec![Code::ModalGroupConflict, Code::ModalGroupConflict]
+    );
     insta::assert_snapshot!(o.rendered);
-    assert_eq!(codes(&run(&linuxcnc(), "G80 G0 Z1")), vec![Code::ModalGroupConflict]);
+    assert_eq!(
+        codes(&run(&linuxcnc(), "G80 G0 Z1")),
+        vec![Code::ModalGroupConflict]
+    );
 }
 
 #[test]
@@ -112,7 +129,10 @@ fn unknown_codes() {
 fn repeated_word_is_reported_and_kept() {
     let o = run(&fanuc(), "G1 X1. X2.");
     assert_eq!(codes(&o), vec![Code::RepeatedWord]);
-    assert!(matches!(kinds(&o)[1], StmtKind::Word(Word { letter: 'X', .. })));
+    assert!(matches!(
+        kinds(&o)[1],
+        StmtKind::Word(Word { letter: 'X', .. })
+    ));
     insta::assert_snapshot!(o.rendered);
     assert!(run(&fanuc(), "M3 M8").diags.is_empty(), "G and M repeat");
 }
@@ -126,9 +146,15 @@ fn missing_required_words() {
     let o = run(&fanuc(), "G2 X1. Y1.");
     assert_eq!(codes(&o), vec![Code::MissingWord]);
     insta::assert_snapshot!("missing_arc", o.rendered);
-    assert!(run(&fanuc(), "G2 I5.").diags.is_empty(), "full circle by centre");
+    assert!(
+        run(&fanuc(), "G2 I5.").diags.is_empty(),
+        "full circle by centre"
+    );
     assert!(run(&siemens(), "G2 X1 Y1 CR=5").diags.is_empty());
-    assert_eq!(codes(&run(&siemens(), "CIP X1 Y1")), vec![Code::MissingWord]);
+    assert_eq!(
+        codes(&run(&siemens(), "CIP X1 Y1")),
+        vec![Code::MissingWord]
+    );
 }
 
 #[test]
@@ -136,7 +162,10 @@ fn radius_with_centre() {
     let o = run(&fanuc(), "G2 X1. R1. I1.");
     assert_eq!(codes(&o), vec![Code::MixedArcFormat]);
     insta::assert_snapshot!(o.rendered);
-    assert!(run(&fanuc(), "G83 X1. Z-1. R1. Q1. I1.").diags.is_empty(), "cycles take R and I");
+    assert!(
+        run(&fanuc(), "G83 X1. Z-1. R1. Q1. I1.").diags.is_empty(),
+        "cycles take R and I"
+    );
 }
 
 #[test]
@@ -144,7 +173,10 @@ fn unused_words() {
     let o = run(&fanuc(), "G0 X1. L5");
     assert_eq!(codes(&o), vec![Code::SuspectWord]);
     assert_eq!(o.diags[0].severity, Severity::Warning);
-    assert!(matches!(kinds(&o)[1], StmtKind::Word(Word { letter: 'L', .. })));
+    assert!(matches!(
+        kinds(&o)[1],
+        StmtKind::Word(Word { letter: 'L', .. })
+    ));
     insta::assert_snapshot!("unused_lenient", o.rendered);
     let o = run(&linuxcnc(), "G0 X1 L5");
     assert_eq!(codes(&o), vec![Code::WordNotAllowed]);
@@ -157,7 +189,14 @@ fn unused_words() {
 #[test]
 fn negative_values() {
     let o = run(&fanuc(), "G83 X0 Z-1. R1. Q-1. F-100 S-5");
-    assert_eq!(codes(&o), vec![Code::NegativeValue, Code::NegativeValue, Code::NegativeValue]);
+    assert_eq!(
+        codes(&o),
+        vec![
+            Code::NegativeValue,
+            Code::NegativeValue,
+            Code::NegativeValue
+        ]
+    );
     insta::assert_snapshot!(o.rendered);
     assert_eq!(codes(&run(&fanuc(), "G4 P-5")), vec![Code::NegativeValue]);
 }
@@ -183,12 +222,37 @@ fn subprogram_calls_and_returns() {
     let o = run(&fanuc(), "M98 P00031234");
     assert_eq!(kinds(&o), vec![&call], "packed count and program");
     let o = run(&fanuc(), "M98 P31234");
-    assert!(matches!(kinds(&o)[0], StmtKind::Call { target: CallTarget::Number(31234), repeat: None, .. }));
+    assert!(matches!(
+        kinds(&o)[0],
+        StmtKind::Call {
+            target: CallTarget::Number(31234),
+            repeat: None,
+            ..
+        }
+    ));
     let o = run(&fanuc(), "M98 P#146");
-    assert!(matches!(kinds(&o)[0], StmtKind::Call { target: CallTarget::Computed(_), .. }));
-    assert_eq!(kinds(&run(&fanuc(), "M99 P10")), vec![&StmtKind::SubReturn { to: Some(num("10")) }]);
+    assert!(matches!(
+        kinds(&o)[0],
+        StmtKind::Call {
+            target: CallTarget::Computed(_),
+            ..
+        }
+    ));
+    assert_eq!(
+        kinds(&run(&fanuc(), "M99 P10")),
+        vec![&StmtKind::SubReturn {
+            to: Some(num("10"))
+        }]
+    );
     let o = run(&fanuc(), "M97 P100");
-    assert!(matches!(kinds(&o)[0], StmtKind::Call { kind: CallKind::Local, target: CallTarget::Number(100), .. }));
+    assert!(matches!(
+        kinds(&o)[0],
+        StmtKind::Call {
+            kind: CallKind::Local,
+            target: CallTarget::Number(100),
+            ..
+        }
+    ));
     assert_eq!(codes(&run(&fanuc(), "M98")), vec![Code::MissingWord]);
 }
 
@@ -196,8 +260,12 @@ fn subprogram_calls_and_returns() {
 fn macro_call_takes_every_letter() {
     let o = run(&fanuc(), "G65 P9010 A1. X2. F3.");
     assert!(o.diags.is_empty(), "{}", o.rendered);
-    let StmtKind::Call { kind: CallKind::Macro, target: CallTarget::Number(9010), args: CallArgs::Letters(a), .. } =
-        kinds(&o)[0]
+    let StmtKind::Call {
+        kind: CallKind::Macro,
+        target: CallTarget::Number(9010),
+        args: CallArgs::Letters(a),
+        ..
+    } = kinds(&o)[0]
     else {
         panic!("{:?}", kinds(&o))
     };
@@ -208,13 +276,24 @@ fn macro_call_takes_every_letter() {
 #[test]
 fn cycle_words() {
     let o = run(&linuxcnc(), "G99 G83 X1 Y2 Z-5 R1 Q0.5 L3 F100");
-    let StmtKind::Cycle(c) = kinds(&o).into_iter().find(|k| matches!(k, StmtKind::Cycle(_))).unwrap() else {
+    let StmtKind::Cycle(c) = kinds(&o)
+        .into_iter()
+        .find(|k| matches!(k, StmtKind::Cycle(_)))
+        .unwrap()
+    else {
         unreachable!()
     };
     assert_eq!(c.kind, CycleKind::Peck);
-    assert_eq!((c.r.clone(), c.q.clone(), c.repeat.clone()), (Some(num("1")), Some(num("0.5")), Some(num("3"))));
+    assert_eq!(
+        (c.r.clone(), c.q.clone(), c.repeat.clone()),
+        (Some(num("1")), Some(num("0.5")), Some(num("3")))
+    );
     assert_eq!(c.target.z.as_ref().unwrap().value, num("-5"));
-    assert_eq!(codes(&o), vec![Code::UnknownGCode], "G99 is not in the LinuxCNC-like table");
+    assert_eq!(
+        codes(&o),
+        vec![Code::UnknownGCode],
+        "G99 is not in the LinuxCNC-like table"
+    );
 }
 
 #[test]
@@ -226,42 +305,85 @@ fn modes_tools_and_registers() {
         vec![
             &StmtKind::Distance(DimMode::Absolute),
             &StmtKind::Plane(Plane::XY),
-            &StmtKind::Units { unit: LengthUnit::Mm, with_feeds: false },
-            &StmtKind::WorkOffset { index: 1, extended: None },
+            &StmtKind::Units {
+                unit: LengthUnit::Mm,
+                with_feeds: false
+            },
+            &StmtKind::WorkOffset {
+                index: 1,
+                extended: None
+            },
             &StmtKind::ToolSelect(ToolRef::Number(num("1"))),
             &StmtKind::ToolChange,
-            &StmtKind::LengthComp { mode: LengthComp::Positive, register: Some(num("1")), axes: Box::new(Axes::default()) },
-            &StmtKind::OffsetRegister { letter: 'D', value: num("2") },
+            &StmtKind::LengthComp {
+                mode: LengthComp::Positive,
+                register: Some(num("1")),
+                axes: Box::new(Axes::default())
+            },
+            &StmtKind::OffsetRegister {
+                letter: 'D',
+                value: num("2")
+            },
             &StmtKind::Spindle(SpindleState::Cw),
             &StmtKind::SpindleSpeed(num("1000")),
             &StmtKind::Coolant(Coolant::Flood),
         ]
     );
-    assert_eq!(kinds(&run(&siemens(), "D1")), vec![&StmtKind::CuttingEdge(num("1"))]);
+    assert_eq!(
+        kinds(&run(&siemens(), "D1")),
+        vec![&StmtKind::CuttingEdge(num("1"))]
+    );
     let o = run(&fanuc(), "G54.1 P5 M19 R45.");
-    assert_eq!(kinds(&o)[0], &StmtKind::WorkOffset { index: 1, extended: Some(num("5")) });
-    assert_eq!(kinds(&o)[1], &StmtKind::Spindle(SpindleState::Orient(Some(num("45.")))));
+    assert_eq!(
+        kinds(&o)[0],
+        &StmtKind::WorkOffset {
+            index: 1,
+            extended: Some(num("5"))
+        }
+    );
+    assert_eq!(
+        kinds(&o)[1],
+        &StmtKind::Spindle(SpindleState::Orient(Some(num("45."))))
+    );
 }
 
 #[test]
 fn dwell_units_come_from_the_spec() {
     let o = run(&fanuc(), "G4 P500");
-    assert_eq!(kinds(&o), vec![&StmtKind::Dwell { value: num("500"), unit: DwellUnit::Milliseconds }]);
+    assert_eq!(
+        kinds(&o),
+        vec![&StmtKind::Dwell {
+            value: num("500"),
+            unit: DwellUnit::Milliseconds
+        }]
+    );
     let o = run(&fanuc(), "G4 X1.5");
-    assert_eq!(kinds(&o), vec![&StmtKind::Dwell { value: num("1.5"), unit: DwellUnit::Seconds }]);
+    assert_eq!(
+        kinds(&o),
+        vec![&StmtKind::Dwell {
+            value: num("1.5"),
+            unit: DwellUnit::Seconds
+        }]
+    );
 }
 
 #[test]
 fn non_modal_codes_take_the_axes() {
     let o = run(&fanuc(), "G91 G28 Z0");
     assert_eq!(kinds(&o).len(), 2, "no implicit move");
-    assert!(matches!(kinds(&o)[1], StmtKind::RefReturn { index: 1, store: false, axes } if axes.z.is_some()));
+    assert!(
+        matches!(kinds(&o)[1], StmtKind::RefReturn { index: 1, store: false, axes } if axes.z.is_some())
+    );
     let o = run(&fanuc(), "G10 L2 P1 X-100. Y0");
-    let StmtKind::SetData { l, words } = kinds(&o)[0] else { panic!() };
+    let StmtKind::SetData { l, words } = kinds(&o)[0] else {
+        panic!()
+    };
     assert_eq!(l, &num("2"));
     assert_eq!(words.iter().map(|w| w.letter).collect::<String>(), "PXY");
     let o = run(&fanuc(), "G68 X1. Y2. R45.");
-    assert!(matches!(kinds(&o)[0], StmtKind::Transform(t) if matches!(**t, Transform::RotateOn { angle: Some(_), .. })));
+    assert!(
+        matches!(kinds(&o)[0], StmtKind::Transform(t) if matches!(**t, Transform::RotateOn { angle: Some(_), .. }))
+    );
 }
 
 #[test]
@@ -273,7 +395,10 @@ fn siemens_arc_words() {
     let o = run(&siemens(), "CIP X1 Y1 I1=0.5 J1=2");
     let m = motion(&o, 0);
     assert_eq!(m.kind, MotionKind::ArcThrough);
-    assert_eq!(m.arc.mid.as_ref().unwrap().y.as_ref().unwrap().value, num("2"));
+    assert_eq!(
+        m.arc.mid.as_ref().unwrap().y.as_ref().unwrap().value,
+        num("2")
+    );
     assert!(o.diags.is_empty(), "{}", o.rendered);
 }
 
@@ -281,7 +406,9 @@ fn siemens_arc_words() {
 fn dynamic_code_keeps_its_words() {
     let o = run(&fanuc(), "G#143 X1. Q2.");
     assert!(o.diags.is_empty(), "{}", o.rendered);
-    assert!(matches!(kinds(&o)[0], StmtKind::DynamicCode { letter: 'G', words, .. } if words.len() == 1));
+    assert!(
+        matches!(kinds(&o)[0], StmtKind::DynamicCode { letter: 'G', words, .. } if words.len() == 1)
+    );
     assert_eq!(motion(&o, 1).kind, MotionKind::Implicit);
 }
 
@@ -291,7 +418,13 @@ fn statements_from_the_front_end_stay_in_place() {
     let file = map.add("t.nc", "G0 X1. (hi) M8");
     let mut exprs = Arena::new();
     let mut l = line("G0 X1. M8", file, 0, &mut exprs);
-    let comment = Stmt::new(StmtKind::Comment { text: "hi".into(), style: CommentStyle::Paren }, crate::span::Span::new(file, 7, 11));
+    let comment = Stmt::new(
+        StmtKind::Comment {
+            text: "hi".into(),
+            style: CommentStyle::Paren,
+        },
+        crate::span::Span::new(file, 7, 11),
+    );
     let m8 = l.items.pop().unwrap();
     l.items.push(crate::syntax::Item::Stmt(comment));
     if let crate::syntax::Item::Word(mut w) = m8 {
@@ -299,8 +432,18 @@ fn statements_from_the_front_end_stay_in_place() {
         l.items.push(crate::syntax::Item::Word(w));
     }
     let block = lower_line(l, &fanuc(), &exprs, &mut Vec::new());
-    let names: Vec<_> = block.stmts.iter().map(|s| std::mem::discriminant(&s.kind)).collect();
-    assert_eq!(names[1], std::mem::discriminant(&StmtKind::Comment { text: String::new(), style: CommentStyle::Paren }));
+    let names: Vec<_> = block
+        .stmts
+        .iter()
+        .map(|s| std::mem::discriminant(&s.kind))
+        .collect();
+    assert_eq!(
+        names[1],
+        std::mem::discriminant(&StmtKind::Comment {
+            text: String::new(),
+            style: CommentStyle::Paren
+        })
+    );
     assert_eq!(block.stmts[2].kind, StmtKind::Coolant(Coolant::Flood));
 }
 
@@ -319,7 +462,9 @@ fn crude_words(text: &str) -> Option<String> {
             return None;
         }
     }
-    let ok = out.split(' ').all(|w| w.len() > 1 && Decimal::parse(&w[1..]).is_ok() && !w.starts_with('O'));
+    let ok = out
+        .split(' ')
+        .all(|w| w.len() > 1 && Decimal::parse(&w[1..]).is_ok() && !w.starts_with('O'));
     (ok && !out.is_empty()).then_some(out)
 }
 
@@ -333,14 +478,26 @@ fn corpus_lines_lose_no_word() {
         return;
     };
     let mut lines = 0;
-    for file in dirs.flatten().flat_map(|d| std::fs::read_dir(d.path()).into_iter().flatten().flatten()) {
-        let Ok(text) = std::fs::read_to_string(file.path()) else { continue };
+    for file in dirs
+        .flatten()
+        .flat_map(|d| std::fs::read_dir(d.path()).into_iter().flatten().flatten())
+    {
+        let Ok(text) = std::fs::read_to_string(file.path()) else {
+            continue;
+        };
         for l in text.lines().filter_map(crude_words) {
             let o = run(&fanuc(), &l);
             for w in l.split(' ').filter(|w| !w.starts_with('N')) {
                 let start = l.find(w).unwrap() as u32;
-                let covered = o.block.stmts.iter().any(|s| s.span.start <= start && start < s.span.end)
-                    || o.diags.iter().flat_map(|d| &d.labels).any(|lab| lab.span.start == start);
+                let covered = o
+                    .block
+                    .stmts
+                    .iter()
+                    .any(|s| s.span.start <= start && start < s.span.end)
+                    || o.diags
+                        .iter()
+                        .flat_map(|d| &d.labels)
+                        .any(|lab| lab.span.start == start);
                 assert!(covered, "`{w}` of `{l}` was dropped");
             }
             lines += 1;
@@ -353,8 +510,15 @@ fn corpus_lines_lose_no_word() {
 fn modal_cycle_words_in_a_block_without_code_are_kept_quietly() {
     let o = run(&linuxcnc(), "X0.48 L6 Q1");
     assert!(o.diags.is_empty(), "{}", o.rendered);
-    assert!(matches!(kinds(&o)[1], StmtKind::Word(Word { letter: 'L', .. })));
-    assert_eq!(codes(&run(&linuxcnc(), "M3 L6")), vec![Code::WordNotAllowed], "no move: reported");
+    assert!(matches!(
+        kinds(&o)[1],
+        StmtKind::Word(Word { letter: 'L', .. })
+    ));
+    assert_eq!(
+        codes(&run(&linuxcnc(), "M3 L6")),
+        vec![Code::WordNotAllowed],
+        "no move: reported"
+    );
 }
 
 #[test]
@@ -362,13 +526,31 @@ fn g41_1_d_is_a_diameter_and_m19_keeps_its_declared_words() {
     let spec = crate::dialect::builtin::builtin("linuxcnc").expect("linuxcnc");
     let o = run(&spec, "G41.1 D0.5");
     assert!(o.diags.is_empty(), "{}", o.rendered);
-    assert!(kinds(&o).iter().any(|k| matches!(k, StmtKind::RadiusComp { side: CompSide::Left, diameter: true, .. })));
+    assert!(kinds(&o).iter().any(|k| matches!(
+        k,
+        StmtKind::RadiusComp {
+            side: CompSide::Left,
+            diameter: true,
+            ..
+        }
+    )));
     let o = run(&spec, "G41 D1");
-    assert!(kinds(&o).iter().any(|k| matches!(k, StmtKind::RadiusComp { side: CompSide::Left, diameter: false, .. })));
+    assert!(kinds(&o).iter().any(|k| matches!(
+        k,
+        StmtKind::RadiusComp {
+            side: CompSide::Left,
+            diameter: false,
+            ..
+        }
+    )));
     // M19 declares R Q P: Q and P stay in the block for the interpreter.
     let o = run(&spec, "M19 R90 Q2 P1");
     assert!(o.diags.is_empty(), "{}", o.rendered);
     let ks = kinds(&o);
-    assert!(ks.iter().any(|k| matches!(k, StmtKind::Word(Word { letter: 'Q', .. }))));
-    assert!(ks.iter().any(|k| matches!(k, StmtKind::Word(Word { letter: 'P', .. }))));
+    assert!(ks
+        .iter()
+        .any(|k| matches!(k, StmtKind::Word(Word { letter: 'Q', .. }))));
+    assert!(ks
+        .iter()
+        .any(|k| matches!(k, StmtKind::Word(Word { letter: 'P', .. }))));
 }

@@ -52,7 +52,9 @@ fn key(b: &[u8]) -> u64 {
     if b.len() > 8 {
         return u64::MAX - 1;
     }
-    b.iter().enumerate().fold(0u64, |k, (i, &c)| k | (c as u64) << (8 * i))
+    b.iter()
+        .enumerate()
+        .fold(0u64, |k, (i, &c)| k | (c as u64) << (8 * i))
 }
 
 /// One word and whether a statement has taken it.
@@ -88,7 +90,12 @@ impl Words {
 
     /// Adds a word, reporting a repeated address (the repeat is kept aside
     /// in `extra` so that nothing is lost).
-    pub fn push(&mut self, w: &WordSyntax, diags: &mut Vec<Diagnostic>, extra: &mut Vec<WordSyntax>) {
+    pub fn push(
+        &mut self,
+        w: &WordSyntax,
+        diags: &mut Vec<Diagnostic>,
+        extra: &mut Vec<WordSyntax>,
+    ) {
         let letter = match w.address.as_bytes() {
             [b] => letter_index(*b),
             _ => None,
@@ -100,10 +107,13 @@ impl Words {
         };
         if let Some(first) = first {
             diags.push(
-                Diagnostic::new(Code::RepeatedWord, format!("`{}` is given twice in this block", w.address))
-                    .primary(w.span, "repeated here")
-                    .secondary(self.list[first].w.span, "first given here")
-                    .help("keep one of the two words; a block holds each address once"),
+                Diagnostic::new(
+                    Code::RepeatedWord,
+                    format!("`{}` is given twice in this block", w.address),
+                )
+                .primary(w.span, "repeated here")
+                .secondary(self.list[first].w.span, "first given here")
+                .help("keep one of the two words; a block holds each address once"),
             );
             extra.push(w.clone());
             return;
@@ -113,7 +123,11 @@ impl Words {
             None => self.others = true,
         }
         let key = key(w.address.as_bytes());
-        self.list.push(Entry { w: w.clone(), used: false, key });
+        self.list.push(Entry {
+            w: w.clone(),
+            used: false,
+            key,
+        });
         self.free += 1;
     }
 
@@ -157,7 +171,9 @@ impl Words {
     /// A word not yet taken by a statement.
     #[inline]
     pub fn get_free(&self, addr: impl Addr) -> Option<&WordSyntax> {
-        self.find(addr).filter(|&i| !self.list[i].used).map(|i| &self.list[i].w)
+        self.find(addr)
+            .filter(|&i| !self.list[i].used)
+            .map(|i| &self.list[i].w)
     }
 
     /// Starts recording the spans of taken words for one statement.
@@ -200,7 +216,11 @@ impl Words {
 
     #[inline]
     pub fn coord(&mut self, addr: impl Addr) -> Option<Coord> {
-        self.take_ref(addr).map(|w| Coord { value: w.value.clone(), dim: w.dim, span: w.span })
+        self.take_ref(addr).map(|w| Coord {
+            value: w.value.clone(),
+            dim: w.dim,
+            span: w.span,
+        })
     }
 
     /// Whether any free axis word is present.
@@ -239,10 +259,14 @@ impl Words {
             return Vec::new();
         }
         self.free = 0;
-        self.list.iter_mut().filter(|e| !e.used).map(|e| {
-            e.used = true;
-            e.w.clone()
-        }).collect()
+        self.list
+            .iter_mut()
+            .filter(|e| !e.used)
+            .map(|e| {
+                e.used = true;
+                e.w.clone()
+            })
+            .collect()
     }
 
     /// Takes every free single-letter word in source order, but those in `except`.
@@ -250,14 +274,20 @@ impl Words {
         let mut out = Vec::new();
         for i in 0..self.list.len() {
             let e = &self.list[i];
-            let Some(letter) = single_letter(&e.w.address) else { continue };
+            let Some(letter) = single_letter(&e.w.address) else {
+                continue;
+            };
             if e.used || except.contains(&letter) {
                 continue;
             }
             self.list[i].used = true;
             self.free -= 1;
             self.mark_taken(self.list[i].w.span);
-            out.push(Word::new(letter, self.list[i].w.value.clone(), self.list[i].w.span));
+            out.push(Word::new(
+                letter,
+                self.list[i].w.value.clone(),
+                self.list[i].w.span,
+            ));
         }
         out
     }
@@ -267,7 +297,11 @@ impl Words {
 /// the coordinate is assembled on the stack and copied, which stalls.
 #[inline(never)]
 fn put_coord(slot: &mut Option<Coord>, w: &WordSyntax) {
-    *slot = Some(Coord { value: w.value.clone(), dim: w.dim, span: w.span });
+    *slot = Some(Coord {
+        value: w.value.clone(),
+        dim: w.dim,
+        span: w.span,
+    });
 }
 
 /// The letter of a one-letter address, read without a UTF-8 check when ASCII.
@@ -292,7 +326,11 @@ pub(super) fn single_letter(addr: &str) -> Option<char> {
 fn times(value: Decimal, inc: Decimal) -> Option<Decimal> {
     let m = value.mantissa.checked_mul(inc.mantissa)?;
     let scale = value.scale.checked_add(inc.scale)?;
-    Some(Decimal { mantissa: m, scale, point: true })
+    Some(Decimal {
+        mantissa: m,
+        scale,
+        point: true,
+    })
 }
 
 /// Whether the dialect reads lengths without a decimal point in increments.
@@ -302,14 +340,20 @@ pub(super) fn converts_increments(spec: &DialectSpec) -> bool {
 
 /// Converts lengths written without a decimal point into increments when
 /// the dialect reads them so; one warning per line labels every such word.
-pub(super) fn convert_increments(words: &mut [WordSyntax], spec: &DialectSpec, diags: &mut Vec<Diagnostic>) {
+pub(super) fn convert_increments(
+    words: &mut [WordSyntax],
+    spec: &DialectSpec,
+    diags: &mut Vec<Diagnostic>,
+) {
     if !converts_increments(spec) {
         return;
     }
     let mut warn: Option<Diagnostic> = None;
     let arc = has_arc_code(words, spec);
     for w in words.iter_mut() {
-        let Some(letter) = address_letter(&w.address) else { continue };
+        let Some(letter) = address_letter(&w.address) else {
+            continue;
+        };
         let Value::Number(d) = w.value else { continue };
         if d.point || w.extended || !spec.is_length_address(letter) {
             continue;
@@ -318,12 +362,17 @@ pub(super) fn convert_increments(words: &mut [WordSyntax], spec: &DialectSpec, d
         if letter == spec.repeat_letter && !arc {
             continue;
         }
-        let (Some(mm), Some(inch)) = (times(d, spec.numbers.increment_mm), times(d, spec.numbers.increment_inch))
-        else {
+        let (Some(mm), Some(inch)) = (
+            times(d, spec.numbers.increment_mm),
+            times(d, spec.numbers.increment_inch),
+        ) else {
             diags.push(
-                Diagnostic::new(Code::InvalidValue, format!("`{}{}` is too large to read in increments", w.address, d))
-                    .primary(w.span, "too many digits")
-                    .help("write the length with a decimal point"),
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    format!("`{}{}` is too large to read in increments", w.address, d),
+                )
+                .primary(w.span, "too many digits")
+                .help("write the length with a decimal point"),
             );
             continue;
         };
@@ -333,8 +382,11 @@ pub(super) fn convert_increments(words: &mut [WordSyntax], spec: &DialectSpec, d
         }
         let label = format!("read as {mm} mm ({inch} in under G20)");
         let diag = warn.take().unwrap_or_else(|| {
-            Diagnostic::new(Code::LengthWithoutPoint, "lengths without a decimal point are read in least input increments")
-                .help("write a decimal point (`X10.`) if whole millimetres or inches are meant")
+            Diagnostic::new(
+                Code::LengthWithoutPoint,
+                "lengths without a decimal point are read in least input increments",
+            )
+            .help("write a decimal point (`X10.`) if whole millimetres or inches are meant")
         });
         warn = Some(diag.primary(w.span, label));
     }

@@ -98,7 +98,10 @@ impl Address {
         }
         let mut bytes = [0u8; Address::CAPACITY];
         bytes[..end].copy_from_slice(&s.as_bytes()[..end]);
-        Address { bytes, len: end as u8 }
+        Address {
+            bytes,
+            len: end as u8,
+        }
     }
 
     /// The address's bytes (no UTF-8 check: cheaper than [`Address::as_str`]).

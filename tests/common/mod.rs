@@ -41,7 +41,12 @@ pub fn stderr(o: &Output) -> String {
 /// The files of a folder with one of the extensions, sorted.
 pub fn files_in(dir: &Path) -> Vec<PathBuf> {
     let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path()).filter(|p| p.is_file()).collect())
+        .map(|rd| {
+            rd.filter_map(|e| e.ok())
+                .map(|e| e.path())
+                .filter(|p| p.is_file())
+                .collect()
+        })
         .unwrap_or_default();
     v.sort();
     v
@@ -51,7 +56,10 @@ pub fn files_in(dir: &Path) -> Vec<PathBuf> {
 /// (`10` and `10.` are the same number): what "the meta-model does not
 /// change" compares.
 pub fn model_fingerprint(p: &cncc::ir::Program) -> String {
-    let opts = cncc::ir::print::PrintOptions { spans: false, by_value: true };
+    let opts = cncc::ir::print::PrintOptions {
+        spans: false,
+        by_value: true,
+    };
     cncc::ir::print::print_program_with(p, opts)
 }
 

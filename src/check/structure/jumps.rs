@@ -59,7 +59,9 @@ impl NumberSet {
     }
 
     fn contains(&self, n: u32) -> bool {
-        self.runs.iter().any(|&(first, last, step)| (first..=last).contains(&n) && (n - first).is_multiple_of(step.max(1)))
+        self.runs.iter().any(|&(first, last, step)| {
+            (first..=last).contains(&n) && (n - first).is_multiple_of(step.max(1))
+        })
     }
 
     fn clear(&mut self) {
@@ -86,7 +88,8 @@ impl Labels {
     /// Forward and either-way jumps waiting for `t` are resolved.
     fn resolve(&mut self, t: &Target) {
         if !self.pending.is_empty() {
-            self.pending.retain(|p| p.target != *t || p.dir == JumpDir::Backward);
+            self.pending
+                .retain(|p| p.target != *t || p.dir == JumpDir::Backward);
         }
     }
 
@@ -118,17 +121,27 @@ impl Labels {
                     self.jump(Target::Label(label.clone()), *dir, s.span);
                 }
             }
-            StmtKind::SectionRepeat { start, end, single, .. } => {
-                let dir = if *single { JumpDir::Either } else { JumpDir::Backward };
+            StmtKind::SectionRepeat {
+                start, end, single, ..
+            } => {
+                let dir = if *single {
+                    JumpDir::Either
+                } else {
+                    JumpDir::Backward
+                };
                 self.jump(Target::Label(start.clone()), dir, s.span);
                 if let Some(end) = end {
                     self.jump(Target::Label(end.clone()), dir, s.span);
                 }
             }
-            StmtKind::Call { kind: CallKind::Local, target: CallTarget::Number(n), .. } => {
-                self.jump(Target::Number(*n), JumpDir::Either, s.span)
+            StmtKind::Call {
+                kind: CallKind::Local,
+                target: CallTarget::Number(n),
+                ..
+            } => self.jump(Target::Number(*n), JumpDir::Either, s.span),
+            StmtKind::SubReturn { to: Some(v) } => {
+                self.jump_target(&JumpTarget::Sequence(v.clone()), JumpDir::Either, s.span)
             }
-            StmtKind::SubReturn { to: Some(v) } => self.jump_target(&JumpTarget::Sequence(v.clone()), JumpDir::Either, s.span),
             _ => {}
         }
     }
@@ -136,10 +149,12 @@ impl Labels {
     fn jump_target(&mut self, target: &JumpTarget, dir: JumpDir, span: Span) {
         let t = match target {
             JumpTarget::Label(l) => Target::Label(l.clone()),
-            JumpTarget::Sequence(Value::Number(d)) => match d.as_int().and_then(|n| u32::try_from(n).ok()) {
-                Some(n) => Target::Number(n),
-                None => return,
-            },
+            JumpTarget::Sequence(Value::Number(d)) => {
+                match d.as_int().and_then(|n| u32::try_from(n).ok()) {
+                    Some(n) => Target::Number(n),
+                    None => return,
+                }
+            }
             JumpTarget::Sequence(Value::Expr(_)) => return,
         };
         self.jump(t, dir, span);
@@ -178,7 +193,9 @@ fn missing_target(p: &Pending, exists: bool) -> Diagnostic {
         ),
         _ => (format!("`{name}` does not exist in this program"), format!("add `{name}` or correct the target")),
     };
-    Diagnostic::new(Code::JumpTargetMissing, msg).primary(p.span, "jumps to a missing target").help(help)
+    Diagnostic::new(Code::JumpTargetMissing, msg)
+        .primary(p.span, "jumps to a missing target")
+        .help(help)
 }
 
 #[cfg(test)]

@@ -18,7 +18,11 @@ pub fn n(s: &str) -> Value {
 }
 
 pub fn c(s: &str) -> Coord {
-    Coord { value: n(s), dim: None, span: Span::default() }
+    Coord {
+        value: n(s),
+        dim: None,
+        span: Span::default(),
+    }
 }
 
 pub fn axes(list: &[(char, &str)]) -> Axes {
@@ -30,12 +34,18 @@ pub fn axes(list: &[(char, &str)]) -> Axes {
 }
 
 pub fn mv(kind: MotionKind, list: &[(char, &str)]) -> StmtKind {
-    StmtKind::Motion(Box::new(Motion { target: axes(list), ..Motion::new(kind) }))
+    StmtKind::Motion(Box::new(Motion {
+        target: axes(list),
+        ..Motion::new(kind)
+    }))
 }
 
 impl Builder {
     pub fn new(dialect: &str) -> Self {
-        Builder { p: Program::new(FileId(0), dialect), pos: 0 }
+        Builder {
+            p: Program::new(FileId(0), dialect),
+            pos: 0,
+        }
     }
 
     pub fn span(&mut self) -> Span {
@@ -70,7 +80,13 @@ impl Builder {
     pub fn line(&mut self, kinds: Vec<StmtKind>) -> usize {
         let span = self.span();
         let stmts = kinds.into_iter().map(|k| self.stmt(k)).collect();
-        self.p.blocks.push(Block { span, skip: None, number: None, label: None, stmts });
+        self.p.blocks.push(Block {
+            span,
+            skip: None,
+            number: None,
+            label: None,
+            stmts,
+        });
         self.p.blocks.len() - 1
     }
 

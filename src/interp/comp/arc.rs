@@ -14,7 +14,13 @@ const TOLERANCE_EQUAL: f64 = 0.0001;
 impl RadiusComp {
     /// The entry arc: a new arc from the tool to one radius beside the
     /// programmed end, whose centre keeps it tangent there.
-    pub(super) fn arc_entry(&mut self, from: Pose, to: Pose, centre: (f64, f64), turn: i64) -> Result<(), CompError> {
+    pub(super) fn arc_entry(
+        &mut self,
+        from: Pose,
+        to: Pose,
+        centre: (f64, f64),
+        turn: i64,
+    ) -> Result<(), CompError> {
         let r = self.radius;
         let (cx, cy) = (from[0], from[1]);
         let (ex, ey) = (to[0], to[1]);
@@ -37,14 +43,29 @@ impl RadiusComp {
         let c = (end.0 + c_len * ab.cos(), end.1 + c_len * ab.sin());
         let sweep = find_turn((cx, cy), c, turn, end);
         let abc = [to[3], to[4], to[5]];
-        self.queue.push(Queued::Arc { sweep, end, centre: c, turn, z: to[2], abc, block: self.block });
+        self.queue.push(Queued::Arc {
+            sweep,
+            end,
+            centre: c,
+            turn,
+            z: to[2],
+            abc,
+            block: self.block,
+        });
         self.first_move = false;
         self.current = [end.0, end.1, to[2]];
         Ok(())
     }
 
     /// An arc after the entry move.
-    pub(super) fn arc_next(&mut self, from: Pose, to: Pose, centre: (f64, f64), turn: i64, out: &mut dyn FnMut(Canon)) -> Result<(), CompError> {
+    pub(super) fn arc_next(
+        &mut self,
+        from: Pose,
+        to: Pose,
+        centre: (f64, f64),
+        turn: i64,
+        out: &mut dyn FnMut(Canon),
+    ) -> Result<(), CompError> {
         let r = self.radius;
         let left = self.left();
         let [cx, cy, cz] = self.current;
@@ -67,12 +88,27 @@ impl RadiusComp {
         };
         let new_end = (ex + r * gamma.cos(), ey + r * gamma.sin());
         let abc = [to[3], to[4], to[5]];
-        let main = Queued::Arc { sweep: find_turn(op, centre, turn, (ex, ey)), end: new_end, centre, turn, z: to[2], abc, block: self.block };
+        let main = Queued::Arc {
+            sweep: find_turn(op, centre, turn, (ex, ey)),
+            end: new_end,
+            centre,
+            turn,
+            z: to[2],
+            abc,
+            block: self.block,
+        };
         let pi = add_half_pis(0.0, 2);
-        let concave = beta < -SMALL || beta > add_half_pis(SMALL, 2) || ((beta - pi).abs() < SMALL && !inside);
+        let concave = beta < -SMALL
+            || beta > add_half_pis(SMALL, 2)
+            || ((beta - pi).abs() < SMALL && !inside);
         if concave {
             let mid = match self.queue.front() {
-                Some(Queued::Arc { end, centre: pc, turn: pt, .. }) => self.arc_to_arc_end(*end, *pc, *pt, centre, turn, arc_radius)?,
+                Some(Queued::Arc {
+                    end,
+                    centre: pc,
+                    turn: pt,
+                    ..
+                }) => self.arc_to_arc_end(*end, *pc, *pt, centre, turn, arc_radius)?,
                 _ => self.line_to_arc_end(beta, theta, centre, turn, arc_radius)?,
             };
             self.move_end_and_flush(mid, out)?;
@@ -80,7 +116,15 @@ impl RadiusComp {
             let mid = (op.0 + r * delta.cos(), op.1 + r * delta.sin());
             self.queue.flush(out);
             let t = if left { -1 } else { 1 };
-            self.queue.push(Queued::Arc { sweep: 0.0, end: mid, centre: op, turn: t, z: cz, abc, block: self.block });
+            self.queue.push(Queued::Arc {
+                sweep: 0.0,
+                end: mid,
+                centre: op,
+                turn: t,
+                z: cz,
+                abc,
+                block: self.block,
+            });
             self.queue.flush(out);
             self.queue.start = Some(mid);
         } else {
@@ -93,11 +137,22 @@ impl RadiusComp {
     }
 
     /// Concave line-to-arc corner: where the held-back line must end.
-    fn line_to_arc_end(&self, beta: f64, theta: f64, centre: (f64, f64), turn: i64, arc_radius: f64) -> Result<(f64, f64), CompError> {
+    fn line_to_arc_end(
+        &self,
+        beta: f64,
+        theta: f64,
+        centre: (f64, f64),
+        turn: i64,
+        arc_radius: f64,
+    ) -> Result<(f64, f64), CompError> {
         let r = self.radius;
         let y = arc_radius * add_half_pis(beta, -1).sin();
         let inside = tool_inside_arc(self.left(), turn);
-        let (dist, toward) = if inside { (arc_radius - r, y + r) } else { (arc_radius + r, y - r) };
+        let (dist, toward) = if inside {
+            (arc_radius - r, y + r)
+        } else {
+            (arc_radius + r, y - r)
+        };
         let l = toward / dist;
         if !(-1.0..=1.0).contains(&l) {
             return Err(self.error(CompErrorKind::ArcGouge, None));
@@ -112,10 +167,22 @@ impl RadiusComp {
     }
 
     /// Concave arc-to-arc corner: where the two compensated arcs cross.
-    fn arc_to_arc_end(&self, pend: (f64, f64), pc: (f64, f64), pturn: i64, centre: (f64, f64), turn: i64, arc_radius: f64) -> Result<(f64, f64), CompError> {
+    fn arc_to_arc_end(
+        &self,
+        pend: (f64, f64),
+        pc: (f64, f64),
+        pturn: i64,
+        centre: (f64, f64),
+        turn: i64,
+        arc_radius: f64,
+    ) -> Result<(f64, f64), CompError> {
         let r = self.radius;
         let oldrad = (pc.1 - pend.1).hypot(pc.0 - pend.0);
-        let newrad = if tool_inside_arc(self.left(), turn) { arc_radius - r } else { arc_radius + r };
+        let newrad = if tool_inside_arc(self.left(), turn) {
+            arc_radius - r
+        } else {
+            arc_radius + r
+        };
         let cc = (pc.1 - centre.1).hypot(pc.0 - centre.0);
         if oldrad == 0.0 || cc == 0.0 {
             return Err(self.error(CompErrorKind::ArcsSameCentre, None));
@@ -127,7 +194,11 @@ impl RadiusComp {
         let pullback = a.acos();
         let cc_dir = (centre.1 - pc.1).atan2(centre.0 - pc.0);
         let plus = tool_inside_arc(self.left(), pturn) == (turn > 0);
-        let dir = if plus { cc_dir + pullback } else { cc_dir - pullback };
+        let dir = if plus {
+            cc_dir + pullback
+        } else {
+            cc_dir - pullback
+        };
         Ok((pc.0 + oldrad * dir.cos(), pc.1 + oldrad * dir.sin()))
     }
 }

@@ -76,8 +76,13 @@ impl CompErrorKind {
     pub fn code(self) -> Code {
         use CompErrorKind::*;
         match self {
-            StraightFeedGouge | StraightTraverseGouge | ArcGouge | ArcToStraightGouge | ArcToArcGouge
-            | ZeroDegreeCorner | ArcsSameCentre => Code::CompGouge,
+            StraightFeedGouge
+            | StraightTraverseGouge
+            | ArcGouge
+            | ArcToStraightGouge
+            | ArcToArcGouge
+            | ZeroDegreeCorner
+            | ArcsSameCentre => Code::CompGouge,
             ToolRadiusNotLessThanArcRadius => Code::CompArcTooSmall,
             EntryMoveTooShort | EntryArcTooShort => Code::CompEntryTooShort,
             NotXyPlane => Code::CompNotXyPlane,

@@ -97,7 +97,12 @@ impl RadiusComp {
     /// does for a negative table diameter. The core should first pass
     /// `COMMENT("interpreter: cutter radius compensation on left|right")`
     /// through [`Self::other`], as rs274 prints it.
-    pub fn start(&mut self, side: CompSide, radius: f64, plane: CanonPlane) -> Result<(), CompError> {
+    pub fn start(
+        &mut self,
+        side: CompSide,
+        radius: f64,
+        plane: CanonPlane,
+    ) -> Result<(), CompError> {
         if self.side.is_some() {
             return Err(self.error(CompErrorKind::AlreadyOn, None));
         }
@@ -181,7 +186,13 @@ impl RadiusComp {
     }
 
     /// A straight move from the programmed `from` to the programmed `to`.
-    pub fn straight(&mut self, kind: MoveKind, from: Pose, to: Pose, out: &mut dyn FnMut(Canon)) -> Result<(), CompError> {
+    pub fn straight(
+        &mut self,
+        kind: MoveKind,
+        from: Pose,
+        to: Pose,
+        out: &mut dyn FnMut(Canon),
+    ) -> Result<(), CompError> {
         if self.side.is_none() {
             self.arc_not_allowed = false;
             self.queue.flush(out);
@@ -202,7 +213,14 @@ impl RadiusComp {
     /// `centre` (x, y), `rotation` turns with sign (+ CCW, as in
     /// `ARC_FEED`); the Z end is `to[2]`. For the entry arc the centre must
     /// be the one LinuxCNC finds from I/J (start + offset).
-    pub fn arc(&mut self, from: Pose, to: Pose, centre: (f64, f64), rotation: i64, out: &mut dyn FnMut(Canon)) -> Result<(), CompError> {
+    pub fn arc(
+        &mut self,
+        from: Pose,
+        to: Pose,
+        centre: (f64, f64),
+        rotation: i64,
+        out: &mut dyn FnMut(Canon),
+    ) -> Result<(), CompError> {
         if self.side.is_none() {
             if self.arc_not_allowed {
                 return Err(self.error(CompErrorKind::ArcAfterExit, None));
@@ -231,10 +249,20 @@ impl RadiusComp {
     }
 
     fn error(&self, kind: CompErrorKind, held: Option<BlockTag>) -> CompError {
-        CompError { kind, block: self.block, held }
+        CompError {
+            kind,
+            block: self.block,
+            held,
+        }
     }
 
-    fn move_end_and_flush(&mut self, p: (f64, f64), out: &mut dyn FnMut(Canon)) -> Result<(), CompError> {
-        self.queue.move_end_and_flush(p, out).map_err(|(kind, held)| self.error(kind, Some(held)))
+    fn move_end_and_flush(
+        &mut self,
+        p: (f64, f64),
+        out: &mut dyn FnMut(Canon),
+    ) -> Result<(), CompError> {
+        self.queue
+            .move_end_and_flush(p, out)
+            .map_err(|(kind, held)| self.error(kind, Some(held)))
     }
 }

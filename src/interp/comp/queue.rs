@@ -12,9 +12,22 @@ use crate::canon::{Canon, Pose};
 pub(super) enum Queued {
     /// A straight move to `to`; `dir` is the direction checked when its end
     /// is moved (LinuxCNC's, not always the move's own).
-    Line { kind: MoveKind, dir: (f64, f64), to: Pose, block: BlockTag },
+    Line {
+        kind: MoveKind,
+        dir: (f64, f64),
+        to: Pose,
+        block: BlockTag,
+    },
     /// An arc; `sweep` is the programmed sweep (0: never checked).
-    Arc { sweep: f64, end: (f64, f64), centre: (f64, f64), turn: i64, z: f64, abc: [f64; 3], block: BlockTag },
+    Arc {
+        sweep: f64,
+        end: (f64, f64),
+        centre: (f64, f64),
+        turn: i64,
+        z: f64,
+        abc: [f64; 3],
+        block: BlockTag,
+    },
     Other(Canon),
 }
 
@@ -51,7 +64,11 @@ impl Queue {
     /// Moves the end of every held-back move to `p`, checking that no
     /// move turns back, then flushes and makes `p` the new start point.
     /// Does nothing at all when the queue is empty.
-    pub fn move_end_and_flush(&mut self, p: (f64, f64), out: &mut dyn FnMut(Canon)) -> Result<(), (CompErrorKind, BlockTag)> {
+    pub fn move_end_and_flush(
+        &mut self,
+        p: (f64, f64),
+        out: &mut dyn FnMut(Canon),
+    ) -> Result<(), (CompErrorKind, BlockTag)> {
         if self.items.is_empty() {
             return Ok(());
         }
@@ -65,9 +82,20 @@ impl Queue {
     }
 }
 
-fn move_end(q: &mut Queued, start: Option<(f64, f64)>, p: (f64, f64)) -> Result<(), (CompErrorKind, BlockTag)> {
+fn move_end(
+    q: &mut Queued,
+    start: Option<(f64, f64)>,
+    p: (f64, f64),
+) -> Result<(), (CompErrorKind, BlockTag)> {
     match q {
-        Queued::Arc { sweep, end, centre, turn, block, .. } => {
+        Queued::Arc {
+            sweep,
+            end,
+            centre,
+            turn,
+            block,
+            ..
+        } => {
             let r1 = (end.0 - centre.0).hypot(end.1 - centre.1);
             let r2 = (p.0 - centre.0).hypot(p.1 - centre.1);
             if (r1 - r2).abs() > 0.01 {
@@ -81,7 +109,12 @@ fn move_end(q: &mut Queued, start: Option<(f64, f64)>, p: (f64, f64)) -> Result<
             }
             *end = p;
         }
-        Queued::Line { kind, dir, to, block } => {
+        Queued::Line {
+            kind,
+            dir,
+            to,
+            block,
+        } => {
             if let Some(s) = start {
                 let dot = dir.0 * (p.0 - s.0) + dir.1 * (p.1 - s.1);
                 if dot < 0.0 {
@@ -105,9 +138,24 @@ fn gouge_kind(kind: MoveKind) -> CompErrorKind {
 
 fn to_canon(q: Queued) -> Canon {
     match q {
-        Queued::Line { kind: MoveKind::Rapid, to, .. } => Canon::StraightTraverse(to),
-        Queued::Line { kind: MoveKind::Feed, to, .. } => Canon::StraightFeed(to),
-        Queued::Arc { end, centre, turn, z, abc, .. } => Canon::ArcFeed {
+        Queued::Line {
+            kind: MoveKind::Rapid,
+            to,
+            ..
+        } => Canon::StraightTraverse(to),
+        Queued::Line {
+            kind: MoveKind::Feed,
+            to,
+            ..
+        } => Canon::StraightFeed(to),
+        Queued::Arc {
+            end,
+            centre,
+            turn,
+            z,
+            abc,
+            ..
+        } => Canon::ArcFeed {
             first_end: end.0,
             second_end: end.1,
             first_axis: centre.0,

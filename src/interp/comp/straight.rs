@@ -16,7 +16,12 @@ pub(super) const SMALL: f64 = 0.05;
 impl RadiusComp {
     /// The entry move: ends one radius beside `to`, square to the line
     /// from the tool to `to`.
-    pub(super) fn straight_entry(&mut self, kind: MoveKind, from: Pose, to: Pose) -> Result<(), super::CompError> {
+    pub(super) fn straight_entry(
+        &mut self,
+        kind: MoveKind,
+        from: Pose,
+        to: Pose,
+    ) -> Result<(), super::CompError> {
         let (cx, cy) = (from[0], from[1]);
         let (px, py) = (to[0], to[1]);
         if (px - cx).hypot(py - cy) <= self.radius {
@@ -24,19 +29,33 @@ impl RadiusComp {
         }
         let k = if self.left() { 1 } else { -1 };
         let alpha = add_half_pis((py - cy).atan2(px - cx), k);
-        let end = (px + self.radius * alpha.cos(), py + self.radius * alpha.sin());
+        let end = (
+            px + self.radius * alpha.cos(),
+            py + self.radius * alpha.sin(),
+        );
         self.queue.start = Some((cx, cy));
         let mut p = to;
         p[0] = end.0;
         p[1] = end.1;
-        self.queue.push(Queued::Line { kind, dir: (alpha.cos(), alpha.sin()), to: p, block: self.block });
+        self.queue.push(Queued::Line {
+            kind,
+            dir: (alpha.cos(), alpha.sin()),
+            to: p,
+            block: self.block,
+        });
         self.first_move = false;
         self.current = [end.0, end.1, to[2]];
         Ok(())
     }
 
     /// A straight move after the entry move.
-    pub(super) fn straight_next(&mut self, kind: MoveKind, from: Pose, to: Pose, out: &mut dyn FnMut(Canon)) -> Result<(), super::CompError> {
+    pub(super) fn straight_next(
+        &mut self,
+        kind: MoveKind,
+        from: Pose,
+        to: Pose,
+        out: &mut dyn FnMut(Canon),
+    ) -> Result<(), super::CompError> {
         let [cx, cy, cz] = self.current;
         let (opx, opy) = (from[0], from[1]);
         let (px, py) = (to[0], to[1]);
@@ -44,7 +63,12 @@ impl RadiusComp {
             let mut p = to;
             p[0] = cx;
             p[1] = cy;
-            self.queue.push(Queued::Line { kind, dir: (0.0, 0.0), to: p, block: self.block });
+            self.queue.push(Queued::Line {
+                kind,
+                dir: (0.0, 0.0),
+                to: p,
+                block: self.block,
+            });
             self.current[2] = to[2];
             return Ok(());
         }
@@ -72,7 +96,15 @@ impl RadiusComp {
             let corner = match kind {
                 MoveKind::Feed => {
                     let turn = if self.left() { -1 } else { 1 };
-                    Queued::Arc { sweep: 0.0, end: mid, centre: (opx, opy), turn, z: cz, abc, block: self.block }
+                    Queued::Arc {
+                        sweep: 0.0,
+                        end: mid,
+                        centre: (opx, opy),
+                        turn,
+                        z: cz,
+                        abc,
+                        block: self.block,
+                    }
                 }
                 MoveKind::Rapid => Queued::Line {
                     kind,
@@ -94,7 +126,12 @@ impl RadiusComp {
         let mut p = to;
         p[0] = end.0;
         p[1] = end.1;
-        self.queue.push(Queued::Line { kind, dir: (px - opx, py - opy), to: p, block: self.block });
+        self.queue.push(Queued::Line {
+            kind,
+            dir: (px - opx, py - opy),
+            to: p,
+            block: self.block,
+        });
         self.current = [end.0, end.1, to[2]];
         Ok(())
     }
@@ -106,18 +143,28 @@ impl RadiusComp {
             return false;
         }
         match self.queue.front() {
-            Some(Queued::Arc { turn, .. }) => (self.left() && *turn < 0) || (!self.left() && *turn > 0),
+            Some(Queued::Arc { turn, .. }) => {
+                (self.left() && *turn < 0) || (!self.left() && *turn > 0)
+            }
             _ => false,
         }
     }
 
     /// Where the held-back move must end in a concave corner before a line.
     /// `back` is the direction back along the held-back compensated path.
-    fn concave_end(&self, beta: f64, back: f64, from: Pose, to: Pose) -> Result<(f64, f64), super::CompError> {
+    fn concave_end(
+        &self,
+        beta: f64,
+        back: f64,
+        from: Pose,
+        to: Pose,
+    ) -> Result<(f64, f64), super::CompError> {
         let r = self.radius;
         let [cx, cy, _] = self.current;
         match self.queue.front() {
-            Some(Queued::Arc { end, centre, turn, .. }) => self.arc_to_line_end(*end, *centre, *turn, from, to),
+            Some(Queued::Arc {
+                end, centre, turn, ..
+            }) => self.arc_to_line_end(*end, *centre, *turn, from, to),
             _ => {
                 let half = add_half_pis(beta, 2) / 2.0;
                 if half == 0.0 {
@@ -131,7 +178,14 @@ impl RadiusComp {
 
     /// Concave arc-to-line corner: where on the held-back (compensated)
     /// arc the tool meets the offset of the new line.
-    fn arc_to_line_end(&self, end: (f64, f64), centre: (f64, f64), turn: i64, from: Pose, to: Pose) -> Result<(f64, f64), super::CompError> {
+    fn arc_to_line_end(
+        &self,
+        end: (f64, f64),
+        centre: (f64, f64),
+        turn: i64,
+        from: Pose,
+        to: Pose,
+    ) -> Result<(f64, f64), super::CompError> {
         let r = self.radius;
         let (opx, opy) = (from[0], from[1]);
         let oldrad = (centre.1 - end.1).hypot(centre.0 - end.0);
@@ -141,12 +195,19 @@ impl RadiusComp {
         let inside = super::angle::tool_inside_arc(self.left(), turn);
         let uncomp = if inside { oldrad + r } else { oldrad - r };
         let d = uncomp * (theta - phi).cos();
-        let l = if inside { (d - r) / oldrad } else { (d + r) / oldrad };
+        let l = if inside {
+            (d - r) / oldrad
+        } else {
+            (d + r) / oldrad
+        };
         if !(-1.0..=1.0).contains(&l) {
             return Err(self.error(CompErrorKind::ArcToStraightGouge, None));
         }
         let sign = if inside == (turn > 0) { -1.0 } else { 1.0 };
         let angle = add_half_pis(sign * l.acos() + theta, 2);
-        Ok((centre.0 + oldrad * angle.cos(), centre.1 + oldrad * angle.sin()))
+        Ok((
+            centre.0 + oldrad * angle.cos(),
+            centre.1 + oldrad * angle.sin(),
+        ))
     }
 }

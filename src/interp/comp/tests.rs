@@ -25,15 +25,28 @@ fn programs() -> Vec<PathBuf> {
 
 fn run_engine(path: &Path) -> String {
     let text = std::fs::read_to_string(path).unwrap();
-    driver::run(&text).iter().map(|l| format!("{l}\n")).collect()
+    driver::run(&text)
+        .iter()
+        .map(|l| format!("{l}\n"))
+        .collect()
 }
 
 /// The calls the driver models, from rs274's output: everything between the
 /// start-up calls and the program end's resets, minus plane and units.
 fn filter_oracle(stdout: &str, stderr: &str, ok: bool) -> String {
     let lines: Vec<&str> = stdout.lines().collect();
-    let start = lines.iter().position(|l| l.starts_with("ON_RESET")).map_or(0, |i| i + 1);
-    let end = if ok { lines.iter().rposition(|l| l.starts_with("SET_G5X_OFFSET")).unwrap_or(lines.len()) } else { lines.len() };
+    let start = lines
+        .iter()
+        .position(|l| l.starts_with("ON_RESET"))
+        .map_or(0, |i| i + 1);
+    let end = if ok {
+        lines
+            .iter()
+            .rposition(|l| l.starts_with("SET_G5X_OFFSET"))
+            .unwrap_or(lines.len())
+    } else {
+        lines.len()
+    };
     let mut s = String::new();
     for l in &lines[start..end.max(start)] {
         if driver::MODELLED.iter().any(|p| l.starts_with(p)) {
@@ -59,7 +72,11 @@ fn snapshots() {
 #[test]
 fn matches_rs274_live() {
     let tool = Path::new("/work/shared/tools/rs274-canon");
-    let tool = if tool.exists() { tool.to_path_buf() } else { Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/tools/rs274-canon") };
+    let tool = if tool.exists() {
+        tool.to_path_buf()
+    } else {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/tools/rs274-canon")
+    };
     let mut checked = 0;
     for p in programs() {
         let out = match Command::new(&tool).arg(&p).output() {
@@ -71,10 +88,17 @@ fn matches_rs274_live() {
         };
         let code = out.status.code().unwrap_or(3);
         if code == 2 || code == 3 {
-            println!("skipped: rs274 not installed or failed ({})", String::from_utf8_lossy(&out.stderr));
+            println!(
+                "skipped: rs274 not installed or failed ({})",
+                String::from_utf8_lossy(&out.stderr)
+            );
             return;
         }
-        let expected = filter_oracle(&String::from_utf8_lossy(&out.stdout), &String::from_utf8_lossy(&out.stderr), code == 0);
+        let expected = filter_oracle(
+            &String::from_utf8_lossy(&out.stdout),
+            &String::from_utf8_lossy(&out.stderr),
+            code == 0,
+        );
         assert_eq!(run_engine(&p), expected, "{}", p.display());
         checked += 1;
     }
@@ -84,7 +108,10 @@ fn matches_rs274_live() {
 #[test]
 fn matches_probe_p10() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/oracle-probe");
-    let (ngc, canon) = (dir.join("p10-cutter-comp.ngc"), dir.join("p10-cutter-comp.canon"));
+    let (ngc, canon) = (
+        dir.join("p10-cutter-comp.ngc"),
+        dir.join("p10-cutter-comp.canon"),
+    );
     if !ngc.exists() || !canon.exists() {
         println!("skipped: {} absent", dir.display());
         return;

@@ -105,19 +105,29 @@ fn turning(h: &dyn MotionHost, block: &CycleBlock) -> Result<SpindleDir, Diagnos
 }
 
 /// G83 (full retract to R) and G73 (small back-off) pecking.
-fn peck(h: &mut dyn MotionHost, f: Frame, l: &Levels, p: &Params, block: &CycleBlock) -> Result<(), Diagnostic> {
+fn peck(
+    h: &mut dyn MotionHost,
+    f: Frame,
+    l: &Levels,
+    p: &Params,
+    block: &CycleBlock,
+) -> Result<(), Diagnostic> {
     let q = p.q.unwrap_or(0.0);
     if q <= 0.0 {
-        return Err(Diagnostic::new(Code::CycleBadPeck, "negative or zero Q value used")
-            .primary(block.span, "peck depth Q must be positive")
-            .help("give the depth of each peck as a positive Q"));
+        return Err(
+            Diagnostic::new(Code::CycleBadPeck, "negative or zero Q value used")
+                .primary(block.span, "peck depth Q must be positive")
+                .help("give the depth of each peck as a positive Q"),
+        );
     }
     let full_retract = p.kind == CycleKind::Peck;
     // Bounded: at most (r - bottom) / q pecks; refuse absurd counts.
     if (l.r - l.bottom) / q > 1.0e6 {
-        return Err(Diagnostic::new(Code::CycleBadPeck, "peck depth Q too small for this hole")
-            .primary(block.span, "more than a million pecks")
-            .help("use a larger Q"));
+        return Err(
+            Diagnostic::new(Code::CycleBadPeck, "peck depth Q too small for this hole")
+                .primary(block.span, "more than a million pecks")
+                .help("use a larger Q"),
+        );
     }
     let mut depth = l.r - q;
     while depth > l.bottom {
@@ -134,30 +144,60 @@ fn peck(h: &mut dyn MotionHost, f: Frame, l: &Levels, p: &Params, block: &CycleB
 }
 
 /// G84 (spindle CW, reversed at the bottom) and G74 (the mirror image).
-fn tap(h: &mut dyn MotionHost, f: Frame, l: &Levels, p: &Params, block: &CycleBlock) -> Result<(), Diagnostic> {
+fn tap(
+    h: &mut dyn MotionHost,
+    f: Frame,
+    l: &Levels,
+    p: &Params,
+    block: &CycleBlock,
+) -> Result<(), Diagnostic> {
     let right = p.kind == CycleKind::Tap;
-    let (want, wrong) = if right { (SpindleDir::Cw, SpindleDir::Ccw) } else { (SpindleDir::Ccw, SpindleDir::Cw) };
+    let (want, wrong) = if right {
+        (SpindleDir::Cw, SpindleDir::Ccw)
+    } else {
+        (SpindleDir::Ccw, SpindleDir::Cw)
+    };
     let dir = h.spindle();
     if dir != want {
         let what = if dir == wrong {
-            format!("spindle turning {} in {}", if right { "counterclockwise" } else { "clockwise" }, gcode(p.kind))
+            format!(
+                "spindle turning {} in {}",
+                if right {
+                    "counterclockwise"
+                } else {
+                    "clockwise"
+                },
+                gcode(p.kind)
+            )
         } else {
             format!("spindle not turning in {}", gcode(p.kind))
         };
         return Err(Diagnostic::new(Code::CycleSpindleState, what)
             .primary(block.span, "tapping cycle")
-            .help(if right { "G84 needs M3 (clockwise)" } else { "G74 needs M4 (counterclockwise)" }));
+            .help(if right {
+                "G84 needs M3 (clockwise)"
+            } else {
+                "G74 needs M4 (counterclockwise)"
+            }));
     }
     let (feed_ovr, speed_ovr) = h.overrides_enabled();
     h.emit(Canon::DisableFeedOverride);
     h.emit(Canon::DisableSpeedOverride);
     f.feed(h, l.at, l.bottom);
     h.emit(Canon::StopSpindle);
-    h.emit(if right { Canon::SpindleCcw } else { Canon::SpindleCw });
+    h.emit(if right {
+        Canon::SpindleCcw
+    } else {
+        Canon::SpindleCw
+    });
     h.dwell(p.dwell);
     f.feed(h, l.at, l.clear);
     h.emit(Canon::StopSpindle);
-    h.emit(if right { Canon::SpindleCw } else { Canon::SpindleCcw });
+    h.emit(if right {
+        Canon::SpindleCw
+    } else {
+        Canon::SpindleCcw
+    });
     if feed_ovr {
         h.emit(Canon::EnableFeedOverride);
     }
@@ -169,11 +209,20 @@ fn tap(h: &mut dyn MotionHost, f: Frame, l: &Levels, p: &Params, block: &CycleBl
 
 /// G87 back boring: in through the hole shifted by I/J with the spindle
 /// oriented, bore upwards to the middle level, out the same way.
-fn back_bore(h: &mut dyn MotionHost, f: Frame, l: &Levels, p: &Params, block: &CycleBlock) -> Result<(), Diagnostic> {
+fn back_bore(
+    h: &mut dyn MotionHost,
+    f: Frame,
+    l: &Levels,
+    p: &Params,
+    block: &CycleBlock,
+) -> Result<(), Diagnostic> {
     let dir = turning(h, block)?;
     let ijk = p.ijk_words.unwrap_or([0.0; 3]);
     let off = (l.at.0 + ijk[f.a], l.at.1 + ijk[f.b]);
-    let orient = Canon::OrientSpindle { angle: 0.0, mode: orient_mode(dir) };
+    let orient = Canon::OrientSpindle {
+        angle: 0.0,
+        mode: orient_mode(dir),
+    };
     f.rapid(h, off, l.r);
     h.emit(Canon::StopSpindle);
     h.emit(orient.clone());
@@ -199,7 +248,13 @@ fn back_bore(h: &mut dyn MotionHost, f: Frame, l: &Levels, p: &Params, block: &C
 /// G17), as with parameter 5101 RD1/RD2 = 0; the orientation angle is the
 /// controller's fixed M19 position, written here as 0; the shift back is a
 /// rapid at the clear level; the spindle restarts in its old direction.
-fn fine_bore(h: &mut dyn MotionHost, f: Frame, l: &Levels, p: &Params, block: &CycleBlock) -> Result<(), Diagnostic> {
+fn fine_bore(
+    h: &mut dyn MotionHost,
+    f: Frame,
+    l: &Levels,
+    p: &Params,
+    block: &CycleBlock,
+) -> Result<(), Diagnostic> {
     let dir = turning(h, block)?;
     let q = p.q.unwrap_or(0.0).abs();
     let off = (l.at.0 + q, l.at.1);
@@ -208,7 +263,10 @@ fn fine_bore(h: &mut dyn MotionHost, f: Frame, l: &Levels, p: &Params, block: &C
         h.dwell(p.dwell);
     }
     h.emit(Canon::StopSpindle);
-    h.emit(Canon::OrientSpindle { angle: 0.0, mode: orient_mode(dir) });
+    h.emit(Canon::OrientSpindle {
+        angle: 0.0,
+        mode: orient_mode(dir),
+    });
     f.rapid(h, off, l.bottom);
     f.rapid(h, off, l.clear);
     f.rapid(h, l.at, l.clear);

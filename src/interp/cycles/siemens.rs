@@ -29,10 +29,15 @@ struct Hole {
 }
 
 fn bad(msg: String) -> Diagnostic {
-    Diagnostic::new(Code::CycleBadArgument, msg).help("check the cycle's arguments: RTP, RFP, SDIS, DP, DPR, ...")
+    Diagnostic::new(Code::CycleBadArgument, msg)
+        .help("check the cycle's arguments: RTP, RFP, SDIS, DP, DPR, ...")
 }
 
-fn hole(host: &dyn MotionHost, name: &str, a: &dyn Fn(usize) -> Option<f64>) -> Result<Hole, Diagnostic> {
+fn hole(
+    host: &dyn MotionHost,
+    name: &str,
+    a: &dyn Fn(usize) -> Option<f64>,
+) -> Result<Hole, Diagnostic> {
     let f = Frame::of(host);
     let (at, _) = f.here(host);
     let rtp = a(0).ok_or_else(|| bad(format!("{name}: RTP (retract plane) missing")))?;
@@ -44,14 +49,27 @@ fn hole(host: &dyn MotionHost, name: &str, a: &dyn Fn(usize) -> Option<f64>) -> 
         _ => return Err(bad(format!("{name}: no depth (DP or DPR)"))),
     };
     if depth > rfp {
-        return Err(bad(format!("{name}: depth {depth} lies above the reference plane {rfp}")));
+        return Err(bad(format!(
+            "{name}: depth {depth} lies above the reference plane {rfp}"
+        )));
     }
-    Ok(Hole { f, at, rtp, rfp, safe: rfp + sdis, depth })
+    Ok(Hole {
+        f,
+        at,
+        rtp,
+        rfp,
+        safe: rfp + sdis,
+        depth,
+    })
 }
 
 /// Runs `CYCLE81`..`CYCLE89` at the current position. `args` are the
 /// call's arguments in order (None: empty slot); extra ones are ignored.
-pub fn run_named_drill_cycle(host: &mut dyn MotionHost, name: &str, args: &[Option<f64>]) -> Result<(), Diagnostic> {
+pub fn run_named_drill_cycle(
+    host: &mut dyn MotionHost,
+    name: &str,
+    args: &[Option<f64>],
+) -> Result<(), Diagnostic> {
     let a = |i: usize| args.get(i).copied().flatten();
     let upper = name.to_ascii_uppercase();
     let h = hole(host, &upper, &a)?;
@@ -69,7 +87,11 @@ pub fn run_named_drill_cycle(host: &mut dyn MotionHost, name: &str, args: &[Opti
         "CYCLE86" => bore_oriented(host, &h, &a),
         "CYCLE87" | "CYCLE88" => bore_manual(host, &h, &a, upper == "CYCLE88"),
         "CYCLE89" => bore_feed_out(host, &h, a(5), None, None),
-        _ => return Err(bad(format!("{name} is not a drilling cycle (CYCLE81..CYCLE89)"))),
+        _ => {
+            return Err(bad(format!(
+                "{name} is not a drilling cycle (CYCLE81..CYCLE89)"
+            )))
+        }
     }
     if f.here(host) != (h.at, h.rtp) {
         f.rapid(host, h.at, h.rtp);
@@ -90,7 +112,13 @@ fn set_feed(host: &mut dyn MotionHost, feed: f64) {
 /// CYCLE85 (DTB, FFR in, RFF out) and CYCLE89 (DTB, feed out at the
 /// active feed): feed in, dwell, feed back to RFP+SDIS. [?] FFR/RFF of 0
 /// mean "the active feed"; the active feed is set again afterwards.
-fn bore_feed_out(host: &mut dyn MotionHost, h: &Hole, dtb: Option<f64>, ffr: Option<f64>, rff: Option<f64>) {
+fn bore_feed_out(
+    host: &mut dyn MotionHost,
+    h: &Hole,
+    dtb: Option<f64>,
+    ffr: Option<f64>,
+    rff: Option<f64>,
+) {
     let active = host.feed_rate();
     let ffr = ffr.filter(|v| *v > 0.0);
     let rff = rff.filter(|v| *v > 0.0);
@@ -139,7 +167,12 @@ fn bore_oriented(host: &mut dyn MotionHost, h: &Hole, a: &dyn Fn(usize) -> Optio
 /// spindle stop, program stop (the operator retracts); the rapid to RTP
 /// follows after NC start. [?] The spindle is not restarted by the cycle;
 /// SDIR only states the direction the boring was done in.
-fn bore_manual(host: &mut dyn MotionHost, h: &Hole, a: &dyn Fn(usize) -> Option<f64>, with_dwell: bool) {
+fn bore_manual(
+    host: &mut dyn MotionHost,
+    h: &Hole,
+    a: &dyn Fn(usize) -> Option<f64>,
+    with_dwell: bool,
+) {
     h.f.feed(host, h.at, h.depth);
     if with_dwell {
         dwell(host, a(5));
@@ -151,9 +184,27 @@ fn bore_manual(host: &mut dyn MotionHost, h: &Hole, a: &dyn Fn(usize) -> Option<
 /// Metric coarse thread pitch of size M`d` (ISO 261), for MPIT.
 fn metric_pitch(d: f64) -> Option<f64> {
     const T: [(f64, f64); 21] = [
-        (3.0, 0.5), (4.0, 0.7), (5.0, 0.8), (6.0, 1.0), (8.0, 1.25), (10.0, 1.5), (12.0, 1.75),
-        (14.0, 2.0), (16.0, 2.0), (18.0, 2.5), (20.0, 2.5), (22.0, 2.5), (24.0, 3.0), (27.0, 3.0),
-        (30.0, 3.5), (33.0, 3.5), (36.0, 4.0), (39.0, 4.0), (42.0, 4.5), (45.0, 4.5), (48.0, 5.0),
+        (3.0, 0.5),
+        (4.0, 0.7),
+        (5.0, 0.8),
+        (6.0, 1.0),
+        (8.0, 1.25),
+        (10.0, 1.5),
+        (12.0, 1.75),
+        (14.0, 2.0),
+        (16.0, 2.0),
+        (18.0, 2.5),
+        (20.0, 2.5),
+        (22.0, 2.5),
+        (24.0, 3.0),
+        (27.0, 3.0),
+        (30.0, 3.5),
+        (33.0, 3.5),
+        (36.0, 4.0),
+        (39.0, 4.0),
+        (42.0, 4.5),
+        (45.0, 4.5),
+        (48.0, 5.0),
     ];
     T.iter().find(|(s, _)| *s == d).map(|(_, p)| *p)
 }
@@ -166,20 +217,40 @@ fn metric_pitch(d: f64) -> Option<f64> {
 /// before tapping; SST1 (retract speed) and POSS (oriented stop before
 /// tapping) are not expressed; DTB dwells after the tap; SDAC (3/4/5)
 /// sets the spindle afterwards.
-fn rigid_tap(host: &mut dyn MotionHost, h: &Hole, a: &dyn Fn(usize) -> Option<f64>) -> Result<(), Diagnostic> {
+fn rigid_tap(
+    host: &mut dyn MotionHost,
+    h: &Hole,
+    a: &dyn Fn(usize) -> Option<f64>,
+) -> Result<(), Diagnostic> {
     let pit = match (a(8).filter(|v| *v != 0.0), a(7).filter(|v| *v != 0.0)) {
         (Some(p), _) => p,
-        (None, Some(m)) => metric_pitch(m.abs()).map(|p| p.copysign(m))
-            .ok_or_else(|| bad(format!("CYCLE84: MPIT {m} is not a metric coarse thread size (3..48)")))?,
+        (None, Some(m)) => metric_pitch(m.abs())
+            .map(|p| p.copysign(m))
+            .ok_or_else(|| {
+                bad(format!(
+                    "CYCLE84: MPIT {m} is not a metric coarse thread size (3..48)"
+                ))
+            })?,
         _ => return Err(bad("CYCLE84: no pitch (MPIT or PIT)".into())),
     };
     if let Some(s) = a(10).filter(|v| *v > 0.0) {
         host.emit(Canon::SetSpindleSpeed(s));
     }
-    host.emit(if pit < 0.0 { Canon::SpindleCcw } else { Canon::SpindleCw });
-    host.emit(Canon::StartSpeedFeedSync { pitch: pit.abs(), velocity_mode: false });
+    host.emit(if pit < 0.0 {
+        Canon::SpindleCcw
+    } else {
+        Canon::SpindleCw
+    });
+    host.emit(Canon::StartSpeedFeedSync {
+        pitch: pit.abs(),
+        velocity_mode: false,
+    });
     let p = h.f.pose(host, h.at, h.depth);
-    host.emit(Canon::RigidTap { x: p[0], y: p[1], z: p[2] });
+    host.emit(Canon::RigidTap {
+        x: p[0],
+        y: p[1],
+        z: p[2],
+    });
     host.emit(Canon::StopSpeedFeedSync);
     dwell(host, a(5));
     match a(6).map(|v| v as i64) {
@@ -205,7 +276,11 @@ fn rigid_tap(host: &mut dyn MotionHost, h: &Hole, a: &dyn Fn(usize) -> Option<f6
 ///   depth/50 up to 7, for holes deeper than 30 [?]).
 /// * DTB dwells at each depth reached; _DTD at the final depth if given
 ///   (else DTB) [?].
-fn deep_hole(host: &mut dyn MotionHost, h: &Hole, a: &dyn Fn(usize) -> Option<f64>) -> Result<(), Diagnostic> {
+fn deep_hole(
+    host: &mut dyn MotionHost,
+    h: &Hole,
+    a: &dyn Fn(usize) -> Option<f64>,
+) -> Result<(), Diagnostic> {
     let v = |i| a(i).unwrap_or(0.0);
     let first = match (a(6).filter(|x| *x != 0.0), a(5)) {
         (Some(fdpr), _) => h.rfp - fdpr.abs(),
@@ -214,14 +289,24 @@ fn deep_hole(host: &mut dyn MotionHost, h: &Hole, a: &dyn Fn(usize) -> Option<f6
     };
     let first_step = (h.safe - first).max(0.0);
     if first_step <= 0.0 && first > h.depth {
-        return Err(bad("CYCLE83: the first depth lies above the safety plane".into()));
+        return Err(bad(
+            "CYCLE83: the first depth lies above the safety plane".into()
+        ));
     }
     let plan = infeeds(h, first, v(7), v(13))?;
-    let frf = if v(10) > 0.0 && v(10) < 1.0 { Some(v(10)) } else { None };
+    let frf = if v(10) > 0.0 && v(10) < 1.0 {
+        Some(v(10))
+    } else {
+        None
+    };
     let active = host.feed_rate();
     let swarf = v(11) as i64 == 1;
     let vrt = if v(14) > 0.0 { v(14) } else { 1.0 };
-    let dis1 = if v(16) > 0.0 { v(16) } else { auto_advance(h.rfp - h.depth) };
+    let dis1 = if v(16) > 0.0 {
+        v(16)
+    } else {
+        auto_advance(h.rfp - h.depth)
+    };
     for (n, depth) in plan.iter().enumerate() {
         if n == 0 {
             if let Some(k) = frf {
@@ -299,7 +384,9 @@ mod tests {
     }
 
     fn s(v: &[f64]) -> Vec<Option<f64>> {
-        v.iter().map(|x| if x.is_nan() { None } else { Some(*x) }).collect()
+        v.iter()
+            .map(|x| if x.is_nan() { None } else { Some(*x) })
+            .collect()
     }
 
     #[test]
@@ -311,13 +398,29 @@ mod tests {
             // DPR 8 wins over DP -5; dwell 1.5 s
             ("CYCLE82", s(&[10.0, 0.0, 2.0, -5.0, 8.0, 1.5])),
             // deep hole, chip breaking: DP -10, FDEP -4, DAM 1, DTB 0, FRF 0.5, VARI 0, _VRT 0.5
-            ("CYCLE83", s(&[10.0, 0.0, 2.0, -10.0, e, -4.0, e, 1.0, 0.0, 0.0, 0.5, 0.0, e, e, 0.5])),
+            (
+                "CYCLE83",
+                s(&[
+                    10.0, 0.0, 2.0, -10.0, e, -4.0, e, 1.0, 0.0, 0.0, 0.5, 0.0, e, e, 0.5,
+                ]),
+            ),
             // deep hole, swarf removal: FDPR 5, DAM 0, DTS 0.2, VARI 1, _DIS1 1
-            ("CYCLE83", s(&[10.0, 0.0, 2.0, -12.0, e, e, 5.0, 0.0, 0.0, 0.2, 1.0, 1.0, e, e, e, e, 1.0])),
+            (
+                "CYCLE83",
+                s(&[
+                    10.0, 0.0, 2.0, -12.0, e, e, 5.0, 0.0, 0.0, 0.2, 1.0, 1.0, e, e, e, e, 1.0,
+                ]),
+            ),
             // rigid tap M6 (pitch 1), SDAC 5, SST 300
-            ("CYCLE84", s(&[10.0, 0.0, 2.0, -8.0, 0.0, 0.0, 5.0, 6.0, 0.0, 0.0, 300.0])),
+            (
+                "CYCLE84",
+                s(&[10.0, 0.0, 2.0, -8.0, 0.0, 0.0, 5.0, 6.0, 0.0, 0.0, 300.0]),
+            ),
             ("CYCLE85", s(&[10.0, 0.0, 2.0, -6.0, 0.0, 0.5, 50.0, 200.0])),
-            ("CYCLE86", s(&[10.0, 0.0, 2.0, -6.0, 0.0, 0.0, 3.0, -0.5, 0.0, 1.0, 90.0])),
+            (
+                "CYCLE86",
+                s(&[10.0, 0.0, 2.0, -6.0, 0.0, 0.0, 3.0, -0.5, 0.0, 1.0, 90.0]),
+            ),
             ("CYCLE88", s(&[10.0, 0.0, 2.0, -6.0, 0.0, 1.0, 3.0])),
             ("CYCLE89", s(&[10.0, 0.0, 2.0, -6.0, 0.0, 2.0])),
             ("CYCLE81", s(&[10.0, 0.0, 2.0])),

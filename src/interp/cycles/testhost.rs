@@ -112,7 +112,13 @@ struct Driver {
 }
 
 fn words(line: &str) -> Vec<(char, f64)> {
-    let clean: String = line.split('(').next().unwrap_or("").chars().filter(|c| !c.is_whitespace()).collect();
+    let clean: String = line
+        .split('(')
+        .next()
+        .unwrap_or("")
+        .chars()
+        .filter(|c| !c.is_whitespace())
+        .collect();
     let mut out = Vec::new();
     let mut chars = clean.chars().peekable();
     while let Some(c) = chars.next() {
@@ -184,7 +190,9 @@ impl Driver {
                     self.kind = None;
                     self.mem.cancel();
                 }
-                ('G', v) if v == 64.0 => self.host.path = (MotionMode::Continuous(word(&ws, 'P')), word(&ws, 'Q')),
+                ('G', v) if v == 64.0 => {
+                    self.host.path = (MotionMode::Continuous(word(&ws, 'P')), word(&ws, 'Q'))
+                }
                 ('G', v) => {
                     self.kind = cycle_of(v);
                     code_in_block = true;
@@ -241,7 +249,10 @@ impl Driver {
 }
 
 fn word(ws: &[(char, f64)], c: char) -> f64 {
-    ws.iter().find(|(w, _)| *w == c).map(|(_, v)| *v).unwrap_or(0.0)
+    ws.iter()
+        .find(|(w, _)| *w == c)
+        .map(|(_, v)| *v)
+        .unwrap_or(0.0)
 }
 
 /// Runs a program through the driver; returns the calls made after the

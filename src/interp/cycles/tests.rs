@@ -65,7 +65,12 @@ fn oracle_calls(stdout: &str) -> String {
 #[test]
 fn matches_rs274_live() {
     let tool = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/tools/rs274-canon");
-    let have = std::process::Command::new("sh").arg("-c").arg("command -v rs274").output().map(|o| o.status.success()).unwrap_or(false);
+    let have = std::process::Command::new("sh")
+        .arg("-c")
+        .arg("command -v rs274")
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false);
     if !have || !std::path::Path::new(tool).exists() {
         eprintln!("skipped: rs274 or shared/tools/rs274-canon not installed");
         return;
@@ -74,9 +79,16 @@ fn matches_rs274_live() {
     for (name, prog) in scenarios() {
         let path = dir.path().join(format!("{name}.ngc"));
         std::fs::write(&path, &prog).unwrap();
-        let o = std::process::Command::new(tool).arg(&path).output().unwrap();
+        let o = std::process::Command::new(tool)
+            .arg(&path)
+            .output()
+            .unwrap();
         let mut want = oracle_calls(&String::from_utf8_lossy(&o.stdout));
-        if let Some(msg) = String::from_utf8_lossy(&o.stderr).lines().next().filter(|_| o.status.code() == Some(1)) {
+        if let Some(msg) = String::from_utf8_lossy(&o.stderr)
+            .lines()
+            .next()
+            .filter(|_| o.status.code() == Some(1))
+        {
             want.push_str(&format!("\nerror: {msg}"));
         }
         let got = drive(&prog, DwellUnit::Seconds);
@@ -84,6 +96,10 @@ fn matches_rs274_live() {
         for (n, (a, b)) in g.lines().zip(w.lines()).enumerate() {
             assert_eq!(a, b, "scenario {name}, line {}", n + 1);
         }
-        assert_eq!(g.lines().count(), w.lines().count(), "scenario {name}: {g}\n---\n{w}");
+        assert_eq!(
+            g.lines().count(),
+            w.lines().count(),
+            "scenario {name}: {g}\n---\n{w}"
+        );
     }
 }

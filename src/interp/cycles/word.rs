@@ -22,7 +22,9 @@ pub fn run_cycle(host: &mut dyn MotionHost, mem: &mut CycleMemory, block: &Cycle
 }
 
 fn err(code: Code, block: &CycleBlock, msg: &str, label: &str, help: &str) -> Diagnostic {
-    Diagnostic::new(code, msg).primary(block.span, label).help(help)
+    Diagnostic::new(code, msg)
+        .primary(block.span, label)
+        .help(help)
 }
 
 /// The resolved geometry of one block.
@@ -37,17 +39,33 @@ struct Plan {
     repeats: u64,
 }
 
-fn try_run(host: &mut dyn MotionHost, mem: &mut CycleMemory, block: &CycleBlock) -> Result<(), Diagnostic> {
+fn try_run(
+    host: &mut dyn MotionHost,
+    mem: &mut CycleMemory,
+    block: &CycleBlock,
+) -> Result<(), Diagnostic> {
     let same = mem.active == Some(block.kind);
     if host.feed_rate() == 0.0 {
-        return Err(err(Code::CycleZeroFeed, block, "cannot feed with zero feed rate", "canned cycle with F0",
-            "program a feed rate (F) before the cycle"));
+        return Err(err(
+            Code::CycleZeroFeed,
+            block,
+            "cannot feed with zero feed rate",
+            "canned cycle with F0",
+            "program a feed rate (F) before the cycle",
+        ));
     }
     let r_word = match (block.r, same) {
         (Some(r), _) => r,
         (None, true) => mem.r,
-        (None, false) => return Err(err(Code::CycleMissingWord, block, "R clearance plane unspecified in cycle",
-            "no R word", "give the retract plane with R in the first block of a cycle")),
+        (None, false) => {
+            return Err(err(
+                Code::CycleMissingWord,
+                block,
+                "R clearance plane unspecified in cycle",
+                "no R word",
+                "give the retract plane with R in the first block of a cycle",
+            ))
+        }
     };
     let repeats = repeats(block, mem)?;
     let frame = Frame::of(host);
@@ -94,12 +112,22 @@ fn remember(mem: &mut CycleMemory, block: &CycleBlock, plan: &Plan) {
 fn repeats(block: &CycleBlock, mem: &CycleMemory) -> Result<u64, Diagnostic> {
     let Some(l) = block.repeat else { return Ok(1) };
     if l < 0.0 || l.fract() != 0.0 || l > 1.0e6 {
-        return Err(err(Code::CycleBadRepeat, block, "negative l word used", "repeat count",
-            "the repeat count must be a whole number of at least 1"));
+        return Err(err(
+            Code::CycleBadRepeat,
+            block,
+            "negative l word used",
+            "repeat count",
+            "the repeat count must be a whole number of at least 1",
+        ));
     }
     if l == 0.0 && !mem.allow_zero_repeats {
-        return Err(err(Code::CycleBadRepeat, block, "cannot do zero repeats of cycle", "L0",
-            "leave L out to drill once"));
+        return Err(err(
+            Code::CycleBadRepeat,
+            block,
+            "cannot do zero repeats of cycle",
+            "L0",
+            "leave L out to drill once",
+        ));
     }
     Ok(l as u64)
 }
@@ -117,31 +145,64 @@ fn plan(
         (Some(z), _) => z,
         (None, true) => mem.bottom,
         (None, false) => {
-            let msg = format!("{} value unspecified in {} plane canned cycle", axis_name(f.n), plane_name(f));
-            return Err(err(Code::CycleMissingWord, block, &msg, "no hole bottom",
-                "give the bottom of the hole in the first block of a cycle"));
+            let msg = format!(
+                "{} value unspecified in {} plane canned cycle",
+                axis_name(f.n),
+                plane_name(f)
+            );
+            return Err(err(
+                Code::CycleMissingWord,
+                block,
+                &msg,
+                "no hole bottom",
+                "give the bottom of the hole in the first block of a cycle",
+            ));
         }
     };
     let (here, cur_n) = f.here(host);
     let old = *mem.initial_level.get_or_insert(cur_n);
     let (start, step, r, bottom);
     if block.incremental {
-        step = (block.axes[f.a].unwrap_or(0.0), block.axes[f.b].unwrap_or(0.0));
+        step = (
+            block.axes[f.a].unwrap_or(0.0),
+            block.axes[f.b].unwrap_or(0.0),
+        );
         start = here;
         r = r_word + old;
         bottom = r + bottom_word;
     } else {
         step = (0.0, 0.0);
-        start = (block.axes[f.a].unwrap_or(here.0), block.axes[f.b].unwrap_or(here.1));
+        start = (
+            block.axes[f.a].unwrap_or(here.0),
+            block.axes[f.b].unwrap_or(here.1),
+        );
         r = r_word;
         bottom = bottom_word;
     }
     if r < bottom {
-        let msg = format!("R less than {} in cycle in {} plane", axis_name(f.n).to_lowercase(), plane_name(f).to_lowercase());
-        return Err(err(Code::CycleRBelowBottom, block, &msg, "R plane below the bottom",
-            "R must lie between the initial level and the hole bottom"));
+        let msg = format!(
+            "R less than {} in cycle in {} plane",
+            axis_name(f.n).to_lowercase(),
+            plane_name(f).to_lowercase()
+        );
+        return Err(err(
+            Code::CycleRBelowBottom,
+            block,
+            &msg,
+            "R plane below the bottom",
+            "R must lie between the initial level and the hole bottom",
+        ));
     }
-    Ok(Plan { start, step, r, bottom, bottom_word, r_word, old, repeats })
+    Ok(Plan {
+        start,
+        step,
+        r,
+        bottom,
+        bottom_word,
+        r_word,
+        old,
+        repeats,
+    })
 }
 
 fn axis_name(i: usize) -> &'static str {
@@ -167,24 +228,54 @@ pub(super) struct Params {
     pub kind: CycleKind,
 }
 
-fn params(host: &dyn MotionHost, mem: &CycleMemory, block: &CycleBlock, same: bool, bottom: f64, f: Frame) -> Result<Params, Diagnostic> {
+fn params(
+    host: &dyn MotionHost,
+    mem: &CycleMemory,
+    block: &CycleBlock,
+    same: bool,
+    bottom: f64,
+    f: Frame,
+) -> Result<Params, Diagnostic> {
     use CycleKind::*;
-    let need_p = matches!(block.kind, DrillDwell | BoreStopRapidOut | BoreManual | BoreDwellFeedOut);
+    let need_p = matches!(
+        block.kind,
+        DrillDwell | BoreStopRapidOut | BoreManual | BoreDwellFeedOut
+    );
     if need_p && block.p.is_none() && !same {
         let msg = format!("dwell time P word missing with {}", gcode(block.kind));
-        return Err(err(Code::CycleMissingWord, block, &msg, "no P word", "give the dwell time with P"));
+        return Err(err(
+            Code::CycleMissingWord,
+            block,
+            &msg,
+            "no P word",
+            "give the dwell time with P",
+        ));
     }
-    let dwell = block.p.map(|p| to_seconds(p, block.p_unit, host.spindle_speed())).unwrap_or(mem.dwell);
+    let dwell = block
+        .p
+        .map(|p| to_seconds(p, block.p_unit, host.spindle_speed()))
+        .unwrap_or(mem.dwell);
     let q = match block.kind {
         Peck | ChipBreak | FineBore => Some(q_word(mem, block, same)?),
         _ => None,
     };
-    let (ijk_words, middle) = if block.kind == BackBore { g87_words(mem, block, same, bottom, f)? } else { (None, 0.0) };
+    let (ijk_words, middle) = if block.kind == BackBore {
+        g87_words(mem, block, same, bottom, f)?
+    } else {
+        (None, 0.0)
+    };
     let rapid_delta = match host.units() {
         CanonUnits::Inches => 0.010,
         CanonUnits::Mm => 0.254,
     };
-    Ok(Params { q, dwell, ijk_words, middle, rapid_delta, kind: block.kind })
+    Ok(Params {
+        q,
+        dwell,
+        ijk_words,
+        middle,
+        rapid_delta,
+        kind: block.kind,
+    })
 }
 
 fn q_word(mem: &CycleMemory, block: &CycleBlock, same: bool) -> Result<f64, Diagnostic> {
@@ -193,12 +284,24 @@ fn q_word(mem: &CycleMemory, block: &CycleBlock, same: bool) -> Result<f64, Diag
         (None, true) => Ok(mem.q),
         (None, false) => {
             let msg = format!("Q word missing with {}", gcode(block.kind));
-            Err(err(Code::CycleMissingWord, block, &msg, "no Q word", "give the peck depth (or shift) with Q"))
+            Err(err(
+                Code::CycleMissingWord,
+                block,
+                &msg,
+                "no Q word",
+                "give the peck depth (or shift) with Q",
+            ))
         }
     }
 }
 
-fn g87_words(mem: &CycleMemory, block: &CycleBlock, same: bool, bottom: f64, f: Frame) -> Result<(Option<[f64; 3]>, f64), Diagnostic> {
+fn g87_words(
+    mem: &CycleMemory,
+    block: &CycleBlock,
+    same: bool,
+    bottom: f64,
+    f: Frame,
+) -> Result<(Option<[f64; 3]>, f64), Diagnostic> {
     let words = [block.i, block.j, block.k];
     let mut ijk = mem.ijk;
     for (n, w) in words.iter().enumerate() {
@@ -207,15 +310,24 @@ fn g87_words(mem: &CycleMemory, block: &CycleBlock, same: bool, bottom: f64, f: 
             (None, true) => {}
             (None, false) => {
                 let msg = format!("{} word missing with G87", ["I", "J", "K"][n]);
-                return Err(err(Code::CycleMissingWord, block, &msg, "back boring needs I, J and K",
-                    "give the shift (I, J) and the top of the back bore (K)"));
+                return Err(err(
+                    Code::CycleMissingWord,
+                    block,
+                    &msg,
+                    "back boring needs I, J and K",
+                    "give the shift (I, J) and the top of the back bore (K)",
+                ));
             }
         }
     }
     // The top of the back bore is the drilling-axis word of I J K (K in
     // G17, J in G18, I in G19): absolute in G90, from the bottom in G91.
     let word = ijk[f.n];
-    let middle = if block.incremental { bottom + word } else { word };
+    let middle = if block.incremental {
+        bottom + word
+    } else {
+        word
+    };
     Ok((Some(ijk), middle))
 }
 
@@ -274,7 +386,12 @@ fn positions_and_bodies(
                 f.rapid(host, at, plan.r);
             }
         }
-        let levels = Levels { at, r: plan.r, clear, bottom: plan.bottom };
+        let levels = Levels {
+            at,
+            r: plan.r,
+            clear,
+            bottom: plan.bottom,
+        };
         run_body(host, f, &levels, params, block)?;
     }
     Ok(())

@@ -59,9 +59,16 @@ pub fn centre_from_radius(s: P2, e: P2, r: f64, ccw: bool) -> Option<P2> {
 
 /// The end of the arc from `s` round `c` through `deg` turning `ccw`.
 pub fn end_from_angle(s: P2, c: P2, deg: f64, ccw: bool) -> P2 {
-    let a = if ccw { deg.to_radians() } else { -deg.to_radians() };
+    let a = if ccw {
+        deg.to_radians()
+    } else {
+        -deg.to_radians()
+    };
     let (x, y) = (s.0 - c.0, s.1 - c.1);
-    (c.0 + x * a.cos() - y * a.sin(), c.1 + x * a.sin() + y * a.cos())
+    (
+        c.0 + x * a.cos() - y * a.sin(),
+        c.1 + x * a.sin() + y * a.cos(),
+    )
 }
 
 /// The circle through `s`, `m`, `e`: its centre and whether the path
@@ -111,7 +118,10 @@ fn centre_word(m: &Motion, index: usize) -> Option<&Coord> {
 }
 
 fn mid_word(m: &Motion, index: usize) -> Option<&Coord> {
-    m.arc.mid.as_ref().and_then(|a| a.get(['X', 'Y', 'Z'][index]))
+    m.arc
+        .mid
+        .as_ref()
+        .and_then(|a| a.get(['X', 'Y', 'Z'][index]))
 }
 
 /// The programmed point (mm) of a Siemens arc's start, end (x y z).
@@ -126,7 +136,13 @@ fn ends(it: &mut Interp<'_, '_>, m: &Motion, exprs: &Arena<Expr>) -> Result<Ends
 /// A value of a centre or intermediate-point word, mm, absolute in the
 /// programmed system: `AC()` or (for I1= under G90) absolute, else
 /// relative to the start.
-fn point_value(it: &mut Interp<'_, '_>, c: &Coord, start: f64, absolute: bool, exprs: &Arena<Expr>) -> Result<f64, Stop> {
+fn point_value(
+    it: &mut Interp<'_, '_>,
+    c: &Coord,
+    start: f64,
+    absolute: bool,
+    exprs: &Arena<Expr>,
+) -> Result<f64, Stop> {
     let v = it.value(&c.value, exprs)?;
     let v = it.state.to_mm(v);
     let abs = c.dim.map(|d| d == DimMode::Absolute).unwrap_or(absolute);
@@ -134,7 +150,13 @@ fn point_value(it: &mut Interp<'_, '_>, c: &Coord, start: f64, absolute: bool, e
 }
 
 /// Runs a Siemens arc: `G2`/`G3` (any form), `CIP` or `CT`.
-pub fn arc(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+pub fn arc(
+    it: &mut Interp<'_, '_>,
+    kind: MotionKind,
+    m: &Motion,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let (a, b, _) = plane_axes(it.state.plane);
     let (s3, mut e3, mut base) = ends(it, m, exprs)?;
     let mut e = (e3[a], e3[b]);
@@ -148,15 +170,24 @@ pub fn arc(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block,
         None => 0.0,
     };
     if !(0.0..=10_000.0).contains(&turns) || turns.fract() != 0.0 {
-        return Err(it.error_at(it.span, Code::BadWordValue, "TURN= must be a whole number of turns from 0"));
+        return Err(it.error_at(
+            it.span,
+            Code::BadWordValue,
+            "TURN= must be a whole number of turns from 0",
+        ));
     }
-    check_feed(it, block, "Cannot make arc with zero feed rate", "F word missing with inverse time arc move")?;
+    check_feed(
+        it,
+        block,
+        "Cannot make arc with zero feed rate",
+        "F word missing with inverse time arc move",
+    )?;
     let r = 1 + turns as i64;
     let mut c3 = s3;
     c3[a] = centre.0;
     c3[b] = centre.1;
-    let (eb, cb, rot) =
-        super::arc_to_base(it, e3, c3, if ccw { r } else { -r }).map_err(|d| Stop::Error(d.primary(it.span, "this arc")))?;
+    let (eb, cb, rot) = super::arc_to_base(it, e3, c3, if ccw { r } else { -r })
+        .map_err(|d| Stop::Error(d.primary(it.span, "this arc")))?;
     base[..3].copy_from_slice(&eb);
     let to = pose6(&it.state, &base);
     let centre_prog = (it.state.to_prog(cb[a]), it.state.to_prog(cb[b]));
@@ -174,7 +205,13 @@ pub fn arc(it: &mut Interp<'_, '_>, kind: MotionKind, m: &Motion, block: &Block,
 
 /// The length (mm) of an arc from `s` to `e` round `c` (programmed, mm)
 /// with `rotation` turns as printed (+ CCW), the helix rise included.
-pub fn helix_length(s: [f64; 3], e: [f64; 3], c: [f64; 3], (a, b): (usize, usize), rotation: i64) -> f64 {
+pub fn helix_length(
+    s: [f64; 3],
+    e: [f64; 3],
+    c: [f64; 3],
+    (a, b): (usize, usize),
+    rotation: i64,
+) -> f64 {
     let n = 3 - a - b;
     let r = (s[a] - c[a]).hypot(s[b] - c[b]);
     let a0 = (s[b] - c[b]).atan2(s[a] - c[a]);
@@ -209,15 +246,26 @@ fn centre_of(
                     *v = point_value(it, c, s3[i], it.state.absolute, exprs)?;
                 }
             }
-            circle_through(s, (mp[a], mp[b]), *e)
-                .ok_or_else(|| it.error_at(it.span, Code::ArcBadWords, "CIP: start, intermediate and end points lie on a line"))?
+            circle_through(s, (mp[a], mp[b]), *e).ok_or_else(|| {
+                it.error_at(
+                    it.span,
+                    Code::ArcBadWords,
+                    "CIP: start, intermediate and end points lie on a line",
+                )
+            })?
         }
         MotionKind::ArcTangent => {
             let t = it.siemens.tangent.unwrap_or([0.0; 3]);
             match tangent_circle(s, (t[a], t[b]), *e) {
                 Some(c) => c,
                 None if (t[a], t[b]) != (0.0, 0.0) => return Ok(None),
-                None => return Err(it.error_at(it.span, Code::ArcBadWords, "CT: no previous path direction to be tangent to")),
+                None => {
+                    return Err(it.error_at(
+                        it.span,
+                        Code::ArcBadWords,
+                        "CT: no previous path direction to be tangent to",
+                    ))
+                }
             }
         }
         MotionKind::Arc(dir) => {
@@ -242,7 +290,12 @@ pub fn note_straight(it: &mut Interp<'_, '_>, from: [f64; 9]) {
 }
 
 /// CT to a point on the tangent line: a straight feed.
-fn tangent_straight(it: &mut Interp<'_, '_>, base: [f64; 9], e3: [f64; 3], s3: [f64; 3]) -> Result<(), Stop> {
+fn tangent_straight(
+    it: &mut Interp<'_, '_>,
+    base: [f64; 9],
+    e3: [f64; 3],
+    s3: [f64; 3],
+) -> Result<(), Stop> {
     let to = pose6(&it.state, &base);
     it.siemens.tangent = Some([e3[0] - s3[0], e3[1] - s3[1], e3[2] - s3[2]]);
     it.straight_move(crate::interp::comp::MoveKind::Feed, to)
@@ -284,16 +337,29 @@ fn g2g3_centre(
     }
     if let Some(deg) = angle {
         return centre_from_angle(s, *e, deg, ccw).ok_or_else(|| {
-            it.error_at(it.span, Code::ArcBadWords, "AR= needs an end point away from the start and an angle between 0 and 360")
+            it.error_at(
+                it.span,
+                Code::ArcBadWords,
+                "AR= needs an end point away from the start and an angle between 0 and 360",
+            )
         });
     }
     if let Some(r) = &m.arc.radius {
         let r = it.value(r, exprs)?;
         let r = it.state.to_mm(r);
-        return centre_from_radius(s, *e, r, ccw)
-            .ok_or_else(|| it.error_at(it.span, Code::ArcRadiusTooSmall, "Arc radius too small to reach end point"));
+        return centre_from_radius(s, *e, r, ccw).ok_or_else(|| {
+            it.error_at(
+                it.span,
+                Code::ArcRadiusTooSmall,
+                "Arc radius too small to reach end point",
+            )
+        });
     }
-    Err(it.error_at(it.span, Code::ArcBadWords, "circle without centre, CR= or AR="))
+    Err(it.error_at(
+        it.span,
+        Code::ArcBadWords,
+        "circle without centre, CR= or AR=",
+    ))
 }
 
 /// The end point must lie on the circle (0.02 mm or 0.1 % [?: the 840D's

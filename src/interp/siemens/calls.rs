@@ -32,9 +32,8 @@ enum Kind {
 
 fn kind(it: &Interp<'_, '_>, name: &str) -> Kind {
     match name {
-        "CYCLE81" | "CYCLE82" | "CYCLE83" | "CYCLE84" | "CYCLE85" | "CYCLE86" | "CYCLE87" | "CYCLE88" | "CYCLE89" => {
-            Kind::Drill
-        }
+        "CYCLE81" | "CYCLE82" | "CYCLE83" | "CYCLE84" | "CYCLE85" | "CYCLE86" | "CYCLE87"
+        | "CYCLE88" | "CYCLE89" => Kind::Drill,
         "HOLES1" | "HOLES2" | "CYCLE801" => Kind::Pattern,
         "CYCLE832" => Kind::Tolerance,
         _ if milling::expands(name) => Kind::Milling,
@@ -43,7 +42,11 @@ fn kind(it: &Interp<'_, '_>, name: &str) -> Kind {
     }
 }
 
-fn eval_args(it: &mut Interp<'_, '_>, c: &CycleCall, exprs: &Arena<Expr>) -> Result<Vec<Option<f64>>, Stop> {
+fn eval_args(
+    it: &mut Interp<'_, '_>,
+    c: &CycleCall,
+    exprs: &Arena<Expr>,
+) -> Result<Vec<Option<f64>>, Stop> {
     let mut out = Vec::with_capacity(c.args.len());
     for a in &c.args {
         out.push(match a.value {
@@ -64,32 +67,65 @@ fn at(d: Diagnostic, span: Span) -> Diagnostic {
 
 fn not_expanded(it: &mut Interp<'_, '_>, name: &str, span: Span) {
     it.diags.push(
-        Diagnostic::new(Code::CannotExpandCycle, format!("{name} is not expanded into moves: its calls are left out"))
-            .primary(span, "not expanded")
-            .help("the run goes on after the call as if the cycle did nothing"),
+        Diagnostic::new(
+            Code::CannotExpandCycle,
+            format!("{name} is not expanded into moves: its calls are left out"),
+        )
+        .primary(span, "not expanded")
+        .help("the run goes on after the call as if the cycle did nothing"),
     );
 }
 
 /// Runs a `CycleCall` statement.
-pub fn exec(it: &mut Interp<'_, '_>, c: &CycleCall, span: Span, exprs: &Arena<Expr>) -> Result<(), Stop> {
+pub fn exec(
+    it: &mut Interp<'_, '_>,
+    c: &CycleCall,
+    span: Span,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let name = c.name.to_ascii_uppercase();
     let k = kind(it, &name);
     if k == Kind::Unknown {
-        return Err(it.error_at(span, Code::UnsupportedHere, format!("{name} is not a cycle this dialect knows")));
+        return Err(it.error_at(
+            span,
+            Code::UnsupportedHere,
+            format!("{name} is not a cycle this dialect knows"),
+        ));
     }
-    let runs = matches!(k, Kind::Drill | Kind::Milling | Kind::Pattern | Kind::Tolerance);
-    let args = if runs { eval_args(it, c, exprs)? } else { Vec::new() };
+    let runs = matches!(
+        k,
+        Kind::Drill | Kind::Milling | Kind::Pattern | Kind::Tolerance
+    );
+    let args = if runs {
+        eval_args(it, c, exprs)?
+    } else {
+        Vec::new()
+    };
     if c.modal {
         if matches!(k, Kind::Pattern | Kind::Tolerance) {
-            return Err(it.error_at(span, Code::UnsupportedHere, format!("{name} cannot be called modally (MCALL)")));
+            return Err(it.error_at(
+                span,
+                Code::UnsupportedHere,
+                format!("{name} cannot be called modally (MCALL)"),
+            ));
         }
-        it.siemens.modal = Some(ModalCall { name, args, warned: false });
+        it.siemens.modal = Some(ModalCall {
+            name,
+            args,
+            warned: false,
+        });
         return Ok(());
     }
     run(it, k, &name, &args, span)
 }
 
-fn run(it: &mut Interp<'_, '_>, k: Kind, name: &str, args: &[Option<f64>], span: Span) -> Result<(), Stop> {
+fn run(
+    it: &mut Interp<'_, '_>,
+    k: Kind,
+    name: &str,
+    args: &[Option<f64>],
+    span: Span,
+) -> Result<(), Stop> {
     let frame = it.siemens.frame;
     let scale = it.state.scale();
     let result = match k {
@@ -113,7 +149,9 @@ fn run(it: &mut Interp<'_, '_>, k: Kind, name: &str, args: &[Option<f64>], span:
 
 /// Runs the modal call in force (if any) at the current position.
 pub fn run_modal(it: &mut Interp<'_, '_>, span: Span) -> Result<(), Stop> {
-    let Some(m) = it.siemens.modal.clone() else { return Ok(()) };
+    let Some(m) = it.siemens.modal.clone() else {
+        return Ok(());
+    };
     let k = kind(it, &m.name);
     if matches!(k, Kind::Known | Kind::Unknown) {
         if !m.warned {
@@ -130,9 +168,17 @@ pub fn run_modal(it: &mut Interp<'_, '_>, span: Span) -> Result<(), Stop> {
 /// HOLES1 / HOLES2 / CYCLE801: rapid to each position in the plane (at the
 /// current height along the tool axis) and run the modal cycle there [?:
 /// without MCALL the tool only visits the positions].
-fn run_pattern(it: &mut Interp<'_, '_>, name: &str, args: &[Option<f64>], span: Span) -> Result<(), Stop> {
-    let holes = pattern_positions(name, args)
-        .map_err(|m| Stop::Error(Diagnostic::new(Code::CycleBadArgument, format!("{name}: {m}")).primary(span, "here")))?;
+fn run_pattern(
+    it: &mut Interp<'_, '_>,
+    name: &str,
+    args: &[Option<f64>],
+    span: Span,
+) -> Result<(), Stop> {
+    let holes = pattern_positions(name, args).map_err(|m| {
+        Stop::Error(
+            Diagnostic::new(Code::CycleBadArgument, format!("{name}: {m}")).primary(span, "here"),
+        )
+    })?;
     let (a, b, _) = plane_axes(it.state.plane);
     for (pa, pb) in holes {
         let frame = it.siemens.frame;
@@ -164,5 +210,8 @@ fn tolerance(it: &mut Interp<'_, '_>, args: &[Option<f64>]) {
     it.emit(Canon::SetMotionControlMode(MotionMode::Continuous(tol)));
     it.emit(Canon::SetNaivecamTolerance(tol));
     let mm = it.state.to_mm(tol);
-    it.state.path = PathControl::Continuous { tolerance: mm, naive: mm };
+    it.state.path = PathControl::Continuous {
+        tolerance: mm,
+        naive: mm,
+    };
 }

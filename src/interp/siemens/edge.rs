@@ -19,7 +19,11 @@ use crate::ir::{Arena, Expr, LengthUnit, Value};
 pub fn exec(it: &mut Interp<'_, '_>, v: &Value, exprs: &Arena<Expr>) -> Result<(), Stop> {
     let d = it.value(v, exprs)?;
     if d < 0.0 || d.fract() != 0.0 || d > 32000.0 {
-        return Err(it.error_at(it.span, Code::DomainError, format!("D{d}: a cutting edge is a whole number 0..32000")));
+        return Err(it.error_at(
+            it.span,
+            Code::DomainError,
+            format!("D{d}: a cutting edge is a whole number 0..32000"),
+        ));
     }
     activate_edge(it, d as i64)
 }
@@ -33,7 +37,11 @@ pub fn activate_edge(it: &mut Interp<'_, '_>, d: i64) -> Result<(), Stop> {
         ([0.0; 9], 0.0)
     } else {
         let Some(t) = it.opts.tool_table.get(tool) else {
-            return Err(it.error_at(it.span, Code::ToolNotInTable, format!("Requested tool {tool} not found in the tool table")));
+            return Err(it.error_at(
+                it.span,
+                Code::ToolNotInTable,
+                format!("Requested tool {tool} not found in the tool table"),
+            ));
         };
         if d > 1 {
             return Err(it.error_at(

@@ -80,7 +80,10 @@ pub fn snap(v: f64) -> f64 {
 
 impl ProgFrame {
     pub fn identity() -> Self {
-        ProgFrame { m: IDENTITY, t: [0.0; 3] }
+        ProgFrame {
+            m: IDENTITY,
+            t: [0.0; 3],
+        }
     }
 
     pub fn is_identity(&self) -> bool {
@@ -94,18 +97,27 @@ impl ProgFrame {
 
     /// Rotations about Z, then Y', then X'' (`angles` = [x, y, z] degrees).
     pub fn rot_xyz(angles: [f64; 3]) -> Self {
-        let m = mul(&mul(&rotation(2, angles[2]), &rotation(1, angles[1])), &rotation(0, angles[0]));
+        let m = mul(
+            &mul(&rotation(2, angles[2]), &rotation(1, angles[1])),
+            &rotation(0, angles[0]),
+        );
         ProgFrame { m, t: [0.0; 3] }
     }
 
     /// A rotation about one axis (0 X, 1 Y, 2 Z).
     pub fn rot_about(axis: usize, deg: f64) -> Self {
-        ProgFrame { m: rotation(axis.min(2), deg), t: [0.0; 3] }
+        ProgFrame {
+            m: rotation(axis.min(2), deg),
+            t: [0.0; 3],
+        }
     }
 
     /// Scale factors per axis.
     pub fn scale(f: [f64; 3]) -> Self {
-        ProgFrame { m: [[f[0], 0.0, 0.0], [0.0, f[1], 0.0], [0.0, 0.0, f[2]]], t: [0.0; 3] }
+        ProgFrame {
+            m: [[f[0], 0.0, 0.0], [0.0, f[1], 0.0], [0.0, 0.0, f[2]]],
+            t: [0.0; 3],
+        }
     }
 
     /// Mirror the axes marked true.
@@ -116,7 +128,10 @@ impl ProgFrame {
     /// This frame followed by `g` acting in this frame's coordinates.
     pub fn then(&self, g: &ProgFrame) -> Self {
         let gt = apply(&self.m, g.t);
-        ProgFrame { m: mul(&self.m, &g.m), t: [0, 1, 2].map(|i| gt[i] + self.t[i]) }
+        ProgFrame {
+            m: mul(&self.m, &g.m),
+            t: [0, 1, 2].map(|i| gt[i] + self.t[i]),
+        }
     }
 
     /// A programmed point (mm) in the base frame (mm).
@@ -140,7 +155,8 @@ impl ProgFrame {
 
     fn det(&self) -> f64 {
         let m = &self.m;
-        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
             + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
     }
 
@@ -170,7 +186,10 @@ impl ProgFrame {
     pub fn arc_map(&self, a: usize, b: usize, n: usize) -> Result<bool, &'static str> {
         let m = &self.m;
         let eps = 1e-9;
-        let stays = m[n][a].abs() < eps && m[n][b].abs() < eps && m[a][n].abs() < eps && m[b][n].abs() < eps;
+        let stays = m[n][a].abs() < eps
+            && m[n][b].abs() < eps
+            && m[a][n].abs() < eps
+            && m[b][n].abs() < eps;
         if !stays {
             return Err("the programmable frame turns the arc out of the active plane");
         }

@@ -18,7 +18,11 @@ pub struct FramedHost<'h> {
 
 impl<'h> FramedHost<'h> {
     pub fn new(inner: &'h mut dyn MotionHost, frame: ProgFrame, scale: f64) -> Self {
-        FramedHost { inner, frame, scale }
+        FramedHost {
+            inner,
+            frame,
+            scale,
+        }
     }
 
     fn xyz_mm(&self, p: &Pose) -> [f64; 3] {
@@ -26,7 +30,14 @@ impl<'h> FramedHost<'h> {
     }
 
     fn with_xyz(&self, p: &Pose, q: [f64; 3]) -> Pose {
-        [q[0] / self.scale, q[1] / self.scale, q[2] / self.scale, p[3], p[4], p[5]]
+        [
+            q[0] / self.scale,
+            q[1] / self.scale,
+            q[2] / self.scale,
+            p[3],
+            p[4],
+            p[5],
+        ]
     }
 
     /// A programmed pose in the base frame.
@@ -69,10 +80,14 @@ impl MotionHost for FramedHost<'_> {
                 c[a] = center.0;
                 c[b] = center.1;
                 let cb = self.out(&c);
-                self.inner.arc(end, (cb[a], cb[b]), if flip { -rotation } else { rotation });
+                self.inner
+                    .arc(end, (cb[a], cb[b]), if flip { -rotation } else { rotation });
             }
             Err(why) => {
-                self.inner.report(Diagnostic::new(Code::UnsupportedHere, why).help("the arc was cut as a straight line"));
+                self.inner.report(
+                    Diagnostic::new(Code::UnsupportedHere, why)
+                        .help("the arc was cut as a straight line"),
+                );
                 self.inner.feed(end);
             }
         }
@@ -84,7 +99,11 @@ impl MotionHost for FramedHost<'_> {
         let call = match call {
             Canon::RigidTap { x, y, z } => {
                 let p = self.out(&[x, y, z, 0.0, 0.0, 0.0]);
-                Canon::RigidTap { x: p[0], y: p[1], z: p[2] }
+                Canon::RigidTap {
+                    x: p[0],
+                    y: p[1],
+                    z: p[2],
+                }
             }
             other => other,
         };

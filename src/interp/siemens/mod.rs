@@ -83,9 +83,14 @@ pub fn arc_to_base(
     let (a, b, n) = crate::interp::host::plane_axes(it.state.plane);
     let f = &it.siemens.frame;
     let flip = f.arc_map(a, b, n).map_err(|why| {
-        Diagnostic::new(Code::UnsupportedHere, why).help("program the contour without this frame, or with a uniform SCALE")
+        Diagnostic::new(Code::UnsupportedHere, why)
+            .help("program the contour without this frame, or with a uniform SCALE")
     })?;
-    Ok((f.to_base(end), f.to_base(centre), if flip { -rotation } else { rotation }))
+    Ok((
+        f.to_base(end),
+        f.to_base(centre),
+        if flip { -rotation } else { rotation },
+    ))
 }
 
 /// Does the programmable frame mirror the active plane (an odd number of
@@ -98,12 +103,26 @@ pub fn mirrors_plane(it: &Interp<'_, '_>) -> bool {
 }
 
 /// Runs a frame, cutting-edge, cycle-call or MCALL statement.
-pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+pub fn exec(
+    it: &mut Interp<'_, '_>,
+    s: &Stmt,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let _ = block;
     match &s.kind {
         StmtKind::Transform(t) => match &**t {
-            Transform::Frame { op, additive, axes, rpl } => transform::exec(it, *op, *additive, axes, rpl.as_ref(), exprs),
-            _ => Err(it.error_at(s.span, Code::UnsupportedHere, "not a Siemens programmable frame")),
+            Transform::Frame {
+                op,
+                additive,
+                axes,
+                rpl,
+            } => transform::exec(it, *op, *additive, axes, rpl.as_ref(), exprs),
+            _ => Err(it.error_at(
+                s.span,
+                Code::UnsupportedHere,
+                "not a Siemens programmable frame",
+            )),
         },
         StmtKind::CuttingEdge(v) => edge::exec(it, v, exprs),
         StmtKind::CycleCall(c) => calls::exec(it, c, s.span, exprs),
@@ -111,7 +130,11 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
             it.siemens.modal = None;
             Ok(())
         }
-        _ => Err(it.error_at(s.span, Code::UnsupportedHere, "this statement is not run by the Siemens module")),
+        _ => Err(it.error_at(
+            s.span,
+            Code::UnsupportedHere,
+            "this statement is not run by the Siemens module",
+        )),
     }
 }
 
@@ -119,12 +142,19 @@ pub fn exec(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr
 /// cycle after each block that moves in the active plane [?: the manual
 /// says "after each block with path motion"; a move along the tool axis
 /// only (retract) does not call the cycle, which is what programs expect].
-pub fn after_motion(it: &mut Interp<'_, '_>, s: &Stmt, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
+pub fn after_motion(
+    it: &mut Interp<'_, '_>,
+    s: &Stmt,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     let _ = (block, exprs);
     if it.siemens.modal.is_none() {
         return Ok(());
     }
-    let StmtKind::Motion(m) = &s.kind else { return Ok(()) };
+    let StmtKind::Motion(m) = &s.kind else {
+        return Ok(());
+    };
     let (a, b, _) = crate::interp::host::plane_axes(it.state.plane);
     let letters = ['X', 'Y', 'Z'];
     let in_plane = m.target.get(letters[a]).is_some()

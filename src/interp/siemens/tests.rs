@@ -19,10 +19,15 @@ fn close(a: [f64; 3], b: [f64; 3]) -> bool {
 #[test]
 fn trans_then_rot_rotates_later_translations() {
     // TRANS X10, AROT Z90, ATRANS X5: the ATRANS runs along the rotated X (= base Y).
-    let f = ProgFrame::trans([10.0, 0.0, 0.0]).then(&ProgFrame::rot_about(2, 90.0)).then(&ProgFrame::trans([5.0, 0.0, 0.0]));
+    let f = ProgFrame::trans([10.0, 0.0, 0.0])
+        .then(&ProgFrame::rot_about(2, 90.0))
+        .then(&ProgFrame::trans([5.0, 0.0, 0.0]));
     assert!(close(f.to_base([0.0, 0.0, 0.0]), [10.0, 5.0, 0.0]));
     assert!(close(f.to_base([1.0, 0.0, 0.0]), [10.0, 6.0, 0.0]));
-    assert!(close(f.from_base([10.0, 6.0, 0.0]).unwrap(), [1.0, 0.0, 0.0]));
+    assert!(close(
+        f.from_base([10.0, 6.0, 0.0]).unwrap(),
+        [1.0, 0.0, 0.0]
+    ));
 }
 
 #[test]
@@ -41,15 +46,26 @@ fn rotations_scale_and_mirror() {
     assert_eq!(s.to_base([1.0, 1.0, 1.0]), [4.0, 2.0, 1.0]);
     let m = ProgFrame::mirror([true, false, false]);
     assert_eq!(m.to_base([3.0, 4.0, 5.0]), [-3.0, 4.0, 5.0]);
-    assert!(ProgFrame::scale([0.0, 1.0, 1.0]).from_base([1.0, 1.0, 1.0]).is_none());
+    assert!(ProgFrame::scale([0.0, 1.0, 1.0])
+        .from_base([1.0, 1.0, 1.0])
+        .is_none());
 }
 
 #[test]
 fn arcs_under_frames() {
     assert_eq!(ProgFrame::rot_about(2, 30.0).arc_map(0, 1, 2), Ok(false));
-    assert_eq!(ProgFrame::mirror([true, false, false]).arc_map(0, 1, 2), Ok(true));
-    assert_eq!(ProgFrame::mirror([false, false, true]).arc_map(0, 1, 2), Ok(false));
-    assert_eq!(ProgFrame::scale([2.0, 2.0, 3.0]).arc_map(0, 1, 2), Ok(false));
+    assert_eq!(
+        ProgFrame::mirror([true, false, false]).arc_map(0, 1, 2),
+        Ok(true)
+    );
+    assert_eq!(
+        ProgFrame::mirror([false, false, true]).arc_map(0, 1, 2),
+        Ok(false)
+    );
+    assert_eq!(
+        ProgFrame::scale([2.0, 2.0, 3.0]).arc_map(0, 1, 2),
+        Ok(false)
+    );
     assert!(ProgFrame::scale([2.0, 1.0, 1.0]).arc_map(0, 1, 2).is_err());
     assert!(ProgFrame::rot_about(1, 30.0).arc_map(0, 1, 2).is_err());
     // G18 (Z, X; normal Y) keeps a rotation about Y.
@@ -73,7 +89,10 @@ fn framed_host_maps_moves_and_arcs() {
 fn mill(name: &str, args: &[f64], radius: f64) -> String {
     let mut rec = Rec::new();
     rec.pos = [0.0, 0.0, 50.0, 0.0, 0.0, 0.0];
-    let a: Vec<Option<f64>> = args.iter().map(|x| if x.is_nan() { None } else { Some(*x) }).collect();
+    let a: Vec<Option<f64>> = args
+        .iter()
+        .map(|x| if x.is_nan() { None } else { Some(*x) })
+        .collect();
     match milling::run(&mut rec, name, &a, radius) {
         Ok(()) => rec.text(),
         Err(d) => format!("{}\nerror {}: {}", rec.text(), d.code.code(), d.message),
@@ -86,14 +105,27 @@ fn pocket1_rough_and_finish() {
     // RTP 10, RFP 0, SDIS 2, DP -6, DPR -, LENG 40, WID 20, CRAD 6, CPA 50,
     // CPO 30, STA1 0, FFD 100, FFP1 300, MID 3, CDIR 3, FAL 0.5, VARI 0,
     // MIDF -, FFP2 200, SSF 0; tool radius 4.
-    let out = mill("POCKET1", &[10.0, 0.0, 2.0, -6.0, e, 40.0, 20.0, 6.0, 50.0, 30.0, 0.0, 100.0, 300.0, 3.0, 3.0, 0.5, 0.0, e, 200.0, 0.0], 4.0);
+    let out = mill(
+        "POCKET1",
+        &[
+            10.0, 0.0, 2.0, -6.0, e, 40.0, 20.0, 6.0, 50.0, 30.0, 0.0, 100.0, 300.0, 3.0, 3.0, 0.5,
+            0.0, e, 200.0, 0.0,
+        ],
+        4.0,
+    );
     insta::assert_snapshot!("pocket1", out);
 }
 
 #[test]
 fn pocket1_rotated_cw_rough_only() {
     let e = f64::NAN;
-    let out = mill("POCKET1", &[5.0, 0.0, 1.0, e, 2.0, 20.0, 12.0, 0.0, 0.0, 0.0, 90.0, 50.0, 200.0, 0.0, 2.0, 0.0, 1.0], 3.0);
+    let out = mill(
+        "POCKET1",
+        &[
+            5.0, 0.0, 1.0, e, 2.0, 20.0, 12.0, 0.0, 0.0, 0.0, 90.0, 50.0, 200.0, 0.0, 2.0, 0.0, 1.0,
+        ],
+        3.0,
+    );
     insta::assert_snapshot!("pocket1_rotated", out);
 }
 
@@ -102,7 +134,14 @@ fn pocket2_circles() {
     let e = f64::NAN;
     // RTP 10, RFP 0, SDIS 2, DP -4, DPR -, PRAD 12, CPA 20, CPO 0, FFD 80,
     // FFP1 250, MID 2, CDIR 2, FAL 0.2, VARI 0, MIDF -, FFP2 150, SSF 1200.
-    let out = mill("POCKET2", &[10.0, 0.0, 2.0, -4.0, e, 12.0, 20.0, 0.0, 80.0, 250.0, 2.0, 2.0, 0.2, 0.0, e, 150.0, 1200.0], 5.0);
+    let out = mill(
+        "POCKET2",
+        &[
+            10.0, 0.0, 2.0, -4.0, e, 12.0, 20.0, 0.0, 80.0, 250.0, 2.0, 2.0, 0.2, 0.0, e, 150.0,
+            1200.0,
+        ],
+        5.0,
+    );
     insta::assert_snapshot!("pocket2", out);
 }
 
@@ -110,9 +149,24 @@ fn pocket2_circles() {
 fn cycle71_zigzag_and_one_way() {
     // RTP 10, RFP 0, SDIS 2, DP -1, PA 0, PO 0, LENG 30, WID 20, STA 0,
     // MID 0.5, MIDA 8, FDP 2, FALD 0, FFP1 400, VARI 31 / 11.
-    let zig = mill("CYCLE71", &[10.0, 0.0, 2.0, -1.0, 0.0, 0.0, 30.0, 20.0, 0.0, 0.5, 8.0, 2.0, 0.0, 400.0, 31.0, 0.0], 5.0);
-    let one = mill("CYCLE71", &[10.0, 0.0, 2.0, -0.5, 0.0, 0.0, 30.0, -20.0, 0.0, 0.0, 12.0, 0.0, 0.0, 400.0, 22.0, 0.0], 5.0);
-    insta::assert_snapshot!("cycle71", format!("== zigzag\n{zig}\n== one way, finishing\n{one}"));
+    let zig = mill(
+        "CYCLE71",
+        &[
+            10.0, 0.0, 2.0, -1.0, 0.0, 0.0, 30.0, 20.0, 0.0, 0.5, 8.0, 2.0, 0.0, 400.0, 31.0, 0.0,
+        ],
+        5.0,
+    );
+    let one = mill(
+        "CYCLE71",
+        &[
+            10.0, 0.0, 2.0, -0.5, 0.0, 0.0, 30.0, -20.0, 0.0, 0.0, 12.0, 0.0, 0.0, 400.0, 22.0, 0.0,
+        ],
+        5.0,
+    );
+    insta::assert_snapshot!(
+        "cycle71",
+        format!("== zigzag\n{zig}\n== one way, finishing\n{one}")
+    );
 }
 
 #[test]
@@ -121,8 +175,17 @@ fn milling_errors() {
     let no_tool = mill("POCKET2", &[10.0, 0.0, 2.0, -4.0, e, 12.0, 0.0, 0.0], 0.0);
     let too_big = mill("POCKET1", &[10.0, 0.0, 2.0, -4.0, e, 6.0, 6.0], 4.0);
     let no_depth = mill("POCKET1", &[10.0, 0.0, 2.0], 4.0);
-    let vari = mill("CYCLE71", &[10.0, 0.0, 2.0, -1.0, 0.0, 0.0, 30.0, 20.0, 0.0, 0.5, 8.0, 2.0, 0.0, 400.0, 5.0], 5.0);
-    insta::assert_snapshot!("milling_errors", format!("{no_tool}\n--\n{too_big}\n--\n{no_depth}\n--\n{vari}"));
+    let vari = mill(
+        "CYCLE71",
+        &[
+            10.0, 0.0, 2.0, -1.0, 0.0, 0.0, 30.0, 20.0, 0.0, 0.5, 8.0, 2.0, 0.0, 400.0, 5.0,
+        ],
+        5.0,
+    );
+    insta::assert_snapshot!(
+        "milling_errors",
+        format!("{no_tool}\n--\n{too_big}\n--\n{no_depth}\n--\n{vari}")
+    );
 }
 
 #[test]
@@ -137,7 +200,8 @@ fn program_frames_and_edges() {
 #[test]
 fn program_inch_frames_and_edge() {
     // G70: geometry in inches; the frame is kept in mm and printed in inches.
-    let out = drive::run("G70\nT1 M6 D1\nTRANS X1\nG0 X1 Y0 Z1\nG71\nG0 X0\nAMIRROR Y0\nG0 Y5\nM30\n");
+    let out =
+        drive::run("G70\nT1 M6 D1\nTRANS X1\nG0 X1 Y0 Z1\nG71\nG0 X0\nAMIRROR Y0\nG0 Y5\nM30\n");
     insta::assert_snapshot!("program_inch_frames_and_edge", out);
 }
 
@@ -165,7 +229,10 @@ fn program_errors() {
     let t99 = drive::run("T99 M6\nD1\nM30\n");
     let scale0 = drive::run("SCALE X0\nM30\n");
     let pattern = drive::run("MCALL HOLES1(0,0,0,10,10,3)\nM30\n");
-    insta::assert_snapshot!("program_errors", format!("{d2}\n--\n{t99}\n--\n{scale0}\n--\n{pattern}"));
+    insta::assert_snapshot!(
+        "program_errors",
+        format!("{d2}\n--\n{t99}\n--\n{scale0}\n--\n{pattern}")
+    );
 }
 
 /// The same kind of program through the whole interpreter (`interp::run`),
@@ -180,13 +247,26 @@ fn whole_interpreter_frames_and_mcall() {
     let mut out = Vec::new();
     let mut sink = |c: crate::canon::Canon, _s: crate::span::Span| out.push(format_call(&c));
     let mut files = crate::source::SourceMap::new();
-    let mut loader = crate::driver::FsLoader::new(std::path::PathBuf::from("."), spec.clone(), &mut files);
-    let diags = crate::interp::run(std::rc::Rc::new(program), &spec, &crate::interp::Options::default(), &mut loader, &mut sink);
+    let mut loader =
+        crate::driver::FsLoader::new(std::path::PathBuf::from("."), spec.clone(), &mut files);
+    let diags = crate::interp::run(
+        std::rc::Rc::new(program),
+        &spec,
+        &crate::interp::Options::default(),
+        &mut loader,
+        &mut sink,
+    );
     assert!(diags.iter().all(|d| !d.is_error()), "{diags:?}");
     let text = out.join("\n");
     // The hole lands at base X10 Y5 (TRANS X10, then X5 turned by 90°).
-    assert!(text.contains("STRAIGHT_TRAVERSE(10.0000, 5.0000, 1.0000"), "{text}");
-    assert!(text.contains("STRAIGHT_FEED(10.0000, 5.0000, -2.0000"), "{text}");
+    assert!(
+        text.contains("STRAIGHT_TRAVERSE(10.0000, 5.0000, 1.0000"),
+        "{text}"
+    );
+    assert!(
+        text.contains("STRAIGHT_FEED(10.0000, 5.0000, -2.0000"),
+        "{text}"
+    );
 }
 
 /// Every Siemens corpus program runs through the stand-in driver without a
@@ -200,10 +280,16 @@ fn corpus_programs_do_not_panic() {
         return;
     };
     for e in entries.flatten() {
-        let Ok(text) = std::fs::read_to_string(e.path()) else { continue };
+        let Ok(text) = std::fs::read_to_string(e.path()) else {
+            continue;
+        };
         let out = drive::run_lenient(&text);
         if std::env::var("SIEM_SHOW").is_ok() {
-            eprintln!("== {}\n{}", e.path().display(), out.lines().take(40).collect::<Vec<_>>().join("\n"));
+            eprintln!(
+                "== {}\n{}",
+                e.path().display(),
+                out.lines().take(40).collect::<Vec<_>>().join("\n")
+            );
         }
         assert!(!out.contains("panicked"), "{}", e.path().display());
     }

@@ -7,12 +7,16 @@
 
 use super::frame::ProgFrame;
 use crate::canon::CanonPlane;
-use crate::interp::{Interp, Stop};
 use crate::diag::Code;
+use crate::interp::{Interp, Stop};
 use crate::ir::{Arena, Axes, Expr, FrameOp, Value};
 
 /// The X Y Z values written (None: not written).
-fn xyz(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Result<[Option<f64>; 3], Stop> {
+fn xyz(
+    it: &mut Interp<'_, '_>,
+    axes: &Axes,
+    exprs: &Arena<Expr>,
+) -> Result<[Option<f64>; 3], Stop> {
     let mut out = [None; 3];
     for (i, letter) in ['X', 'Y', 'Z'].into_iter().enumerate() {
         if let Some(c) = axes.get(letter) {
@@ -62,13 +66,21 @@ pub fn exec(
         FrameOp::Scale => {
             let f = v.map(|x| x.unwrap_or(1.0));
             if f.iter().any(|k| *k == 0.0 || !k.is_finite()) {
-                return Err(it.error_at(it.span, Code::DomainError, "a scale factor of 0 collapses the coordinate system"));
+                return Err(it.error_at(
+                    it.span,
+                    Code::DomainError,
+                    "a scale factor of 0 collapses the coordinate system",
+                ));
             }
             ProgFrame::scale(f)
         }
         FrameOp::Mirror => ProgFrame::mirror(v.map(|x| x.is_some())),
     };
-    let base = if additive { it.siemens.frame } else { ProgFrame::identity() };
+    let base = if additive {
+        it.siemens.frame
+    } else {
+        ProgFrame::identity()
+    };
     it.siemens.frame = base.then(&step);
     Ok(())
 }

@@ -25,7 +25,11 @@ impl Printer<'_> {
             K::Raw { dialect, text } => format!("raw {dialect} {text:?}"),
             K::Word(w) => format!("word {}={}", w.address(), self.value(&w.value)),
             K::Units { unit, with_feeds } => {
-                format!("units {}{}", name(unit), if *with_feeds { " with-feeds" } else { "" })
+                format!(
+                    "units {}{}",
+                    name(unit),
+                    if *with_feeds { " with-feeds" } else { "" }
+                )
             }
             K::Plane(p) => format!("plane {p:?}"),
             K::Distance(d) => format!("distance {}", name(d)),
@@ -49,7 +53,11 @@ impl Printer<'_> {
             K::ToolSelect(ToolRef::Name(n)) => format!("tool-select {n:?}"),
             K::ToolChange => "tool-change".into(),
             K::CuttingEdge(v) => format!("cutting-edge {}", self.value(v)),
-            K::RadiusComp { side, register, diameter } => {
+            K::RadiusComp {
+                side,
+                register,
+                diameter,
+            } => {
                 let mut s = format!("radius-comp {}", name(side));
                 if *diameter {
                     s.push_str(" diameter");
@@ -57,32 +65,54 @@ impl Printer<'_> {
                 self.kv(&mut s, "D", register);
                 s
             }
-            K::LengthComp { mode, register, axes } => {
+            K::LengthComp {
+                mode,
+                register,
+                axes,
+            } => {
                 let mut s = format!("length-comp {}", name(mode));
                 self.kv(&mut s, "H", register);
                 s + &self.axes(axes)
             }
-            K::OffsetRegister { letter, value } => format!("register {letter}={}", self.value(value)),
+            K::OffsetRegister { letter, value } => {
+                format!("register {letter}={}", self.value(value))
+            }
             K::WorkOffset { index, extended } => {
                 let mut s = format!("work-offset {index}");
                 self.kv(&mut s, "P", extended);
                 s
             }
             K::MachineCoords => "machine-coords".into(),
-            K::CoordShift { kind, axes } => format!("coord-shift {}{}", name(kind), self.axes(axes)),
+            K::CoordShift { kind, axes } => {
+                format!("coord-shift {}{}", name(kind), self.axes(axes))
+            }
             K::SetData { l, words } => format!("set-data L={}{}", self.value(l), self.words(words)),
             K::RefReturn { index, axes, store } => {
                 let st = if *store { " store" } else { "" };
                 format!("ref-return {index}{st}{}", self.axes(axes))
             }
             K::PathMode { mode, words } => format!("path {}{}", name(mode), self.words(words)),
-            K::ReturnToInitial(b) => format!("return-level {}", if *b { "initial" } else { "r-plane" }),
+            K::ReturnToInitial(b) => {
+                format!("return-level {}", if *b { "initial" } else { "r-plane" })
+            }
             K::Transform(t) => self.transform(t),
             K::Dwell { value, unit } => format!("dwell {} {}", self.value(value), name(unit)),
             K::Stop(k) => format!("stop {}", name(k)),
-            K::Aux { letter, code, words } => format!("aux {letter}{code}{}", self.words(words)),
-            K::DynamicCode { letter, value, words } => {
-                format!("dynamic-code {letter}={}{}", self.expr(*value), self.words(words))
+            K::Aux {
+                letter,
+                code,
+                words,
+            } => format!("aux {letter}{code}{}", self.words(words)),
+            K::DynamicCode {
+                letter,
+                value,
+                words,
+            } => {
+                format!(
+                    "dynamic-code {letter}={}{}",
+                    self.expr(*value),
+                    self.words(words)
+                )
             }
             K::Command { name: n, args } => match args {
                 None => format!("command {n}"),
@@ -93,7 +123,11 @@ impl Printer<'_> {
             K::CycleCancel => "cycle-cancel".into(),
             K::CycleCall(c) => {
                 let modal = if c.modal { "MCALL " } else { "" };
-                format!("cycle-call {modal}{}({})", c.name, self.args(c.args.iter().map(|a| a.value)))
+                format!(
+                    "cycle-call {modal}{}({})",
+                    c.name,
+                    self.args(c.args.iter().map(|a| a.value))
+                )
             }
             K::ModalCallCancel => "modal-call-cancel".into(),
             K::Assign { var, value } => format!("assign {} = {}", self.var(var), self.expr(*value)),
@@ -103,10 +137,14 @@ impl Printer<'_> {
                     JumpTarget::Sequence(v) => format!("N{}", self.value(v)),
                     JumpTarget::Label(l) => l.clone(),
                 };
-                let c = cond.map(|c| format!(" if {}", self.cond(c))).unwrap_or_default();
+                let c = cond
+                    .map(|c| format!(" if {}", self.cond(c)))
+                    .unwrap_or_default();
                 format!("goto {} {t}{c}", name(dir))
             }
-            K::IfThen { cond, then } => format!("if {} then {{{}}}", self.cond(*cond), self.stmt(&then.kind)),
+            K::IfThen { cond, then } => {
+                format!("if {} then {{{}}}", self.cond(*cond), self.stmt(&then.kind))
+            }
             K::If { cond, id } => format!("if {}{}", self.cond(*cond), flow_id(id)),
             K::ElseIf { cond, id } => format!("elseif {}{}", self.cond(*cond), flow_id(id)),
             K::Else { id } => format!("else{}", flow_id(id)),
@@ -118,29 +156,62 @@ impl Printer<'_> {
             K::Repeat { count, id } => format!("repeat {}{}", self.cond(*count), flow_id(id)),
             K::EndRepeat { id } => format!("endrepeat{}", flow_id(id)),
             K::For { var, from, to } => {
-                format!("for {} = {} to {}", self.var(var), self.expr(*from), self.expr(*to))
+                format!(
+                    "for {} = {} to {}",
+                    self.var(var),
+                    self.expr(*from),
+                    self.expr(*to)
+                )
             }
             K::EndFor => "endfor".into(),
             K::Loop => "loop".into(),
             K::EndLoop => "endloop".into(),
             K::RepeatUntil => "repeat-until".into(),
             K::Until { cond } => format!("until {}", self.cond(*cond)),
-            K::Case { selector, arms, default } => self.case(*selector, arms, default),
-            K::SectionRepeat { start, end, count, single } => {
-                let kw = if *single { "section-repeat-block" } else { "section-repeat" };
+            K::Case {
+                selector,
+                arms,
+                default,
+            } => self.case(*selector, arms, default),
+            K::SectionRepeat {
+                start,
+                end,
+                count,
+                single,
+            } => {
+                let kw = if *single {
+                    "section-repeat-block"
+                } else {
+                    "section-repeat"
+                };
                 let e = end.as_ref().map(|e| format!(" {e}")).unwrap_or_default();
-                let c = count.map(|c| format!(" P={}", self.expr(c))).unwrap_or_default();
+                let c = count
+                    .map(|c| format!(" P={}", self.expr(c)))
+                    .unwrap_or_default();
                 format!("{kw} {start}{e}{c}")
             }
             K::Break { id } => format!("break{}", flow_id(id)),
             K::Continue { id } => format!("continue{}", flow_id(id)),
-            K::SubStart { name: n, params, id } => {
-                let p = if params.is_empty() { String::new() } else { format!("({})", self.decls(params)) };
+            K::SubStart {
+                name: n,
+                params,
+                id,
+            } => {
+                let p = if params.is_empty() {
+                    String::new()
+                } else {
+                    format!("({})", self.decls(params))
+                };
                 format!("sub {n}{p}{}", flow_id(id))
             }
             K::SubEnd { id, value } => format!("endsub{}{}", self.opt_expr(*value), flow_id(id)),
             K::Return { id, value } => format!("return{}{}", self.opt_expr(*value), flow_id(id)),
-            K::Call { kind, target, args, repeat } => self.call(*kind, target, args, repeat),
+            K::Call {
+                kind,
+                target,
+                args,
+                repeat,
+            } => self.call(*kind, target, args, repeat),
             K::SubReturn { to } => {
                 let mut s = "sub-return".to_string();
                 self.kv(&mut s, "P", to);
@@ -151,7 +222,9 @@ impl Printer<'_> {
     }
 
     fn args(&self, args: impl Iterator<Item = Option<ExprId>>) -> String {
-        let a: Vec<String> = args.map(|a| a.map(|e| self.expr(e)).unwrap_or_default()).collect();
+        let a: Vec<String> = args
+            .map(|a| a.map(|e| self.expr(e)).unwrap_or_default())
+            .collect();
         a.join(", ")
     }
 
@@ -165,7 +238,10 @@ impl Printer<'_> {
                     let ds: Vec<String> = d.dims.iter().map(u32::to_string).collect();
                     format!("[{}]", ds.join(", "))
                 };
-                let init = d.init.map(|e| format!("={}", self.expr(e))).unwrap_or_default();
+                let init = d
+                    .init
+                    .map(|e| format!("={}", self.expr(e)))
+                    .unwrap_or_default();
                 format!("{}{dims}{init}", d.name)
             })
             .collect();
@@ -176,7 +252,11 @@ impl Printer<'_> {
         let kind = match m.kind {
             MotionKind::Arc(d) => format!("arc-{}", name(d)),
             MotionKind::Probe { toward, error } => {
-                format!("probe-{}{}", if toward { "toward" } else { "away" }, if error { "" } else { "-noerror" })
+                format!(
+                    "probe-{}{}",
+                    if toward { "toward" } else { "away" },
+                    if error { "" } else { "-noerror" }
+                )
             }
             MotionKind::Other(code) => format!("G{code}"),
             k @ (MotionKind::Implicit
@@ -207,7 +287,14 @@ impl Printer<'_> {
 
     fn cycle(&self, c: &CannedCycle) -> String {
         let mut s = format!("cycle {}{}", name(c.kind), self.axes(&c.target));
-        for (key, v) in [("R", &c.r), ("Q", &c.q), ("P", &c.p), ("I", &c.i), ("J", &c.j), ("K", &c.k)] {
+        for (key, v) in [
+            ("R", &c.r),
+            ("Q", &c.q),
+            ("P", &c.p),
+            ("I", &c.i),
+            ("J", &c.j),
+            ("K", &c.k),
+        ] {
             self.kv(&mut s, key, v);
         }
         self.kv(&mut s, "repeat", &c.repeat);
@@ -216,8 +303,18 @@ impl Printer<'_> {
 
     fn transform(&self, t: &Transform) -> String {
         match t {
-            Transform::Frame { op, additive, axes, rpl } => {
-                let mut s = format!("frame {}{}{}", name(op), if *additive { " additive" } else { "" }, self.axes(axes));
+            Transform::Frame {
+                op,
+                additive,
+                axes,
+                rpl,
+            } => {
+                let mut s = format!(
+                    "frame {}{}{}",
+                    name(op),
+                    if *additive { " additive" } else { "" },
+                    self.axes(axes)
+                );
                 self.kv(&mut s, "RPL", rpl);
                 s
             }
@@ -227,7 +324,11 @@ impl Printer<'_> {
                 s
             }
             Transform::RotateOff => "rotate off".into(),
-            Transform::ScaleOn { center, factor, per_axis } => {
+            Transform::ScaleOn {
+                center,
+                factor,
+                per_axis,
+            } => {
                 let mut s = format!("scale on{}", self.axes(center));
                 self.kv(&mut s, "P", factor);
                 for (l, v) in per_axis {
@@ -244,7 +345,12 @@ impl Printer<'_> {
     fn case(&self, sel: ExprId, arms: &[CaseArm], default: &Option<(String, JumpDir)>) -> String {
         let mut s = format!("case {}", self.cond(sel));
         for a in arms {
-            s.push_str(&format!(" {} -> goto {} {}", self.expr(a.value), name(a.dir), a.target));
+            s.push_str(&format!(
+                " {} -> goto {} {}",
+                self.expr(a.value),
+                name(a.dir),
+                a.target
+            ));
         }
         if let Some((t, d)) = default {
             s.push_str(&format!(" default -> goto {} {t}", name(d)));
@@ -252,7 +358,13 @@ impl Printer<'_> {
         s
     }
 
-    fn call(&self, kind: CallKind, target: &CallTarget, args: &CallArgs, repeat: &Option<Value>) -> String {
+    fn call(
+        &self,
+        kind: CallKind,
+        target: &CallTarget,
+        args: &CallArgs,
+        repeat: &Option<Value>,
+    ) -> String {
         let t = match target {
             CallTarget::Number(n) => n.to_string(),
             CallTarget::Name(n) => format!("{n:?}"),

@@ -6,8 +6,8 @@ use super::classify::Spanner;
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::DialectSpec;
 use crate::ir::{
-    Arena, Arg, Axes, BinaryOp, Coord, Decimal, DimMode, Expr, ExprId, ExprKind, FrameOp, Stmt, StmtKind, Transform, UnaryOp,
-    Value, Var,
+    Arena, Arg, Axes, BinaryOp, Coord, Decimal, DimMode, Expr, ExprId, ExprKind, FrameOp, Stmt,
+    StmtKind, Transform, UnaryOp, Value, Var,
 };
 use crate::span::Span;
 
@@ -16,11 +16,26 @@ use crate::span::Span;
 #[allow(clippy::large_enum_variant)]
 pub enum Node {
     /// `X10`, `X=R1+5`, `X=AC(5)`, `CR=10`, `T="DRILL"`.
-    Word { addr: String, addr_span: Span, value: Value, dim: Option<DimMode>, extended: bool, span: Span },
+    Word {
+        addr: String,
+        addr_span: Span,
+        value: Value,
+        dim: Option<DimMode>,
+        extended: bool,
+        span: Span,
+    },
     /// An address with no value: an error reported when the line is finished.
-    Bare { addr: String, span: Span },
+    Bare {
+        addr: String,
+        span: Span,
+    },
     /// `L140(2)`: a numbered subprogram call with arguments.
-    WordCall { addr: String, number: Decimal, args: Vec<Arg>, span: Span },
+    WordCall {
+        addr: String,
+        number: Decimal,
+        args: Vec<Arg>,
+        span: Span,
+    },
     Stmt(Stmt),
 }
 
@@ -57,7 +72,10 @@ impl Builder<'_> {
     pub fn neg(&mut self, e: ExprId, l: usize, r: usize) -> ExprId {
         if let ExprKind::Number(d) = self.exprs[e].kind {
             let span = self.span(l, r);
-            self.exprs[e] = Expr { kind: ExprKind::Number(d.neg()), span };
+            self.exprs[e] = Expr {
+                kind: ExprKind::Number(d.neg()),
+                span,
+            };
             return e;
         }
         self.un(UnaryOp::Neg, e, l, r)
@@ -79,13 +97,30 @@ impl Builder<'_> {
         }
     }
 
-    pub fn word(&self, addr: (usize, String, usize), value: Value, dim: Option<DimMode>, extended: bool, r: usize) -> Node {
+    pub fn word(
+        &self,
+        addr: (usize, String, usize),
+        value: Value,
+        dim: Option<DimMode>,
+        extended: bool,
+        r: usize,
+    ) -> Node {
         let addr_span = self.span(addr.0, addr.2);
-        Node::Word { addr: addr.1, addr_span, value, dim, extended, span: self.span(addr.0, r) }
+        Node::Word {
+            addr: addr.1,
+            addr_span,
+            value,
+            dim,
+            extended,
+            span: self.span(addr.0, r),
+        }
     }
 
     pub fn arg(&self, value: Option<ExprId>, l: usize, r: usize) -> Arg {
-        Arg { value, span: self.span(l, r) }
+        Arg {
+            value,
+            span: self.span(l, r),
+        }
     }
 
     /// Marks the line to be kept as text.
@@ -111,11 +146,26 @@ pub fn args(list: Vec<Arg>) -> Vec<Arg> {
 }
 
 /// A programmable frame statement from its keyword and words.
-pub fn frame(ctx: &mut Builder<'_>, f: (FrameOp, bool), words: Vec<Node>, l: usize, r: usize) -> Node {
+pub fn frame(
+    ctx: &mut Builder<'_>,
+    f: (FrameOp, bool),
+    words: Vec<Node>,
+    l: usize,
+    r: usize,
+) -> Node {
     let mut axes = Axes::default();
     let mut rpl = None;
     for w in words {
-        let Node::Word { addr, value, dim, span, .. } = w else { continue };
+        let Node::Word {
+            addr,
+            value,
+            dim,
+            span,
+            ..
+        } = w
+        else {
+            continue;
+        };
         let mut cs = addr.chars();
         let slot = match (cs.next(), cs.next()) {
             (Some(c), None) => axes.slot_mut(c),
@@ -127,20 +177,36 @@ pub fn frame(ctx: &mut Builder<'_>, f: (FrameOp, bool), words: Vec<Node>, l: usi
             None => ctx.keep_raw_at(format!("`{addr}` in a frame statement"), span),
         }
     }
-    ctx.stmt(StmtKind::Transform(Box::new(Transform::Frame { op: f.0, additive: f.1, axes, rpl })), l, r)
+    ctx.stmt(
+        StmtKind::Transform(Box::new(Transform::Frame {
+            op: f.0,
+            additive: f.1,
+            axes,
+            rpl,
+        })),
+        l,
+        r,
+    )
 }
 
 /// A call of a function from the spec's table, its argument count checked.
 pub fn call(ctx: &mut Builder<'_>, name: String, args: Vec<ExprId>, l: usize, r: usize) -> ExprId {
     let Some(def) = ctx.spec.function(&name) else {
-        ctx.keep_raw(format!("the function `{name}` is not in this dialect's function table"), l, r);
+        ctx.keep_raw(
+            format!("the function `{name}` is not in this dialect's function table"),
+            l,
+            r,
+        );
         return ctx.expr(ExprKind::Str(name), l, r);
     };
     let (func, arity) = (def.func, def.arity);
     if args.len() != arity {
-        let d = Diagnostic::new(Code::SyntaxError, format!("`{name}` takes {arity} argument(s), not {}", args.len()))
-            .primary(ctx.span(l, r), "wrong number of arguments")
-            .help(format!("call it as `{name}(` with {arity} argument(s) `)`"));
+        let d = Diagnostic::new(
+            Code::SyntaxError,
+            format!("`{name}` takes {arity} argument(s), not {}", args.len()),
+        )
+        .primary(ctx.span(l, r), "wrong number of arguments")
+        .help(format!("call it as `{name}(` with {arity} argument(s) `)`"));
         ctx.diags.push(d);
     }
     ctx.expr(ExprKind::Call(func, args), l, r)

@@ -74,7 +74,16 @@ pub fn classify(
     diags: &mut Vec<Diagnostic>,
 ) -> Classified {
     let raws = lex(text);
-    let mut cx = Cx { text, spec, declared, sp, out: Classified::default(), mode: Mode::Normal, depth: 0, diags };
+    let mut cx = Cx {
+        text,
+        spec,
+        declared,
+        sp,
+        out: Classified::default(),
+        mode: Mode::Normal,
+        depth: 0,
+        diags,
+    };
     let mut i = 0;
     while i < raws.len() {
         i = cx.step(&raws, i);
@@ -100,7 +109,9 @@ impl Cx<'_> {
 
     fn error(&mut self, code: Code, r: Range<usize>, msg: String, label: &str, help: &str) {
         self.out.lex_error = true;
-        let d = Diagnostic::new(code, msg).primary(self.sp.span(r.start, r.end), label).help(help);
+        let d = Diagnostic::new(code, msg)
+            .primary(self.sp.span(r.start, r.end), label)
+            .help(help);
         self.diags.push(d);
     }
 
@@ -110,7 +121,13 @@ impl Cx<'_> {
         let next = raws.get(i + 1).map(|(k, _)| *k);
         let Some(kind) = kind else {
             let ch = self.text[r.clone()].chars().next().unwrap_or('?');
-            self.error(Code::BadCharacter, r, format!("the character `{ch}` has no meaning here"), "unexpected character", "remove it, or put it in a `;` comment");
+            self.error(
+                Code::BadCharacter,
+                r,
+                format!("the character `{ch}` has no meaning here"),
+                "unexpected character",
+                "remove it, or put it in a `;` comment",
+            );
             return i + 1;
         };
         let s = &self.text[r.clone()];
@@ -118,7 +135,9 @@ impl Cx<'_> {
             Raw::Comment => self.out.comment = Some((s[1..].to_string(), r)),
             Raw::Percent if i == 0 => self.out.header = Some((archive_name(s), r)),
             Raw::Slash if i == 0 => return self.skip(raws, r),
-            Raw::Colon if self.at_prefix() && self.out.number.is_none() => return self.main_block(raws, i),
+            Raw::Colon if self.at_prefix() && self.out.number.is_none() => {
+                return self.main_block(raws, i)
+            }
             Raw::Ident if next == Some(Some(Raw::Colon)) => {
                 self.label(s.to_string(), r);
                 return i + 2;
@@ -130,7 +149,13 @@ impl Cx<'_> {
                 }
             }
             Raw::Str => self.push(r, Tok::Str(s[1..s.len() - 1].to_string())),
-            Raw::OpenStr => self.error(Code::UnterminatedString, r, "this string is not closed on its line".into(), "string opened here", "close it with `\"`"),
+            Raw::OpenStr => self.error(
+                Code::UnterminatedString,
+                r,
+                "this string is not closed on its line".into(),
+                "string opened here",
+                "close it with `\"`",
+            ),
             Raw::SysVar => self.push(r, Tok::SysVar(s.to_ascii_uppercase())),
             _ => self.punct(kind, s, r),
         }
@@ -177,8 +202,20 @@ impl Cx<'_> {
 
     fn number_error(&mut self, e: NumberError, s: &str, r: Range<usize>) {
         match e {
-            NumberError::Malformed => self.error(Code::MalformedNumber, r, format!("`{s}` is not a number"), "malformed number", "a number has digits and at most one decimal point"),
-            NumberError::TooLong => self.error(Code::NumberTooLong, r, format!("`{s}` has too many digits"), "too many digits", "at most 18 significant digits are kept exactly; shorten the number"),
+            NumberError::Malformed => self.error(
+                Code::MalformedNumber,
+                r,
+                format!("`{s}` is not a number"),
+                "malformed number",
+                "a number has digits and at most one decimal point",
+            ),
+            NumberError::TooLong => self.error(
+                Code::NumberTooLong,
+                r,
+                format!("`{s}` has too many digits"),
+                "too many digits",
+                "at most 18 significant digits are kept exactly; shorten the number",
+            ),
         }
     }
 
@@ -203,7 +240,13 @@ impl Cx<'_> {
                 return i + 2;
             }
         }
-        self.error(Code::SyntaxError, r, "`:` must be followed by a main block number".into(), "expected a number after this", "write a main block as `:10`, a label as `NAME:`");
+        self.error(
+            Code::SyntaxError,
+            r,
+            "`:` must be followed by a main block number".into(),
+            "expected a number after this",
+            "write a main block as `:10`, a label as `NAME:`",
+        );
         i + 1
     }
 
@@ -212,7 +255,13 @@ impl Cx<'_> {
             self.out.label = Some((name, r.start..r.end + 1));
         } else {
             let msg = format!("the label `{name}:` must stand at the start of the block");
-            self.error(Code::SyntaxError, r, msg, "label here", "put the label first in its block, after the block number");
+            self.error(
+                Code::SyntaxError,
+                r,
+                msg,
+                "label here",
+                "put the label first in its block, after the block number",
+            );
         }
     }
 
@@ -221,8 +270,40 @@ impl Cx<'_> {
     fn expects_operand(&self) -> bool {
         use Kw::*;
         match self.out.toks.last().map(|t| &t.1) {
-            Some(Tok::Kw(k)) => matches!(k, If | While | Until | To | Not | And | Or | Xor | BNot | BAnd | BOr | BXor | Div | Mod | Of | Ac | Ic),
-            Some(t) => !matches!(t, Tok::Num(_) | Tok::Str(_) | Tok::RParen | Tok::RBracket | Tok::Name(_) | Tok::UserVar(_) | Tok::RParam(_) | Tok::SysVar(_) | Tok::Addr(_) | Tok::Command(_) | Tok::Cycle(_) | Tok::Func(_)),
+            Some(Tok::Kw(k)) => matches!(
+                k,
+                If | While
+                    | Until
+                    | To
+                    | Not
+                    | And
+                    | Or
+                    | Xor
+                    | BNot
+                    | BAnd
+                    | BOr
+                    | BXor
+                    | Div
+                    | Mod
+                    | Of
+                    | Ac
+                    | Ic
+            ),
+            Some(t) => !matches!(
+                t,
+                Tok::Num(_)
+                    | Tok::Str(_)
+                    | Tok::RParen
+                    | Tok::RBracket
+                    | Tok::Name(_)
+                    | Tok::UserVar(_)
+                    | Tok::RParam(_)
+                    | Tok::SysVar(_)
+                    | Tok::Addr(_)
+                    | Tok::Command(_)
+                    | Tok::Cycle(_)
+                    | Tok::Func(_)
+            ),
             None => false,
         }
     }
@@ -233,7 +314,10 @@ impl Cx<'_> {
         match self.mode {
             Mode::Proc => return true,
             Mode::Def if self.depth == 0 => {
-                if matches!(last, Some(Tok::Comma) | Some(Tok::RBracket) | Some(Tok::Kw(_))) {
+                if matches!(
+                    last,
+                    Some(Tok::Comma) | Some(Tok::RBracket) | Some(Tok::Kw(_))
+                ) {
                     return true;
                 }
             }
@@ -248,7 +332,10 @@ impl Cx<'_> {
     }
 
     fn line_has(&self, a: Kw, b: Kw) -> bool {
-        self.out.toks.iter().any(|t| t.1 == Tok::Kw(a) || t.1 == Tok::Kw(b))
+        self.out
+            .toks
+            .iter()
+            .any(|t| t.1 == Tok::Kw(a) || t.1 == Tok::Kw(b))
     }
 
     fn ident(&mut self, s: &str, r: Range<usize>, next: Option<Raw>) {
@@ -300,9 +387,15 @@ impl Cx<'_> {
         let mut it = pieces.into_iter().peekable();
         while let Some(p) = it.next() {
             match p {
-                Piece::Addr(a, s, e) if a == "N" && self.at_prefix() && self.out.number.is_none() => {
+                Piece::Addr(a, s, e)
+                    if a == "N" && self.at_prefix() && self.out.number.is_none() =>
+                {
                     if let Some(Piece::Num(Ok(d), _, ne)) = it.peek() {
-                        if let Some(n) = d.as_int().filter(|_| !d.point).and_then(|n| u32::try_from(n).ok()) {
+                        if let Some(n) = d
+                            .as_int()
+                            .filter(|_| !d.point)
+                            .and_then(|n| u32::try_from(n).ok())
+                        {
                             self.out.number = Some((n, base + s..base + *ne));
                             it.next();
                             continue;
@@ -325,6 +418,9 @@ impl Cx<'_> {
 fn archive_name(s: &str) -> String {
     let s = s.trim_start_matches('%');
     let s = s.strip_prefix("_N_").unwrap_or(s);
-    let s = ["_MPF", "_SPF", "_mpf", "_spf"].iter().find_map(|x| s.strip_suffix(x)).unwrap_or(s);
+    let s = ["_MPF", "_SPF", "_mpf", "_spf"]
+        .iter()
+        .find_map(|x| s.strip_suffix(x))
+        .unwrap_or(s);
     s.to_string()
 }

@@ -6,7 +6,10 @@ use super::builder::Node;
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::spec::ParamType;
 use crate::dialect::DialectSpec;
-use crate::ir::{Arena, Arg, CallArgs, CallKind, CallTarget, CycleCall, Expr, ExprKind, Stmt, StmtKind, ToolRef, Value};
+use crate::ir::{
+    Arena, Arg, CallArgs, CallKind, CallTarget, CycleCall, Expr, ExprKind, Stmt, StmtKind, ToolRef,
+    Value,
+};
 use crate::span::Span;
 use crate::syntax::{Item, WordSyntax};
 
@@ -30,15 +33,32 @@ impl Finish<'_> {
 
     fn node(&mut self, n: Node) -> Option<Item> {
         match n {
-            Node::Word { addr, addr_span, value, dim, extended, span } => Some(self.word(addr, addr_span, value, dim, extended, span)),
+            Node::Word {
+                addr,
+                addr_span,
+                value,
+                dim,
+                extended,
+                span,
+            } => Some(self.word(addr, addr_span, value, dim, extended, span)),
             Node::Bare { addr, span } => {
-                let d = Diagnostic::new(Code::WordWithoutValue, format!("the address `{addr}` has no value"))
-                    .primary(span, "no value after this address")
-                    .help(format!("write a value after it, as in `{addr}10` or `{addr}=R1`"));
+                let d = Diagnostic::new(
+                    Code::WordWithoutValue,
+                    format!("the address `{addr}` has no value"),
+                )
+                .primary(span, "no value after this address")
+                .help(format!(
+                    "write a value after it, as in `{addr}10` or `{addr}=R1`"
+                ));
                 self.diags.push(d);
                 None
             }
-            Node::WordCall { addr, number, args, span } => self.word_call(addr, number, args, span),
+            Node::WordCall {
+                addr,
+                number,
+                args,
+                span,
+            } => self.word_call(addr, number, args, span),
             Node::Stmt(s) => {
                 if let StmtKind::CycleCall(c) = &s.kind {
                     self.check_cycle(c, s.span);
@@ -48,33 +68,71 @@ impl Finish<'_> {
         }
     }
 
-    fn word(&mut self, addr: String, addr_span: Span, value: Value, dim: Option<crate::ir::DimMode>, extended: bool, span: Span) -> Item {
+    fn word(
+        &mut self,
+        addr: String,
+        addr_span: Span,
+        value: Value,
+        dim: Option<crate::ir::DimMode>,
+        extended: bool,
+        span: Span,
+    ) -> Item {
         if let Some(call) = self.l_call(&addr, &value, None, span) {
             return call;
         }
         if addr == "T" {
             if let Value::Expr(e) = &value {
                 if let ExprKind::Str(name) = &self.exprs[*e].kind {
-                    return Item::Stmt(Stmt::new(StmtKind::ToolSelect(ToolRef::Name(name.clone())), span));
+                    return Item::Stmt(Stmt::new(
+                        StmtKind::ToolSelect(ToolRef::Name(name.clone())),
+                        span,
+                    ));
                 }
             }
         }
-        Item::Word(WordSyntax { address: addr.into(), value, dim, extended, span, address_span: addr_span })
+        Item::Word(WordSyntax {
+            address: addr.into(),
+            value,
+            dim,
+            extended,
+            span,
+            address_span: addr_span,
+        })
     }
 
     /// `L123`: a call of subprogram 123 (not an extended `L=`).
-    fn l_call(&self, addr: &str, value: &Value, args: Option<Vec<Arg>>, span: Span) -> Option<Item> {
-        let n = value.number().filter(|d| addr == "L" && !d.point)?.as_int()?;
+    fn l_call(
+        &self,
+        addr: &str,
+        value: &Value,
+        args: Option<Vec<Arg>>,
+        span: Span,
+    ) -> Option<Item> {
+        let n = value
+            .number()
+            .filter(|d| addr == "L" && !d.point)?
+            .as_int()?;
         let n = u32::try_from(n).ok()?;
         let args = match args {
             None => CallArgs::None,
             Some(a) => CallArgs::Positional(a.into_iter().map(|a| a.value).collect()),
         };
-        let kind = StmtKind::Call { kind: CallKind::Named, target: CallTarget::Number(n), args, repeat: None };
+        let kind = StmtKind::Call {
+            kind: CallKind::Named,
+            target: CallTarget::Number(n),
+            args,
+            repeat: None,
+        };
         Some(Item::Stmt(Stmt::new(kind, span)))
     }
 
-    fn word_call(&mut self, addr: String, number: crate::ir::Decimal, args: Vec<Arg>, span: Span) -> Option<Item> {
+    fn word_call(
+        &mut self,
+        addr: String,
+        number: crate::ir::Decimal,
+        args: Vec<Arg>,
+        span: Span,
+    ) -> Option<Item> {
         let call = self.l_call(&addr, &Value::Number(number), Some(args), span);
         if call.is_none() {
             let d = Diagnostic::new(Code::SyntaxError, format!("`{addr}{number}` cannot take arguments"))
@@ -86,12 +144,19 @@ impl Finish<'_> {
     }
 
     fn check_cycle(&mut self, c: &CycleCall, span: Span) {
-        let Some(sig) = self.spec.cycle(&c.name) else { return };
+        let Some(sig) = self.spec.cycle(&c.name) else {
+            return;
+        };
         if c.args.len() > sig.params.len() {
             let extra = &c.args[sig.params.len()];
             let d = Diagnostic::new(
                 Code::CycleTooManyArguments,
-                format!("`{}` takes at most {} arguments, this call gives {}", sig.name, sig.params.len(), c.args.len()),
+                format!(
+                    "`{}` takes at most {} arguments, this call gives {}",
+                    sig.name,
+                    sig.params.len(),
+                    c.args.len()
+                ),
             )
             .primary(extra.span, "first argument beyond the signature")
             .secondary(span, "in this call")
@@ -99,10 +164,18 @@ impl Finish<'_> {
             self.diags.push(d);
         }
         for (a, p) in c.args.iter().zip(&sig.params) {
-            if let Some(kind) = a.value.and_then(|e| self.wrong_kind(&self.exprs[e].kind, p.ty)) {
+            if let Some(kind) = a
+                .value
+                .and_then(|e| self.wrong_kind(&self.exprs[e].kind, p.ty))
+            {
                 let d = Diagnostic::new(
                     Code::CycleArgumentKind,
-                    format!("`{}` of `{}` takes {}, not {kind}", p.name, sig.name, ty_name(p.ty)),
+                    format!(
+                        "`{}` of `{}` takes {}, not {kind}",
+                        p.name,
+                        sig.name,
+                        ty_name(p.ty)
+                    ),
                 )
                 .primary(a.span, format!("{kind} given"))
                 .help(format!("give `{}` {}", p.name, ty_name(p.ty)));
@@ -133,12 +206,30 @@ fn ty_name(t: ParamType) -> &'static str {
 
 /// `L123 P3`, `MYSUB P2`: the P word gives the call's number of passes.
 fn take_call_repeat(items: &mut Vec<Item>) {
-    let has_call = items.iter().any(|i| matches!(i, Item::Stmt(Stmt { kind: StmtKind::Call { .. }, .. })));
-    let p = items.iter().position(|i| matches!(i, Item::Word(w) if w.address == "P"));
-    let (true, Some(p)) = (has_call, p) else { return };
-    let Item::Word(w) = items.remove(p) else { return };
+    let has_call = items.iter().any(|i| {
+        matches!(
+            i,
+            Item::Stmt(Stmt {
+                kind: StmtKind::Call { .. },
+                ..
+            })
+        )
+    });
+    let p = items
+        .iter()
+        .position(|i| matches!(i, Item::Word(w) if w.address == "P"));
+    let (true, Some(p)) = (has_call, p) else {
+        return;
+    };
+    let Item::Word(w) = items.remove(p) else {
+        return;
+    };
     for i in items.iter_mut() {
-        if let Item::Stmt(Stmt { kind: StmtKind::Call { repeat, .. }, span }) = i {
+        if let Item::Stmt(Stmt {
+            kind: StmtKind::Call { repeat, .. },
+            span,
+        }) = i
+        {
             *repeat = Some(w.value);
             *span = span.to(w.span);
             return;

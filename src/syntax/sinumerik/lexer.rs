@@ -109,7 +109,10 @@ mod tests {
     fn strings_comments_and_bad_characters() {
         assert_eq!(kinds(r#"MSG("a;b") ;c"#)[2], Some(Raw::Str));
         assert_eq!(kinds(r#"MSG("ab"#)[2], Some(Raw::OpenStr));
-        assert_eq!(kinds("G0 ;x \"y"), vec![Some(Raw::Ident), Some(Raw::Comment)]);
+        assert_eq!(
+            kinds("G0 ;x \"y"),
+            vec![Some(Raw::Ident), Some(Raw::Comment)]
+        );
         assert_eq!(kinds("X1 ?"), vec![Some(Raw::Ident), None]);
         assert_eq!(kinds("$AA_IW[X]")[0], Some(Raw::SysVar));
     }

@@ -59,26 +59,51 @@ impl SinumerikFrontEnd {
 }
 
 impl FrontEnd for SinumerikFrontEnd {
-    fn parse_line(&mut self, input: &LineInput<'_>, exprs: &mut Arena<Expr>, diags: &mut Vec<Diagnostic>) -> Option<LineSyntax> {
-        let sp = Spanner { file: input.file, offset: input.offset };
+    fn parse_line(
+        &mut self,
+        input: &LineInput<'_>,
+        exprs: &mut Arena<Expr>,
+        diags: &mut Vec<Diagnostic>,
+    ) -> Option<LineSyntax> {
+        let sp = Spanner {
+            file: input.file,
+            offset: input.offset,
+        };
         let cl = classify(input.text, input.spec, &self.declared, sp, diags);
         let mut line = LineSyntax {
             span: sp.span(0, input.text.len()),
-            skip: cl.skip.as_ref().map(|(n, r)| Spanned::new(*n, sp.span(r.start, r.end))),
-            number: cl.number.as_ref().map(|(n, r)| Spanned::new(*n, sp.span(r.start, r.end))),
-            label: cl.label.as_ref().map(|(n, r)| Spanned::new(n.clone(), sp.span(r.start, r.end))),
+            skip: cl
+                .skip
+                .as_ref()
+                .map(|(n, r)| Spanned::new(*n, sp.span(r.start, r.end))),
+            number: cl
+                .number
+                .as_ref()
+                .map(|(n, r)| Spanned::new(*n, sp.span(r.start, r.end))),
+            label: cl
+                .label
+                .as_ref()
+                .map(|(n, r)| Spanned::new(n.clone(), sp.span(r.start, r.end))),
             items: Vec::new(),
         };
         if let Some((name, r)) = &cl.header {
-            let kind = StmtKind::ProgramStart { number: None, name: Some(name.clone()) };
-            line.items.push(Item::Stmt(Stmt::new(kind, sp.span(r.start, r.end))));
+            let kind = StmtKind::ProgramStart {
+                number: None,
+                name: Some(name.clone()),
+            };
+            line.items
+                .push(Item::Stmt(Stmt::new(kind, sp.span(r.start, r.end))));
         }
         if !cl.lex_error && !cl.toks.is_empty() {
             line.items.extend(self.body(input, &cl, sp, exprs, diags));
         }
         if let Some((text, r)) = &cl.comment {
-            let kind = StmtKind::Comment { text: text.clone(), style: CommentStyle::Semicolon };
-            line.items.push(Item::Stmt(Stmt::new(kind, sp.span(r.start, r.end))));
+            let kind = StmtKind::Comment {
+                text: text.clone(),
+                style: CommentStyle::Semicolon,
+            };
+            line.items
+                .push(Item::Stmt(Stmt::new(kind, sp.span(r.start, r.end))));
         }
         self.declare(&line.items);
         Some(line)
@@ -86,8 +111,21 @@ impl FrontEnd for SinumerikFrontEnd {
 }
 
 impl SinumerikFrontEnd {
-    fn body(&mut self, input: &LineInput<'_>, cl: &Classified, sp: Spanner, exprs: &mut Arena<Expr>, diags: &mut Vec<Diagnostic>) -> Vec<Item> {
-        let mut b = Builder { exprs, sp, spec: input.spec, diags: Vec::new(), raw_reason: None };
+    fn body(
+        &mut self,
+        input: &LineInput<'_>,
+        cl: &Classified,
+        sp: Spanner,
+        exprs: &mut Arena<Expr>,
+        diags: &mut Vec<Diagnostic>,
+    ) -> Vec<Item> {
+        let mut b = Builder {
+            exprs,
+            sp,
+            spec: input.spec,
+            diags: Vec::new(),
+            raw_reason: None,
+        };
         let toks = cl.toks.iter().cloned().map(Ok::<Spanned3, String>);
         let parsed = grammar::BodyParser::new().parse(&mut b, toks);
         let (start, end) = (cl.toks[0].0, cl.toks[cl.toks.len() - 1].2);
@@ -97,7 +135,10 @@ impl SinumerikFrontEnd {
                 .primary(at, "not understood")
                 .help("the block is written back unchanged into this dialect; it cannot be translated to another");
             diags.push(d);
-            let kind = StmtKind::Raw { dialect: input.spec.id.clone(), text };
+            let kind = StmtKind::Raw {
+                dialect: input.spec.id.clone(),
+                text,
+            };
             vec![Item::Stmt(Stmt::new(kind, sp.span(start, end)))]
         };
         match parsed {
@@ -109,8 +150,14 @@ impl SinumerikFrontEnd {
                 self.finish(input, nodes, b.exprs, diags)
             }
             Err(_) if matches!(cl.toks[0].1, Tok::Name(_)) => {
-                let Tok::Name(n) = &cl.toks[0].1 else { unreachable!() };
-                raw(format!("`{n}` is not a statement this front end knows"), sp.span(cl.toks[0].0, cl.toks[0].2), diags)
+                let Tok::Name(n) = &cl.toks[0].1 else {
+                    unreachable!()
+                };
+                raw(
+                    format!("`{n}` is not a statement this front end knows"),
+                    sp.span(cl.toks[0].0, cl.toks[0].2),
+                    diags,
+                )
             }
             Err(e) => {
                 diags.push(syntax_error(e, cl, sp));
@@ -119,19 +166,37 @@ impl SinumerikFrontEnd {
         }
     }
 
-    fn finish(&mut self, input: &LineInput<'_>, nodes: Vec<Node>, exprs: &Arena<Expr>, diags: &mut Vec<Diagnostic>) -> Vec<Item> {
-        finish::Finish { spec: input.spec, exprs, diags }.items(nodes)
+    fn finish(
+        &mut self,
+        input: &LineInput<'_>,
+        nodes: Vec<Node>,
+        exprs: &Arena<Expr>,
+        diags: &mut Vec<Diagnostic>,
+    ) -> Vec<Item> {
+        finish::Finish {
+            spec: input.spec,
+            exprs,
+            diags,
+        }
+        .items(nodes)
     }
 
     /// Remembers the names a DEF or PROC line declares.
     fn declare(&mut self, items: &[Item]) {
         for item in items {
             let vars = match item {
-                Item::Stmt(Stmt { kind: StmtKind::Declare { vars, .. }, .. }) => vars,
-                Item::Stmt(Stmt { kind: StmtKind::SubStart { params, .. }, .. }) => params,
+                Item::Stmt(Stmt {
+                    kind: StmtKind::Declare { vars, .. },
+                    ..
+                }) => vars,
+                Item::Stmt(Stmt {
+                    kind: StmtKind::SubStart { params, .. },
+                    ..
+                }) => params,
                 _ => continue,
             };
-            self.declared.extend(vars.iter().map(|v| v.name.to_ascii_uppercase()));
+            self.declared
+                .extend(vars.iter().map(|v| v.name.to_ascii_uppercase()));
         }
     }
 }
@@ -139,33 +204,51 @@ impl SinumerikFrontEnd {
 /// E0101 (or E0102 when the block ends too early) with what could come.
 fn syntax_error(e: ParseError<usize, Tok, String>, cl: &Classified, sp: Spanner) -> Diagnostic {
     match e {
-        ParseError::UnrecognizedToken { token: (l, t, r), expected } => {
+        ParseError::UnrecognizedToken {
+            token: (l, t, r),
+            expected,
+        } => Diagnostic::new(Code::SyntaxError, format!("unexpected {}", t.describe()))
+            .primary(sp.span(l, r), "not expected here")
+            .help(expected_list(&expected)),
+        ParseError::ExtraToken { token: (l, t, r) } => {
             Diagnostic::new(Code::SyntaxError, format!("unexpected {}", t.describe()))
-                .primary(sp.span(l, r), "not expected here")
-                .help(expected_list(&expected))
+                .primary(sp.span(l, r), "nothing more can follow here")
+                .help("end the block before this, or start a new block")
         }
-        ParseError::ExtraToken { token: (l, t, r) } => Diagnostic::new(Code::SyntaxError, format!("unexpected {}", t.describe()))
-            .primary(sp.span(l, r), "nothing more can follow here")
-            .help("end the block before this, or start a new block"),
         ParseError::UnrecognizedEof { expected, .. } => {
             let (l, t, r) = cl.toks[cl.toks.len() - 1].clone();
-            Diagnostic::new(Code::IncompleteExpression, format!("the block ends after {} before it is complete", t.describe()))
-                .primary(sp.span(l, r), "incomplete after this")
-                .help(expected_list(&expected))
+            Diagnostic::new(
+                Code::IncompleteExpression,
+                format!(
+                    "the block ends after {} before it is complete",
+                    t.describe()
+                ),
+            )
+            .primary(sp.span(l, r), "incomplete after this")
+            .help(expected_list(&expected))
         }
-        ParseError::InvalidToken { location } => Diagnostic::new(Code::SyntaxError, "a token that cannot be read")
-            .primary(sp.span(location, location), "here")
-            .help("check the spelling"),
+        ParseError::InvalidToken { location } => {
+            Diagnostic::new(Code::SyntaxError, "a token that cannot be read")
+                .primary(sp.span(location, location), "here")
+                .help("check the spelling")
+        }
         ParseError::User { error } => Diagnostic::new(Code::SyntaxError, error),
     }
 }
 
 fn expected_list(expected: &[String]) -> String {
-    let mut names: Vec<String> = expected.iter().map(|s| s.trim_matches('"').replace("\\\"", "\"")).collect();
+    let mut names: Vec<String> = expected
+        .iter()
+        .map(|s| s.trim_matches('"').replace("\\\"", "\""))
+        .collect();
     names.dedup();
     let more = names.len() > 10;
     names.truncate(10);
-    let list = names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ");
+    let list = names
+        .iter()
+        .map(|n| format!("`{n}`"))
+        .collect::<Vec<_>>()
+        .join(", ");
     if more {
         format!("expected one of {list}, ...")
     } else {

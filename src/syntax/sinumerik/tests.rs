@@ -4,7 +4,9 @@
 
 use super::SinumerikFrontEnd;
 use crate::diag::Diagnostic;
-use crate::dialect::spec::{CycleSig, FunctionDef, IntegerLengths, NumberRules, ParamSig, ParamType};
+use crate::dialect::spec::{
+    CycleSig, FunctionDef, IntegerLengths, NumberRules, ParamSig, ParamType,
+};
 use crate::dialect::{Capability, DialectSpec, Family};
 use crate::ir::{Arena, Decimal, Expr, ExprId, ExprKind, Func, Value, Var};
 use crate::span::{FileId, Span};
@@ -12,8 +14,21 @@ use crate::syntax::{FrontEnd, Item, LineInput};
 use std::fmt::Write;
 
 fn cycle(name: &str, params: &[(&str, ParamType)]) -> CycleSig {
-    let params = params.iter().map(|(n, t)| ParamSig { name: n.to_string(), ty: *t, doc: String::new() }).collect();
-    CycleSig { name: name.into(), kind: "drill".into(), params, doc: String::new(), span: Span::default() }
+    let params = params
+        .iter()
+        .map(|(n, t)| ParamSig {
+            name: n.to_string(),
+            ty: *t,
+            doc: String::new(),
+        })
+        .collect();
+    CycleSig {
+        name: name.into(),
+        kind: "drill".into(),
+        params,
+        doc: String::new(),
+        span: Span::default(),
+    }
 }
 
 /// A small Siemens spec for tests (the real one is read from XML).
@@ -28,14 +43,65 @@ pub fn spec() -> DialectSpec {
         feed_places: 1,
         angle_places: 3,
     };
-    let mut s = DialectSpec::new("siemens840d".into(), "Siemens 840D".into(), Family::Sinumerik, n);
+    let mut s = DialectSpec::new(
+        "siemens840d".into(),
+        "Siemens 840D".into(),
+        Family::Sinumerik,
+        n,
+    );
     use ParamType::*;
     let r = |n: &'static str| (n, Real);
-    s.cycles.push(cycle("CYCLE81", &[r("RTP"), r("RFP"), r("SDIS"), r("DP"), r("DPR"), ("GMODE", Int), ("DMODE", Int), ("AMODE", Int)]));
-    s.cycles.push(cycle("CYCLE82", &[r("RTP"), r("RFP"), r("SDIS"), r("DP"), r("DPR"), r("DTB")]));
-    s.cycles.push(cycle("HOLES1", &[r("SPCA"), r("SPCO"), r("STA1"), r("FDIS"), r("DBH"), ("NUM", Int)]));
-    s.cycles.push(cycle("HOLES2", &[r("CPA"), r("CPO"), r("RAD"), r("STA1"), r("INDA"), ("NUM", Int)]));
-    s.cycles.push(cycle("CYCLE801", &[r("SPCA"), r("SPCO"), r("STA"), r("DIS1"), r("DIS2"), ("NUM1", Int), ("NUM2", Int)]));
+    s.cycles.push(cycle(
+        "CYCLE81",
+        &[
+            r("RTP"),
+            r("RFP"),
+            r("SDIS"),
+            r("DP"),
+            r("DPR"),
+            ("GMODE", Int),
+            ("DMODE", Int),
+            ("AMODE", Int),
+        ],
+    ));
+    s.cycles.push(cycle(
+        "CYCLE82",
+        &[r("RTP"), r("RFP"), r("SDIS"), r("DP"), r("DPR"), r("DTB")],
+    ));
+    s.cycles.push(cycle(
+        "HOLES1",
+        &[
+            r("SPCA"),
+            r("SPCO"),
+            r("STA1"),
+            r("FDIS"),
+            r("DBH"),
+            ("NUM", Int),
+        ],
+    ));
+    s.cycles.push(cycle(
+        "HOLES2",
+        &[
+            r("CPA"),
+            r("CPO"),
+            r("RAD"),
+            r("STA1"),
+            r("INDA"),
+            ("NUM", Int),
+        ],
+    ));
+    s.cycles.push(cycle(
+        "CYCLE801",
+        &[
+            r("SPCA"),
+            r("SPCO"),
+            r("STA"),
+            r("DIS1"),
+            r("DIS2"),
+            ("NUM1", Int),
+            ("NUM2", Int),
+        ],
+    ));
     let names: Vec<std::string::String> = (1..=25).map(|i| format!("P{i}")).collect();
     let pocket4: Vec<(&str, ParamType)> = names.iter().map(|n| (n.as_str(), Real)).collect();
     s.cycles.push(cycle("POCKET4", &pocket4));
@@ -51,10 +117,24 @@ pub fn spec() -> DialectSpec {
         ("ATAN2", Func::Atan2, 2),
         ("POT", Func::Square, 1),
     ] {
-        s.functions.push(FunctionDef { name: name.into(), func, arity });
+        s.functions.push(FunctionDef {
+            name: name.into(),
+            func,
+            arity,
+        });
     }
-    s.commands = ["SOFT", "BRISK", "FFWON", "TRAORI", "SETAL", "SUPA"].iter().map(|c| c.to_string()).collect();
-    for c in [Capability::SemicolonComments, Capability::RParameters, Capability::DefVariables, Capability::StructuredControl, Capability::NamedCycles, Capability::Frames] {
+    s.commands = ["SOFT", "BRISK", "FFWON", "TRAORI", "SETAL", "SUPA"]
+        .iter()
+        .map(|c| c.to_string())
+        .collect();
+    for c in [
+        Capability::SemicolonComments,
+        Capability::RParameters,
+        Capability::DefVariables,
+        Capability::StructuredControl,
+        Capability::NamedCycles,
+        Capability::Frames,
+    ] {
         s.capabilities.insert(c);
     }
     s.reindex();
@@ -71,8 +151,15 @@ fn read(text: &str) -> (String, Vec<Diagnostic>) {
     let mut offset = 0u32;
     for line in text.split('\n') {
         let first = exprs.len();
-        let input = LineInput { text: line, file: FileId(0), offset, spec: &spec };
-        let ls = fe.parse_line(&input, &mut exprs, &mut diags).expect("a line");
+        let input = LineInput {
+            text: line,
+            file: FileId(0),
+            offset,
+            spec: &spec,
+        };
+        let ls = fe
+            .parse_line(&input, &mut exprs, &mut diags)
+            .expect("a line");
         let _ = writeln!(out, "{line}");
         show_line(&mut out, &ls, &exprs, first);
         offset += line.len() as u32 + 1;
@@ -94,10 +181,25 @@ fn show_line(out: &mut String, ls: &crate::syntax::LineSyntax, exprs: &Arena<Exp
         match it {
             Item::Word(w) => {
                 let v = value(exprs, &w.value);
-                let _ = writeln!(out, "  word {}{}{} dim={:?} @{}..{}", w.address, if w.extended { "=" } else { "" }, v, w.dim, w.span.start, w.span.end);
+                let _ = writeln!(
+                    out,
+                    "  word {}{}{} dim={:?} @{}..{}",
+                    w.address,
+                    if w.extended { "=" } else { "" },
+                    v,
+                    w.dim,
+                    w.span.start,
+                    w.span.end
+                );
             }
             Item::Stmt(s) => {
-                let _ = writeln!(out, "  stmt {} @{}..{}", compact(&format!("{:?}", s.kind)), s.span.start, s.span.end);
+                let _ = writeln!(
+                    out,
+                    "  stmt {} @{}..{}",
+                    compact(&format!("{:?}", s.kind)),
+                    s.span.start,
+                    s.span.end
+                );
             }
         }
     }
@@ -134,7 +236,13 @@ fn var(exprs: &Arena<Expr>, v: &Var) -> String {
         if ix.is_empty() {
             String::new()
         } else {
-            format!("[{}]", ix.iter().map(|e| expr(exprs, *e)).collect::<Vec<_>>().join(","))
+            format!(
+                "[{}]",
+                ix.iter()
+                    .map(|e| expr(exprs, *e))
+                    .collect::<Vec<_>>()
+                    .join(",")
+            )
         }
     };
     match v {
@@ -154,7 +262,13 @@ fn expr(exprs: &Arena<Expr>, id: ExprId) -> String {
         ExprKind::Var(v) => var(exprs, v),
         ExprKind::Unary(op, a) => format!("{op:?}({})", expr(exprs, *a)),
         ExprKind::Binary(op, a, b) => format!("({} {op:?} {})", expr(exprs, *a), expr(exprs, *b)),
-        ExprKind::Call(f, args) => format!("{f:?}({})", args.iter().map(|a| expr(exprs, *a)).collect::<Vec<_>>().join(", ")),
+        ExprKind::Call(f, args) => format!(
+            "{f:?}({})",
+            args.iter()
+                .map(|a| expr(exprs, *a))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
         other => format!("{other:?}"),
     }
 }
@@ -162,8 +276,19 @@ fn expr(exprs: &Arena<Expr>, id: ExprId) -> String {
 fn diags_text(ds: &[Diagnostic]) -> String {
     let mut out = String::new();
     for d in ds {
-        let sp = d.span().map(|s| format!("{}..{}", s.start, s.end)).unwrap_or_default();
-        let _ = writeln!(out, "{} {} @{}: {} | {}", d.code.code(), d.code.name(), sp, d.message, d.help.clone().unwrap_or_default());
+        let sp = d
+            .span()
+            .map(|s| format!("{}..{}", s.start, s.end))
+            .unwrap_or_default();
+        let _ = writeln!(
+            out,
+            "{} {} @{}: {} | {}",
+            d.code.code(),
+            d.code.name(),
+            sp,
+            d.message,
+            d.help.clone().unwrap_or_default()
+        );
     }
     out
 }
@@ -180,7 +305,9 @@ fn words_and_packed_words() {
 
 #[test]
 fn prefixes_and_headers() {
-    insta::assert_snapshot!(snap("%_N_PART1_MPF\n;$PATH=/_N_MPF_DIR\n/N10 G0 X1\n/3 N20 X2\n:100 G1\nN5 END: ;end label"));
+    insta::assert_snapshot!(snap(
+        "%_N_PART1_MPF\n;$PATH=/_N_MPF_DIR\n/N10 G0 X1\n/3 N20 X2\n:100 G1\nN5 END: ;end label"
+    ));
 }
 
 #[test]
@@ -210,7 +337,9 @@ fn errors_have_spans() {
 
 #[test]
 fn unknown_constructs_are_kept_as_text() {
-    insta::assert_snapshot!(snap("N150 WHENEVER $A_IN[1] DO OVR=0\nR1=FOO(3)\nMSG(\"a\" << R1)\nTRANS X1 FOO=2"));
+    insta::assert_snapshot!(snap(
+        "N150 WHENEVER $A_IN[1] DO OVR=0\nR1=FOO(3)\nMSG(\"a\" << R1)\nTRANS X1 FOO=2"
+    ));
 }
 
 #[test]
@@ -238,7 +367,10 @@ fn corpus_files_parse_without_panic() {
         let name = path.file_name().unwrap().to_string_lossy().to_string();
         let _ = writeln!(report, "{name}: {} diagnostics", ds.len());
         for d in &ds {
-            let at = d.span().map(|s| line_of(&text, s.start as usize)).unwrap_or(0);
+            let at = d
+                .span()
+                .map(|s| line_of(&text, s.start as usize))
+                .unwrap_or(0);
             let _ = writeln!(report, "  line {at}: {} {}", d.code.code(), d.message);
         }
     }
@@ -246,7 +378,11 @@ fn corpus_files_parse_without_panic() {
 }
 
 fn line_of(text: &str, at: usize) -> usize {
-    text.as_bytes()[..at.min(text.len())].iter().filter(|b| **b == b'\n').count() + 1
+    text.as_bytes()[..at.min(text.len())]
+        .iter()
+        .filter(|b| **b == b'\n')
+        .count()
+        + 1
 }
 
 proptest::proptest! {

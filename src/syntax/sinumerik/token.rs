@@ -195,7 +195,11 @@ impl Tok {
 }
 
 pub fn kw_name(k: Kw) -> &'static str {
-    KEYWORDS.iter().find(|(_, x)| *x == k).map(|(n, _)| *n).unwrap_or("?")
+    KEYWORDS
+        .iter()
+        .find(|(_, x)| *x == k)
+        .map(|(n, _)| *n)
+        .unwrap_or("?")
 }
 
 fn punct(t: &Tok) -> &'static str {

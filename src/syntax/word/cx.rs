@@ -5,11 +5,13 @@
 use super::lexer::Tok;
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec};
-use crate::ir::{Arena, BinaryOp, Decimal, Expr, ExprId, ExprKind, Stmt, StmtKind, UnaryOp, Value, Var};
+use crate::ir::num::NumberError;
+use crate::ir::{
+    Arena, BinaryOp, Decimal, Expr, ExprId, ExprKind, Stmt, StmtKind, UnaryOp, Value, Var,
+};
 use crate::span::{FileId, Span};
 use crate::syntax::{Item, WordSyntax};
 use lalrpop_util::ErrorRecovery;
-use crate::ir::num::NumberError;
 use std::cell::RefCell;
 
 /// An expression while it is being parsed: a literal stays unallocated
@@ -47,13 +49,19 @@ pub struct Cx<'a> {
 
 impl<'a> Cx<'a> {
     pub fn span(&self, l: usize, r: usize) -> Span {
-        Span::new(self.file, l + self.offset as usize, r + self.offset as usize)
+        Span::new(
+            self.file,
+            l + self.offset as usize,
+            r + self.offset as usize,
+        )
     }
 
     /// The line text of a file span.
     pub fn slice(&self, s: Span) -> &'a str {
         let o = self.offset as usize;
-        self.text.get(s.start as usize - o..s.end as usize - o).unwrap_or("")
+        self.text
+            .get(s.start as usize - o..s.end as usize - o)
+            .unwrap_or("")
     }
 
     pub fn has(&self, cap: Capability) -> bool {
@@ -65,7 +73,9 @@ impl<'a> Cx<'a> {
     }
 
     pub fn push_stmt(&self, kind: StmtKind, span: Span) {
-        self.items.borrow_mut().push(Item::Stmt(Stmt::new(kind, span)));
+        self.items
+            .borrow_mut()
+            .push(Item::Stmt(Stmt::new(kind, span)));
     }
 
     pub fn recover(&self, e: Recovered) {
@@ -78,16 +88,21 @@ impl<'a> Cx<'a> {
             return true;
         }
         self.diag(
-            Diagnostic::new(Code::NotInDialect, format!("{what} are not part of this dialect"))
-                .primary(span, format!("needs the `{}` capability", cap.name()))
-                .help("choose the dialect the program was written for with `--dialect`"),
+            Diagnostic::new(
+                Code::NotInDialect,
+                format!("{what} are not part of this dialect"),
+            )
+            .primary(span, format!("needs the `{}` capability", cap.name()))
+            .help("choose the dialect the program was written for with `--dialect`"),
         );
         false
     }
 
     /// Numbered and indirect `#` parameters: Macro B or LinuxCNC.
     pub fn require_params(&self, span: Span) {
-        let ok = self.has(Capability::MacroB) || self.has(Capability::OWords) || self.has(Capability::NamedParameters);
+        let ok = self.has(Capability::MacroB)
+            || self.has(Capability::OWords)
+            || self.has(Capability::NamedParameters);
         if !ok {
             self.require(Capability::MacroB, span, "`#` parameters");
         }
@@ -107,7 +122,11 @@ impl<'a> Cx<'a> {
     }
 
     fn node(&self, kind: ExprKind, span: Span, arith: bool) -> PExpr {
-        PExpr { v: PV::Id(self.alloc(kind, span)), span, arith }
+        PExpr {
+            v: PV::Id(self.alloc(kind, span)),
+            span,
+            arith,
+        }
     }
 
     /// Reads a number token exactly; a bad one is reported and read as 0.
@@ -123,18 +142,28 @@ impl<'a> Cx<'a> {
     }
 
     pub fn number(&self, l: usize, r: usize) -> PExpr {
-        PExpr { v: PV::Lit(self.decimal(l, r)), span: self.span(l, r), arith: false }
+        PExpr {
+            v: PV::Lit(self.decimal(l, r)),
+            span: self.span(l, r),
+            arith: false,
+        }
     }
 
     /// A whole number that fits `max`, or a reported error.
     pub fn whole(&self, l: usize, r: usize, max: u32, what: &str) -> Option<u32> {
         let d = self.decimal(l, r);
-        let v = d.as_int().filter(|v| (0..=max as i64).contains(v)).filter(|_| !d.point || d.scale == 0);
+        let v = d
+            .as_int()
+            .filter(|v| (0..=max as i64).contains(v))
+            .filter(|_| !d.point || d.scale == 0);
         if v.is_none() && !self.text[l..r].is_empty() {
             self.diag(
-                Diagnostic::new(Code::InvalidValue, format!("{what} must be a whole number from 0 to {max}"))
-                    .primary(self.span(l, r), "not a valid number here")
-                    .help(format!("write {what} as a whole number")),
+                Diagnostic::new(
+                    Code::InvalidValue,
+                    format!("{what} must be a whole number from 0 to {max}"),
+                )
+                .primary(self.span(l, r), "not a valid number here")
+                .help(format!("write {what} as a whole number")),
             );
         }
         v.map(|v| v as u32)
@@ -152,9 +181,16 @@ impl<'a> Cx<'a> {
     }
 
     pub fn neg(&self, l: usize, e: PExpr) -> PExpr {
-        let span = Span { start: self.span(l, l).start, ..e.span };
+        let span = Span {
+            start: self.span(l, l).start,
+            ..e.span
+        };
         match e.v {
-            PV::Lit(d) if !e.arith => PExpr { v: PV::Lit(d.neg()), span, arith: false },
+            PV::Lit(d) if !e.arith => PExpr {
+                v: PV::Lit(d.neg()),
+                span,
+                arith: false,
+            },
             PV::Lit(_) | PV::Id(_) => {
                 let id = self.id(e);
                 self.node(ExprKind::Unary(UnaryOp::Neg, id), span, e.arith)
@@ -163,7 +199,13 @@ impl<'a> Cx<'a> {
     }
 
     pub fn plus(&self, l: usize, e: PExpr) -> PExpr {
-        PExpr { span: Span { start: self.span(l, l).start, ..e.span }, ..e }
+        PExpr {
+            span: Span {
+                start: self.span(l, l).start,
+                ..e.span
+            },
+            ..e
+        }
     }
 
     /// `[e]`: the expression's span grows to take in the brackets.
@@ -172,7 +214,11 @@ impl<'a> Cx<'a> {
         if let PV::Id(id) = e.v {
             self.exprs.borrow_mut()[id].span = span;
         }
-        PExpr { arith: false, span, ..e }
+        PExpr {
+            arith: false,
+            span,
+            ..e
+        }
     }
 
     pub fn var_expr(&self, v: (Var, Span)) -> PExpr {
@@ -182,7 +228,9 @@ impl<'a> Cx<'a> {
     pub fn var_num(&self, nl: usize, nr: usize, l: usize) -> (Var, Span) {
         let span = self.span(l, nr);
         self.require_params(span);
-        let n = self.whole(nl, nr, u32::MAX, "a parameter number").unwrap_or(0);
+        let n = self
+            .whole(nl, nr, u32::MAX, "a parameter number")
+            .unwrap_or(0);
         (Var::Numbered(n), span)
     }
 
@@ -200,7 +248,10 @@ impl<'a> Cx<'a> {
 
     /// The text between `<` and `>`, as written.
     pub fn name_inside(&self, l: usize, r: usize) -> String {
-        self.text.get(l + 1..r.saturating_sub(1)).unwrap_or("").to_string()
+        self.text
+            .get(l + 1..r.saturating_sub(1))
+            .unwrap_or("")
+            .to_string()
     }
 
     pub fn call(&self, nl: usize, nr: usize, args: Vec<PExpr>, l: usize, r: usize) -> PExpr {
@@ -212,13 +263,24 @@ impl<'a> Cx<'a> {
                     .primary(self.span(nl, nr), "unknown function")
                     .help("check the spelling; functions are SIN COS TAN ASIN ACOS ATAN SQRT ABS ROUND FIX FUP LN EXP and the like"),
             );
-            return PExpr { arith: false, span, ..args[0] };
+            return PExpr {
+                arith: false,
+                span,
+                ..args[0]
+            };
         };
         if f.arity != args.len() {
             self.diag(
-                Diagnostic::new(Code::SyntaxError, format!("`{name}` takes {} argument(s), {} given", f.arity, args.len()))
-                    .primary(span, "wrong number of arguments")
-                    .help(format!("give `{name}` {} argument(s)", f.arity)),
+                Diagnostic::new(
+                    Code::SyntaxError,
+                    format!(
+                        "`{name}` takes {} argument(s), {} given",
+                        f.arity,
+                        args.len()
+                    ),
+                )
+                .primary(span, "wrong number of arguments")
+                .help(format!("give `{name}` {} argument(s)", f.arity)),
             );
         }
         let ids = args.iter().map(|a| self.id(*a)).collect();
@@ -232,7 +294,11 @@ impl<'a> Cx<'a> {
 
     pub fn atan2(&self, a: PExpr, b: PExpr, l: usize, r: usize) -> PExpr {
         let ids = vec![self.id(a), self.id(b)];
-        self.node(ExprKind::Call(crate::ir::Func::Atan2, ids), self.span(l, r), false)
+        self.node(
+            ExprKind::Call(crate::ir::Func::Atan2, ids),
+            self.span(l, r),
+            false,
+        )
     }
 
     pub fn exists(&self, nl: usize, nr: usize, l: usize, r: usize) -> PExpr {
@@ -252,21 +318,37 @@ impl<'a> Cx<'a> {
 
     pub fn word(&self, letter: u8, l: usize, v: PExpr, r: usize) {
         if matches!(letter, b'@' | b'^') {
-            self.require(Capability::PolarWords, self.span(l, l + 1), "polar words `@` and `^`");
+            self.require(
+                Capability::PolarWords,
+                self.span(l, l + 1),
+                "polar words `@` and `^`",
+            );
         }
         self.push_word(char::from(letter).to_string(), l, l + 1, v, r);
     }
 
     /// Fanuc `,C` chamfer and `,R` corner rounding words.
     pub fn comma_word(&self, letter: u8, l: usize, v: PExpr, r: usize) {
-        self.require(Capability::CommaCornerWords, self.span(l, l + 2), "`,C` / `,R` corner words");
-        self.push_word(format!(",{}", char::from(letter)), l, self.letter_end(l), v, r);
+        self.require(
+            Capability::CommaCornerWords,
+            self.span(l, l + 2),
+            "`,C` / `,R` corner words",
+        );
+        self.push_word(
+            format!(",{}", char::from(letter)),
+            l,
+            self.letter_end(l),
+            v,
+            r,
+        );
     }
 
     /// The end of `,R` (spaces may stand between comma and letter).
     fn letter_end(&self, l: usize) -> usize {
         let b = self.text.as_bytes();
-        (l + 1..b.len()).find(|&i| b[i].is_ascii_alphabetic()).map_or(l + 1, |i| i + 1)
+        (l + 1..b.len())
+            .find(|&i| b[i].is_ascii_alphabetic())
+            .map_or(l + 1, |i| i + 1)
     }
 
     fn push_word(&self, address: String, l: usize, ar: usize, v: PExpr, r: usize) {
@@ -287,9 +369,12 @@ impl<'a> Cx<'a> {
     fn unbracketed(&self, address: &str, span: Span) {
         let text = self.slice(span);
         self.diag(
-            Diagnostic::new(Code::UnbracketedExpression, "arithmetic in a word value needs brackets in this dialect")
-                .primary(span, "unbracketed expression")
-                .help(format!("write {address}[{text}]")),
+            Diagnostic::new(
+                Code::UnbracketedExpression,
+                "arithmetic in a word value needs brackets in this dialect",
+            )
+            .primary(span, "unbracketed expression")
+            .help(format!("write {address}[{text}]")),
         );
     }
 
@@ -299,7 +384,13 @@ impl<'a> Cx<'a> {
 
     pub fn assign(&self, v: (Var, Span), e: PExpr) -> Stmt {
         let span = v.1.to(e.span);
-        Stmt::new(StmtKind::Assign { var: v.0, value: self.id(e) }, span)
+        Stmt::new(
+            StmtKind::Assign {
+                var: v.0,
+                value: self.id(e),
+            },
+            span,
+        )
     }
 
     pub fn push(&self, s: Stmt) {
@@ -313,11 +404,18 @@ impl<'a> Cx<'a> {
             return;
         }
         let name = &self.text[l..r];
-        if name.as_bytes()[0].eq_ignore_ascii_case(&b'O') && self.has(Capability::NumberedPrograms) {
+        if name.as_bytes()[0].eq_ignore_ascii_case(&b'O') && self.has(Capability::NumberedPrograms)
+        {
             return self.diag(
-                Diagnostic::new(Code::UnknownKeyword, format!("`{name}` is not a program number"))
-                    .primary(self.span(l, r), "programs are numbered in this dialect")
-                    .help(format!("write a number and keep the name as a comment: `O1234 ({})`", &name[1..])),
+                Diagnostic::new(
+                    Code::UnknownKeyword,
+                    format!("`{name}` is not a program number"),
+                )
+                .primary(self.span(l, r), "programs are numbered in this dialect")
+                .help(format!(
+                    "write a number and keep the name as a comment: `O1234 ({})`",
+                    &name[1..]
+                )),
             );
         }
         self.diag(

@@ -9,13 +9,22 @@ use lalrpop_util::ParseError;
 
 pub fn to_diagnostic(cx: &Cx<'_>, feed: &[Spanned], e: ParseError<usize, Tok, ()>) -> Diagnostic {
     match e {
-        ParseError::UnrecognizedToken { token: (l, t, r), expected } => unexpected(cx, feed, l, t, r, &expected),
+        ParseError::UnrecognizedToken {
+            token: (l, t, r),
+            expected,
+        } => unexpected(cx, feed, l, t, r, &expected),
         ParseError::ExtraToken { token: (l, t, r) } => unexpected(cx, feed, l, t, r, &[]),
-        ParseError::UnrecognizedEof { location, expected } => early_end(cx, feed, location, &expected),
-        ParseError::InvalidToken { location } => Diagnostic::new(Code::BadCharacter, "unexpected character")
-            .primary(cx.span(location, location + 1), "not part of any word")
-            .help("remove it, or put it in a comment"),
-        ParseError::User { .. } => Diagnostic::new(Code::SyntaxError, "syntax error").help("check the block"),
+        ParseError::UnrecognizedEof { location, expected } => {
+            early_end(cx, feed, location, &expected)
+        }
+        ParseError::InvalidToken { location } => {
+            Diagnostic::new(Code::BadCharacter, "unexpected character")
+                .primary(cx.span(location, location + 1), "not part of any word")
+                .help("remove it, or put it in a comment")
+        }
+        ParseError::User { .. } => {
+            Diagnostic::new(Code::SyntaxError, "syntax error").help("check the block")
+        }
     }
 }
 
@@ -27,12 +36,25 @@ fn letter_before(feed: &[Spanned], l: usize) -> Option<(usize, usize)> {
 
 fn no_value(cx: &Cx<'_>, l: usize, r: usize) -> Diagnostic {
     let a = &cx.text[l..r];
-    Diagnostic::new(Code::WordWithoutValue, format!("address `{a}` has no value"))
-        .primary(cx.span(l, r), "a value must follow")
-        .help(format!("write a number or an expression after it, as in `{}10.`", a.to_ascii_uppercase()))
+    Diagnostic::new(
+        Code::WordWithoutValue,
+        format!("address `{a}` has no value"),
+    )
+    .primary(cx.span(l, r), "a value must follow")
+    .help(format!(
+        "write a number or an expression after it, as in `{}10.`",
+        a.to_ascii_uppercase()
+    ))
 }
 
-fn unexpected(cx: &Cx<'_>, feed: &[Spanned], l: usize, t: Tok, r: usize, expected: &[String]) -> Diagnostic {
+fn unexpected(
+    cx: &Cx<'_>,
+    feed: &[Spanned],
+    l: usize,
+    t: Tok,
+    r: usize,
+    expected: &[String],
+) -> Diagnostic {
     if t == Tok::Named && feed.iter().any(|p| p.1 == Tok::O && p.2 <= l) {
         return Diagnostic::new(Code::SyntaxError, format!("o-word `o{}` without a statement", &cx.text[l..r]))
             .primary(cx.span(l, r), "expected `sub`, `call`, `endsub`, `return`, `if`, `while`, `do` or another o-word keyword after this")
@@ -44,9 +66,15 @@ fn unexpected(cx: &Cx<'_>, feed: &[Spanned], l: usize, t: Tok, r: usize, expecte
     let found = describe(t, &cx.text[l..r]);
     // A closing bracket where an operand must come: the expression stops short.
     if matches!(t, Tok::RBr) && wants_value(expected) && after_operator(feed, l) {
-        return Diagnostic::new(Code::IncompleteExpression, "the expression ends before it is complete")
-            .primary(cx.span(l, r), format!("expected {} before this", readable(expected)))
-            .help("an operand is missing before the closing `]`");
+        return Diagnostic::new(
+            Code::IncompleteExpression,
+            "the expression ends before it is complete",
+        )
+        .primary(
+            cx.span(l, r),
+            format!("expected {} before this", readable(expected)),
+        )
+        .help("an operand is missing before the closing `]`");
     }
     Diagnostic::new(Code::SyntaxError, format!("unexpected {found}"))
         .primary(cx.span(l, r), format!("expected {}", readable(expected)))
@@ -59,24 +87,50 @@ fn early_end(cx: &Cx<'_>, feed: &[Spanned], at: usize, expected: &[String]) -> D
         return no_value(cx, pl, pr);
     }
     if wants_value(expected) || expected.iter().any(|e| e == "\"]\"") {
-        return Diagnostic::new(Code::IncompleteExpression, "the line ends inside an expression")
-            .primary(cx.span(last.0, last.1), format!("expected {} after this", readable(expected)))
-            .help("complete the expression: an operand or a closing `]` is missing");
+        return Diagnostic::new(
+            Code::IncompleteExpression,
+            "the line ends inside an expression",
+        )
+        .primary(
+            cx.span(last.0, last.1),
+            format!("expected {} after this", readable(expected)),
+        )
+        .help("complete the expression: an operand or a closing `]` is missing");
     }
-    Diagnostic::new(Code::SyntaxError, "the line ends before the statement is complete")
-        .primary(cx.span(last.0, last.1), format!("expected {} after this", readable(expected)))
-        .help(format!("add {}", readable(expected)))
+    Diagnostic::new(
+        Code::SyntaxError,
+        "the line ends before the statement is complete",
+    )
+    .primary(
+        cx.span(last.0, last.1),
+        format!("expected {} after this", readable(expected)),
+    )
+    .help(format!("add {}", readable(expected)))
 }
 
 /// Is the token before byte `l` an operator or an opening bracket?
 fn after_operator(feed: &[Spanned], l: usize) -> bool {
-    let Some(prev) = feed.iter().rev().find(|t| t.2 <= l) else { return false };
-    matches!(prev.1, Tok::Plus | Tok::Minus | Tok::Star | Tok::Pow | Tok::Slash | Tok::LBr | Tok::Comma | Tok::Kw(_))
+    let Some(prev) = feed.iter().rev().find(|t| t.2 <= l) else {
+        return false;
+    };
+    matches!(
+        prev.1,
+        Tok::Plus
+            | Tok::Minus
+            | Tok::Star
+            | Tok::Pow
+            | Tok::Slash
+            | Tok::LBr
+            | Tok::Comma
+            | Tok::Kw(_)
+    )
 }
 
 /// True when a value or operand could come next.
 fn wants_value(expected: &[String]) -> bool {
-    expected.iter().any(|e| e == "\"number\"" || e == "\"[\"" || e == "\"#\"")
+    expected
+        .iter()
+        .any(|e| e == "\"number\"" || e == "\"[\"" || e == "\"#\"")
 }
 
 /// `"number"`, `"GOTO"` ... as words a reader understands.

@@ -21,7 +21,13 @@ pub fn fast_line(input: &LineInput<'_>) -> Option<LineSyntax> {
 pub fn fast_line_with(input: &LineInput<'_>, spare: &mut Vec<Item>) -> Option<LineSyntax> {
     spare.clear();
     let b = input.text.as_bytes();
-    let sp = |l: usize, r: usize| Span::new(input.file, l + input.offset as usize, r + input.offset as usize);
+    let sp = |l: usize, r: usize| {
+        Span::new(
+            input.file,
+            l + input.offset as usize,
+            r + input.offset as usize,
+        )
+    };
     let mut i = skip_ws(b, 0);
     let mut seq = None;
     if i < b.len() && b[i].eq_ignore_ascii_case(&b'N') {
@@ -34,7 +40,13 @@ pub fn fast_line_with(input: &LineInput<'_>, spare: &mut Vec<Item>) -> Option<Li
         i = skip_ws(b, i);
         if i >= b.len() {
             let items = std::mem::take(items);
-            return Some(LineSyntax { span: sp(0, b.len()), skip: None, number: seq, label: None, items });
+            return Some(LineSyntax {
+                span: sp(0, b.len()),
+                skip: None,
+                number: seq,
+                label: None,
+                items,
+            });
         }
         if b[i] == b'(' {
             let close = i + b[i..].iter().position(|&c| c == b')')?;
@@ -83,12 +95,15 @@ fn number(text: &str, i: usize) -> Option<(Decimal, usize)> {
         if b[j] == b'.' {
             points += 1;
         } else {
-            mantissa = mantissa.wrapping_mul(10).wrapping_add(i64::from(b[j] - b'0'));
+            mantissa = mantissa
+                .wrapping_mul(10)
+                .wrapping_add(i64::from(b[j] - b'0'));
             scale = scale.wrapping_add(u8::from(points > 0));
         }
         j += 1;
     }
-    let ends_well = j == b.len() || matches!(b[j], b' ' | b'\t' | b'\r' | b'(') || b[j].is_ascii_alphabetic();
+    let ends_well =
+        j == b.len() || matches!(b[j], b' ' | b'\t' | b'\r' | b'(') || b[j].is_ascii_alphabetic();
     if j == start || !ends_well {
         return None;
     }
@@ -97,7 +112,14 @@ fn number(text: &str, i: usize) -> Option<(Decimal, usize)> {
         // Nothing, or too long to be sure here: the shared reader decides.
         return Decimal::parse(&text[i..j]).ok().map(|d| (d, j));
     }
-    Some((Decimal { mantissa: if neg { -mantissa } else { mantissa }, scale, point: points == 1 }, j))
+    Some((
+        Decimal {
+            mantissa: if neg { -mantissa } else { mantissa },
+            scale,
+            point: points == 1,
+        },
+        j,
+    ))
 }
 
 /// A sequence number: digits only, fitting a `u32`.
@@ -108,6 +130,7 @@ fn seq_number(b: &[u8], i: usize) -> Option<(u32, usize)> {
         n = n.checked_mul(10)?.checked_add(u32::from(b[j] - b'0'))?;
         j += 1;
     }
-    let ends_well = j == b.len() || matches!(b[j], b' ' | b'\t' | b'\r' | b'(') || b[j].is_ascii_alphabetic();
+    let ends_well =
+        j == b.len() || matches!(b[j], b' ' | b'\t' | b'\r' | b'(') || b[j].is_ascii_alphabetic();
     (j > i && ends_well).then_some((n, j))
 }

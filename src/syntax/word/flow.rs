@@ -41,7 +41,11 @@ impl<'a> Cx<'a> {
 
     fn goto_stmt(&self, t: PExpr, cond: Option<PExpr>) -> StmtKind {
         let cond = cond.map(|c| self.id(c));
-        StmtKind::Goto { target: JumpTarget::Sequence(self.value(t)), dir: JumpDir::Either, cond }
+        StmtKind::Goto {
+            target: JumpTarget::Sequence(self.value(t)),
+            dir: JumpDir::Either,
+            cond,
+        }
     }
 
     pub fn goto(&self, t: PExpr, l: usize, r: usize) {
@@ -62,7 +66,13 @@ impl<'a> Cx<'a> {
         let span = self.span(l, r);
         if self.macro_b(span) {
             let then = Box::new(self.assign(v, e));
-            self.push_stmt(StmtKind::IfThen { cond: self.id(c), then }, span);
+            self.push_stmt(
+                StmtKind::IfThen {
+                    cond: self.id(c),
+                    then,
+                },
+                span,
+            );
         }
     }
 
@@ -75,7 +85,13 @@ impl<'a> Cx<'a> {
         let span = self.span(l, nr);
         if self.macro_b(span) {
             let id = self.do_id(nl, nr);
-            self.push_stmt(StmtKind::While { cond: self.id(c), id }, span);
+            self.push_stmt(
+                StmtKind::While {
+                    cond: self.id(c),
+                    id,
+                },
+                span,
+            );
         }
     }
 
@@ -104,7 +120,9 @@ impl<'a> Cx<'a> {
         if n.named {
             format!("<{}>", self.name_inside(n.l, n.r).to_ascii_lowercase())
         } else {
-            self.whole(n.l, n.r, u32::MAX, "an o-word number").unwrap_or(0).to_string()
+            self.whole(n.l, n.r, u32::MAX, "an o-word number")
+                .unwrap_or(0)
+                .to_string()
         }
     }
 
@@ -125,12 +143,28 @@ impl<'a> Cx<'a> {
     fn oword_kind(&self, n: OName, key: String, t: OTail) -> StmtKind {
         let id = FlowId::OWord(key.clone());
         match t {
-            OTail::Sub => StmtKind::SubStart { name: key.trim_matches(['<', '>']).to_string(), params: Vec::new(), id },
-            OTail::EndSub(v) => StmtKind::SubEnd { id, value: self.opt(v) },
+            OTail::Sub => StmtKind::SubStart {
+                name: key.trim_matches(['<', '>']).to_string(),
+                params: Vec::new(),
+                id,
+            },
+            OTail::EndSub(v) => StmtKind::SubEnd {
+                id,
+                value: self.opt(v),
+            },
             OTail::Call(args) => self.ocall(n, &key, args),
-            OTail::Return(v) => StmtKind::Return { id, value: self.opt(v) },
-            OTail::If(c) => StmtKind::If { cond: self.id(c), id },
-            OTail::ElseIf(c) => StmtKind::ElseIf { cond: self.id(c), id },
+            OTail::Return(v) => StmtKind::Return {
+                id,
+                value: self.opt(v),
+            },
+            OTail::If(c) => StmtKind::If {
+                cond: self.id(c),
+                id,
+            },
+            OTail::ElseIf(c) => StmtKind::ElseIf {
+                cond: self.id(c),
+                id,
+            },
             OTail::Else => StmtKind::Else { id },
             OTail::EndIf => StmtKind::EndIf { id },
             OTail::While(c) => self.owhile(key, c),
@@ -139,7 +173,10 @@ impl<'a> Cx<'a> {
                 self.open_do.borrow_mut().push(key);
                 StmtKind::Do { id }
             }
-            OTail::Repeat(c) => StmtKind::Repeat { count: self.id(c), id },
+            OTail::Repeat(c) => StmtKind::Repeat {
+                count: self.id(c),
+                id,
+            },
             OTail::EndRepeat => StmtKind::EndRepeat { id },
             OTail::Break => StmtKind::Break { id },
             OTail::Continue => StmtKind::Continue { id },
@@ -153,9 +190,15 @@ impl<'a> Cx<'a> {
         match open.iter().rposition(|k| *k == key) {
             Some(i) => {
                 open.remove(i);
-                StmtKind::DoWhile { cond, id: FlowId::OWord(key) }
+                StmtKind::DoWhile {
+                    cond,
+                    id: FlowId::OWord(key),
+                }
             }
-            None => StmtKind::While { cond, id: FlowId::OWord(key) },
+            None => StmtKind::While {
+                cond,
+                id: FlowId::OWord(key),
+            },
         }
     }
 
@@ -166,7 +209,12 @@ impl<'a> Cx<'a> {
             CallTarget::Number(key.parse().unwrap_or(0))
         };
         let args = CallArgs::Positional(args.into_iter().map(|a| Some(self.id(a))).collect());
-        StmtKind::Call { kind: CallKind::OWord, target, args, repeat: None }
+        StmtKind::Call {
+            kind: CallKind::OWord,
+            target,
+            args,
+            repeat: None,
+        }
     }
 
     pub fn assign_item(&self, v: (Var, Span), e: PExpr) {

@@ -82,7 +82,9 @@ pub enum Tok {
     Name,
     Kw(Kw),
     /// `( ... )`; `closed` is false when the line ends first.
-    Comment { closed: bool },
+    Comment {
+        closed: bool,
+    },
     /// `;` to the end of the line.
     Semi,
     /// A character no token starts with.
@@ -160,12 +162,19 @@ const KEYWORDS: &[(&str, Kw)] = &[
 impl Kw {
     /// The keyword spelled `word` (any case), if it is one.
     pub fn lookup(word: &str) -> Option<Kw> {
-        KEYWORDS.iter().find(|(k, _)| k.eq_ignore_ascii_case(word)).map(|(_, kw)| *kw)
+        KEYWORDS
+            .iter()
+            .find(|(k, _)| k.eq_ignore_ascii_case(word))
+            .map(|(_, kw)| *kw)
     }
 
     /// Its spelling, upper case.
     pub fn text(self) -> &'static str {
-        KEYWORDS.iter().find(|(_, k)| *k == self).map(|(t, _)| *t).unwrap_or("?")
+        KEYWORDS
+            .iter()
+            .find(|(_, k)| *k == self)
+            .map(|(t, _)| *t)
+            .unwrap_or("?")
     }
 }
 
@@ -243,7 +252,19 @@ mod tests {
         use Tok::*;
         assert_eq!(
             kinds,
-            vec![Letter(b'G'), Number, Letter(b'G'), Number, Letter(b'X'), Hash, Number, Plus, Number, Letter(b'Y'), Number]
+            vec![
+                Letter(b'G'),
+                Number,
+                Letter(b'G'),
+                Number,
+                Letter(b'X'),
+                Hash,
+                Number,
+                Plus,
+                Number,
+                Letter(b'Y'),
+                Number
+            ]
         );
         assert_eq!(t[8].1, ".25");
     }
@@ -264,13 +285,24 @@ mod tests {
     #[test]
     fn spaces_inside_words() {
         let t = toks("g 0 x 1.5");
-        assert_eq!(t, vec![(Tok::Letter(b'G'), "g"), (Tok::Number, "0"), (Tok::Letter(b'X'), "x"), (Tok::Number, "1.5")]);
+        assert_eq!(
+            t,
+            vec![
+                (Tok::Letter(b'G'), "g"),
+                (Tok::Number, "0"),
+                (Tok::Letter(b'X'), "x"),
+                (Tok::Number, "1.5")
+            ]
+        );
     }
 
     #[test]
     fn comments_and_bad_characters() {
         assert_eq!(toks("(a) x")[0], (Tok::Comment { closed: true }, "(a)"));
-        assert_eq!(toks("G0 (open")[2], (Tok::Comment { closed: false }, "(open"));
+        assert_eq!(
+            toks("G0 (open")[2],
+            (Tok::Comment { closed: false }, "(open")
+        );
         assert_eq!(toks("G0 ; rest (x)")[2], (Tok::Semi, "; rest (x)"));
         assert_eq!(toks("G0 $")[2], (Tok::Bad, "$"));
         assert_eq!(toks("#<_a b>")[1], (Tok::Named, "<_a b>"));

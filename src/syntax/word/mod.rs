@@ -64,12 +64,30 @@ impl WordFrontEnd {
 
     /// Every line through the grammar (for tests of the fast path).
     pub fn without_fast_path() -> Self {
-        WordFrontEnd { use_fast_path: false, ..Self::new() }
+        WordFrontEnd {
+            use_fast_path: false,
+            ..Self::new()
+        }
     }
 
-    fn slow_line(&mut self, input: &LineInput<'_>, exprs: &mut Arena<Expr>, diags: &mut Vec<Diagnostic>) -> LineSyntax {
-        let span = Span::new(input.file, input.offset as usize, input.offset as usize + input.text.len());
-        let mut line = LineSyntax { span, skip: None, number: None, label: None, items: Vec::new() };
+    fn slow_line(
+        &mut self,
+        input: &LineInput<'_>,
+        exprs: &mut Arena<Expr>,
+        diags: &mut Vec<Diagnostic>,
+    ) -> LineSyntax {
+        let span = Span::new(
+            input.file,
+            input.offset as usize,
+            input.offset as usize + input.text.len(),
+        );
+        let mut line = LineSyntax {
+            span,
+            skip: None,
+            number: None,
+            label: None,
+            items: Vec::new(),
+        };
         lexer::lex_into(input.text, &mut self.toks);
         let side = prefix::split(input, &self.toks, &mut self.feed, diags);
         let start = prefix::line_start(input, &mut line, &self.feed, diags);
@@ -81,7 +99,13 @@ impl WordFrontEnd {
         line
     }
 
-    fn run_grammar(&mut self, input: &LineInput<'_>, start: usize, exprs: &mut Arena<Expr>, diags: &mut Vec<Diagnostic>) -> Vec<Item> {
+    fn run_grammar(
+        &mut self,
+        input: &LineInput<'_>,
+        start: usize,
+        exprs: &mut Arena<Expr>,
+        diags: &mut Vec<Diagnostic>,
+    ) -> Vec<Item> {
         let feed = &self.feed[start..];
         if feed.is_empty() {
             return Vec::new();
@@ -107,7 +131,9 @@ impl WordFrontEnd {
         for e in errs {
             let d = errors::to_diagnostic(&cx, feed, e);
             // An action may have said it already (an unknown name).
-            let said = cx.diags.borrow()[first..].iter().any(|x| x.span() == d.span());
+            let said = cx.diags.borrow()[first..]
+                .iter()
+                .any(|x| x.span() == d.span());
             if !said {
                 cx.diag(d);
             }
@@ -141,7 +167,12 @@ fn item_start(it: &Item) -> u32 {
 }
 
 impl FrontEnd for WordFrontEnd {
-    fn parse_line(&mut self, input: &LineInput<'_>, exprs: &mut Arena<Expr>, diags: &mut Vec<Diagnostic>) -> Option<LineSyntax> {
+    fn parse_line(
+        &mut self,
+        input: &LineInput<'_>,
+        exprs: &mut Arena<Expr>,
+        diags: &mut Vec<Diagnostic>,
+    ) -> Option<LineSyntax> {
         if self.use_fast_path {
             if let Some(line) = fast::fast_line_with(input, &mut self.spare) {
                 return Some(line);

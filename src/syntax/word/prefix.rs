@@ -10,12 +10,21 @@ use crate::span::{Span, Spanned as At};
 use crate::syntax::{Item, LineInput, LineSyntax};
 
 fn span(input: &LineInput<'_>, l: usize, r: usize) -> Span {
-    Span::new(input.file, l + input.offset as usize, r + input.offset as usize)
+    Span::new(
+        input.file,
+        l + input.offset as usize,
+        r + input.offset as usize,
+    )
 }
 
 /// Copies the grammar's tokens into `feed`; returns comments as items and
 /// reports bad characters and unclosed comments.
-pub fn split(input: &LineInput<'_>, toks: &[Spanned], feed: &mut Vec<Spanned>, diags: &mut Vec<Diagnostic>) -> Vec<Item> {
+pub fn split(
+    input: &LineInput<'_>,
+    toks: &[Spanned],
+    feed: &mut Vec<Spanned>,
+    diags: &mut Vec<Diagnostic>,
+) -> Vec<Item> {
     feed.clear();
     let mut side = Vec::new();
     for &(l, t, r) in toks {
@@ -30,7 +39,13 @@ pub fn split(input: &LineInput<'_>, toks: &[Spanned], feed: &mut Vec<Spanned>, d
     side
 }
 
-fn paren_comment(input: &LineInput<'_>, l: usize, r: usize, closed: bool, diags: &mut Vec<Diagnostic>) -> Item {
+fn paren_comment(
+    input: &LineInput<'_>,
+    l: usize,
+    r: usize,
+    closed: bool,
+    diags: &mut Vec<Diagnostic>,
+) -> Item {
     let sp = span(input, l, r);
     if !closed {
         diags.push(
@@ -49,19 +64,33 @@ pub fn comment_kind(inner: &str, style: CommentStyle) -> StmtKind {
     if style == CommentStyle::Paren && t.get(..4).is_some_and(|p| p.eq_ignore_ascii_case("MSG,")) {
         return StmtKind::Message(Some(t[4..].to_string()));
     }
-    StmtKind::Comment { text: inner.to_string(), style }
+    StmtKind::Comment {
+        text: inner.to_string(),
+        style,
+    }
 }
 
-fn semicolon(input: &LineInput<'_>, l: usize, r: usize, diags: &mut Vec<Diagnostic>) -> Option<Item> {
+fn semicolon(
+    input: &LineInput<'_>,
+    l: usize,
+    r: usize,
+    diags: &mut Vec<Diagnostic>,
+) -> Option<Item> {
     let rest = &input.text[l + 1..r];
     if input.spec.has(Capability::SemicolonComments) {
-        return Some(Item::Stmt(Stmt::new(comment_kind(rest, CommentStyle::Semicolon), span(input, l, r))));
+        return Some(Item::Stmt(Stmt::new(
+            comment_kind(rest, CommentStyle::Semicolon),
+            span(input, l, r),
+        )));
     }
     if !rest.trim().is_empty() {
         diags.push(
-            Diagnostic::new(Code::BadCharacter, "`;` comments are not part of this dialect")
-                .primary(span(input, l, l + 1), "`;` starts no comment here")
-                .help("write the comment in parentheses: `( ... )`"),
+            Diagnostic::new(
+                Code::BadCharacter,
+                "`;` comments are not part of this dialect",
+            )
+            .primary(span(input, l, l + 1), "`;` starts no comment here")
+            .help("write the comment in parentheses: `( ... )`"),
         );
     }
     // A bare `;` at the end is the end-of-block mark some files keep.
@@ -69,18 +98,28 @@ fn semicolon(input: &LineInput<'_>, l: usize, r: usize, diags: &mut Vec<Diagnost
 }
 
 fn bad_char(text: &str, sp: Span) -> Diagnostic {
-    Diagnostic::new(Code::BadCharacter, format!("unexpected character `{}`", text.escape_debug()))
-        .primary(sp, "not part of any word")
-        .help("remove it, or put it in a comment")
+    Diagnostic::new(
+        Code::BadCharacter,
+        format!("unexpected character `{}`", text.escape_debug()),
+    )
+    .primary(sp, "not part of any word")
+    .help("remove it, or put it in a comment")
 }
 
 /// Reads the block delete `/` `/n` and the `N` number at the start of
 /// `feed`; returns where the grammar's tokens begin.
-pub fn line_start(input: &LineInput<'_>, line: &mut LineSyntax, feed: &[Spanned], diags: &mut Vec<Diagnostic>) -> usize {
+pub fn line_start(
+    input: &LineInput<'_>,
+    line: &mut LineSyntax,
+    feed: &[Spanned],
+    diags: &mut Vec<Diagnostic>,
+) -> usize {
     let mut i = 0;
     if let Some(&(l, Tok::Slash, r)) = feed.first() {
         let (level, end) = match feed.get(1) {
-            Some(&(nl, Tok::Number, nr)) if nl == r && nr == nl + 1 && input.text.as_bytes()[nl].is_ascii_digit() => {
+            Some(&(nl, Tok::Number, nr))
+                if nl == r && nr == nl + 1 && input.text.as_bytes()[nl].is_ascii_digit() =>
+            {
                 i = 1;
                 (input.text.as_bytes()[nl] - b'0', nr)
             }
@@ -89,7 +128,9 @@ pub fn line_start(input: &LineInput<'_>, line: &mut LineSyntax, feed: &[Spanned]
         line.skip = Some(At::new(level, span(input, l, end)));
         i += 1;
     }
-    if let (Some(&(l, Tok::Letter(b'N'), _)), Some(&(nl, Tok::Number, nr))) = (feed.get(i), feed.get(i + 1)) {
+    if let (Some(&(l, Tok::Letter(b'N'), _)), Some(&(nl, Tok::Number, nr))) =
+        (feed.get(i), feed.get(i + 1))
+    {
         let n = seq_number(&input.text[nl..nr], span(input, nl, nr), diags);
         line.number = Some(At::new(n, span(input, l, nr)));
         i += 2;
@@ -98,12 +139,19 @@ pub fn line_start(input: &LineInput<'_>, line: &mut LineSyntax, feed: &[Spanned]
 }
 
 fn seq_number(text: &str, sp: Span, diags: &mut Vec<Diagnostic>) -> u32 {
-    let v = Decimal::parse(text).ok().filter(|d| !d.point).and_then(|d| d.as_int()).and_then(|v| u32::try_from(v).ok());
+    let v = Decimal::parse(text)
+        .ok()
+        .filter(|d| !d.point)
+        .and_then(|d| d.as_int())
+        .and_then(|v| u32::try_from(v).ok());
     v.unwrap_or_else(|| {
         diags.push(
-            Diagnostic::new(Code::InvalidValue, "a sequence number must be a whole number")
-                .primary(sp, "not a sequence number")
-                .help("write the N number as digits only, as in `N10`"),
+            Diagnostic::new(
+                Code::InvalidValue,
+                "a sequence number must be a whole number",
+            )
+            .primary(sp, "not a sequence number")
+            .help("write the N number as digits only, as in `N10`"),
         );
         0
     })
@@ -130,20 +178,55 @@ fn is_oword_keyword(t: Tok) -> bool {
     use Kw::*;
     matches!(
         t,
-        Tok::Kw(Sub | EndSub | Call | Return | If | ElseIf | Else | EndIf | While | EndWhile | Do | Repeat | EndRepeat | Break | Continue)
+        Tok::Kw(
+            Sub | EndSub
+                | Call
+                | Return
+                | If
+                | ElseIf
+                | Else
+                | EndIf
+                | While
+                | EndWhile
+                | Do
+                | Repeat
+                | EndRepeat
+                | Break
+                | Continue
+        )
     )
 }
 
 /// `O1234 (NAME)`: the comment right after a program number names it.
 pub fn name_program(items: &mut Vec<Item>) {
-    let Some(i) = items.iter().position(|it| matches!(it, Item::Stmt(Stmt { kind: StmtKind::ProgramStart { name: None, .. }, .. }))) else {
+    let Some(i) = items.iter().position(|it| {
+        matches!(
+            it,
+            Item::Stmt(Stmt {
+                kind: StmtKind::ProgramStart { name: None, .. },
+                ..
+            })
+        )
+    }) else {
         return;
     };
-    let Some(Item::Stmt(Stmt { kind: StmtKind::Comment { text, style: CommentStyle::Paren }, span: cspan })) = items.get(i + 1) else {
+    let Some(Item::Stmt(Stmt {
+        kind:
+            StmtKind::Comment {
+                text,
+                style: CommentStyle::Paren,
+            },
+        span: cspan,
+    })) = items.get(i + 1)
+    else {
         return;
     };
     let (text, cspan) = (text.trim().to_string(), *cspan);
-    if let Item::Stmt(Stmt { kind: StmtKind::ProgramStart { name, .. }, span }) = &mut items[i] {
+    if let Item::Stmt(Stmt {
+        kind: StmtKind::ProgramStart { name, .. },
+        span,
+    }) = &mut items[i]
+    {
         *name = Some(text);
         *span = span.to(cspan);
     }

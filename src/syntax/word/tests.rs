@@ -21,7 +21,11 @@ pub fn test_spec(caps: &[Capability]) -> DialectSpec {
     };
     let mut s = DialectSpec::new("test".into(), "Test".into(), Family::WordAddress, numbers);
     s.capabilities = caps.iter().copied().collect();
-    let f = |name: &str, func, arity| FunctionDef { name: name.into(), func, arity };
+    let f = |name: &str, func, arity| FunctionDef {
+        name: name.into(),
+        func,
+        arity,
+    };
     s.functions = vec![
         f("SIN", Func::Sin, 1),
         f("COS", Func::Cos, 1),
@@ -47,7 +51,15 @@ fn fanuc() -> DialectSpec {
 
 fn linuxcnc() -> DialectSpec {
     use Capability::*;
-    test_spec(&[ParenComments, SemicolonComments, OWords, NamedParameters, PowerOperator, NumberedPrograms, PolarWords])
+    test_spec(&[
+        ParenComments,
+        SemicolonComments,
+        OWords,
+        NamedParameters,
+        PowerOperator,
+        NumberedPrograms,
+        PolarWords,
+    ])
 }
 
 /// Parses lines with one front end; returns the rendered result.
@@ -62,7 +74,12 @@ fn run_with(fe: &mut WordFrontEnd, spec: &DialectSpec, text: &str) -> String {
     for l in text.split('\n') {
         let mut exprs = Arena::new();
         let mut diags = Vec::new();
-        let input = LineInput { text: l, file: FileId(0), offset, spec };
+        let input = LineInput {
+            text: l,
+            file: FileId(0),
+            offset,
+            spec,
+        };
         let line = fe.parse_line(&input, &mut exprs, &mut diags);
         writeln!(out, "> {l}").unwrap();
         if let Some(line) = line {
@@ -70,7 +87,16 @@ fn run_with(fe: &mut WordFrontEnd, spec: &DialectSpec, text: &str) -> String {
         }
         for d in &diags {
             let s = d.span().unwrap();
-            writeln!(out, "  {} {}..{} {} | {}", d.code.code(), s.start, s.end, d.message, d.help.clone().unwrap_or_default()).unwrap();
+            writeln!(
+                out,
+                "  {} {}..{} {} | {}",
+                d.code.code(),
+                s.start,
+                s.end,
+                d.message,
+                d.help.clone().unwrap_or_default()
+            )
+            .unwrap();
         }
         offset += l.len() as u32 + 1;
     }
@@ -88,13 +114,27 @@ fn render_line(out: &mut String, line: &LineSyntax, exprs: &Arena<Expr>) {
         match it {
             Item::Word(w) => {
                 let v = value(exprs, &w.value);
-                writeln!(out, "  word {} = {v} {}..{} addr {}..{}", w.address, w.span.start, w.span.end, w.address_span.start, w.address_span.end).unwrap();
+                writeln!(
+                    out,
+                    "  word {} = {v} {}..{} addr {}..{}",
+                    w.address, w.span.start, w.span.end, w.address_span.start, w.address_span.end
+                )
+                .unwrap();
             }
-            Item::Stmt(s) => writeln!(out, "  stmt {:?} {}..{}", s.kind, s.span.start, s.span.end).unwrap(),
+            Item::Stmt(s) => {
+                writeln!(out, "  stmt {:?} {}..{}", s.kind, s.span.start, s.span.end).unwrap()
+            }
         }
     }
     for (h, e) in exprs.iter() {
-        writeln!(out, "    {h:?} = {} {}..{}", expr(exprs, h), e.span.start, e.span.end).unwrap();
+        writeln!(
+            out,
+            "    {h:?} = {} {}..{}",
+            expr(exprs, h),
+            e.span.start,
+            e.span.end
+        )
+        .unwrap();
     }
 }
 
@@ -116,7 +156,10 @@ fn expr(exprs: &Arena<Expr>, h: crate::ir::ExprId) -> String {
         },
         ExprKind::Unary(op, a) => format!("({op:?} {})", e(*a)),
         ExprKind::Binary(op, a, b) => format!("({op:?} {} {})", e(*a), e(*b)),
-        ExprKind::Call(f, args) => format!("({f:?} {})", args.iter().map(|a| e(*a)).collect::<Vec<_>>().join(" ")),
+        ExprKind::Call(f, args) => format!(
+            "({f:?} {})",
+            args.iter().map(|a| e(*a)).collect::<Vec<_>>().join(" ")
+        ),
         ExprKind::AtanSlash(a, b) => format!("(AtanSlash {} {})", e(*a), e(*b)),
         other => format!("{other:?}"),
     }
@@ -124,12 +167,18 @@ fn expr(exprs: &Arena<Expr>, h: crate::ir::ExprId) -> String {
 
 #[test]
 fn words_numbers_and_prefix() {
-    insta::assert_snapshot!(run(&fanuc(), "/2 N10 G0G40X-1.25Y.5 Z10.\ng 0 x 1.5\n%\nN20 G1 X#1 Y-#2 Z-[#3+1]"));
+    insta::assert_snapshot!(run(
+        &fanuc(),
+        "/2 N10 G0G40X-1.25Y.5 Z10.\ng 0 x 1.5\n%\nN20 G1 X#1 Y-#2 Z-[#3+1]"
+    ));
 }
 
 #[test]
 fn comments_and_messages() {
-    insta::assert_snapshot!(run(&linuxcnc(), "G0 (rapid) X1 ; to the start\n(MSG, Change tool)\nO1234 (PART ONE)\n(open"));
+    insta::assert_snapshot!(run(
+        &linuxcnc(),
+        "G0 (rapid) X1 ; to the start\n(MSG, Change tool)\nO1234 (PART ONE)\n(open"
+    ));
 }
 
 #[test]
@@ -146,7 +195,10 @@ fn owords() {
 
 #[test]
 fn precedence() {
-    insta::assert_snapshot!(run(&linuxcnc(), "#1=1+2*3**2 EQ 4 AND 5 OR 6 XOR 7\n#2=-2*-#1-[1-2]"));
+    insta::assert_snapshot!(run(
+        &linuxcnc(),
+        "#1=1+2*3**2 EQ 4 AND 5 OR 6 XOR 7\n#2=-2*-#1-[1-2]"
+    ));
 }
 
 #[test]
@@ -169,7 +221,10 @@ fn unbracketed_with_capability() {
     spec.capabilities.insert(Capability::UnbracketedExpressions);
     let out = run(&spec, "X#140/2+#142 Y-#1*2");
     assert!(!out.contains("E0105"), "{out}");
-    assert!(out.contains("(Add (Div Numbered(140) 2) Numbered(142))"), "{out}");
+    assert!(
+        out.contains("(Add (Div Numbered(140) 2) Numbered(142))"),
+        "{out}"
+    );
 }
 
 #[test]
@@ -179,12 +234,27 @@ fn fast_path_agrees() {
     let mut fast = WordFrontEnd::new();
     let mut slow = WordFrontEnd::without_fast_path();
     for l in lines.split('\n') {
-        let input = LineInput { text: l, file: FileId(0), offset: 7, spec: &spec };
+        let input = LineInput {
+            text: l,
+            file: FileId(0),
+            offset: 7,
+            spec: &spec,
+        };
         assert!(fast::fast_line(&input).is_some(), "fast path refused {l:?}");
     }
-    assert_eq!(run_with(&mut fast, &spec, lines), run_with(&mut slow, &spec, lines));
-    for l in ["O100", "G0 (x", "X1-2", "G 0", "X.", "GOTO1", "#1=2", "N1.5"] {
-        let input = LineInput { text: l, file: FileId(0), offset: 0, spec: &spec };
+    assert_eq!(
+        run_with(&mut fast, &spec, lines),
+        run_with(&mut slow, &spec, lines)
+    );
+    for l in [
+        "O100", "G0 (x", "X1-2", "G 0", "X.", "GOTO1", "#1=2", "N1.5",
+    ] {
+        let input = LineInput {
+            text: l,
+            file: FileId(0),
+            offset: 0,
+            spec: &spec,
+        };
         assert!(fast::fast_line(&input).is_none(), "fast path took {l:?}");
     }
 }
@@ -199,8 +269,15 @@ fn corpus() {
         return;
     }
     let mut report = String::new();
-    for (dir, spec) in [("fanuc", fanuc_like()), ("haas", fanuc_like()), ("linuxcnc", linuxcnc())] {
-        let mut files: Vec<_> = std::fs::read_dir(root.join(dir)).unwrap().map(|e| e.unwrap().path()).collect();
+    for (dir, spec) in [
+        ("fanuc", fanuc_like()),
+        ("haas", fanuc_like()),
+        ("linuxcnc", linuxcnc()),
+    ] {
+        let mut files: Vec<_> = std::fs::read_dir(root.join(dir))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .collect();
         files.sort();
         for f in files {
             let text = String::from_utf8_lossy(&std::fs::read(&f).unwrap()).into_owned();
@@ -224,9 +301,26 @@ fn corpus_file(report: &mut String, name: &str, text: &str, spec: &DialectSpec) 
     for (n, raw) in text.split('\n').enumerate() {
         let l = raw.strip_suffix('\r').unwrap_or(raw);
         let mut diags = Vec::new();
-        fe.parse_line(&LineInput { text: l, file: FileId(0), offset, spec }, &mut exprs, &mut diags);
+        fe.parse_line(
+            &LineInput {
+                text: l,
+                file: FileId(0),
+                offset,
+                spec,
+            },
+            &mut exprs,
+            &mut diags,
+        );
         for d in diags {
-            writeln!(report, "{name}:{}: {} {} | {}", n + 1, d.code.code(), d.message, l.trim()).unwrap();
+            writeln!(
+                report,
+                "{name}:{}: {} {} | {}",
+                n + 1,
+                d.code.code(),
+                d.message,
+                l.trim()
+            )
+            .unwrap();
         }
         offset += raw.len() as u32 + 1;
     }
@@ -267,7 +361,12 @@ fn comments_are_kept_in_order() {
     let mut fe = WordFrontEnd::new();
     let mut exprs = Arena::new();
     let mut diags = Vec::new();
-    let input = LineInput { text: "(a) G0 (b) X1 ;c", file: FileId(0), offset: 0, spec: &spec };
+    let input = LineInput {
+        text: "(a) G0 (b) X1 ;c",
+        file: FileId(0),
+        offset: 0,
+        spec: &spec,
+    };
     let line = fe.parse_line(&input, &mut exprs, &mut diags).unwrap();
     let kinds: Vec<bool> = line.items.iter().map(is_comment).collect();
     assert_eq!(kinds, vec![true, false, true, false, true]);
@@ -294,17 +393,28 @@ fn throughput() {
     let spec = linuxcnc();
     for (label, fast) in [("fast path + grammar", true), ("grammar only", false)] {
         // Best of five passes: the machine is shared.
-        let best = (0..5).map(|_| pass(&text, &spec, fast)).fold(f64::MAX, f64::min);
+        let best = (0..5)
+            .map(|_| pass(&text, &spec, fast))
+            .fold(f64::MAX, f64::min);
         println!("{label}: {:.1} MB/s", text.len() as f64 / best / 1e6);
     }
 }
 
 fn pass(text: &str, spec: &DialectSpec, fast: bool) -> f64 {
-    let mut fe = if fast { WordFrontEnd::new() } else { WordFrontEnd::without_fast_path() };
+    let mut fe = if fast {
+        WordFrontEnd::new()
+    } else {
+        WordFrontEnd::without_fast_path()
+    };
     let start = std::time::Instant::now();
     let (mut items, mut diags, mut exprs, mut offset) = (0usize, Vec::new(), Arena::new(), 0u32);
     for l in text.lines() {
-        let input = LineInput { text: l, file: FileId(0), offset, spec };
+        let input = LineInput {
+            text: l,
+            file: FileId(0),
+            offset,
+            spec,
+        };
         if let Some(line) = fe.parse_line(&input, &mut exprs, &mut diags) {
             items += line.items.len();
         }
@@ -318,5 +428,8 @@ fn pass(text: &str, spec: &DialectSpec, fast: bool) -> f64 {
 fn more_lines_and_invalid_values() {
     let text = "/ G1 X1\nN1.5 G1\nWHILE [1] DO 300\nO1234\n#1=#1.5\nGOTO [#1+1]\nX[1+2\nX.\nG1 X1 (a) (b) Y2";
     insta::assert_snapshot!(run(&fanuc(), text));
-    insta::assert_snapshot!(run(&linuxcnc(), "o<Sub_A> sub\no<sub_a> endsub\no<x> call\no<x>\no100 foo"));
+    insta::assert_snapshot!(run(
+        &linuxcnc(),
+        "o<Sub_A> sub\no<sub_a> endsub\no<x> call\no<x>\no100 foo"
+    ));
 }

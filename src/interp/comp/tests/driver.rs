@@ -8,11 +8,24 @@ use crate::canon::{format_call, Canon, CanonPlane, Pose};
 
 /// The call kinds the driver produces; rs274's output is filtered to these.
 pub const MODELLED: &[&str] = &[
-    "STRAIGHT_", "ARC_FEED", "COMMENT", "MESSAGE", "DWELL", "SET_FEED_RATE", "SET_SPINDLE_SPEED",
-    "START_SPINDLE", "STOP_SPINDLE", "MIST", "FLOOD", "PROGRAM_STOP", "OPTIONAL_PROGRAM_STOP",
+    "STRAIGHT_",
+    "ARC_FEED",
+    "COMMENT",
+    "MESSAGE",
+    "DWELL",
+    "SET_FEED_RATE",
+    "SET_SPINDLE_SPEED",
+    "START_SPINDLE",
+    "STOP_SPINDLE",
+    "MIST",
+    "FLOOD",
+    "PROGRAM_STOP",
+    "OPTIONAL_PROGRAM_STOP",
 ];
 
-const DIAMETERS: [f64; 10] = [0.0625, 0.125, 0.1875, 0.25, 0.3125, 0.375, 0.5, 0.625, 0.75, 1.0];
+const DIAMETERS: [f64; 10] = [
+    0.0625, 0.125, 0.1875, 0.25, 0.3125, 0.375, 0.5, 0.625, 0.75, 1.0,
+];
 
 struct Block {
     comments: Vec<String>,
@@ -24,7 +37,9 @@ impl Block {
         self.words.iter().find(|w| w.0 == c).map(|w| w.1)
     }
     fn has_g(&self, g: f64) -> bool {
-        self.words.iter().any(|w| w.0 == 'G' && (w.1 - g).abs() < 1e-9)
+        self.words
+            .iter()
+            .any(|w| w.0 == 'G' && (w.1 - g).abs() < 1e-9)
     }
     fn has_m(&self, m: f64) -> bool {
         self.words.iter().any(|w| w.0 == 'M' && w.1 == m)
@@ -51,7 +66,8 @@ fn parse(line: &str) -> Block {
     while i < b.len() {
         let letter = b[i] as char;
         let mut j = i + 1;
-        while j < b.len() && (b[j].is_ascii_digit() || b[j] == b'.' || b[j] == b'-' || b[j] == b'+') {
+        while j < b.len() && (b[j].is_ascii_digit() || b[j] == b'.' || b[j] == b'-' || b[j] == b'+')
+        {
             j += 1;
         }
         words.push((letter, rest[i + 1..j].parse().unwrap_or(0.0)));
@@ -73,7 +89,15 @@ struct State {
 /// Runs a program; returns the printed calls, and `ERROR: message` last if
 /// the engine reported one.
 pub fn run(text: &str) -> Vec<String> {
-    let mut st = State { comp: RadiusComp::new(), pos: [0.0; 6], motion: 0.0, inch: false, plane: CanonPlane::XY, tool: 0, out: Vec::new() };
+    let mut st = State {
+        comp: RadiusComp::new(),
+        pos: [0.0; 6],
+        motion: 0.0,
+        inch: false,
+        plane: CanonPlane::XY,
+        tool: 0,
+        out: Vec::new(),
+    };
     for (n, line) in text.lines().enumerate() {
         st.comp.set_block(n as u64);
         let b = parse(line);
@@ -106,7 +130,13 @@ fn block(st: &mut State, b: &Block) -> Result<(), super::super::CompError> {
     if let Some(s) = b.get('S') {
         emit(st, Canon::SetSpindleSpeed(s));
     }
-    for (m, c) in [(3.0, Canon::SpindleCw), (4.0, Canon::SpindleCcw), (5.0, Canon::StopSpindle), (7.0, Canon::MistOn), (8.0, Canon::FloodOn)] {
+    for (m, c) in [
+        (3.0, Canon::SpindleCw),
+        (4.0, Canon::SpindleCcw),
+        (5.0, Canon::StopSpindle),
+        (7.0, Canon::MistOn),
+        (8.0, Canon::FloodOn),
+    ] {
         if b.has_m(m) {
             emit(st, c);
         }
@@ -124,7 +154,11 @@ fn block(st: &mut State, b: &Block) -> Result<(), super::super::CompError> {
     if b.has_g(4.0) {
         emit(st, Canon::Dwell(b.get('P').unwrap_or(0.0)));
     }
-    for (g, p) in [(17.0, CanonPlane::XY), (18.0, CanonPlane::XZ), (19.0, CanonPlane::YZ)] {
+    for (g, p) in [
+        (17.0, CanonPlane::XY),
+        (18.0, CanonPlane::XZ),
+        (19.0, CanonPlane::YZ),
+    ] {
         if b.has_g(g) {
             st.comp.check_plane_change()?;
             st.plane = p;
@@ -146,25 +180,47 @@ fn comp_mode(st: &mut State, b: &Block) -> Result<(), super::super::CompError> {
     let out = &mut st.out;
     let mut sink = |c: Canon| out.push(format_call(&c));
     if b.has_g(40.0) {
-        st.comp.other(Canon::Comment("interpreter: cutter radius compensation off".into()), &mut sink);
+        st.comp.other(
+            Canon::Comment("interpreter: cutter radius compensation off".into()),
+            &mut sink,
+        );
         return st.comp.stop(&mut sink);
     }
-    let side = [(41.0, CompSide::Left), (41.1, CompSide::Left), (42.0, CompSide::Right), (42.1, CompSide::Right)]
-        .into_iter()
-        .find(|(g, _)| b.has_g(*g));
+    let side = [
+        (41.0, CompSide::Left),
+        (41.1, CompSide::Left),
+        (42.0, CompSide::Right),
+        (42.1, CompSide::Right),
+    ]
+    .into_iter()
+    .find(|(g, _)| b.has_g(*g));
     let Some((g, side)) = side else { return Ok(()) };
     let d = b.get('D').unwrap_or(st.tool as f64);
     let radius = if g == 41.0 || g == 42.0 {
-        let dia = DIAMETERS.get((d as usize).wrapping_sub(1)).copied().unwrap_or(0.0);
-        if st.inch { dia / 2.0 } else { dia * 25.4 / 2.0 }
+        let dia = DIAMETERS
+            .get((d as usize).wrapping_sub(1))
+            .copied()
+            .unwrap_or(0.0);
+        if st.inch {
+            dia / 2.0
+        } else {
+            dia * 25.4 / 2.0
+        }
     } else {
         d / 2.0
     };
     if st.comp.is_on() {
         return st.comp.start(side, radius, st.plane);
     }
-    let name = if side == CompSide::Left { "left" } else { "right" };
-    st.comp.other(Canon::Comment(format!("interpreter: cutter radius compensation on {name}")), &mut sink);
+    let name = if side == CompSide::Left {
+        "left"
+    } else {
+        "right"
+    };
+    st.comp.other(
+        Canon::Comment(format!("interpreter: cutter radius compensation on {name}")),
+        &mut sink,
+    );
     st.comp.start(side, radius, st.plane)
 }
 
@@ -192,7 +248,10 @@ fn motion(st: &mut State, b: &Block) -> Result<(), super::super::CompError> {
         g => {
             let centre = match b.get('R') {
                 Some(r) => centre_from_r(from, to, r, g == 2),
-                None => (from[0] + b.get('I').unwrap_or(0.0), from[1] + b.get('J').unwrap_or(0.0)),
+                None => (
+                    from[0] + b.get('I').unwrap_or(0.0),
+                    from[1] + b.get('J').unwrap_or(0.0),
+                ),
             };
             let turn = if g == 3 { 1 } else { -1 } * b.get('P').unwrap_or(1.0) as i64;
             st.comp.arc(from, to, centre, turn, &mut sink)
@@ -224,7 +283,11 @@ fn centre_from_r(from: Pose, to: Pose, r: f64, cw: bool) -> (f64, f64) {
         half = abs_r;
     }
     let dir = (to[1] - from[1]).atan2(to[0] - from[0]);
-    let theta = if cw == (r > 0.0) { dir - std::f64::consts::FRAC_PI_2 } else { dir + std::f64::consts::FRAC_PI_2 };
+    let theta = if cw == (r > 0.0) {
+        dir - std::f64::consts::FRAC_PI_2
+    } else {
+        dir + std::f64::consts::FRAC_PI_2
+    };
     let offset = abs_r * (half / abs_r).asin().cos();
     (mid.0 + offset * theta.cos(), mid.1 + offset * theta.sin())
 }

@@ -24,29 +24,57 @@ use crate::interp::host::MotionHost;
 
 pub fn cycle71(host: &mut dyn MotionHost, a: &Args, r: f64) -> Result<(), Diagnostic> {
     let (rtp, rfp, sdis, dp) = (a.get(0), a.get(1), a.get(2).abs(), a.get(3));
-    let (leng, wid, mid, mida, fdp, fald, ffp1) = (a.get(6), a.get(7), a.get(9), a.get(10), a.get(11), a.get(12), a.get(13));
+    let (leng, wid, mid, mida, fdp, fald, ffp1) = (
+        a.get(6),
+        a.get(7),
+        a.get(9),
+        a.get(10),
+        a.get(11),
+        a.get(12),
+        a.get(13),
+    );
     let vari = a.get(14).abs() as i64;
     let (units, tens) = (vari % 10, vari / 10 % 10);
     if !(1..=2).contains(&units) || !(1..=4).contains(&tens) {
-        return Err(bad(format!("CYCLE71: VARI {vari}: units 1 or 2, tens 1 to 4")));
+        return Err(bad(format!(
+            "CYCLE71: VARI {vari}: units 1 or 2, tens 1 to 4"
+        )));
     }
     let step = if mida.abs() > 0.0 { mida.abs() } else { r };
     if step <= 0.0 {
-        return Err(bad("CYCLE71: no width infeed (MIDA) and no tool radius (D1)".into()));
+        return Err(bad(
+            "CYCLE71: no width infeed (MIDA) and no tool radius (D1)".into(),
+        ));
     }
     let along_u = tens % 2 == 1;
     // Work in (u, v) with u the cutting direction.
-    let (cut, across) = if along_u { (leng.abs(), wid.abs()) } else { (wid.abs(), leng.abs()) };
+    let (cut, across) = if along_u {
+        (leng.abs(), wid.abs())
+    } else {
+        (wid.abs(), leng.abs())
+    };
     let n = (across / step - 1e-9).ceil().max(0.0);
     if n > MAX_PASSES {
         return Err(bad(format!("CYCLE71: more than {MAX_PASSES} lines")));
     }
-    let lines: Vec<f64> = (0..=n as usize).map(|k| (k as f64 * step).min(across)).collect();
-    let lv = if units == 1 { levels("CYCLE71", rfp, dp + fald.abs(), mid)? } else { vec![dp] };
+    let lines: Vec<f64> = (0..=n as usize)
+        .map(|k| (k as f64 * step).min(across))
+        .collect();
+    let lv = if units == 1 {
+        levels("CYCLE71", rfp, dp + fald.abs(), mid)?
+    } else {
+        vec![dp]
+    };
     let mut pen = Pen::new(host, (a.get(4), a.get(5)), a.get(8));
     let (su, sv) = (leng.signum_or_one(), wid.signum_or_one());
     // Cycle (u along cut, v across) to the face's own axes.
-    let to_uv = |c: f64, x: f64| if along_u { (su * c, sv * x) } else { (su * x, sv * c) };
+    let to_uv = |c: f64, x: f64| {
+        if along_u {
+            (su * c, sv * x)
+        } else {
+            (su * x, sv * c)
+        }
+    };
     let (start, end) = (-(r + fdp.abs()), cut + r + fdp.abs());
     let zigzag = tens >= 3;
     for w in lv {

@@ -45,26 +45,47 @@ pub const MAX_PASSES: f64 = 100_000.0;
 /// Levels from `top` down to `bottom`, equal steps of at most `mid`.
 pub fn levels(name: &str, top: f64, bottom: f64, mid: f64) -> Result<Vec<f64>, Diagnostic> {
     if bottom > top {
-        return Err(bad(format!("{name}: the depth {bottom} lies above the reference plane {top}")));
+        return Err(bad(format!(
+            "{name}: the depth {bottom} lies above the reference plane {top}"
+        )));
     }
     let total = top - bottom;
     let mid = mid.abs();
-    let n = if mid > 0.0 { (total / mid - 1e-9).ceil().max(1.0) } else { 1.0 };
+    let n = if mid > 0.0 {
+        (total / mid - 1e-9).ceil().max(1.0)
+    } else {
+        1.0
+    };
     if n > MAX_PASSES {
         return Err(bad(format!("{name}: more than {MAX_PASSES} depth passes")));
     }
     let n = n as usize;
-    Ok((1..=n).map(|k| if k == n { bottom } else { top - total * k as f64 / n as f64 }).collect())
+    Ok((1..=n)
+        .map(|k| {
+            if k == n {
+                bottom
+            } else {
+                top - total * k as f64 / n as f64
+            }
+        })
+        .collect())
 }
 
 /// Expands `name` (see [`expands`]); `radius` is the active tool radius
 /// in program units.
-pub fn run(host: &mut dyn MotionHost, name: &str, args: &[Option<f64>], radius: f64) -> Result<(), Diagnostic> {
+pub fn run(
+    host: &mut dyn MotionHost,
+    name: &str,
+    args: &[Option<f64>],
+    radius: f64,
+) -> Result<(), Diagnostic> {
     let a = Args(args);
     match name {
         "POCKET1" => pocket::pocket1(host, &a, radius),
         "POCKET2" => pocket::pocket2(host, &a, radius),
         "CYCLE71" => face::cycle71(host, &a, radius),
-        _ => Err(bad(format!("{name} is not a milling cycle this interpreter expands"))),
+        _ => Err(bad(format!(
+            "{name} is not a milling cycle this interpreter expands"
+        ))),
     }
 }

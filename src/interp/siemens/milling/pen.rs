@@ -22,13 +22,28 @@ impl Pen {
     pub fn new(host: &dyn MotionHost, origin: (f64, f64), angle_deg: f64) -> Pen {
         let (a, b, n) = plane_axes(host.plane());
         let (sin, cos) = angle_deg.to_radians().sin_cos();
-        let (sin, cos) = (crate::interp::siemens::frame::snap(sin), crate::interp::siemens::frame::snap(cos));
-        Pen { a, b, n, origin, cos, sin, feed: None, saved: host.feed_rate() }
+        let (sin, cos) = (
+            crate::interp::siemens::frame::snap(sin),
+            crate::interp::siemens::frame::snap(cos),
+        );
+        Pen {
+            a,
+            b,
+            n,
+            origin,
+            cos,
+            sin,
+            feed: None,
+            saved: host.feed_rate(),
+        }
     }
 
     /// A cycle point in plane coordinates.
     pub fn place(&self, u: f64, v: f64) -> (f64, f64) {
-        (self.origin.0 + u * self.cos - v * self.sin, self.origin.1 + u * self.sin + v * self.cos)
+        (
+            self.origin.0 + u * self.cos - v * self.sin,
+            self.origin.1 + u * self.sin + v * self.cos,
+        )
     }
 
     fn pose(&self, host: &dyn MotionHost, u: f64, v: f64, w: f64) -> crate::canon::Pose {

@@ -66,7 +66,9 @@ fn common(name: &'static str, a: &Args, i_ffd: usize) -> Result<Pocket, Diagnost
     let k = |off: usize| a.get(i_ffd + off);
     Ok(Pocket {
         name,
-        rtp: a.opt(0).ok_or_else(|| bad(format!("{name}: RTP (retract plane) missing")))?,
+        rtp: a
+            .opt(0)
+            .ok_or_else(|| bad(format!("{name}: RTP (retract plane) missing")))?,
         rfp,
         sdis: a.get(2).abs(),
         depth,
@@ -87,7 +89,12 @@ pub fn pocket1(host: &mut dyn MotionHost, a: &Args, r: f64) -> Result<(), Diagno
     let (len, wid, crad) = (a.get(5).abs(), a.get(6).abs(), a.get(7).abs());
     let pen = Pen::new(host, (a.get(8), a.get(9)), a.get(10));
     let (hu, hv) = (len / 2.0 - r, wid / 2.0 - r);
-    let final_ring = Ring { hu, hv, rc: (crad - r).max(0.0).min(hu.max(0.0)).min(hv.max(0.0)), circle: false };
+    let final_ring = Ring {
+        hu,
+        hv,
+        rc: (crad - r).max(0.0).min(hu.max(0.0)).min(hv.max(0.0)),
+        circle: false,
+    };
     run(host, pen, &p, final_ring, r)
 }
 
@@ -96,7 +103,12 @@ pub fn pocket2(host: &mut dyn MotionHost, a: &Args, r: f64) -> Result<(), Diagno
     let p = common("POCKET2", a, 8)?;
     let prad = a.get(5).abs();
     let pen = Pen::new(host, (a.get(6), a.get(7)), 0.0);
-    let final_ring = Ring { hu: prad - r, hv: prad - r, rc: 0.0, circle: true };
+    let final_ring = Ring {
+        hu: prad - r,
+        hv: prad - r,
+        rc: 0.0,
+        circle: true,
+    };
     run(host, pen, &p, final_ring, r)
 }
 
@@ -110,28 +122,57 @@ fn rings(name: &str, last: Ring, step: f64) -> Result<Vec<Ring>, Diagnostic> {
     let ring = |k: usize| {
         let d = k as f64 * step;
         let (hu, hv) = (last.hu - d, last.hv - d);
-        Ring { hu, hv, rc: (last.rc - d).max(0.0).min(hu).min(hv), circle: last.circle }
+        Ring {
+            hu,
+            hv,
+            rc: (last.rc - d).max(0.0).min(hu).min(hv),
+            circle: last.circle,
+        }
     };
-    Ok((0..=j).rev().map(ring).filter(|r| r.hu > 1e-9 || r.hv > 1e-9).collect())
+    Ok((0..=j)
+        .rev()
+        .map(ring)
+        .filter(|r| r.hu > 1e-9 || r.hv > 1e-9)
+        .collect())
 }
 
-fn run(host: &mut dyn MotionHost, mut pen: Pen, p: &Pocket, last: Ring, r: f64) -> Result<(), Diagnostic> {
+fn run(
+    host: &mut dyn MotionHost,
+    mut pen: Pen,
+    p: &Pocket,
+    last: Ring,
+    r: f64,
+) -> Result<(), Diagnostic> {
     if r <= 0.0 {
-        return Err(bad(format!("{}: no tool radius: activate a cutting edge (D1) first", p.name)));
+        return Err(bad(format!(
+            "{}: no tool radius: activate a cutting edge (D1) first",
+            p.name
+        )));
     }
     if last.hu < 0.0 || last.hv < 0.0 {
-        return Err(bad(format!("{}: the tool (radius {r}) is larger than the pocket", p.name)));
+        return Err(bad(format!(
+            "{}: the tool (radius {r}) is larger than the pocket",
+            p.name
+        )));
     }
     let (hu, hv) = (last.hu - p.fal, last.hv - p.fal);
     let rc = (last.rc - p.fal).max(0.0).min(hu.max(0.0)).min(hv.max(0.0));
-    let rough = Ring { hu, hv, rc, circle: last.circle };
+    let rough = Ring {
+        hu,
+        hv,
+        rc,
+        circle: last.circle,
+    };
     let lv = levels(p.name, p.rfp, p.depth, p.mid)?;
     let h = pen.depth(host);
     pen.rapid(host, 0.0, 0.0, h);
     pen.rapid_w(host, p.rfp + p.sdis);
     if p.vari != 2 {
         if rough.hu < 0.0 || rough.hv < 0.0 {
-            return Err(bad(format!("{}: the finishing allowance FAL leaves no room for roughing", p.name)));
+            return Err(bad(format!(
+                "{}: the finishing allowance FAL leaves no room for roughing",
+                p.name
+            )));
         }
         let rs = rings(p.name, rough, r)?;
         for w in &lv {
@@ -178,14 +219,27 @@ fn cut_ring(host: &mut dyn MotionHost, pen: &Pen, r: &Ring, ccw: bool) {
     // Corners in the order met going round: ccw visits +v first.
     let s = if ccw { 1.0 } else { -1.0 };
     let (hu, hv, rc) = (r.hu, r.hv * s, r.rc);
-    let corners = [(hu, hv, -1.0, -s), (-hu, hv, 1.0, -s), (-hu, -hv, 1.0, s), (hu, -hv, -1.0, s)];
+    let corners = [
+        (hu, hv, -1.0, -s),
+        (-hu, hv, 1.0, -s),
+        (-hu, -hv, 1.0, s),
+        (hu, -hv, -1.0, s),
+    ];
     for (k, (cu, cv, du, dv)) in corners.iter().enumerate() {
         // Arrive at the corner along the side, then round it.
         let along_v = k % 2 == 0;
-        let (iu, iv) = if along_v { (*cu, cv + dv * rc) } else { (cu + du * rc, *cv) };
+        let (iu, iv) = if along_v {
+            (*cu, cv + dv * rc)
+        } else {
+            (cu + du * rc, *cv)
+        };
         pen.feed(host, iu, iv, w);
         if rc > 0.0 {
-            let (ou, ov) = if along_v { (cu + du * rc, *cv) } else { (*cu, cv + dv * rc) };
+            let (ou, ov) = if along_v {
+                (cu + du * rc, *cv)
+            } else {
+                (*cu, cv + dv * rc)
+            };
             pen.arc(host, ou, ov, cu + du * rc, cv + dv * rc, ccw);
         }
     }

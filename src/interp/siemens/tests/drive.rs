@@ -27,7 +27,10 @@ pub fn run_lenient(src: &str) -> String {
 fn run_checked(src: &str, strict: bool) -> String {
     let spec = builtin("siemens840d").expect("siemens spec");
     let (program, diags) = read_program(src, FileId(0), &spec);
-    assert!(!strict || diags.iter().all(|d| !d.is_error()), "{src}: {diags:?}");
+    assert!(
+        !strict || diags.iter().all(|d| !d.is_error()),
+        "{src}: {diags:?}"
+    );
     let opts = Options::default();
     let mut out: Vec<String> = Vec::new();
     let mut sink = |c: Canon, _s: Span| out.push(format_call(&c));
@@ -47,7 +50,11 @@ fn run_checked(src: &str, strict: bool) -> String {
             }
         }
     }
-    let diags: Vec<String> = it.diags.iter().map(|d| format!("{} {}", d.code.code(), d.message)).collect();
+    let diags: Vec<String> = it
+        .diags
+        .iter()
+        .map(|d| format!("{} {}", d.code.code(), d.message))
+        .collect();
     drop(it);
     let mut text = out.join("\n");
     text.push_str(&end);
@@ -57,11 +64,18 @@ fn run_checked(src: &str, strict: bool) -> String {
     text
 }
 
-fn stmt(it: &mut Interp<'_, '_>, s: &Stmt, b: &crate::ir::Block, ex: &Arena<Expr>, mk: &mut MotionKind) -> Result<(), Stop> {
+fn stmt(
+    it: &mut Interp<'_, '_>,
+    s: &Stmt,
+    b: &crate::ir::Block,
+    ex: &Arena<Expr>,
+    mk: &mut MotionKind,
+) -> Result<(), Stop> {
     match &s.kind {
-        StmtKind::Transform(_) | StmtKind::CuttingEdge(_) | StmtKind::CycleCall(_) | StmtKind::ModalCallCancel => {
-            exec(it, s, b, ex)
-        }
+        StmtKind::Transform(_)
+        | StmtKind::CuttingEdge(_)
+        | StmtKind::CycleCall(_)
+        | StmtKind::ModalCallCancel => exec(it, s, b, ex),
         StmtKind::Feed(v) => {
             it.state.feed = it.value(v, ex)?;
             it.emit(Canon::SetFeedRate(it.state.feed));
@@ -101,7 +115,14 @@ fn stmt(it: &mut Interp<'_, '_>, s: &Stmt, b: &crate::ir::Block, ex: &Arena<Expr
                 }
             }
             let q = to_base(it, p);
-            let pose = [it.state.to_prog(q[0]), it.state.to_prog(q[1]), it.state.to_prog(q[2]), 0.0, 0.0, 0.0];
+            let pose = [
+                it.state.to_prog(q[0]),
+                it.state.to_prog(q[1]),
+                it.state.to_prog(q[2]),
+                0.0,
+                0.0,
+                0.0,
+            ];
             if *mk == MotionKind::Rapid {
                 MotionHost::rapid(it, pose);
             } else {

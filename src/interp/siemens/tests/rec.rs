@@ -14,7 +14,13 @@ pub struct Rec {
 
 impl Rec {
     pub fn new() -> Rec {
-        Rec { pos: [0.0; 6], plane: CanonPlane::XY, feed: 100.0, out: Vec::new(), diags: Vec::new() }
+        Rec {
+            pos: [0.0; 6],
+            plane: CanonPlane::XY,
+            feed: 100.0,
+            out: Vec::new(),
+            diags: Vec::new(),
+        }
     }
 
     pub fn text(&self) -> String {
