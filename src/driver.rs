@@ -162,9 +162,8 @@ fn decode_line_into(line: &[u8], out: &mut String) {
 
 /// What a streamed check found.
 pub struct StreamResult {
+    /// The lines they point at are read again with [`lines_at`].
     pub diagnostics: Vec<Diagnostic>,
-    /// The lines the diagnostics point at, for rendering.
-    pub kept_lines: Vec<KeptLine>,
     pub bytes: u64,
     pub lines: u64,
 }
@@ -191,7 +190,6 @@ pub fn check_stream_flagged(
     let mut reader = Reader::new(spec, file);
     let mut exprs = Arena::new();
     let mut diags = Vec::new();
-    let mut kept = Vec::new();
     let mut block = empty_block();
     let (mut offset, mut line_no) = (0u64, 0u64);
     for_each_line(input, |text| {
@@ -201,13 +199,6 @@ pub fn check_stream_flagged(
         if reader.line_into(line, off, &mut exprs, &mut diags, &mut block) {
             let bad = diags[before..].iter().any(|d| d.is_error());
             on_block(&block, &exprs, bad);
-        }
-        if diags.len() > before && kept.len() < crate::diag::MAX_KEPT {
-            kept.push(KeptLine {
-                line: line_no as usize,
-                start: offset as usize,
-                text: line.to_owned(),
-            });
         }
         if diags.len() > crate::diag::MAX_KEPT {
             diags.truncate(crate::diag::MAX_KEPT);
@@ -220,7 +211,6 @@ pub fn check_stream_flagged(
     diags.extend(reader.finish());
     Ok(StreamResult {
         diagnostics: diags,
-        kept_lines: kept,
         bytes: offset,
         lines: line_no,
     })
