@@ -9,12 +9,10 @@
 
 use crate::canon::write_call;
 use crate::cli::args::Format;
-use crate::cli::check::{keep_lines, read_head, read_whole};
+use crate::cli::check::{keep_lines, read_head};
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
-use crate::driver::{check_stream_flagged, FsLoader};
-use crate::interp::{stream::StreamRun, tooltable::ToolTable, Interp, Options};
-use std::fs::File;
-use std::io::{BufReader, Write};
+use crate::interp::{file::run_file, tooltable::ToolTable, Options};
+use std::io::Write;
 use std::path::Path;
 
 /// How many bytes of calls are gathered before they are written out.
@@ -56,11 +54,6 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
     let id = ctx
         .files
         .add_sparse(a.file.display().to_string(), Vec::new());
-    let open = || {
-        File::open(a.file)
-            .map(|f| BufReader::with_capacity(1 << 16, f))
-            .map_err(fail)
-    };
     let mut out = std::io::stdout().lock();
     let mut io_error = None;
     // Calls are written into a buffer, handed to stdout in large chunks.
@@ -72,35 +65,8 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
             flush_to(&mut out, &mut buf, &mut io_error);
         }
     };
-    let mut it = Interp::new(&spec, &a.options, &mut sink);
-    it.start();
-    let mut stream = StreamRun::default();
-    // One pass: each block runs as it is read; the first block that does
-    // not read cleanly stops the run there, as rs274 stops at a bad block.
-    let mut stopped = false;
-    let read = check_stream_flagged(open()?, id, &spec, |b, e, bad| {
-        stopped |= bad;
-        if !stopped {
-            stream.block(&mut it, b, e);
-        }
-    })
-    .map_err(fail)?;
-    diags.extend(read.diagnostics);
-    let read_errors = diags.iter().any(|d| d.is_error());
-    let run = match stream.handover {
-        _ if read_errors => stream.abandon(&mut it),
-        None => stream.finish(&mut it),
-        Some(_) => {
-            let program = read_whole(a.file, id, &spec)?;
-            let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
-            let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
-            let mut d = stream.continue_with(&mut it, program, &mut loader);
-            d.append(&mut loader.diags);
-            d
-        }
-    };
+    let run = run_file(a.file, id, &spec, &a.options, &mut ctx.files, &mut sink).map_err(fail)?;
     diags.extend(run);
-    drop(it);
     flush_to(&mut out, &mut buf, &mut io_error);
     out.flush()?;
     if let Some(e) = io_error {

@@ -14,6 +14,7 @@ pub mod cycles;
 pub mod eval;
 pub mod exec;
 pub mod fanuc_xform;
+pub mod file;
 pub mod flow;
 pub mod host;
 pub mod index;

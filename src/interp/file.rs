@@ -1,0 +1,61 @@
+//! Running a program file as a stream: each block runs as it is read; a
+//! program with control flow is read whole from its first such block and
+//! the walker goes on from there (see [`super::stream`]). Memory stays
+//! flat on large CAM files. `cncc canon` and everything that reads the
+//! canonical stream (toolpaths, plots, STEP-NC raising) run files this way.
+
+use super::{stream::StreamRun, Interp, Options, Sink};
+use crate::diag::Diagnostic;
+use crate::dialect::DialectSpec;
+use crate::driver::{check_stream_flagged, decode, read_program, FsLoader};
+use crate::source::SourceMap;
+use crate::span::FileId;
+use std::fs::File;
+use std::io::BufReader;
+use std::path::Path;
+use std::sync::Arc;
+
+/// Runs the program in `path` (already registered as `id`, sparse or
+/// whole, in `files`), sending every call to `sink`. Returns the reader's
+/// and the run's diagnostics. The first block that does not read cleanly
+/// stops the run there, as rs274 stops at a bad block; subprograms are
+/// loaded from files beside the program.
+pub fn run_file(
+    path: &Path,
+    id: FileId,
+    spec: &Arc<DialectSpec>,
+    opts: &Options,
+    files: &mut SourceMap,
+    sink: &mut Sink<'_>,
+) -> std::io::Result<Vec<Diagnostic>> {
+    let mut sink = sink;
+    let mut it = Interp::new(spec, opts, &mut sink);
+    it.start();
+    let mut stream = StreamRun::default();
+    let mut stopped = false;
+    let input = BufReader::with_capacity(1 << 16, File::open(path)?);
+    let read = check_stream_flagged(input, id, spec, |b, e, bad| {
+        stopped |= bad;
+        if !stopped {
+            stream.block(&mut it, b, e);
+        }
+    })?;
+    let mut diags = read.diagnostics;
+    let read_errors = diags.iter().any(|d| d.is_error());
+    let run = match stream.handover {
+        _ if read_errors => stream.abandon(&mut it),
+        None => stream.finish(&mut it),
+        Some(_) => {
+            let text = decode(&std::fs::read(path)?);
+            let program = std::rc::Rc::new(read_program(&text, id, spec).0);
+            drop(text);
+            let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+            let mut loader = FsLoader::new(dir, spec.clone(), files);
+            let mut d = stream.continue_with(&mut it, program, &mut loader);
+            d.append(&mut loader.diags);
+            d
+        }
+    };
+    diags.extend(run);
+    Ok(diags)
+}

@@ -1,0 +1,324 @@
+//! Follows a canonical stream and resolves each motion call into a
+//! [`Move`] in millimetres, work coordinates (see the module doc of
+//! [`super`]).
+
+use super::{ArcGeom, CoolantState, Event, FeedMode, Move, MoveKind, P3};
+use crate::canon::{Canon, CanonPlane, CanonUnits, Pose};
+use crate::span::Span;
+
+/// The machine state a canonical stream builds up.
+#[derive(Clone, Debug)]
+pub struct Tracker {
+    /// Millimetres per program unit (1 or 25.4).
+    scale: f64,
+    g5x: P3,
+    g92: P3,
+    /// XY rotation in degrees (about the G5x origin).
+    rotation: f64,
+    plane: CanonPlane,
+    /// The current position, work coordinates.
+    pos: P3,
+    feed: f64,
+    feed_mode: FeedMode,
+    selected: i64,
+    tool: i64,
+    speed: f64,
+    /// +1 clockwise, -1 counter-clockwise, 0 stopped.
+    direction: f64,
+    coolant: CoolantState,
+}
+
+impl Default for Tracker {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Tracker {
+    pub fn new() -> Self {
+        Tracker {
+            scale: 1.0,
+            g5x: [0.0; 3],
+            g92: [0.0; 3],
+            rotation: 0.0,
+            plane: CanonPlane::XY,
+            pos: [0.0; 3],
+            feed: 0.0,
+            feed_mode: FeedMode::PerMinute,
+            selected: 0,
+            tool: 0,
+            speed: 0.0,
+            direction: 0.0,
+            coolant: CoolantState::default(),
+        }
+    }
+
+    /// The current position, work coordinates (mm).
+    pub fn position(&self) -> P3 {
+        self.pos
+    }
+
+    /// The tool in the spindle.
+    pub fn tool(&self) -> i64 {
+        self.tool
+    }
+
+    /// A program-frame point (program units) in work coordinates (mm).
+    fn to_work(&self, p: [f64; 3]) -> P3 {
+        let q = [
+            (p[0] + self.g92[0]) * self.scale,
+            (p[1] + self.g92[1]) * self.scale,
+            (p[2] + self.g92[2]) * self.scale,
+        ];
+        let (s, c) = self.rotation.to_radians().sin_cos();
+        [
+            q[0] * c - q[1] * s + self.g5x[0],
+            q[0] * s + q[1] * c + self.g5x[1],
+            q[2] + self.g5x[2],
+        ]
+    }
+
+    fn offsets(&self, pose: &Pose) -> P3 {
+        [
+            pose[0] * self.scale,
+            pose[1] * self.scale,
+            pose[2] * self.scale,
+        ]
+    }
+
+    fn make(&mut self, kind: MoveKind, to: P3, span: Span) -> Event {
+        let from = std::mem::replace(&mut self.pos, to);
+        Event::Move(Move {
+            kind,
+            from,
+            to,
+            feed: self.feed,
+            feed_mode: self.feed_mode,
+            tool: self.tool,
+            spindle: self.speed * self.direction,
+            coolant: self.coolant,
+            span,
+        })
+    }
+
+    /// Takes one call; hands the events it makes (none, one, or two for a
+    /// rigid tap's in and out) to `emit`.
+    pub fn push(&mut self, call: &Canon, span: Span, mut emit: impl FnMut(Event)) {
+        if let Some(e) = self.step(call, span, &mut emit) {
+            emit(e);
+        }
+    }
+
+    fn step(&mut self, call: &Canon, span: Span, emit: &mut impl FnMut(Event)) -> Option<Event> {
+        use Canon::*;
+        match call {
+            UseLengthUnits(u) => {
+                self.scale = match u {
+                    CanonUnits::Inches => 25.4,
+                    CanonUnits::Mm => 1.0,
+                }
+            }
+            SetG5xOffset { offset, .. } => self.g5x = self.offsets(offset),
+            SetG92Offset(o) => self.g92 = [o[0], o[1], o[2]],
+            SetXyRotation(r) => self.rotation = *r,
+            SelectPlane(p) => self.plane = *p,
+            SetFeedRate(f) => self.feed = f * self.scale,
+            SetFeedMode(m) => {
+                self.feed_mode = if *m == 1 {
+                    FeedMode::PerRev
+                } else {
+                    FeedMode::PerMinute
+                }
+            }
+            SelectTool(t) => self.selected = *t,
+            ChangeTool(_) | ChangeToolNumber(_) => {
+                self.tool = self.selected;
+                return Some(Event::ToolChange {
+                    tool: self.tool,
+                    span,
+                });
+            }
+            StopSpindle => self.direction = 0.0,
+            SpindleCw => self.direction = 1.0,
+            SpindleCcw => self.direction = -1.0,
+            SetSpindleSpeed(s) => self.speed = *s,
+            FloodOn => self.coolant.flood = true,
+            FloodOff => self.coolant.flood = false,
+            MistOn => self.coolant.mist = true,
+            MistOff => self.coolant.mist = false,
+            StraightTraverse(p) => {
+                return Some(self.make(MoveKind::Rapid, self.to_work([p[0], p[1], p[2]]), span))
+            }
+            StraightFeed(p) => {
+                return Some(self.make(MoveKind::Line, self.to_work([p[0], p[1], p[2]]), span))
+            }
+            StraightProbe(p) => {
+                return Some(self.make(MoveKind::Probe, self.to_work([p[0], p[1], p[2]]), span))
+            }
+            RigidTap { x, y, z } => {
+                // Down to the point and back out along the same line.
+                let start = self.pos;
+                let down = self.to_work([*x, *y, *z]);
+                emit(self.make(MoveKind::Line, down, span));
+                return Some(self.make(MoveKind::Line, start, span));
+            }
+            ArcFeed {
+                first_end,
+                second_end,
+                first_axis,
+                second_axis,
+                rotation,
+                axis_end,
+                ..
+            } => {
+                return Some(self.arc(
+                    *first_end,
+                    *second_end,
+                    [*first_axis, *second_axis],
+                    *rotation,
+                    *axis_end,
+                    span,
+                ))
+            }
+            Dwell(s) => return Some(Event::Dwell { seconds: *s, span }),
+            ProgramStop | OptionalProgramStop => return Some(Event::Stop { end: false, span }),
+            ProgramEnd => return Some(Event::Stop { end: true, span }),
+            Comment(t) | Message(t) => {
+                return Some(Event::Comment {
+                    text: t.clone(),
+                    span,
+                })
+            }
+            OnReset
+            | SetFeedReference
+            | LogOpen(_)
+            | LogAppend(_)
+            | Log(_)
+            | LogClose
+            | StartChange
+            | SetSpindleMode(_)
+            | OrientSpindle { .. }
+            | WaitOrientComplete(_)
+            | UseToolLengthOffset(_)
+            | SetMotionControlMode(_)
+            | SetNaivecamTolerance(_)
+            | PalletShuttle
+            | Finish
+            | EnableFeedOverride
+            | DisableFeedOverride
+            | EnableSpeedOverride
+            | DisableSpeedOverride
+            | EnableAdaptiveFeed
+            | DisableAdaptiveFeed
+            | EnableFeedHold
+            | DisableFeedHold
+            | StartSpeedFeedSync { .. }
+            | StopSpeedFeedSync
+            | TurnProbeOn
+            | TurnProbeOff
+            | SetToolTableEntry { .. }
+            | Io(_) => {}
+        }
+        None
+    }
+
+    fn arc(&mut self, e1: f64, e2: f64, c: [f64; 2], rotation: i64, w: f64, span: Span) -> Event {
+        // Program-frame end and centre, then both into work coordinates.
+        let axes = match self.plane {
+            CanonPlane::XY => [0, 1, 2],
+            CanonPlane::YZ => [1, 2, 0],
+            CanonPlane::XZ => [2, 0, 1],
+        };
+        let mut end = [0.0; 3];
+        let mut centre = [0.0; 3];
+        end[axes[0]] = e1;
+        end[axes[1]] = e2;
+        end[axes[2]] = w;
+        centre[axes[0]] = c[0];
+        centre[axes[1]] = c[1];
+        let end = self.to_work(end);
+        let mut centre = self.to_work(centre);
+        centre[axes[2]] = self.pos[axes[2]];
+        let geom = ArcGeom {
+            axes,
+            centre,
+            rotation,
+        };
+        self.make(MoveKind::Arc(geom), end, span)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(calls: &[Canon]) -> Vec<Event> {
+        let mut t = Tracker::new();
+        let mut out = Vec::new();
+        for c in calls {
+            t.push(c, Span::default(), |e| out.push(e));
+        }
+        out
+    }
+
+    fn moves(ev: &[Event]) -> Vec<&Move> {
+        ev.iter()
+            .filter_map(|e| match e {
+                Event::Move(m) => Some(m),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn inches_offsets_and_rotation_become_work_millimetres() {
+        let ev = run(&[
+            Canon::UseLengthUnits(CanonUnits::Inches),
+            Canon::SetG5xOffset {
+                index: 1,
+                offset: [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+            },
+            Canon::SetXyRotation(90.0),
+            Canon::SetFeedRate(10.0),
+            Canon::StraightFeed([1.0, 0.0, -0.5, 0.0, 0.0, 0.0]),
+        ]);
+        let m = moves(&ev)[0];
+        assert!((m.to[0] - 25.4).abs() < 1e-9 && (m.to[1] - 25.4).abs() < 1e-9);
+        assert!((m.to[2] + 12.7).abs() < 1e-9);
+        assert!((m.feed - 254.0).abs() < 1e-9);
+        assert_eq!(m.from, [0.0; 3]);
+    }
+
+    #[test]
+    fn arcs_tools_spindle_and_rigid_taps() {
+        let ev = run(&[
+            Canon::SelectTool(3),
+            Canon::ChangeTool(1),
+            Canon::SetSpindleSpeed(1000.0),
+            Canon::SpindleCcw,
+            Canon::StraightTraverse([10.0, 0.0, 0.0, 0.0, 0.0, 0.0]),
+            Canon::ArcFeed {
+                first_end: 0.0,
+                second_end: 10.0,
+                first_axis: 0.0,
+                second_axis: 0.0,
+                rotation: 1,
+                axis_end: -1.0,
+                abc: [0.0; 3],
+            },
+            Canon::RigidTap {
+                x: 0.0,
+                y: 10.0,
+                z: -5.0,
+            },
+        ]);
+        assert!(matches!(ev[0], Event::ToolChange { tool: 3, .. }));
+        let m = moves(&ev);
+        assert_eq!(m.len(), 4);
+        assert_eq!(m[1].spindle, -1000.0);
+        assert_eq!(m[1].tool, 3);
+        let len = m[1].length();
+        assert!((len - (5.0 * std::f64::consts::PI).hypot(1.0)).abs() < 1e-9);
+        assert_eq!(m[3].to, m[2].from);
+    }
+}
