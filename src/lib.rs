@@ -19,5 +19,6 @@ pub mod ir;
 pub mod lower;
 pub mod source;
 pub mod span;
+pub mod stepnc;
 pub mod syntax;
 pub mod toolpath;
