@@ -97,6 +97,35 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
+    /// Raise a program to STEP-NC (ISO 14649 Part 21): CC1 explicit
+    /// toolpaths (the default) or CC2 machining features.
+    Stepnc {
+        file: PathBuf,
+        #[arg(long)]
+        dialect: Option<String>,
+        /// A tool table in LinuxCNC's .tbl format: tool geometry (a built-in T1-T20 table otherwise).
+        #[arg(long = "tool-table", value_name = "T.tbl")]
+        tool_table: Option<PathBuf>,
+        /// The stock block, mm: `LxWxH[+X+Y+Z]` (sizes, then the lowest corner; default top at Z0, corner at X0 Y0).
+        #[arg(long, value_name = "LxWxH[+X+Y+Z]")]
+        stock: Option<String>,
+        /// Explicit toolpaths (the default).
+        #[arg(long, conflicts_with = "cc2")]
+        cc1: bool,
+        /// Machining features.
+        #[arg(long)]
+        cc2: bool,
+        /// Print a readable listing of the project instead of Part 21.
+        #[arg(long)]
+        summary: bool,
+        /// Write here (whole or not at all) instead of stdout.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Format::Human)]
+        format: Format,
+        #[command(flatten)]
+        run: RunArgs,
+    },
     /// List the known dialects and their capabilities.
     Dialects,
     /// Explain a diagnostic code (`E0201`) or name (`two-motion-codes`);

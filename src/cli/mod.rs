@@ -8,6 +8,7 @@ pub mod info;
 pub mod ir;
 pub mod output;
 pub mod port;
+pub mod raise;
 
 use args::{Cli, Command, Format};
 use context::{Context, Failure, EXIT_USAGE};
@@ -18,7 +19,8 @@ pub fn run(cli: Cli) -> i32 {
         Command::Check { format, .. }
         | Command::Ir { format, .. }
         | Command::Port { format, .. }
-        | Command::Canon { format, .. } => *format,
+        | Command::Canon { format, .. }
+        | Command::Stepnc { format, .. } => *format,
         _ => Format::Human,
     };
     let mut ctx = match Context::new(&cli, format) {
@@ -79,6 +81,31 @@ pub fn run(cli: Cli) -> i32 {
                 file,
                 dialect: dialect.as_deref(),
                 tool_table: tool_table.as_deref(),
+                format: *format,
+                options: run.options(),
+            },
+        ),
+        Command::Stepnc {
+            file,
+            dialect,
+            tool_table,
+            stock,
+            cc1: _,
+            cc2,
+            summary,
+            output,
+            format,
+            run,
+        } => raise::run(
+            &mut ctx,
+            raise::RaiseArgs {
+                file,
+                dialect: dialect.as_deref(),
+                tool_table: tool_table.as_deref(),
+                stock: stock.as_deref(),
+                cc2: *cc2,
+                summary: *summary,
+                output: output.as_deref(),
                 format: *format,
                 options: run.options(),
             },

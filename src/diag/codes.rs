@@ -259,6 +259,18 @@ codes! {
     BadWordValue = "E0511", "bad-word-value", Error,
         "a word missing or with a value the controller rejects when the block runs",
         "The block needs a word it lacks (G4 without P, G10 without P) or has one whose value is out of range (a negative F or S, G10 L2 P10, axis words with G80). The controller alarms here.";
+    RaiseCommentsNotCarried = "W0860", "raise-comments-not-carried", Warning,
+        "comments that STEP-NC has no place for",
+        "ISO 14649 has no comment entity. When a program is raised to STEP-NC, a comment just before a cut names the workingstep that follows; the other comments are not carried. The warning points at the first one and counts them.";
+    RaiseToolWithoutDiameter = "W0861", "raise-tool-without-diameter", Warning,
+        "a tool the tool table does not give a diameter for",
+        "STEP-NC tools carry their geometry, and raised holes take their diameter from the drill. The tool is written with diameter 0. Give a tool table (`--tool-table T.tbl`, LinuxCNC format) that lists the tool with its D word.";
+    RaiseHelixAsPolyline = "W0862", "raise-helix-as-polyline", Warning,
+        "helical moves written as polylines",
+        "The STEP-NC model cncc writes has circles but no helices, so a helical move (an arc whose axis coordinate changes) is written as a cutter-location polyline within 0.001 mm of the true path. The warning points at the first one and counts them.";
+    RaiseCycleAsToolpath = "W0863", "raise-cycle-as-toolpath", Warning,
+        "a canned cycle kept as explicit toolpaths, not as a hole",
+        "Drilling, peck drilling, boring and reaming cycles become ROUND_HOLE features with their operation. A cycle whose moves match none of them (tapping, back boring, a cycle that is not vertical) is kept as the explicit toolpath of a freeform operation, so nothing is lost, but it is not a hole feature.";
     ArcBadWords = "E0512", "arc-bad-words", Error,
         "an arc without a centre or radius, or with both",
         "G2/G3 need either the centre words (I J K for the active plane) or R, not both and not neither. A full circle needs the centre words.";
