@@ -423,30 +423,47 @@ fn close_curve(cut: &mut Cut, curve: CurveBuilder) {
     }
 }
 
-/// The toolpaths of a hole cycle in the hole's frame: feeds as trajectory
-/// paths (with their own technology when the feed differs), rapids as
-/// connecting moves at rapid speed, dwells as feedstops.
+/// The toolpaths of a hole cycle in the hole's frame: runs of feeds as
+/// trajectory paths (with their own technology when the feed differs from
+/// the first), runs of rapids as connecting moves at rapid speed, dwells
+/// as feedstops.
 fn hole_toolpaths(body: &[Item], first: &Move, origin: P3) -> Vec<Toolpath> {
     let shift = |p: P3| [p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]];
     let mut out = Vec::new();
-    for it in body {
-        match it {
-            Item::Dwell(s) => out.push(ops::feedstop(*s)),
-            Item::Move(m) => {
-                let mut b = CurveBuilder::default();
-                b.line(shift(m.from), shift(m.to));
-                let Some(curve) = b.finish() else { continue };
-                let (kind, tech) = match m.kind {
-                    MoveKind::Rapid => (ToolpathType::Connect, None),
-                    _ if m.feed != first.feed || m.spindle != first.spindle => {
-                        (ToolpathType::TrajectoryPath, Some(ops::technology(m)))
-                    }
-                    _ => (ToolpathType::TrajectoryPath, None),
-                };
+    let mut run: Option<(ToolpathType, Option<Technology>, CurveBuilder)> = None;
+    let close = |run: &mut Option<(ToolpathType, Option<Technology>, CurveBuilder)>,
+                 out: &mut Vec<Toolpath>| {
+        if let Some((kind, tech, b)) = run.take() {
+            if let Some(curve) = b.finish() {
                 out.push(ops::trajectory(curve, tech, kind));
             }
         }
+    };
+    for it in body {
+        let Item::Move(m) = it else {
+            close(&mut run, &mut out);
+            if let Item::Dwell(s) = it {
+                out.push(ops::feedstop(*s));
+            }
+            continue;
+        };
+        let (kind, tech) = match m.kind {
+            MoveKind::Rapid => (ToolpathType::Connect, None),
+            _ if m.feed != first.feed || m.spindle != first.spindle => {
+                (ToolpathType::TrajectoryPath, Some(ops::technology(m)))
+            }
+            _ => (ToolpathType::TrajectoryPath, None),
+        };
+        if run
+            .as_ref()
+            .is_some_and(|(k, t, _)| *k != kind || *t != tech)
+        {
+            close(&mut run, &mut out);
+        }
+        let (_, _, b) = run.get_or_insert_with(|| (kind, tech, CurveBuilder::default()));
+        b.line(shift(m.from), shift(m.to));
     }
+    close(&mut run, &mut out);
     out
 }
 
