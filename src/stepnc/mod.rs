@@ -3,3 +3,4 @@
 //! from, and post-processors read.
 
 pub mod model;
+pub mod part21;
