@@ -308,6 +308,9 @@ codes! {
     UnusedInstance = "W0801", "unused-instance", Warning,
         "an instance the project never refers to",
         "The instance is not reachable from the PROJECT, so it is not part of the programme and a normalised file leaves it out. Remove it, or refer to it.";
+    MandatoryUnset = "W0803", "mandatory-unset", Warning,
+        "a mandatory attribute written `$`",
+        "The schema does not make this attribute OPTIONAL, yet the file leaves it unset, as some generators do. cncc reads on and keeps the instance as written; other readers may refuse the file.";
     KeptRaw = "W0802", "kept-raw", Warning,
         "a value cncc could not read into its model, kept as written",
         "The instance does not have the form ISO 14649 gives it (a mandatory attribute unset, an unexpected entity), so the typed model keeps it as written and carries it to the output unchanged, but it takes no part in checks, differences or posting.";

@@ -174,7 +174,7 @@ mod tests {
             .into_iter()
             .map(|r| r.unwrap().1)
             .collect();
-        assert_eq!(t.len(), 16);
+        assert_eq!(t.len(), 17);
         assert_eq!(t[0], Tok::InstanceName);
         assert_eq!(t[4], Tok::Str);
     }
