@@ -269,3 +269,28 @@ fn summaries() {
         summary(&raise("part.mpf", "siemens840d").project)
     );
 }
+
+#[test]
+fn part21_of_the_fanuc_part() {
+    let p = raise("part.nc", "fanuc").project;
+    let text = cncc::stepnc::write_project(&p);
+    assert!(text.contains("FILE_SCHEMA(('MACHINING_SCHEMA','MILLING_SCHEMA'));"));
+    for entity in [
+        "FREEFORM_OPERATION(",
+        "TOOLPATH_LIST(",
+        "CUTTER_LOCATION_TRAJECTORY(",
+        "POLYLINE(",
+        "TRIMMED_CURVE(",
+        "CIRCLE(",
+        "COMPOSITE_CURVE(",
+        "RAPID_MOVEMENT(",
+        "ROUND_HOLE(",
+        "MULTISTEP_DRILLING(",
+        "REAMING(",
+        "BORING(",
+        "TWIST_DRILL(",
+    ] {
+        assert!(text.contains(entity), "no {entity} in the Part 21");
+    }
+    insta::assert_snapshot!("fanuc_part_cc1_part21", text);
+}

@@ -1,8 +1,7 @@
 //! `cncc stepnc PROGRAM`: run a program and raise it to STEP-NC (CC1
 //! explicit toolpaths by default, `--cc2` machining features). With
 //! `--summary` the readable listing of the project is printed instead of
-//! Part 21 (the Part 21 writer lives in `crate::stepnc`, merged from its
-//! own branch).
+//! Part 21 ([`crate::stepnc::write_project`]).
 
 use crate::cli::args::Format;
 use crate::cli::check::{keep_lines, read_head};
@@ -67,9 +66,7 @@ pub fn run(ctx: &mut Context, mut a: RaiseArgs<'_>) -> Result<i32, Failure> {
     let text = if a.summary {
         summary(&raised.project)
     } else {
-        return Err(Failure(
-            "the Part 21 writer is not built in this tree yet: use --summary".into(),
-        ));
+        crate::stepnc::write_project(&raised.project)
     };
     emit_output(a.output, &text).map_err(|e| Failure(format!("writing the output: {e}")))?;
     Ok(EXIT_OK)

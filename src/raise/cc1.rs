@@ -62,7 +62,8 @@ pub struct Cc1Builder {
     cut: Option<Cut>,
     /// Where the tool is, once a move has said.
     known: bool,
-    name: Option<String>,
+    /// The last comment, with where it is: the next workingstep's name.
+    name: Option<(String, Span)>,
     steps: usize,
     holes: usize,
     pub max_rapid_z: Option<f64>,
@@ -134,8 +135,8 @@ impl Cc1Builder {
         self.flush_group();
         self.close_cut();
         self.flush_rapids();
-        if let Some(n) = self.name.take() {
-            self.losses.comment(n, Span::default());
+        if let Some((n, span)) = self.name.take() {
+            self.losses.comment(n, span);
         }
         for (fid, min_z) in self.toolpath_features.values() {
             let f = &mut self.project.features[fid.index()];
@@ -157,8 +158,8 @@ impl Cc1Builder {
             return;
         }
         self.flush_group();
-        if let Some(old) = self.name.replace(text) {
-            self.losses.comment(old, span);
+        if let Some((old, at)) = self.name.replace((text, span)) {
+            self.losses.comment(old, at);
         }
     }
 
@@ -199,7 +200,9 @@ impl Cc1Builder {
             if self.rapids.is_empty() && self.known {
                 self.rapids.push(m.from);
             }
-            self.rapids.push(m.to);
+            if self.rapids.last() != Some(&m.to) {
+                self.rapids.push(m.to);
+            }
             self.known = true;
             return;
         }
@@ -290,7 +293,7 @@ impl Cc1Builder {
     fn step_name(&mut self, what: &str) -> String {
         self.steps += 1;
         match self.name.take() {
-            Some(n) => format!("WS {} {}", self.steps, n),
+            Some((n, _)) => format!("WS {} {}", self.steps, n),
             None => format!("WS {} {what}", self.steps),
         }
     }

@@ -48,6 +48,8 @@ impl CurveBuilder {
     pub fn line(&mut self, from: P3, to: P3) {
         if self.line.is_empty() {
             self.line.push(point(from));
+        } else if self.line.last().is_some_and(|p| p.xyz == to) {
+            return; // a move that goes nowhere adds no point
         }
         self.line.push(point(to));
     }
