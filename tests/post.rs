@@ -143,7 +143,68 @@ fn linuxcnc_output_runs_in_rs274() {
 }
 
 #[test]
-fn post_reports_a_missing_reader_or_bad_target_as_usage() {
+fn a_missing_file_is_a_usage_error() {
     let o = common::cncc(&["post", "no-such.stp", "--to", "fanuc"]);
     assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn ex1_stp_posts_like_the_fixture() {
+    let Some(shared) = common::shared() else {
+        return;
+    };
+    let file = shared.join("stepnc-samples/ex1.stp");
+    if !file.exists() {
+        eprintln!("note: ex1.stp is absent; skipping");
+        return;
+    }
+    for id in ["siemens840d", "fanuc", "haas", "linuxcnc"] {
+        let o = common::cncc(&["post", file.to_str().unwrap(), "--to", id]);
+        assert_eq!(o.status.code(), Some(0), "{id}: {}", common::stderr(&o));
+        assert_eq!(common::stdout(&o), posted(id).text, "{id}");
+        // Three values the targets cannot carry are named, as warnings.
+        assert_eq!(
+            common::stderr(&o).matches("W0900").count(),
+            if id == "siemens840d" { 3 } else { 2 },
+            "{id}"
+        );
+    }
+}
+
+#[test]
+fn post_writes_the_output_file_whole() {
+    let Some(shared) = common::shared() else {
+        return;
+    };
+    let file = shared.join("stepnc-samples/ex1.stp");
+    let out = common::root().join("target/tmp/post-tests/ex1-cli.mpf");
+    let _ = std::fs::remove_file(&out);
+    let o = common::cncc(&[
+        "post",
+        file.to_str().unwrap(),
+        "--to",
+        "840d",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", common::stderr(&o));
+    assert_eq!(
+        std::fs::read_to_string(&out).unwrap(),
+        posted("siemens840d").text
+    );
+    // A feature the post cannot write: exit 1, nothing written.
+    let bad = shared.join("stepnc-samples/TesteFinalUNBLAB.p21");
+    let out2 = common::root().join("target/tmp/post-tests/bad.nc");
+    let _ = std::fs::remove_file(&out2);
+    let o = common::cncc(&[
+        "post",
+        bad.to_str().unwrap(),
+        "--to",
+        "fanuc",
+        "-o",
+        out2.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(common::stderr(&o).contains("E0900"));
+    assert!(!out2.exists());
 }

@@ -18,7 +18,7 @@ pub fn run(
 ) -> Result<i32, Failure> {
     let target = ctx.spec(to)?;
     let (id, text) = ctx.add_file(file)?;
-    let project = match read_project(&text, id)? {
+    let project = match read_project(ctx, &text, id, format) {
         Ok(p) => p,
         Err(diags) => {
             ctx.print(&diags, format);
@@ -39,11 +39,20 @@ pub fn run(
     }
 }
 
-/// Reads a Part 21 file into the model. The reader is being written on
-/// another branch (`stepio`); until it is merged, this is a usage error
-/// that says so rather than a guess.
-fn read_project(_text: &str, _file: FileId) -> Result<Result<Project, Vec<Diagnostic>>, Failure> {
-    Err(Failure(
-        "reading STEP-NC (Part 21) files is not available in this build yet: the reader is not merged".into(),
-    ))
+/// Reads a Part 21 file into the model: warnings are printed, errors
+/// end the command.
+fn read_project(
+    ctx: &Context,
+    text: &str,
+    file: FileId,
+    format: Format,
+) -> Result<Project, Vec<Diagnostic>> {
+    let read = crate::stepnc::read_text(text, file);
+    match read.project {
+        Some(p) if !read.diagnostics.iter().any(Diagnostic::is_error) => {
+            ctx.print(&read.diagnostics, format);
+            Ok(p)
+        }
+        _ => Err(read.diagnostics),
+    }
 }
