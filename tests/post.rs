@@ -29,6 +29,18 @@ fn save(name: &str, text: &str) -> PathBuf {
     p
 }
 
+/// The 840D text without its `$TC_DP` lines (which cncc's interpreter
+/// does not simulate, W0511) must read and run without any warning.
+fn siemens_runs_clean(name: &str, text: &str) {
+    let without: String = text
+        .lines()
+        .filter(|l| !l.starts_with("$TC_DP"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let err = check_clean(&save(name, &without), "siemens840d");
+    assert!(!err.contains("warning["), "{err}");
+}
+
 fn check_clean(path: &PathBuf, dialect: &str) -> String {
     let o = common::cncc(&["check", "--dialect", dialect, path.to_str().unwrap()]);
     let err = common::stderr(&o);
@@ -73,15 +85,7 @@ fn siemens_output_checks_clean() {
     // cncc's interpreter does not simulate writing $TC_DP (W0511): the
     // only warning. Without those lines every cycle runs clean.
     assert!(!err.contains("error["), "{err}");
-    let without: String = p
-        .text
-        .lines()
-        .filter(|l| !l.starts_with("$TC_DP"))
-        .map(|l| format!("{l}\n"))
-        .collect();
-    let path = save("ex1-no-tc.mpf", &without);
-    let err = check_clean(&path, "siemens840d");
-    assert!(!err.contains("warning["), "{err}");
+    siemens_runs_clean("ex1-no-tc.mpf", &p.text);
 }
 
 #[test]
@@ -207,4 +211,72 @@ fn post_writes_the_output_file_whole() {
     assert_eq!(o.status.code(), Some(1));
     assert!(common::stderr(&o).contains("E0900"));
     assert!(!out2.exists());
+}
+
+/// Example 1 with the drilling repeated at `more` further places, each
+/// its own hole feature and workingstep right after the first drilling.
+fn ex1_with_holes(more: &[[f64; 2]]) -> cncc::stepnc::model::Project {
+    use cncc::stepnc::model::*;
+    let mut p = fixture::ex1();
+    let hole = p.features[1].clone();
+    let Executable::Workingstep(drill) = p.main_workplan.elements[1].clone() else {
+        unreachable!()
+    };
+    for (k, at) in more.iter().enumerate() {
+        let mut f = hole.clone();
+        f.id = format!("HOLE{}", k + 2);
+        f.placement.location.xyz = [at[0], at[1], 0.0];
+        p.features.push(f);
+        let mut ws = drill.clone();
+        ws.id = format!("WS DRILL HOLE{}", k + 2);
+        ws.feature = FeatureId(p.features.len() as u32 - 1);
+        p.main_workplan
+            .elements
+            .insert(2 + k, Executable::Workingstep(ws));
+    }
+    p
+}
+
+#[test]
+fn holes_in_a_row_become_one_cycle_with_a_pattern() {
+    let project = ex1_with_holes(&[[40.0, 60.0], [60.0, 60.0], [80.0, 60.0]]);
+    let siemens = post(&project, &builtin("siemens840d").unwrap()).unwrap();
+    let l = lines(&siemens.text);
+    let at = l
+        .iter()
+        .position(|x| *x == "MCALL CYCLE81(30,0,10,-30,)")
+        .unwrap();
+    assert_eq!(&l[at + 1..at + 3], &["HOLES1(20,60,0,0,20,4)", "MCALL"]);
+    assert_eq!(l.iter().filter(|x| x.contains("CYCLE81")).count(), 1);
+    assert!(siemens
+        .text
+        .contains("; WS(5) WS DRILL HOLE4 Feature=round_hole HOLE4"));
+    siemens_runs_clean("row.mpf", &siemens.text);
+
+    let fanuc = post(&project, &builtin("fanuc").unwrap()).unwrap();
+    let l = lines(&fanuc.text);
+    let at = l
+        .iter()
+        .position(|x| *x == "G98 G81 X20. Y60. Z-30. R10. F1800")
+        .unwrap();
+    assert_eq!(
+        &l[at + 1..at + 5],
+        &["X40. Y60.", "X60. Y60.", "X80. Y60.", "G80"]
+    );
+    let err = check_clean(&save("row.nc", &fanuc.text), "fanuc");
+    assert!(!err.contains("warning["), "{err}");
+}
+
+#[test]
+fn holes_on_a_circle_and_in_a_grid() {
+    let circle = ex1_with_holes(&[[30.0, 70.0], [40.0, 60.0], [30.0, 50.0]]);
+    let text = post(&circle, &builtin("siemens840d").unwrap())
+        .unwrap()
+        .text;
+    assert!(text.contains("\nHOLES2(30,60,10,180,-90,4)\n"), "{text}");
+    siemens_runs_clean("circle.mpf", &text);
+    let grid = ex1_with_holes(&[[40.0, 60.0], [20.0, 80.0], [40.0, 80.0]]);
+    let text = post(&grid, &builtin("siemens840d").unwrap()).unwrap().text;
+    assert!(text.contains("\nCYCLE801(20,60,0,20,20,2,2)\n"), "{text}");
+    siemens_runs_clean("grid.mpf", &text);
 }

@@ -2,22 +2,115 @@
 //! CYCLE83), reaming (G85, CYCLE85) and boring (G86, CYCLE86), at the
 //! hole's position. What a cycle cannot carry is named in a comment.
 
+use super::group::{self, Pattern};
 use super::plan::Step;
 use super::step::{feed, operation_kind};
 use super::values::Vals;
 use super::{PostError, Writer};
 use crate::stepnc::model::*;
 
-pub fn write(w: &mut Writer<'_>, s: &Step<'_>) -> Result<(), PostError> {
-    match &s.op.kind {
+pub fn write(w: &mut Writer<'_>, steps: &[&Step<'_>]) -> Result<(), PostError> {
+    let s = steps[0];
+    let cycle = cycle(w, s)?;
+    positions(w, cycle, steps)?;
+    w.emit("cycle_end.j2", Vals::new())
+}
+
+/// The hole positions after the cycle: the ones the cycle's template does
+/// not take, one by one or as the target's pattern cycle.
+fn positions(w: &mut Writer<'_>, cycle: &str, steps: &[&Step<'_>]) -> Result<(), PostError> {
+    let pts: Vec<[f64; 2]> = steps.iter().map(|s| group::xy(s)).collect();
+    let first_in_cycle = !w.post.ignores(cycle, "x");
+    if !first_in_cycle {
+        if let Some(p) = group::pattern(&pts) {
+            if let Some((name, v)) = pattern_vals(w, &p) {
+                if w.post.has(name) {
+                    return w.emit(name, v);
+                }
+            }
+        }
+    }
+    let rest = if first_in_cycle { &pts[1..] } else { &pts[..] };
+    for p in rest {
+        w.emit(
+            "hole_at.j2",
+            Vals::new()
+                .set("x", w.fmt.len(p[0]))
+                .set("y", w.fmt.len(p[1])),
+        )?;
+    }
+    Ok(())
+}
+
+fn pattern_vals(w: &Writer<'_>, p: &Pattern) -> Option<(&'static str, Vals)> {
+    let f = &w.fmt;
+    Some(match p {
+        Pattern::Row {
+            start,
+            angle,
+            spacing,
+            num,
+        } => (
+            "holes_row.j2",
+            Vals::new()
+                .set("x", f.len(start[0]))
+                .set("y", f.len(start[1]))
+                .set("angle", f.angle(*angle))
+                .set("spacing", f.len(*spacing))
+                .set("num", num.to_string()),
+        ),
+        Pattern::Circle {
+            centre,
+            radius,
+            start,
+            index,
+            num,
+        } => (
+            "holes_circle.j2",
+            Vals::new()
+                .set("cx", f.len(centre[0]))
+                .set("cy", f.len(centre[1]))
+                .set("radius", f.len(*radius))
+                .set("start", f.angle(*start))
+                .set("index", f.angle(*index))
+                .set("num", num.to_string()),
+        ),
+        Pattern::Grid {
+            origin,
+            dx,
+            dy,
+            nx,
+            ny,
+        } => (
+            "holes_grid.j2",
+            Vals::new()
+                .set("x", f.len(origin[0]))
+                .set("y", f.len(origin[1]))
+                .set("dx", f.len(*dx))
+                .set("dy", f.len(*dy))
+                .set("nx", nx.to_string())
+                .set("ny", ny.to_string()),
+        ),
+    })
+}
+
+/// Writes the cycle call; returns its template's name.
+fn cycle(w: &mut Writer<'_>, s: &Step<'_>) -> Result<&'static str, PostError> {
+    let name = match &s.op.kind {
         OperationKind::Drilling(d)
         | OperationKind::CenterDrilling(d)
         | OperationKind::CounterSinking(d) => {
             strategy_notes(w, d)?;
             match d.dwell_time_bottom.filter(|t| *t > 0.0) {
-                None => w.emit("drill.j2", base(w, s, d)?),
-                Some(t) => w.emit("drill_dwell.j2", dwell(w, base(w, s, d)?, t)),
-            }?;
+                None => {
+                    w.emit("drill.j2", base(w, s, d)?)?;
+                    "drill.j2"
+                }
+                Some(t) => {
+                    w.emit("drill_dwell.j2", dwell(w, base(w, s, d)?, t))?;
+                    "drill_dwell.j2"
+                }
+            }
         }
         OperationKind::MultistepDrilling {
             drill,
@@ -50,6 +143,7 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>) -> Result<(), PostError> {
                 .set("first", w.fmt.len(s.top - first_depth))
                 .set("step", w.fmt.len(*depth_of_step));
             w.emit("peck.j2", v)?;
+            "peck.j2"
         }
         OperationKind::Boring {
             reaming,
@@ -71,6 +165,7 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>) -> Result<(), PostError> {
             }
             let name = if stop { "bore.j2" } else { "ream.j2" };
             w.emit(name, base(w, s, drill)?)?;
+            name
         }
         OperationKind::PlaneMilling { .. }
         | OperationKind::SideMilling { .. }
@@ -82,8 +177,8 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>) -> Result<(), PostError> {
                 &format!("a {} on a round hole", operation_kind(&s.op.kind)),
             ))
         }
-    }
-    w.emit("cycle_end.j2", Vals::new())
+    };
+    Ok(name)
 }
 
 /// The values every hole cycle has.

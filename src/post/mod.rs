@@ -17,6 +17,7 @@ mod explicit;
 mod faces;
 pub mod fixture;
 pub mod frame;
+mod group;
 mod holes;
 mod milling;
 pub mod paths;

@@ -3,6 +3,7 @@
 //! over the security plane, spindle and coolant; the body comes from
 //! [`super::holes`] or [`super::milling`].
 
+use super::group::{self, Unit};
 use super::plan::{Item, Step};
 use super::values::Vals;
 use super::{holes, milling, PostError, Writer};
@@ -21,9 +22,18 @@ pub fn write_program(
             .set("title", super::values::comment_text(&project.id)),
     ))?;
     let mut errors = Vec::new();
-    for item in items {
+    for unit in group::units(items) {
+        let item = match unit {
+            Unit::Holes(steps) => {
+                if let Err(e) = write_step(w, project, &steps) {
+                    errors.push(e);
+                }
+                continue;
+            }
+            Unit::Item(item) => item,
+        };
         let r = match item {
-            Item::Step(s) => write_step(w, project, s),
+            Item::Step(s) => write_step(w, project, &[&**s]),
             Item::Stop { optional } => w.emit(
                 "stop.j2",
                 Vals::new().set("m", if *optional { "1" } else { "0" }),
@@ -40,19 +50,24 @@ pub fn write_program(
     one(w.emit("end.j2", Vals::new()))
 }
 
-fn write_step(w: &mut Writer<'_>, project: &Project, s: &Step<'_>) -> Result<(), PostError> {
-    let n = s.number;
-    w.comment(&format!(
-        "WS({n}) {} Feature={} {}",
-        s.ws.id,
-        feature_kind(&s.feature.kind),
-        s.feature.id
-    ))?;
-    w.comment(&format!(
-        "WS({n}) Operation={} {}",
-        operation_kind(&s.op.kind),
-        s.op.id
-    ))?;
+/// One workingstep, or several that make the same hole at different
+/// places (one cycle, several positions).
+fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Result<(), PostError> {
+    let s = steps[0];
+    for st in steps {
+        let n = st.number;
+        w.comment(&format!(
+            "WS({n}) {} Feature={} {}",
+            st.ws.id,
+            feature_kind(&st.feature.kind),
+            st.feature.id
+        ))?;
+        w.comment(&format!(
+            "WS({n}) Operation={} {}",
+            operation_kind(&st.op.kind),
+            st.op.id
+        ))?;
+    }
     let tool_len = tool_length(s.tool);
     let d = s.tool.body.dimension.diameter;
     w.comment(&format!(
@@ -116,7 +131,7 @@ fn write_step(w: &mut Writer<'_>, project: &Project, s: &Step<'_>) -> Result<(),
     )?;
     coolant(w, &s.op.machine_functions)?;
     match &s.feature.kind {
-        FeatureKind::RoundHole { .. } => holes::write(w, s)?,
+        FeatureKind::RoundHole { .. } => holes::write(w, steps)?,
         FeatureKind::ClosedPocket { .. } | FeatureKind::PlanarFace { .. } => milling::write(w, s)?,
         FeatureKind::OpenPocket { .. }
         | FeatureKind::Slot { .. }

@@ -12,10 +12,10 @@ macro_rules! set {
 
 type Set = &'static [(&'static str, &'static str)];
 
-const SIEMENS_840D: Set = set!("siemens840d": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "face.j2", "line.j2", "peck.j2", "pocket_rect.j2", "pocket_rect_any.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tolerance.j2", "tool_change.j2", "tool_data.j2");
-const FANUC: Set = set!("fanuc": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "line.j2", "peck.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tool_change.j2");
-const HAAS: Set = set!("haas": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "line.j2", "peck.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tool_change.j2");
-const LINUXCNC: Set = set!("linuxcnc": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "line.j2", "peck.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tool_change.j2");
+const SIEMENS_840D: Set = set!("siemens840d": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "face.j2", "hole_at.j2", "holes_circle.j2", "holes_grid.j2", "holes_row.j2", "line.j2", "peck.j2", "pocket_rect.j2", "pocket_rect_any.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tolerance.j2", "tool_change.j2", "tool_data.j2");
+const FANUC: Set = set!("fanuc": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "hole_at.j2", "line.j2", "peck.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tool_change.j2");
+const HAAS: Set = set!("haas": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "hole_at.j2", "line.j2", "peck.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tool_change.j2");
+const LINUXCNC: Set = set!("linuxcnc": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "hole_at.j2", "line.j2", "peck.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tool_change.j2");
 
 /// The templates of a dialect (by id), if it has a post.
 pub fn template_set(dialect: &str) -> Option<Set> {
