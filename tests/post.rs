@@ -280,3 +280,71 @@ fn holes_on_a_circle_and_in_a_grid() {
     assert!(text.contains("\nCYCLE801(20,60,0,20,20,2,2)\n"), "{text}");
     siemens_runs_clean("grid.mpf", &text);
 }
+
+/// Example 1 with its pocket made circular (diameter 60).
+fn ex1_round_pocket() -> cncc::stepnc::model::Project {
+    use cncc::stepnc::model::*;
+    let mut p = fixture::ex1();
+    if let FeatureKind::ClosedPocket { boundary, .. } = &mut p.features[2].kind {
+        *boundary = ClosedProfile::Circular {
+            placement: None,
+            diameter: Toleranced {
+                nominal: 60.0,
+                tolerance: Tolerance::PlusMinus {
+                    upper: 0.05,
+                    lower: 0.05,
+                    significant_digits: 3,
+                },
+            },
+        };
+    }
+    p
+}
+
+#[test]
+fn a_circular_pocket_is_pocket2_or_rings_of_arcs() {
+    let p = ex1_round_pocket();
+    let siemens = post(&p, &builtin("siemens840d").unwrap()).unwrap().text;
+    let l = lines(&siemens);
+    // PRAD 30 at (70,70), MID 6.5, CDIR 2, FAL 1, VARI 1 then 2.
+    assert!(l.contains(&"POCKET2(30,0,15,-30,,30,70,70,2400,2400,6.5,2,1,1,6.5,2400,1200)"));
+    assert!(l.contains(&"POCKET2(30,0,15,-30,,30,70,70,2400,2400,2,2,1,2,2,2400,1200)"));
+    assert!(l.contains(&"CYCLE832(0.01,102003)"));
+    siemens_runs_clean("round.mpf", &siemens);
+
+    let ngc = post(&p, &builtin("linuxcnc").unwrap()).unwrap().text;
+    assert!(ngc.lines().any(|x| x.starts_with("G2 X")));
+    let path = save("round.ngc", &ngc);
+    let err = check_clean(&path, "linuxcnc");
+    assert!(!err.contains("warning["), "{err}");
+    let oracle = common::root().join("../shared/tools/rs274-canon");
+    if oracle.exists() {
+        let o = Command::new(&oracle).arg(&path).output().unwrap();
+        assert!(
+            matches!(o.status.code(), Some(0) | Some(2)),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+}
+
+#[test]
+fn a_tool_that_does_not_cut_across_its_centre_gets_pocket3() {
+    let mut p = fixture::ex1();
+    p.tools[0].body.kind = cncc::stepnc::model::ToolBodyKind::Facemill;
+    let text = post(&p, &builtin("siemens840d").unwrap()).unwrap().text;
+    let l = lines(&text);
+    // FAL 1 FALD 0.5 (roughing), CDIR 1 conventional, VARI 11 (vertical
+    // insertion, roughing), MIDA 5 (radial depth); then the finish removes
+    // what the roughing left: FAL 1 FALD 0.5, VARI 12, MIDA 10.
+    assert!(
+        l.contains(&"POCKET3(30,0,15,-30,80,50,10,70,70,90,6.5,1,0.5,2400,2400,1,11,5,0,0,0,0,0)"),
+        "{text}"
+    );
+    assert!(
+        l.contains(&"POCKET3(30,0,15,-30,80,50,10,70,70,90,2,1,0.5,2400,2400,1,12,10,0,0,0,0,0)"),
+        "{text}"
+    );
+    assert!(l.contains(&"$TC_DP1[1,1]=140 $TC_DP3[1,1]=80 $TC_DP6[1,1]=9"));
+    assert!(text.contains("does not cut across its centre"));
+}

@@ -60,32 +60,52 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>) -> Result<(), PostError> {
         allow_bottom,
     };
     match &s.feature.kind {
-        FeatureKind::ClosedPocket { pocket, boundary } => match (&s.op.kind, boundary) {
-            (
-                OperationKind::BottomAndSideMilling { .. },
-                ClosedProfile::Rectangular {
+        FeatureKind::ClosedPocket { pocket, boundary } => {
+            let (placement, shape) = match (&s.op.kind, boundary) {
+                (
+                    OperationKind::BottomAndSideMilling { .. },
+                    ClosedProfile::Rectangular {
+                        placement,
+                        width,
+                        length,
+                    },
+                ) => (
                     placement,
-                    width,
-                    length,
-                },
-            ) => {
-                let frame = match placement {
-                    Some(p) => s.frame.then(&Frame::from_placement(p)),
-                    None => s.frame,
-                };
-                let geo = pocket::RectPocket {
-                    length: length.nominal,
-                    width: width.nominal,
-                    corner_radius: pocket.orthogonal_radius.as_ref().map_or(0.0, |r| r.nominal),
-                };
-                pocket_notes(w, s, pocket)?;
-                super::pockets::write(w, s, &cut, &geo, &frame)
-            }
-            _ => Err(PostError::unsupported(
-                &s.feature.id,
-                "a pocket that is not rectangular, or not cut by bottom and side milling,",
-            )),
-        },
+                    pocket::Shape::Rect(pocket::RectPocket {
+                        length: length.nominal,
+                        width: width.nominal,
+                        corner_radius: pocket
+                            .orthogonal_radius
+                            .as_ref()
+                            .map_or(0.0, |r| r.nominal),
+                    }),
+                ),
+                (
+                    OperationKind::BottomAndSideMilling { .. },
+                    ClosedProfile::Circular {
+                        placement,
+                        diameter,
+                    },
+                ) => (
+                    placement,
+                    pocket::Shape::Circle {
+                        diameter: diameter.nominal,
+                    },
+                ),
+                _ => {
+                    return Err(PostError::unsupported(
+                        &s.feature.id,
+                        "a pocket that is not rectangular or circular, or not cut by bottom and side milling,",
+                    ))
+                }
+            };
+            let frame = match placement {
+                Some(p) => s.frame.then(&Frame::from_placement(p)),
+                None => s.frame,
+            };
+            pocket_notes(w, s, pocket)?;
+            super::pockets::write(w, s, &cut, &shape, &frame)
+        }
         FeatureKind::PlanarFace { .. } => super::faces::write(w, s, &cut),
         _ => Err(PostError::unsupported(&s.feature.id, "this feature")),
     }

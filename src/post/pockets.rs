@@ -1,11 +1,13 @@
-//! A closed rectangular pocket: POCKET1 (centre-cutting tool) or POCKET3
-//! (any tool, insertion strategy, floor allowance) where the target has
-//! them (reference/posting.md, NIST STEPNC++'s parameter mapping), else
-//! explicit contour-parallel toolpaths from the inside out.
+//! A closed pocket, rectangular or circular: POCKET1/POCKET2 (centre-
+//! cutting tool) or POCKET3/POCKET4 (any tool, insertion strategy, floor
+//! allowance) where the target has them (reference/posting.md, NIST
+//! STEPNC++'s parameter mapping), else explicit contour-parallel
+//! toolpaths from the inside out. A comment before the call says which
+//! kind of cycle was chosen and why.
 
 use super::frame::Frame;
 use super::milling::{explicit_moves, layers, spindle_cw, Cut};
-use super::paths::pocket::{self, PocketCut, RectPocket};
+use super::paths::pocket::{self, PocketCut, Shape};
 use super::plan::Step;
 use super::step::{feed, spindle_rpm};
 use super::values::Vals;
@@ -16,7 +18,7 @@ pub fn write(
     w: &mut Writer<'_>,
     s: &Step<'_>,
     c: &Cut<'_>,
-    geo: &RectPocket,
+    shape: &Shape,
     frame: &Frame,
 ) -> Result<(), PostError> {
     let d = s.tool.body.dimension.diameter;
@@ -38,17 +40,21 @@ pub fn write(
         clear: s.clear,
         r_plane: s.top + s.sdis,
     };
-    pocket::check(geo, &pcut).map_err(|e| PostError::geometry(&s.feature.id, e))?;
+    pocket::check(shape, &pcut).map_err(|e| PostError::geometry(&s.feature.id, e))?;
     let centre_cutting = cuts_across_centre(&s.tool.body.kind);
-    let use_p1 = w.post.has("pocket_rect.j2") && centre_cutting;
-    if !use_p1 && !w.post.has("pocket_rect_any.j2") {
+    let (centre_cycle, any_cycle) = match shape {
+        Shape::Rect(_) => ("pocket_rect.j2", "pocket_rect_any.j2"),
+        Shape::Circle { .. } => ("pocket_circ.j2", "pocket_circ_any.j2"),
+    };
+    let use_p1 = w.post.has(centre_cycle) && centre_cutting;
+    if !use_p1 && !w.post.has(any_cycle) {
         if !matches!(
             c.strategy,
             None | Some(Strategy::ContourParallel { .. }) | Some(Strategy::ContourSpiral { .. })
         ) {
             w.not_carried("the operation's strategy: the pocket is cleared contour-parallel")?;
         }
-        return explicit_moves(w, s, frame, |sink| pocket::moves(geo, &pcut, sink));
+        return explicit_moves(w, s, frame, |sink| pocket::moves(shape, &pcut, sink));
     }
     let f = w.fmt.feed(feed(s)?);
     let v = Vals::new()
@@ -56,25 +62,29 @@ pub fn write(
         .set("top", w.fmt.len(s.top))
         .set("sdis", w.fmt.len(s.sdis))
         .set("bottom", w.fmt.len(s.bottom))
-        .set("leng", w.fmt.len(geo.length))
-        .set("wid", w.fmt.len(geo.width))
-        .set("crad", w.fmt.len(geo.corner_radius))
         .set("cx", w.fmt.len(frame.origin[0]))
         .set("cy", w.fmt.len(frame.origin[1]))
-        .set("angle", w.fmt.angle(frame.angle_deg().rem_euclid(180.0)))
         .set("mid", w.fmt.len(c.ap.unwrap_or(s.top - s.bottom)))
         .set("fal", w.fmt.len(fal))
         .set("ffp1", f.clone())
         .set("ffd", f.clone());
+    let v = match shape {
+        Shape::Rect(r) => v
+            .set("leng", w.fmt.len(r.length))
+            .set("wid", w.fmt.len(r.width))
+            .set("crad", w.fmt.len(r.corner_radius))
+            .set("angle", w.fmt.angle(frame.angle_deg().rem_euclid(180.0))),
+        Shape::Circle { diameter } => v.set("prad", w.fmt.len(diameter / 2.0)),
+    };
     let units = match (c.finish, s.roughed_by.is_some()) {
         (false, _) => 1,
         (true, true) => 2,
         (true, false) => 0,
     };
     if use_p1 {
-        w.comment("POCKET1: the tool cuts across its centre")?;
+        w.comment("the tool cuts across its centre: the cycle for centre-cutting tools")?;
         if !c.finish && c.allow_bottom > 0.0 {
-            w.not_carried("the floor allowance of the roughing pass (POCKET1 has none)")?;
+            w.not_carried("the floor allowance of the roughing pass (the cycle has none)")?;
         }
         let v = v
             .set("cdir", if ccw { "3" } else { "2" })
@@ -82,9 +92,9 @@ pub fn write(
             .set("midf", w.fmt.len(c.ap.unwrap_or(s.top - s.bottom)))
             .set("ffp2", f)
             .set("ssf", w.fmt.feed(spindle_rpm(s)?.abs()));
-        return w.emit("pocket_rect.j2", v);
+        return w.emit(centre_cycle, v);
     }
-    w.comment("POCKET3: the tool does not cut across its centre")?;
+    w.comment("the tool does not cut across its centre: the cycle for any tool")?;
     let (tens, rad1, dp1) = insertion(c.approach);
     let cdir = match cutmode(c.strategy) {
         Some(CutMode::Climb) => "0",
@@ -99,7 +109,7 @@ pub fn write(
         .set("mida", w.fmt.len(pcut.stepover))
         .set("rad1", w.fmt.len(rad1))
         .set("dp1", w.fmt.len(dp1));
-    w.emit("pocket_rect_any.j2", v)
+    w.emit(any_cycle, v)
 }
 
 fn allowances(op: &Operation) -> (f64, f64) {

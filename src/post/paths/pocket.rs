@@ -1,4 +1,4 @@
-//! A closed rectangular pocket (with corner radius) cleared
+//! A closed pocket, rectangular (with corner radius) or circular, cleared
 //! contour-parallel from the inside out: per layer, a pass along the
 //! centre line, then offset loops of the boundary growing outwards by the
 //! stepover up to the finishing offset (tool radius + side allowance).
@@ -14,6 +14,55 @@ pub struct RectPocket {
     pub length: f64,
     pub width: f64,
     pub corner_radius: f64,
+}
+
+/// A pocket's outline, centred at the origin of its plane.
+#[derive(Clone, Copy, Debug)]
+pub enum Shape {
+    Rect(RectPocket),
+    Circle { diameter: f64 },
+}
+
+impl Shape {
+    /// Half the smaller size: the offset at which nothing is left.
+    fn half(&self) -> f64 {
+        match self {
+            Shape::Rect(p) => p.width.min(p.length) / 2.0,
+            Shape::Circle { diameter } => diameter / 2.0,
+        }
+    }
+
+    /// Half the length of the centre line (0 for a circle or a square).
+    fn centre_half(&self) -> f64 {
+        match self {
+            Shape::Rect(p) => (p.length / 2.0 - self.half()).max(0.0),
+            Shape::Circle { .. } => 0.0,
+        }
+    }
+
+    fn offset_loop(&self, d: f64) -> Vec<Seg> {
+        match self {
+            Shape::Rect(p) => offset_loop(p, d),
+            Shape::Circle { diameter } => circle_loop(diameter / 2.0 - d),
+        }
+    }
+}
+
+/// A full circle of radius `r` about the origin from `(r, 0)`, as two
+/// half arcs, counter-clockwise.
+pub fn circle_loop(r: f64) -> Vec<Seg> {
+    vec![
+        Seg {
+            from: [r, 0.0],
+            to: [-r, 0.0],
+            arc: Some(([0.0, 0.0], true)),
+        },
+        Seg {
+            from: [-r, 0.0],
+            to: [r, 0.0],
+            arc: Some(([0.0, 0.0], true)),
+        },
+    ]
 }
 
 /// How the pocket is cut.
@@ -34,20 +83,29 @@ pub struct PocketCut {
 }
 
 /// Why a pocket cannot be cut as asked.
-pub fn check(p: &RectPocket, c: &PocketCut) -> Result<(), String> {
+pub fn check(shape: &Shape, c: &PocketCut) -> Result<(), String> {
     let d = c.tool_radius + c.allowance_side;
-    if 2.0 * d > p.width.min(p.length) + 1e-9 {
+    if d > shape.half() + 1e-9 {
         return Err(format!(
-            "the tool (radius {}) with side allowance {} does not fit the pocket's width {}",
-            c.tool_radius, c.allowance_side, p.width
+            "the tool (radius {}) with side allowance {} does not fit the pocket (half width {})",
+            c.tool_radius,
+            c.allowance_side,
+            shape.half()
         ));
     }
+    let Shape::Rect(p) = shape else {
+        return check_stepover(c);
+    };
     if c.tool_radius > p.corner_radius + 1e-9 && p.corner_radius > 0.0 {
         return Err(format!(
             "the tool radius {} is larger than the pocket's corner radius {}",
             c.tool_radius, p.corner_radius
         ));
     }
+    check_stepover(c)
+}
+
+fn check_stepover(c: &PocketCut) -> Result<(), String> {
     if c.stepover <= 1e-9 || c.stepover > 2.0 * c.tool_radius + 1e-9 {
         return Err(format!(
             "the stepover {} must be more than 0 and at most the tool diameter {}",
@@ -100,8 +158,8 @@ fn push_line(segs: &mut Vec<Seg>, cur: &mut P2, to: P2) {
 }
 
 /// The offsets of the loops of a cleared layer, innermost first.
-pub fn loop_offsets(p: &RectPocket, c: &PocketCut) -> Vec<f64> {
-    let half = p.width.min(p.length) / 2.0;
+pub fn loop_offsets(shape: &Shape, c: &PocketCut) -> Vec<f64> {
+    let half = shape.half();
     let last = c.tool_radius + c.allowance_side;
     let mut out = Vec::new();
     let mut d = last;
@@ -114,11 +172,10 @@ pub fn loop_offsets(p: &RectPocket, c: &PocketCut) -> Vec<f64> {
 }
 
 /// All the moves, from above the pocket back to the clearance plane.
-pub fn moves(p: &RectPocket, c: &PocketCut, sink: &mut MoveSink<'_>) {
-    let half = p.width.min(p.length) / 2.0;
-    let centre_x = (p.length / 2.0 - half).max(0.0);
+pub fn moves(shape: &Shape, c: &PocketCut, sink: &mut MoveSink<'_>) {
+    let centre_x = shape.centre_half();
     let start: P2 = [-centre_x, 0.0];
-    let offsets = loop_offsets(p, c);
+    let offsets = loop_offsets(shape, c);
     let last = c.tool_radius + c.allowance_side;
     sink.rapid(start, c.clear);
     for (i, &z) in c.levels.iter().enumerate() {
@@ -128,11 +185,13 @@ pub fn moves(p: &RectPocket, c: &PocketCut, sink: &mut MoveSink<'_>) {
         let loops: Vec<f64> = if c.walls_only_above_bottom && !bottom {
             vec![last]
         } else {
-            sink.line([centre_x, 0.0], z);
+            if centre_x > 0.0 {
+                sink.line([centre_x, 0.0], z);
+            }
             offsets.clone()
         };
         for d in loops {
-            let mut l = offset_loop(p, d);
+            let mut l = shape.offset_loop(d);
             if !c.ccw {
                 l = reversed(&l);
             }
@@ -165,12 +224,16 @@ mod tests {
     use crate::post::frame::Frame;
     use crate::post::paths::Move;
 
-    fn ex1() -> RectPocket {
+    fn rect() -> RectPocket {
         RectPocket {
             length: 80.0,
             width: 50.0,
             corner_radius: 10.0,
         }
+    }
+
+    fn ex1() -> Shape {
+        Shape::Rect(rect())
     }
 
     fn cut(allow: f64, step: f64) -> PocketCut {
@@ -188,7 +251,7 @@ mod tests {
 
     #[test]
     fn the_last_loop_leaves_the_allowance_at_the_wall() {
-        let l = offset_loop(&ex1(), 10.0);
+        let l = offset_loop(&rect(), 10.0);
         // Corner radius 10 - 10 = 0: a sharp rectangle 60 x 30 about the centre.
         let xs: Vec<f64> = l.iter().map(|s| s.to[0]).collect();
         let max = xs.iter().cloned().fold(f64::MIN, f64::max);
@@ -196,7 +259,7 @@ mod tests {
         assert!(l.iter().all(|s| s.arc.is_none()));
         assert_eq!(l.last().unwrap().to, [30.0, 0.0]);
         // At offset 9 (the finishing pass) the corners are arcs of radius 1.
-        let f = offset_loop(&ex1(), 9.0);
+        let f = offset_loop(&rect(), 9.0);
         let arcs: Vec<_> = f.iter().filter_map(|s| s.arc).collect();
         assert_eq!(arcs.len(), 4);
         assert_eq!(arcs[0].0, [30.0, 15.0]);
@@ -238,5 +301,29 @@ mod tests {
         }
         assert_eq!(lowest, -30.0);
         assert!(matches!(sink.moves.last(), Some(Move::Rapid(p)) if p[2] == 30.0));
+    }
+
+    #[test]
+    fn a_circular_pocket_is_cleared_in_rings_from_the_centre() {
+        let shape = Shape::Circle { diameter: 60.0 };
+        let c = cut(0.5, 8.0);
+        assert_eq!(loop_offsets(&shape, &c), vec![25.5, 17.5, 9.5]);
+        let frame = Frame::identity();
+        let mut sink = MoveSink::new(&frame);
+        moves(&shape, &c, &mut sink);
+        let arcs = sink
+            .moves
+            .iter()
+            .filter(|m| matches!(m, Move::Arc { .. }))
+            .count();
+        assert_eq!(arcs, 2 * 3 * 2); // two halves, three rings, two layers
+        for m in &sink.moves {
+            let p = match m {
+                Move::Rapid(p) | Move::Line(p) => *p,
+                Move::Arc { to, .. } => *to,
+            };
+            assert!((p[0] * p[0] + p[1] * p[1]).sqrt() <= 20.5 + 1e-9, "{p:?}");
+        }
+        assert!(check(&Shape::Circle { diameter: 17.0 }, &c).is_err());
     }
 }
