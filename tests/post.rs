@@ -348,3 +348,99 @@ fn a_tool_that_does_not_cut_across_its_centre_gets_pocket3() {
     assert!(l.contains(&"$TC_DP1[1,1]=140 $TC_DP3[1,1]=80 $TC_DP6[1,1]=9"));
     assert!(text.contains("does not cut across its centre"));
 }
+
+/// Example 1 plus a straight slot with radiused ends, 24 wide, travel 40
+/// along X from (50, 10), 5 deep, roughed with the 18 mm end mill.
+fn ex1_with_slot() -> cncc::stepnc::model::Project {
+    use cncc::stepnc::model::*;
+    let mut p = fixture::ex1();
+    let tol = |v: f64| Toleranced {
+        nominal: v,
+        tolerance: Tolerance::PlusMinus {
+            upper: 0.1,
+            lower: 0.1,
+            significant_digits: 3,
+        },
+    };
+    let mut f = p.features[2].clone();
+    f.id = "SLOT1".into();
+    f.placement.location.xyz = [50.0, 10.0, 0.0];
+    f.placement.ref_direction.as_mut().unwrap().ratios = [1.0, 0.0, 0.0];
+    f.depth.position.location.xyz = [0.0, 0.0, -5.0];
+    f.kind = FeatureKind::Slot {
+        course_of_travel: TravelPath::Linear {
+            placement: None,
+            distance: tol(40.0),
+            direction: p.features[0].placement.ref_direction.clone().unwrap(),
+        },
+        swept_shape: OpenProfile::RoundedU {
+            placement: None,
+            width: tol(24.0),
+        },
+        end_conditions: vec![SlotEnd::Radiused, SlotEnd::Radiused],
+    };
+    p.features.push(f);
+    let mut op = p.operations[3].clone();
+    op.id = "ROUGH SLOT1".into();
+    if let OperationKind::BottomAndSideMilling {
+        axial_cutting_depth,
+        allowance_side,
+        allowance_bottom,
+        ..
+    } = &mut op.kind
+    {
+        *axial_cutting_depth = Some(2.5);
+        *allowance_side = None;
+        *allowance_bottom = None;
+    }
+    p.operations.push(op);
+    p.main_workplan
+        .elements
+        .push(Executable::Workingstep(MachiningWorkingstep {
+            id: "WS SLOT1".into(),
+            secplane: p.main_workplan.setup.as_ref().unwrap().secplane.clone(),
+            feature: FeatureId(3),
+            operation: OperationId(5),
+            effect: None,
+        }));
+    p
+}
+
+#[test]
+fn a_slot_becomes_an_explicit_toolpath_inside_its_outline() {
+    let p = ex1_with_slot();
+    for id in ["fanuc", "linuxcnc", "siemens840d"] {
+        let text = post(&p, &builtin(id).unwrap()).unwrap().text;
+        let slot = text.split_once("WS SLOT1").unwrap().1;
+        let (mut lowest, mut moves) = (f64::MAX, 0);
+        for line in slot.lines().filter(|l| l.starts_with("G1 ")) {
+            let w = |c: char| {
+                line.split_whitespace()
+                    .find(|t| t.starts_with(c))
+                    .map(|t| t[1..].trim_end_matches('.').parse::<f64>().unwrap())
+                    .unwrap()
+            };
+            let (x, y) = (w('X'), w('Y'));
+            lowest = lowest.min(w('Z'));
+            moves += 1;
+            // Inside the stadium less the tool radius: centre line from
+            // x 50 to 90 at y 10, half width 12 - 9 = 3.
+            let dx = (x - 70.0).abs() - 20.0;
+            let off = if dx > 0.0 {
+                (dx * dx + (y - 10.0).powi(2)).sqrt()
+            } else {
+                (y - 10.0).abs()
+            };
+            assert!(off <= 3.0 + 1e-3, "{id}: {line}");
+        }
+        assert_eq!(lowest, -5.0, "{id}");
+        assert!(moves > 6, "{id}");
+        match id {
+            "siemens840d" => siemens_runs_clean("slot.mpf", &text),
+            _ => {
+                let err = check_clean(&save(&format!("slot-{id}.nc"), &text), id);
+                assert!(!err.contains("warning["), "{err}");
+            }
+        }
+    }
+}

@@ -104,9 +104,10 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>) -> Result<(), PostError> {
                 None => s.frame,
             };
             pocket_notes(w, s, pocket)?;
-            super::pockets::write(w, s, &cut, &shape, &frame)
+            super::pockets::write(w, s, &cut, &shape, &frame, true)
         }
         FeatureKind::PlanarFace { .. } => super::faces::write(w, s, &cut),
+        FeatureKind::Slot { .. } => super::slots::write(w, s, &cut),
         _ => Err(PostError::unsupported(&s.feature.id, "this feature")),
     }
 }

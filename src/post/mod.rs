@@ -24,6 +24,7 @@ pub mod paths;
 pub mod plan;
 mod pockets;
 pub mod render;
+mod slots;
 mod step;
 mod templates;
 pub mod values;

@@ -20,6 +20,7 @@ pub fn write(
     c: &Cut<'_>,
     shape: &Shape,
     frame: &Frame,
+    cycles: bool,
 ) -> Result<(), PostError> {
     let d = s.tool.body.dimension.diameter;
     let cw = spindle_cw(s)?;
@@ -46,8 +47,8 @@ pub fn write(
         Shape::Rect(_) => ("pocket_rect.j2", "pocket_rect_any.j2"),
         Shape::Circle { .. } => ("pocket_circ.j2", "pocket_circ_any.j2"),
     };
-    let use_p1 = w.post.has(centre_cycle) && centre_cutting;
-    if !use_p1 && !w.post.has(any_cycle) {
+    let use_p1 = cycles && w.post.has(centre_cycle) && centre_cutting;
+    if !use_p1 && !(cycles && w.post.has(any_cycle)) {
         if !matches!(
             c.strategy,
             None | Some(Strategy::ContourParallel { .. }) | Some(Strategy::ContourSpiral { .. })

@@ -132,9 +132,10 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
     coolant(w, &s.op.machine_functions)?;
     match &s.feature.kind {
         FeatureKind::RoundHole { .. } => holes::write(w, steps)?,
-        FeatureKind::ClosedPocket { .. } | FeatureKind::PlanarFace { .. } => milling::write(w, s)?,
+        FeatureKind::ClosedPocket { .. }
+        | FeatureKind::PlanarFace { .. }
+        | FeatureKind::Slot { .. } => milling::write(w, s)?,
         FeatureKind::OpenPocket { .. }
-        | FeatureKind::Slot { .. }
         | FeatureKind::Step { .. }
         | FeatureKind::GeneralOutsideProfile { .. }
         | FeatureKind::ToolpathFeature
