@@ -8,7 +8,7 @@ mod common;
 
 use cncc::dialect::builtin;
 use cncc::post::{fixture, post};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 fn posted(id: &str) -> cncc::post::Posted {
@@ -41,7 +41,7 @@ fn siemens_runs_clean(name: &str, text: &str) {
     assert!(!err.contains("warning["), "{err}");
 }
 
-fn check_clean(path: &PathBuf, dialect: &str) -> String {
+fn check_clean(path: &Path, dialect: &str) -> String {
     let o = common::cncc(&["check", "--dialect", dialect, path.to_str().unwrap()]);
     let err = common::stderr(&o);
     assert_eq!(o.status.code(), Some(0), "{dialect}: {err}");

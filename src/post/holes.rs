@@ -3,8 +3,9 @@
 //! hole's position. What a cycle cannot carry is named in a comment.
 
 use super::group::{self, Pattern};
+use super::names::operation_kind;
 use super::plan::Step;
-use super::step::{feed, operation_kind};
+use super::step::feed;
 use super::values::Vals;
 use super::{PostError, Writer};
 use crate::stepnc::model::*;

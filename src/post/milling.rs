@@ -3,9 +3,10 @@
 //! planar faces (CYCLE71, or explicit zigzag toolpaths).
 
 use super::frame::Frame;
+use super::names::operation_kind;
 use super::paths::{self, pocket, MoveSink};
 use super::plan::Step;
-use super::step::{feed, operation_kind, spindle_rpm};
+use super::step::{feed, spindle_rpm};
 use super::{explicit, PostError, Writer};
 use crate::stepnc::model::*;
 
@@ -45,7 +46,7 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>) -> Result<(), PostError> {
                 &format!(
                     "a {} on a {}",
                     operation_kind(&s.op.kind),
-                    super::step::feature_kind(&s.feature.kind)
+                    super::names::feature_kind(&s.feature.kind)
                 ),
             ))
         }

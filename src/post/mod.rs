@@ -20,6 +20,7 @@ pub mod frame;
 mod group;
 mod holes;
 mod milling;
+mod names;
 pub mod paths;
 pub mod plan;
 mod pockets;

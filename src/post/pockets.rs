@@ -48,7 +48,8 @@ pub fn write(
         Shape::Circle { .. } => ("pocket_circ.j2", "pocket_circ_any.j2"),
     };
     let use_p1 = cycles && w.post.has(centre_cycle) && centre_cutting;
-    if !use_p1 && !(cycles && w.post.has(any_cycle)) {
+    let use_p3 = cycles && w.post.has(any_cycle);
+    if !use_p1 && !use_p3 {
         if !matches!(
             c.strategy,
             None | Some(Strategy::ContourParallel { .. }) | Some(Strategy::ContourSpiral { .. })
