@@ -444,3 +444,96 @@ fn a_slot_becomes_an_explicit_toolpath_inside_its_outline() {
         }
     }
 }
+
+#[test]
+fn dwell_peck_and_bore_cycles_on_every_target() {
+    use cncc::stepnc::model::*;
+    let mut p = fixture::ex1();
+    // Drill with a 0.5 s dwell; ream becomes boring with a spindle stop;
+    // add a multistep drilling (first 6, steps 5) before them.
+    if let OperationKind::Drilling(d) = &mut p.operations[1].kind {
+        d.dwell_time_bottom = Some(0.5);
+        d.strategy = None;
+    }
+    if let OperationKind::Boring { reaming, .. } = &mut p.operations[2].kind {
+        *reaming = false;
+    }
+    let mut peck = p.operations[1].clone();
+    peck.id = "PECK HOLE1".into();
+    peck.kind = OperationKind::MultistepDrilling {
+        drill: DrillCommon::default(),
+        retract_distance: 1.0,
+        first_depth: 6.0,
+        depth_of_step: 5.0,
+        dwell_time_step: None,
+    };
+    p.operations.push(peck);
+    p.main_workplan.elements.insert(
+        1,
+        Executable::Workingstep(MachiningWorkingstep {
+            id: "WS PECK HOLE1".into(),
+            secplane: p.main_workplan.setup.as_ref().unwrap().secplane.clone(),
+            feature: FeatureId(1),
+            operation: OperationId(5),
+            effect: None,
+        }),
+    );
+    let want = [
+        (
+            "siemens840d",
+            [
+                "MCALL CYCLE83(30,0,10,-30,,-6,,5,0,0,1,1)",
+                "MCALL CYCLE82(30,0,10,-30,,0.5)",
+                "MCALL CYCLE86(30,0,10,-30,,0,3,0,0,0,0)",
+            ],
+        ),
+        (
+            "fanuc",
+            [
+                "G98 G83 X20. Y60. Z-30. R10. Q5. F1800",
+                "G98 G82 X20. Y60. Z-30. R10. P500 F1800",
+                "G98 G86 X20. Y60. Z-30. R10. P0 F1800",
+            ],
+        ),
+        (
+            "haas",
+            [
+                "G98 G83 X20. Y60. Z-30. R10. Q5. F1800",
+                "G98 G82 X20. Y60. Z-30. R10. P500 F1800",
+                "G98 G86 X20. Y60. Z-30. R10. P0 F1800",
+            ],
+        ),
+        (
+            "linuxcnc",
+            [
+                "G98 G83 X20 Y60 Z-30 R10 Q5 F1800",
+                "G98 G82 X20 Y60 Z-30 R10 P0.5 F1800",
+                "G98 G86 X20 Y60 Z-30 R10 P0 F1800",
+            ],
+        ),
+    ];
+    for (id, cycles) in want {
+        let posted = post(&p, &builtin(id).unwrap()).unwrap_or_else(|e| panic!("{id}: {e:#?}"));
+        let l = lines(&posted.text);
+        for c in cycles {
+            assert!(l.contains(&c), "{id}: {c}\n{}", posted.text);
+        }
+        // The peck's retract distance and, where the cycle pecks evenly,
+        // its first depth are named.
+        assert!(
+            posted.text.contains("NOT POSTED: retract distance 1 mm"),
+            "{id}"
+        );
+        assert_eq!(
+            posted.text.contains("NOT POSTED: first depth 6 mm"),
+            id != "siemens840d",
+            "{id}"
+        );
+        if id == "siemens840d" {
+            siemens_runs_clean("cycles.mpf", &posted.text);
+        } else {
+            let err = check_clean(&save(&format!("cycles-{id}.nc"), &posted.text), id);
+            assert!(!err.contains("warning["), "{id}: {err}");
+        }
+    }
+}

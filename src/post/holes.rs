@@ -5,7 +5,7 @@
 use super::group::{self, Pattern};
 use super::names::operation_kind;
 use super::plan::Step;
-use super::step::feed;
+use super::step::{feed, spindle_rpm};
 use super::values::Vals;
 use super::{PostError, Writer};
 use crate::stepnc::model::*;
@@ -154,19 +154,27 @@ fn cycle(w: &mut Writer<'_>, s: &Step<'_>) -> Result<&'static str, PostError> {
             waiting_position,
         } => {
             strategy_notes(w, drill)?;
-            if drill.dwell_time_bottom.is_some_and(|t| t > 0.0) {
-                w.not_carried("dwell at the bottom of a reaming or boring pass")?;
+            let stop = *spindle_stop_at_bottom && !reaming;
+            if !stop && drill.dwell_time_bottom.is_some_and(|t| t > 0.0) {
+                w.not_carried("dwell at the bottom of a reaming pass")?;
             }
             if depth_of_testcut.is_some() || waiting_position.is_some() {
                 w.not_carried("test cut depth / waiting position")?;
             }
-            let stop = *spindle_stop_at_bottom && !reaming;
             if *spindle_stop_at_bottom && *reaming {
                 w.not_carried("spindle stop at the bottom of the reaming pass (the reaming cycle feeds out turning)")?;
             }
-            let name = if stop { "bore.j2" } else { "ream.j2" };
-            w.emit(name, base(w, s, drill)?)?;
-            name
+            if stop {
+                // The spindle direction to restore after the oriented stop.
+                let sdir = if spindle_rpm(s)? >= 0.0 { "3" } else { "4" };
+                let t = drill.dwell_time_bottom.unwrap_or(0.0).max(0.0);
+                let v = dwell(w, base(w, s, drill)?.set("sdir", sdir), t);
+                w.emit("bore.j2", v)?;
+                "bore.j2"
+            } else {
+                w.emit("ream.j2", base(w, s, drill)?)?;
+                "ream.j2"
+            }
         }
         OperationKind::PlaneMilling { .. }
         | OperationKind::SideMilling { .. }
