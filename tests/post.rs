@@ -41,6 +41,23 @@ fn siemens_runs_clean(name: &str, text: &str) {
     assert!(!err.contains("warning["), "{err}");
 }
 
+/// LinuxCNC's own interpreter runs the program without error (skipped,
+/// with a note, where it is not installed).
+fn runs_in_rs274(path: &Path) {
+    let oracle = common::root().join("../shared/tools/rs274-canon");
+    if !oracle.exists() {
+        eprintln!("note: ../shared/tools/rs274-canon is absent; not running LinuxCNC");
+        return;
+    }
+    let ngc = path.with_extension("ngc");
+    std::fs::copy(path, &ngc).unwrap();
+    let o = Command::new(&oracle).arg(&ngc).output().unwrap();
+    match o.status.code() {
+        Some(2) => eprintln!("note: rs274 is not installed; not running LinuxCNC"),
+        c => assert_eq!(c, Some(0), "rs274: {}", String::from_utf8_lossy(&o.stderr)),
+    }
+}
+
 fn check_clean(path: &Path, dialect: &str) -> String {
     let o = common::cncc(&["check", "--dialect", dialect, path.to_str().unwrap()]);
     let err = common::stderr(&o);
@@ -438,8 +455,12 @@ fn a_slot_becomes_an_explicit_toolpath_inside_its_outline() {
         match id {
             "siemens840d" => siemens_runs_clean("slot.mpf", &text),
             _ => {
-                let err = check_clean(&save(&format!("slot-{id}.nc"), &text), id);
+                let path = save(&format!("slot-{id}.nc"), &text);
+                let err = check_clean(&path, id);
                 assert!(!err.contains("warning["), "{err}");
+                if id == "linuxcnc" {
+                    runs_in_rs274(&path);
+                }
             }
         }
     }
@@ -532,8 +553,12 @@ fn dwell_peck_and_bore_cycles_on_every_target() {
         if id == "siemens840d" {
             siemens_runs_clean("cycles.mpf", &posted.text);
         } else {
-            let err = check_clean(&save(&format!("cycles-{id}.nc"), &posted.text), id);
+            let path = save(&format!("cycles-{id}.nc"), &posted.text);
+            let err = check_clean(&path, id);
             assert!(!err.contains("warning["), "{id}: {err}");
+            if id == "linuxcnc" {
+                runs_in_rs274(&path);
+            }
         }
     }
 }
