@@ -83,6 +83,19 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = Format::Human)]
         format: Format,
     },
+    /// Post a STEP-NC feature file (ISO 14649) as a program for a target
+    /// dialect, with the target's canned cycles.
+    Post {
+        file: PathBuf,
+        /// The target dialect.
+        #[arg(long)]
+        to: String,
+        /// Write here (whole or not at all) instead of stdout.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Format::Human)]
+        format: Format,
+    },
     /// Run a program and print its canonical machining calls, one per line,
     /// as LinuxCNC's rs274 prints them.
     Canon {

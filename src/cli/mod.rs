@@ -8,6 +8,7 @@ pub mod info;
 pub mod ir;
 pub mod output;
 pub mod port;
+pub mod post;
 pub mod raise;
 
 use args::{Cli, Command, Format};
@@ -19,6 +20,7 @@ pub fn run(cli: Cli) -> i32 {
         Command::Check { format, .. }
         | Command::Ir { format, .. }
         | Command::Port { format, .. }
+        | Command::Post { format, .. }
         | Command::Canon { format, .. }
         | Command::Stepnc { format, .. } => *format,
         _ => Format::Human,
@@ -69,6 +71,12 @@ pub fn run(cli: Cli) -> i32 {
                 format: *format,
             },
         ),
+        Command::Post {
+            file,
+            to,
+            output,
+            format,
+        } => post::run(&mut ctx, file, to, output.as_deref(), *format),
         Command::Canon {
             file,
             dialect,

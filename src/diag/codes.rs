@@ -166,6 +166,27 @@ codes! {
     InexactNumber = "E0603", "inexact-number", Error,
         "a number the target dialect cannot write exactly",
         "The value has more decimal places than the target writes (its least input increment), or a conversion (such as a dwell from seconds to whole milliseconds) would not be exact. cncc never rounds silently: round the value in the source, or choose a target spec with more places.";
+    PostUnsupported = "E0900", "post-unsupported", Error,
+        "a STEP-NC feature, operation or executable the post cannot write for this target",
+        "The post-processor has no cycle and no explicit toolpath generator for this combination of feature and operation on the target dialect (or the workplan holds an executable it cannot post). Choose another target, or change the feature or operation in the STEP-NC file.";
+    PostBadProject = "E0901", "post-bad-project", Error,
+        "a STEP-NC project that lacks what posting needs",
+        "Posting needs, for each machining workingstep, its feature, operation and tool, a feed and a spindle speed (or what they can be computed from), and planes in a sensible order. The message names the entity and what is missing or inconsistent.";
+    PostGeometry = "E0902", "post-geometry", Error,
+        "a feature the tool cannot machine as asked",
+        "The tool does not fit the feature (diameter against width or corner radius), or the stepover is not between zero and the tool diameter. Choose a smaller tool or change the strategy in the STEP-NC file.";
+    PostTemplate = "E0903", "post-template", Error,
+        "a post template that fails or drops a value",
+        "A template in posts/<dialect>/ asked for a value it was not given, or did not use a value it was given without declaring it in its first line (`{#- unused: name -#}`). This is a bug in the post-processor: please report it.";
+    PostReadBack = "E0904", "post-read-back", Error,
+        "a posted program that does not read back cleanly",
+        "cncc reads every program it posts with the target's own front end before writing it. This one gave an error, shown in the message: a bug in the post-processor or its templates; please report it.";
+    PostNoTarget = "E0905", "post-no-target", Error,
+        "a target dialect with no post-processor templates",
+        "`cncc post` writes with the templates in posts/<dialect>/. This dialect has none yet (Heidenhain waits for its front end). Choose siemens840d, fanuc, haas or linuxcnc.";
+    PostNotCarried = "W0900", "post-not-carried", Warning,
+        "a STEP-NC value the target's cycle or toolpath cannot carry",
+        "The posted program cannot express this value (a drilling strategy's reduced feeds, a spindle stop at the bottom of a reaming pass...). It is named in a comment in the program at the workingstep it belongs to, so nothing is dropped silently; check whether the machining still meets the plan.";
     LengthWithoutPoint = "W0001", "length-without-decimal-point", Warning,
         "a length written without a decimal point",
         "With the decimal-point rule of this dialect (Fanuc parameter 3401#0 = 0), `X10` means 10 least input increments (0.010 mm or 0.0010 in), not 10 mm. Write `X10.` if whole units are meant. Load a spec with `integer-lengths=\"units\"` for a control set to calculator-type input.";

@@ -1,0 +1,58 @@
+//! `cncc post FILE.stp --to D [-o OUT]`: a STEP-NC feature file becomes a
+//! program for the target, with its canned cycles. Nothing is written
+//! unless the whole program could be posted and read back cleanly.
+
+use crate::cli::args::Format;
+use crate::cli::context::{Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
+use crate::diag::Diagnostic;
+use crate::span::FileId;
+use crate::stepnc::model::Project;
+use std::path::Path;
+
+pub fn run(
+    ctx: &mut Context,
+    file: &Path,
+    to: &str,
+    output: Option<&Path>,
+    format: Format,
+) -> Result<i32, Failure> {
+    let target = ctx.spec(to)?;
+    let (id, text) = ctx.add_file(file)?;
+    let project = match read_project(ctx, &text, id, format) {
+        Ok(p) => p,
+        Err(diags) => {
+            ctx.print(&diags, format);
+            return Ok(EXIT_INPUT_ERRORS);
+        }
+    };
+    match crate::post::post(&project, &target) {
+        Ok(posted) => {
+            ctx.print(&posted.warnings, format);
+            crate::cli::output::emit_output(output, &posted.text)
+                .map_err(|e| Failure(format!("cannot write the program: {e}")))?;
+            Ok(EXIT_OK)
+        }
+        Err(diags) => {
+            ctx.print(&diags, format);
+            Ok(EXIT_INPUT_ERRORS)
+        }
+    }
+}
+
+/// Reads a Part 21 file into the model: warnings are printed, errors
+/// end the command.
+fn read_project(
+    ctx: &Context,
+    text: &str,
+    file: FileId,
+    format: Format,
+) -> Result<Project, Vec<Diagnostic>> {
+    let read = crate::stepnc::read_text(text, file);
+    match read.project {
+        Some(p) if !read.diagnostics.iter().any(Diagnostic::is_error) => {
+            ctx.print(&read.diagnostics, format);
+            Ok(p)
+        }
+        _ => Err(read.diagnostics),
+    }
+}

@@ -1,0 +1,237 @@
+//! Round holes: drilling (G81/G82, CYCLE81/82), multistep drilling (G83,
+//! CYCLE83), reaming (G85, CYCLE85) and boring (G86, CYCLE86), at the
+//! hole's position. What a cycle cannot carry is named in a comment.
+
+use super::group::{self, Pattern};
+use super::names::operation_kind;
+use super::plan::Step;
+use super::step::{feed, spindle_rpm};
+use super::values::Vals;
+use super::{PostError, Writer};
+use crate::stepnc::model::*;
+
+pub fn write(w: &mut Writer<'_>, steps: &[&Step<'_>]) -> Result<(), PostError> {
+    let s = steps[0];
+    let cycle = cycle(w, s)?;
+    positions(w, cycle, steps)?;
+    w.emit("cycle_end.j2", Vals::new())
+}
+
+/// The hole positions after the cycle: the ones the cycle's template does
+/// not take, one by one or as the target's pattern cycle.
+fn positions(w: &mut Writer<'_>, cycle: &str, steps: &[&Step<'_>]) -> Result<(), PostError> {
+    let pts: Vec<[f64; 2]> = steps.iter().map(|s| group::xy(s)).collect();
+    let first_in_cycle = !w.post.ignores(cycle, "x");
+    if !first_in_cycle {
+        if let Some(p) = group::pattern(&pts) {
+            if let Some((name, v)) = pattern_vals(w, &p) {
+                if w.post.has(name) {
+                    return w.emit(name, v);
+                }
+            }
+        }
+    }
+    let rest = if first_in_cycle { &pts[1..] } else { &pts[..] };
+    for p in rest {
+        w.emit(
+            "hole_at.j2",
+            Vals::new()
+                .set("x", w.fmt.len(p[0]))
+                .set("y", w.fmt.len(p[1])),
+        )?;
+    }
+    Ok(())
+}
+
+fn pattern_vals(w: &Writer<'_>, p: &Pattern) -> Option<(&'static str, Vals)> {
+    let f = &w.fmt;
+    Some(match p {
+        Pattern::Row {
+            start,
+            angle,
+            spacing,
+            num,
+        } => (
+            "holes_row.j2",
+            Vals::new()
+                .set("x", f.len(start[0]))
+                .set("y", f.len(start[1]))
+                .set("angle", f.angle(*angle))
+                .set("spacing", f.len(*spacing))
+                .set("num", num.to_string()),
+        ),
+        Pattern::Circle {
+            centre,
+            radius,
+            start,
+            index,
+            num,
+        } => (
+            "holes_circle.j2",
+            Vals::new()
+                .set("cx", f.len(centre[0]))
+                .set("cy", f.len(centre[1]))
+                .set("radius", f.len(*radius))
+                .set("start", f.angle(*start))
+                .set("index", f.angle(*index))
+                .set("num", num.to_string()),
+        ),
+        Pattern::Grid {
+            origin,
+            dx,
+            dy,
+            nx,
+            ny,
+        } => (
+            "holes_grid.j2",
+            Vals::new()
+                .set("x", f.len(origin[0]))
+                .set("y", f.len(origin[1]))
+                .set("dx", f.len(*dx))
+                .set("dy", f.len(*dy))
+                .set("nx", nx.to_string())
+                .set("ny", ny.to_string()),
+        ),
+    })
+}
+
+/// Writes the cycle call; returns its template's name.
+fn cycle(w: &mut Writer<'_>, s: &Step<'_>) -> Result<&'static str, PostError> {
+    let name = match &s.op.kind {
+        OperationKind::Drilling(d)
+        | OperationKind::CenterDrilling(d)
+        | OperationKind::CounterSinking(d) => {
+            strategy_notes(w, d)?;
+            match d.dwell_time_bottom.filter(|t| *t > 0.0) {
+                None => {
+                    w.emit("drill.j2", base(w, s, d)?)?;
+                    "drill.j2"
+                }
+                Some(t) => {
+                    w.emit("drill_dwell.j2", dwell(w, base(w, s, d)?, t))?;
+                    "drill_dwell.j2"
+                }
+            }
+        }
+        OperationKind::MultistepDrilling {
+            drill,
+            retract_distance,
+            first_depth,
+            depth_of_step,
+            dwell_time_step,
+        } => {
+            strategy_notes(w, drill)?;
+            if *depth_of_step <= 0.0 {
+                return Err(PostError::broken(
+                    &s.op.id,
+                    "its depth of step is not positive",
+                ));
+            }
+            w.not_carried(&format!(
+                "retract distance {} mm between steps (the cycle retracts to the R plane)",
+                w.fmt.plain(*retract_distance, 3)
+            ))?;
+            if dwell_time_step.is_some_and(|t| t > 0.0) {
+                w.not_carried("dwell time between steps")?;
+            }
+            if w.post.ignores("peck.j2", "first") && (first_depth - depth_of_step).abs() > 1e-9 {
+                w.not_carried(&format!(
+                    "first depth {} mm (the target's cycle pecks evenly)",
+                    w.fmt.plain(*first_depth, 3)
+                ))?;
+            }
+            let v = base(w, s, drill)?
+                .set("first", w.fmt.len(s.top - first_depth))
+                .set("step", w.fmt.len(*depth_of_step));
+            w.emit("peck.j2", v)?;
+            "peck.j2"
+        }
+        OperationKind::Boring {
+            reaming,
+            drill,
+            spindle_stop_at_bottom,
+            depth_of_testcut,
+            waiting_position,
+        } => {
+            strategy_notes(w, drill)?;
+            let stop = *spindle_stop_at_bottom && !reaming;
+            if !stop && drill.dwell_time_bottom.is_some_and(|t| t > 0.0) {
+                w.not_carried("dwell at the bottom of a reaming pass")?;
+            }
+            if depth_of_testcut.is_some() || waiting_position.is_some() {
+                w.not_carried("test cut depth / waiting position")?;
+            }
+            if *spindle_stop_at_bottom && *reaming {
+                w.not_carried("spindle stop at the bottom of the reaming pass (the reaming cycle feeds out turning)")?;
+            }
+            if stop {
+                // The spindle direction to restore after the oriented stop.
+                let sdir = if spindle_rpm(s)? >= 0.0 { "3" } else { "4" };
+                let t = drill.dwell_time_bottom.unwrap_or(0.0).max(0.0);
+                let v = dwell(w, base(w, s, drill)?.set("sdir", sdir), t);
+                w.emit("bore.j2", v)?;
+                "bore.j2"
+            } else {
+                w.emit("ream.j2", base(w, s, drill)?)?;
+                "ream.j2"
+            }
+        }
+        OperationKind::PlaneMilling { .. }
+        | OperationKind::SideMilling { .. }
+        | OperationKind::BottomAndSideMilling { .. }
+        | OperationKind::Freeform { .. }
+        | OperationKind::Other(_) => {
+            return Err(PostError::unsupported(
+                &s.op.id,
+                &format!("a {} on a round hole", operation_kind(&s.op.kind)),
+            ))
+        }
+    };
+    Ok(name)
+}
+
+/// The values every hole cycle has.
+fn base(w: &Writer<'_>, s: &Step<'_>, d: &DrillCommon) -> Result<Vals, PostError> {
+    let bottom = match d.cutting_depth {
+        Some(depth) => s.top - depth,
+        None => s.bottom,
+    };
+    let at = s.frame.origin;
+    Ok(Vals::new()
+        .set("x", w.fmt.len(at[0]))
+        .set("y", w.fmt.len(at[1]))
+        .set("clear", w.fmt.len(s.clear))
+        .set("top", w.fmt.len(s.top))
+        .set("sdis", w.fmt.len(s.sdis))
+        .set("rplane", w.fmt.len(s.top + s.sdis))
+        .set("bottom", w.fmt.len(bottom))
+        .set("feed", w.fmt.feed(feed(s)?)))
+}
+
+fn dwell(w: &Writer<'_>, v: Vals, seconds: f64) -> Vals {
+    v.set("dwell_s", w.fmt.plain(seconds, 3))
+        .set("dwell_ms", w.fmt.plain((seconds * 1000.0).round(), 0))
+}
+
+fn strategy_notes(w: &mut Writer<'_>, d: &DrillCommon) -> Result<(), PostError> {
+    if let Some(st) = &d.strategy {
+        let parts: Vec<String> = [
+            ("reduced cut at start", st.reduced_cut_at_start),
+            ("reduced feed at start", st.reduced_feed_at_start),
+            ("depth of start", st.depth_of_start),
+            ("reduced cut at end", st.reduced_cut_at_end),
+            ("reduced feed at end", st.reduced_feed_at_end),
+            ("depth of end", st.depth_of_end),
+        ]
+        .iter()
+        .filter_map(|(n, v)| v.map(|v| format!("{n} {}", w.fmt.plain(v, 3))))
+        .collect();
+        if !parts.is_empty() {
+            w.not_carried(&format!("drilling strategy: {}", parts.join(", ")))?;
+        }
+    }
+    if d.feed_on_retract.is_some_and(|r| (r - 1.0).abs() > 1e-9) {
+        w.not_carried("feed on retract (the cycle's own retract)")?;
+    }
+    Ok(())
+}

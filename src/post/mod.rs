@@ -1,0 +1,228 @@
+//! `cncc post`: a STEP-NC feature project (CC2) becomes a program for a
+//! target dialect that calls the target's own canned cycles.
+//!
+//! Pipeline: [`plan`] resolves the workplan into workingsteps placed in
+//! workpiece coordinates; each workingstep is written with the templates
+//! in `posts/<dialect>/` ([`render`]), filled with values already
+//! formatted by the target's number rules ([`values`]); features the target
+//! has no cycle for become explicit toolpaths ([`paths`]). The finished
+//! text is then read back with the target's own front end: a posted
+//! program that does not read cleanly is an error, never output.
+//!
+//! Which cycle a feature becomes is data: the target's template set says
+//! what it has (`pocket_rect.j2` on the 840D, none on Fanuc: explicit
+//! moves). Heidenhain has no template set until its front end exists.
+
+mod explicit;
+mod faces;
+pub mod fixture;
+pub mod frame;
+mod group;
+mod holes;
+mod milling;
+mod names;
+pub mod paths;
+pub mod plan;
+mod pockets;
+pub mod render;
+mod slots;
+mod step;
+mod templates;
+pub mod values;
+
+use crate::diag::{Code, Diagnostic};
+use crate::dialect::DialectSpec;
+use crate::stepnc::model::Project;
+use render::Post;
+use values::{Fmt, Vals};
+
+/// A reason a project cannot be posted (or a note about what is not
+/// carried), before it becomes a [`Diagnostic`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct PostError {
+    pub code: Code,
+    pub message: String,
+    pub help: String,
+}
+
+impl PostError {
+    pub fn unsupported(what: &str, kind: &str) -> Self {
+        PostError {
+            code: Code::PostUnsupported,
+            message: format!("`{what}`: {kind} cannot be posted"),
+            help: "see `cncc explain E0900` for what each target can post".into(),
+        }
+    }
+    pub fn broken(what: &str, why: &str) -> Self {
+        PostError {
+            code: Code::PostBadProject,
+            message: format!("`{what}`: {why}"),
+            help: "fix the entity in the STEP-NC file".into(),
+        }
+    }
+    pub fn geometry(what: &str, why: String) -> Self {
+        PostError {
+            code: Code::PostGeometry,
+            message: format!("`{what}`: {why}"),
+            help: "choose a smaller tool or another strategy".into(),
+        }
+    }
+    pub fn template(why: String) -> Self {
+        PostError {
+            code: Code::PostTemplate,
+            message: why,
+            help: "a bug in the post templates; please report it".into(),
+        }
+    }
+    pub fn into_diagnostic(self) -> Diagnostic {
+        Diagnostic::new(self.code, self.message).help(self.help)
+    }
+}
+
+/// A posted program and the warnings about what it could not carry
+/// (each also named in a comment in the program).
+#[derive(Clone, Debug)]
+pub struct Posted {
+    pub text: String,
+    pub warnings: Vec<Diagnostic>,
+}
+
+/// Posts `project` for `target` (the contract `cncc port --features`
+/// uses): the program text, or every reason it cannot be written.
+pub fn post_project(project: &Project, target: &DialectSpec) -> Result<String, Vec<Diagnostic>> {
+    post(project, target).map(|p| p.text)
+}
+
+/// Posts `project` for `target`, with the warnings.
+pub fn post(project: &Project, target: &DialectSpec) -> Result<Posted, Vec<Diagnostic>> {
+    let post = match Post::for_dialect(&target.id) {
+        None => {
+            return Err(vec![Diagnostic::new(
+                Code::PostNoTarget,
+                format!("no post-processor for `{}` yet", target.id),
+            )
+            .help("choose siemens840d, fanuc, haas or linuxcnc")])
+        }
+        Some(Err(e)) => return Err(vec![PostError::template(e).into_diagnostic()]),
+        Some(Ok(p)) => p,
+    };
+    let items = plan::plan(project).map_err(into_diags)?;
+    let mut w = Writer {
+        post: &post,
+        fmt: Fmt::new(&target.numbers),
+        out: String::new(),
+        warnings: Vec::new(),
+        current_tool: None,
+        defined_tools: Vec::new(),
+    };
+    step::write_program(&mut w, project, &items).map_err(into_diags)?;
+    read_back(&w.out, target)?;
+    Ok(Posted {
+        text: w.out,
+        warnings: w.warnings,
+    })
+}
+
+fn into_diags(errs: Vec<PostError>) -> Vec<Diagnostic> {
+    errs.into_iter().map(PostError::into_diagnostic).collect()
+}
+
+/// Reads the posted text with the target's front end; any error is ours.
+fn read_back(text: &str, target: &DialectSpec) -> Result<(), Vec<Diagnostic>> {
+    let (_, diags) = crate::driver::read_program(text, crate::span::FileId(u32::MAX), target);
+    let errors: Vec<Diagnostic> = diags
+        .into_iter()
+        .filter(|d| d.is_error())
+        .map(|d| {
+            let line = d
+                .span()
+                .map(|s| line_of(text, s.start as usize))
+                .unwrap_or_default();
+            Diagnostic::new(
+                Code::PostReadBack,
+                format!(
+                    "the posted program does not read back: {} {} at `{}`",
+                    d.code.code(),
+                    d.message,
+                    line
+                ),
+            )
+            .help("a bug in the post-processor; please report it")
+        })
+        .collect();
+    if errors.is_empty() {
+        Ok(())
+    } else {
+        Err(errors)
+    }
+}
+
+fn line_of(text: &str, at: usize) -> &str {
+    let at = at.min(text.len());
+    let start = text[..at].rfind('\n').map(|i| i + 1).unwrap_or(0);
+    let end = text[at..].find('\n').map(|i| at + i).unwrap_or(text.len());
+    &text[start..end]
+}
+
+/// The output being written, with the target's templates and numbers.
+pub(crate) struct Writer<'a> {
+    pub post: &'a Post,
+    pub fmt: Fmt,
+    pub out: String,
+    pub warnings: Vec<Diagnostic>,
+    pub current_tool: Option<u32>,
+    /// Tools whose data the program has defined.
+    pub defined_tools: Vec<u32>,
+}
+
+impl Writer<'_> {
+    /// Renders template `name` (which must exist) into the output.
+    pub fn emit(&mut self, name: &str, vals: Vals) -> Result<(), PostError> {
+        let text = self.post.render(name, &vals).map_err(PostError::template)?;
+        self.out.push_str(&text);
+        if !self.out.ends_with('\n') {
+            self.out.push('\n');
+        }
+        Ok(())
+    }
+
+    /// A comment line in the target's syntax.
+    pub fn comment(&mut self, text: &str) -> Result<(), PostError> {
+        let parens_ok = !self.post.source("comment.j2").contains('(');
+        let text = values::comment_text_in(text, parens_ok);
+        self.emit("comment.j2", Vals::new().set("text", text))
+    }
+
+    /// A value the target cannot carry: a comment in the program and a
+    /// warning.
+    pub fn not_carried(&mut self, what: &str) -> Result<(), PostError> {
+        self.comment(&format!("NOT POSTED: {what}"))?;
+        self.warnings.push(
+            Diagnostic::new(Code::PostNotCarried, format!("not posted: {what}"))
+                .help("named in a comment in the posted program"),
+        );
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ex1_posts_to_every_target_with_a_post() {
+        for id in ["siemens840d", "fanuc", "haas", "linuxcnc"] {
+            let spec = crate::dialect::builtin(id).unwrap();
+            let p = post(&fixture::ex1(), &spec).unwrap_or_else(|e| panic!("{id}: {e:?}"));
+            assert!(p.text.contains("WS FINISH POCKET1"), "{id}");
+        }
+    }
+
+    #[test]
+    fn heidenhain_has_no_post_yet() {
+        let mut spec = (*crate::dialect::builtin("fanuc").unwrap()).clone();
+        spec.id = "heidenhain".into();
+        let e = post(&fixture::ex1(), &spec).unwrap_err();
+        assert_eq!(e[0].code, Code::PostNoTarget);
+    }
+}

@@ -1,0 +1,209 @@
+//! The post's plan: the project's workingsteps in execution order, each
+//! resolved to its feature, operation and tool, placed in workpiece
+//! coordinates (mm), with the planes every target needs.
+//!
+//! Planes (reference/stepnc.md §4.3): the workingstep's security plane is
+//! the clearance height (`clear`: Fanuc initial level with G98, Siemens
+//! RTP, Heidenhain Q204); the operation's `retract_plane` is feature-local,
+//! a height above the feature's top, and becomes the R plane (Fanuc R =
+//! top + retract, Siemens SDIS = retract above RFP = top). NIST's STEPNC++
+//! maps retract_plane to RTP instead; we follow the standard's meaning so
+//! that every target makes the same moves. The security plane is read in
+//! workpiece coordinates (NIST's interpreter does the same; ex1 shares one
+//! plane across features of different heights).
+
+use super::frame::Frame;
+use super::PostError;
+use crate::stepnc::model::*;
+
+/// The clearance above the top used when an operation has no retract plane.
+pub const DEFAULT_SDIS: f64 = 2.0;
+
+/// One machining workingstep, resolved.
+pub struct Step<'p> {
+    /// 1-based position among the workingsteps.
+    pub number: usize,
+    pub ws: &'p MachiningWorkingstep,
+    pub feature: &'p Feature,
+    pub op: &'p Operation,
+    pub tool: &'p Tool,
+    /// The tool number the program uses (T1.. in order of first use).
+    pub tool_no: u32,
+    /// The feature's frame in workpiece coordinates (vertical axis).
+    pub frame: Frame,
+    /// Absolute z of the feature's top, its bottom (depth plane) and the
+    /// clearance (security) plane.
+    pub top: f64,
+    pub bottom: f64,
+    pub clear: f64,
+    /// The R-plane distance above the top.
+    pub sdis: f64,
+    /// An earlier roughing operation on the same feature, if any.
+    pub roughed_by: Option<&'p Operation>,
+}
+
+/// Anything else in the workplan, in order.
+pub enum Item<'p> {
+    Step(Box<Step<'p>>),
+    Stop { optional: bool },
+    Message(&'p str),
+}
+
+/// Walks the main workplan (and nested workplans) into items.
+pub fn plan(project: &Project) -> Result<Vec<Item<'_>>, Vec<PostError>> {
+    let base = setup_frame(project);
+    let mut out = Vec::new();
+    let mut errors = Vec::new();
+    let mut tools: Vec<ToolId> = Vec::new();
+    let mut count = 0;
+    walk(
+        project,
+        &project.main_workplan,
+        &base,
+        &mut tools,
+        &mut count,
+        &mut out,
+        &mut errors,
+    );
+    if errors.is_empty() {
+        Ok(out)
+    } else {
+        Err(errors)
+    }
+}
+
+fn setup_frame(project: &Project) -> Frame {
+    let mut f = Frame::identity();
+    if let Some(setup) = &project.main_workplan.setup {
+        if let Some(o) = &setup.origin {
+            f = f.then(&Frame::from_placement(o));
+        }
+        if let Some(ws) = setup.workpiece_setups.first() {
+            f = f.then(&Frame::from_placement(&ws.origin));
+        }
+    }
+    f
+}
+
+#[allow(clippy::too_many_arguments)]
+fn walk<'p>(
+    project: &'p Project,
+    wp: &'p Workplan,
+    base: &Frame,
+    tools: &mut Vec<ToolId>,
+    count: &mut usize,
+    out: &mut Vec<Item<'p>>,
+    errors: &mut Vec<PostError>,
+) {
+    for e in &wp.elements {
+        match e {
+            Executable::Workingstep(ws) => {
+                *count += 1;
+                match resolve(project, ws, base, tools, *count, out) {
+                    Ok(s) => out.push(Item::Step(Box::new(s))),
+                    Err(e) => errors.push(e),
+                }
+            }
+            Executable::Workplan(inner) => walk(project, inner, base, tools, count, out, errors),
+            Executable::ProgramStop { .. } => out.push(Item::Stop { optional: false }),
+            Executable::OptionalStop { .. } => out.push(Item::Stop { optional: true }),
+            Executable::DisplayMessage { text, .. } => out.push(Item::Message(text)),
+            Executable::Rapid(r) => {
+                if r.toolpath.is_some() {
+                    errors.push(PostError::unsupported(
+                        &r.id,
+                        "a rapid movement with its own toolpath",
+                    ));
+                }
+                // Without a toolpath it is the move via the security plane
+                // that every posted workingstep already starts with.
+            }
+            Executable::Other(raw) => {
+                errors.push(PostError::unsupported(&raw.entity, "this executable"))
+            }
+        }
+    }
+}
+
+fn resolve<'p>(
+    project: &'p Project,
+    ws: &'p MachiningWorkingstep,
+    base: &Frame,
+    tools: &mut Vec<ToolId>,
+    number: usize,
+    earlier: &[Item<'p>],
+) -> Result<Step<'p>, PostError> {
+    let feature = project
+        .features
+        .get(ws.feature.index())
+        .ok_or_else(|| PostError::broken(&ws.id, "its feature is missing"))?;
+    let op = project
+        .operations
+        .get(ws.operation.index())
+        .ok_or_else(|| PostError::broken(&ws.id, "its operation is missing"))?;
+    let tool = project
+        .tools
+        .get(op.tool.index())
+        .ok_or_else(|| PostError::broken(&op.id, "its tool is missing"))?;
+    let frame = base.then(&Frame::from_placement(&feature.placement));
+    if !frame.is_vertical() {
+        return Err(PostError::unsupported(
+            &feature.id,
+            "a feature whose axis is not the machine's Z axis (3-axis posts only)",
+        ));
+    }
+    let top = frame.origin[2];
+    let bottom = frame.apply(feature.depth.position.location.xyz)[2];
+    let clear = base.apply(ws.secplane.position.location.xyz)[2];
+    let sdis = op.retract_plane.unwrap_or(DEFAULT_SDIS);
+    if clear < top + sdis {
+        return Err(PostError::broken(
+            &ws.id,
+            &format!(
+                "the security plane (z {clear}) is below the operation's retract plane (z {})",
+                top + sdis
+            ),
+        ));
+    }
+    let tool_no = match tools.iter().position(|t| *t == op.tool) {
+        Some(i) => i as u32 + 1,
+        None => {
+            tools.push(op.tool);
+            tools.len() as u32
+        }
+    };
+    let roughed_by = earlier.iter().rev().find_map(|i| match i {
+        Item::Step(s) if std::ptr::eq(s.feature, feature) && is_rough(s.op) => Some(s.op),
+        _ => None,
+    });
+    Ok(Step {
+        number,
+        ws,
+        feature,
+        op,
+        tool,
+        tool_no,
+        frame,
+        top,
+        bottom,
+        clear,
+        sdis,
+        roughed_by,
+    })
+}
+
+/// True for roughing milling operations.
+pub fn is_rough(op: &Operation) -> bool {
+    match &op.kind {
+        OperationKind::PlaneMilling { finish, .. }
+        | OperationKind::SideMilling { finish, .. }
+        | OperationKind::BottomAndSideMilling { finish, .. } => !finish,
+        OperationKind::Freeform { .. }
+        | OperationKind::Drilling(_)
+        | OperationKind::CenterDrilling(_)
+        | OperationKind::CounterSinking(_)
+        | OperationKind::MultistepDrilling { .. }
+        | OperationKind::Boring { .. }
+        | OperationKind::Other(_) => false,
+    }
+}

@@ -1,0 +1,244 @@
+//! The program frame and what every workingstep has: the comments naming
+//! feature and operation, tool data and tool change, tolerance, approach
+//! over the security plane, spindle and coolant; the body comes from
+//! [`super::holes`] or [`super::milling`].
+
+use super::group::{self, Unit};
+use super::names::{body_kind, feature_kind, operation_kind, siemens_tool_type};
+use super::plan::{Item, Step};
+use super::values::Vals;
+use super::{holes, milling, PostError, Writer};
+use crate::stepnc::model::*;
+
+pub fn write_program(
+    w: &mut Writer<'_>,
+    project: &Project,
+    items: &[Item<'_>],
+) -> Result<(), Vec<PostError>> {
+    let one = |r: Result<(), PostError>| r.map_err(|e| vec![e]);
+    one(w.emit(
+        "begin.j2",
+        Vals::new()
+            .set("number", "1000")
+            .set("title", super::values::comment_text(&project.id)),
+    ))?;
+    let mut errors = Vec::new();
+    for unit in group::units(items) {
+        let item = match unit {
+            Unit::Holes(steps) => {
+                if let Err(e) = write_step(w, project, &steps) {
+                    errors.push(e);
+                }
+                continue;
+            }
+            Unit::Item(item) => item,
+        };
+        let r = match item {
+            Item::Step(s) => write_step(w, project, &[&**s]),
+            Item::Stop { optional } => w.emit(
+                "stop.j2",
+                Vals::new().set("m", if *optional { "1" } else { "0" }),
+            ),
+            Item::Message(text) => w.comment(&format!("MESSAGE: {text}")),
+        };
+        if let Err(e) = r {
+            errors.push(e);
+        }
+    }
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    one(w.emit("end.j2", Vals::new()))
+}
+
+/// One workingstep, or several that make the same hole at different
+/// places (one cycle, several positions).
+fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Result<(), PostError> {
+    let s = steps[0];
+    for st in steps {
+        let n = st.number;
+        w.comment(&format!(
+            "WS({n}) {} Feature={} {}",
+            st.ws.id,
+            feature_kind(&st.feature.kind),
+            st.feature.id
+        ))?;
+        w.comment(&format!(
+            "WS({n}) Operation={} {}",
+            operation_kind(&st.op.kind),
+            st.op.id
+        ))?;
+    }
+    let tool_len = tool_length(s.tool);
+    let d = s.tool.body.dimension.diameter;
+    w.comment(&format!(
+        "Tool={} {}, length {} mm, diameter {} mm",
+        s.tool.id,
+        body_kind(&s.tool.body.kind),
+        w.fmt.plain(tool_len, 3),
+        w.fmt.plain(d, 3)
+    ))?;
+    if w.current_tool != Some(s.tool_no) {
+        if w.post.has("tool_data.j2") && !w.defined_tools.contains(&s.tool_no) {
+            w.defined_tools.push(s.tool_no);
+            let code = siemens_tool_type(&s.tool.body.kind).ok_or_else(|| {
+                PostError::unsupported(&s.tool.id, "a tool of this body type (no tool type code)")
+            })?;
+            w.emit(
+                "tool_data.j2",
+                Vals::new()
+                    .set("t", s.tool_no.to_string())
+                    .set("type", code.to_string())
+                    .set("length", w.fmt.len(tool_len))
+                    .set("radius", w.fmt.len(d / 2.0)),
+            )?;
+        }
+        w.emit(
+            "tool_change.j2",
+            Vals::new().set("t", s.tool_no.to_string()),
+        )?;
+        w.current_tool = Some(s.tool_no);
+    }
+    if w.post.has("tolerance.j2") {
+        if let Some(tol) = tolerance(project, s) {
+            let mode = if super::plan::is_rough(s.op) {
+                "102003"
+            } else {
+                "102001"
+            };
+            w.emit(
+                "tolerance.j2",
+                Vals::new()
+                    .set("tol", w.fmt.plain(tol, 4))
+                    .set("mode", mode),
+            )?;
+        }
+    }
+    let at = s.frame.origin;
+    w.emit(
+        "approach.j2",
+        Vals::new()
+            .set("x", w.fmt.len(at[0]))
+            .set("y", w.fmt.len(at[1]))
+            .set("z", w.fmt.len(s.clear))
+            .set("t", s.tool_no.to_string()),
+    )?;
+    let rpm = spindle_rpm(s)?;
+    w.emit(
+        "spindle.j2",
+        Vals::new()
+            .set("s", w.fmt.feed(rpm.abs()))
+            .set("m", if rpm >= 0.0 { "3" } else { "4" }),
+    )?;
+    coolant(w, &s.op.machine_functions)?;
+    match &s.feature.kind {
+        FeatureKind::RoundHole { .. } => holes::write(w, steps)?,
+        FeatureKind::ClosedPocket { .. }
+        | FeatureKind::PlanarFace { .. }
+        | FeatureKind::Slot { .. } => milling::write(w, s)?,
+        FeatureKind::OpenPocket { .. }
+        | FeatureKind::Step { .. }
+        | FeatureKind::GeneralOutsideProfile { .. }
+        | FeatureKind::ToolpathFeature
+        | FeatureKind::Other(_) => {
+            return Err(PostError::unsupported(
+                &s.feature.id,
+                &format!("a {} feature", feature_kind(&s.feature.kind)),
+            ))
+        }
+    }
+    w.emit("retract.j2", Vals::new().set("z", w.fmt.len(s.clear)))
+}
+
+fn coolant(w: &mut Writer<'_>, mf: &MachineFunctions) -> Result<(), PostError> {
+    if mf.coolant {
+        w.emit("coolant.j2", Vals::new().set("m", "8"))?;
+    }
+    if mf.mist == Some(true) {
+        w.emit("coolant.j2", Vals::new().set("m", "7"))?;
+    }
+    if mf.through_spindle_coolant {
+        w.not_carried("through-spindle coolant (a machine-specific M code)")?;
+    }
+    if mf.oriented_spindle_stop.is_some() || !mf.axis_clamping.is_empty() {
+        w.not_carried("oriented spindle stop / axis clamping of the machine functions")?;
+    }
+    Ok(())
+}
+
+/// Spindle rpm, positive clockwise: the technology's spindle, or its
+/// cutting speed over the tool's circumference.
+pub fn spindle_rpm(s: &Step<'_>) -> Result<f64, PostError> {
+    let t = &s.op.technology;
+    if let Some(rpm) = t.spindle {
+        return Ok(rpm);
+    }
+    let d = s.tool.body.dimension.diameter;
+    match t.cut_speed {
+        Some(v) if d > 0.0 => Ok(v * 1000.0 / (std::f64::consts::PI * d)),
+        _ => Err(PostError::broken(
+            &s.op.id,
+            "its technology gives no spindle speed",
+        )),
+    }
+}
+
+/// Feed mm/min: the technology's feed, or feed per tooth x teeth x rpm.
+pub fn feed(s: &Step<'_>) -> Result<f64, PostError> {
+    let t = &s.op.technology;
+    if let Some(f) = t.feed {
+        return Ok(f);
+    }
+    match (t.feed_per_tooth, s.tool.body.number_of_teeth) {
+        (Some(fz), Some(z)) => Ok(fz * z as f64 * spindle_rpm(s)?.abs()),
+        _ => Err(PostError::broken(&s.op.id, "its technology gives no feed")),
+    }
+}
+
+/// The contour tolerance: the tightest limit of the feature's toleranced
+/// sizes, never coarser than the workpiece's global tolerance (which
+/// holds where the feature says nothing).
+fn tolerance(project: &Project, s: &Step<'_>) -> Option<f64> {
+    let mut sizes: Vec<&Toleranced> = Vec::new();
+    match &s.feature.kind {
+        FeatureKind::RoundHole { diameter, .. } => sizes.push(diameter),
+        FeatureKind::ClosedPocket { pocket, boundary } => {
+            sizes.extend(pocket.orthogonal_radius.iter());
+            if let ClosedProfile::Rectangular { width, length, .. } = boundary {
+                sizes.push(width);
+                sizes.push(length);
+            }
+            if let ClosedProfile::Circular { diameter, .. } = boundary {
+                sizes.push(diameter);
+            }
+        }
+        FeatureKind::PlanarFace {
+            course_of_travel: TravelPath::Linear { distance, .. },
+            ..
+        } => sizes.push(distance),
+        _ => {}
+    }
+    let tightest = sizes
+        .iter()
+        .filter_map(|t| match t.tolerance {
+            Tolerance::PlusMinus { upper, lower, .. } => Some(upper.abs().min(lower.abs())),
+            Tolerance::LimitsAndFits { .. } | Tolerance::Other(_) => None,
+        })
+        .filter(|v| *v > 0.0)
+        .fold(None, |a: Option<f64>, v| Some(a.map_or(v, |a| a.min(v))));
+    let global = project
+        .workpieces
+        .get(s.feature.workpiece.index())
+        .and_then(|wp| wp.global_tolerance)
+        .filter(|v| *v > 0.0);
+    match (tightest, global) {
+        (Some(a), Some(b)) => Some(a.min(b)),
+        (a, b) => a.or(b),
+    }
+}
+
+fn tool_length(t: &Tool) -> f64 {
+    t.overall_assembly_length
+        .or_else(|| t.cutting_edges.first().map(|c| c.tool_offset_length))
+        .unwrap_or(0.0)
+}
