@@ -17,6 +17,7 @@ pub mod fuzzing;
 pub mod interp;
 pub mod ir;
 pub mod lower;
+pub mod port;
 pub mod source;
 pub mod span;
 pub mod syntax;

@@ -1,0 +1,261 @@
+//! Statement forms that differ between targets but mean the same:
+//!
+//! * numbered variables: `#n` (word address) ↔ `Rn` (Siemens), same number,
+//!   when the target declares that number in its variable ranges (E0613
+//!   otherwise). `#[e]` ↔ `R[e]`. Named and declared variables are not
+//!   mapped (the writer reports them).
+//! * loop and conditional ids (see [`super::flow_ids`]).
+//! * labels, for a target without them: the labelled block gets a sequence
+//!   number (its own, or a new one above all others) and jumps go to it.
+//! * tool length: `G43 H` → `D1`, `G49` → `D0` for a target whose tools
+//!   carry their length in the cutting edge; `D0` → `G49`, `Dn` → `G43 H`
+//!   with the tool's number for the other way (W0610 when H or D is not
+//!   the one the target derives).
+//! * the tool map on T, H and D numbers.
+
+use super::levels::Modal;
+use super::PortOptions;
+use crate::diag::{Code, Diagnostic};
+use crate::dialect::{Capability, DialectSpec, Family, Meaning};
+use crate::ir::{
+    Axes, Decimal, ExprKind, JumpDir, JumpTarget, LengthComp, Program, StmtKind, ToolRef, Value,
+    Var,
+};
+use crate::span::Spanned;
+use std::collections::HashMap;
+
+pub fn run(p: &mut Program, to: &DialectSpec, opts: &PortOptions, diags: &mut Vec<Diagnostic>) {
+    program_name(p, to);
+    variables(p, to, diags);
+    super::flow_ids::run(p, to, diags);
+    labels(p, to);
+    tools(p, to, opts, diags);
+}
+
+/// A Siemens program name is an identifier: a title that is not one (a
+/// Fanuc `O1234 (TITLE)`) stays as a comment and the number names it.
+fn program_name(p: &mut Program, to: &DialectSpec) {
+    if to.family != Family::Sinumerik {
+        return;
+    }
+    for b in &mut p.blocks {
+        let mut titles = Vec::new();
+        for s in &mut b.stmts {
+            if let StmtKind::ProgramStart {
+                number: Some(_),
+                name,
+            } = &mut s.kind
+            {
+                let ident = name
+                    .as_ref()
+                    .is_some_and(|n| n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_'));
+                if !ident {
+                    if let Some(t) = name.take() {
+                        titles.push(crate::ir::Stmt::new(
+                            StmtKind::Comment {
+                                text: t,
+                                style: crate::ir::CommentStyle::Semicolon,
+                            },
+                            s.span,
+                        ));
+                    }
+                }
+            }
+        }
+        b.stmts.extend(titles);
+    }
+}
+
+/// The target's form of a numbered variable, or None.
+fn map_var(v: &Var, to: &DialectSpec) -> Result<Option<Var>, String> {
+    let sin = to.family == Family::Sinumerik;
+    Ok(match (v, sin) {
+        (Var::Numbered(n), true) => match to.var_range('R', *n) {
+            Some(_) => Some(Var::R(*n)),
+            None => return Err(format!("#{n} (the target has no R{n})")),
+        },
+        (Var::Indirect(e), true) => Some(Var::RIndirect(*e)),
+        (Var::R(n), false) => match to.var_range('#', *n) {
+            Some(r) if r.writable => Some(Var::Numbered(*n)),
+            _ => return Err(format!("R{n} (the target has no writable #{n})")),
+        },
+        (Var::RIndirect(e), false) => Some(Var::Indirect(*e)),
+        _ => None,
+    })
+}
+
+fn variables(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
+    let mut fail = |span, what: String| {
+        diags.push(
+            Diagnostic::new(Code::PortVariable, format!("{} cannot hold {what}", to.name))
+                .primary(span, "this variable")
+                .help("use a variable number the target has (Fanuc #100-#199, #500-#999; Siemens R0-R99 by default)"),
+        );
+    };
+    let ids: Vec<_> = p.exprs.iter().map(|(id, _)| id).collect();
+    for id in ids {
+        let e = &p.exprs[id];
+        let ExprKind::Var(v) = &e.kind else { continue };
+        match map_var(v, to) {
+            Ok(Some(nv)) => p.exprs[id].kind = ExprKind::Var(nv),
+            Ok(None) => {}
+            Err(what) => fail(e.span, what),
+        }
+    }
+    for b in &mut p.blocks {
+        for s in &mut b.stmts {
+            let var = match &mut s.kind {
+                StmtKind::Assign { var, .. } | StmtKind::For { var, .. } => var,
+                _ => continue,
+            };
+            match map_var(var, to) {
+                Ok(Some(nv)) => *var = nv,
+                Ok(None) => {}
+                Err(what) => fail(s.span, what),
+            }
+        }
+    }
+}
+
+/// Labels to sequence numbers for a target without labels.
+fn labels(p: &mut Program, to: &DialectSpec) {
+    if to.has(Capability::StructuredControl) || p.blocks.iter().all(|b| b.label.is_none()) {
+        return;
+    }
+    let top = p
+        .blocks
+        .iter()
+        .filter_map(|b| b.number.as_ref().map(|n| n.node))
+        .max()
+        .unwrap_or(0);
+    let mut next = (top / 1000 + 1) * 1000;
+    let mut numbers = HashMap::new();
+    for b in &mut p.blocks {
+        let Some(l) = b.label.take() else { continue };
+        let n = match &b.number {
+            Some(n) => n.node,
+            None => {
+                next += 10;
+                b.number = Some(Spanned {
+                    node: next,
+                    span: l.span,
+                });
+                next
+            }
+        };
+        numbers.insert(l.node.to_ascii_uppercase(), n);
+    }
+    for b in &mut p.blocks {
+        for s in &mut b.stmts {
+            if let StmtKind::Goto { target, dir, .. } = &mut s.kind {
+                if let JumpTarget::Label(l) = target {
+                    if let Some(n) = numbers.get(&l.to_ascii_uppercase()) {
+                        *target = JumpTarget::Sequence(Value::Number(Decimal::from_int(*n as i64)));
+                        *dir = JumpDir::Either;
+                    }
+                }
+            }
+        }
+    }
+}
+
+fn mapped_number(v: &Value, opts: &PortOptions) -> Value {
+    match v.number().and_then(|d| d.as_int()) {
+        Some(n) if !opts.tool_map.is_empty() => {
+            Value::Number(Decimal::from_int(opts.tool_map.map(n)))
+        }
+        _ => v.clone(),
+    }
+}
+
+fn warn(diags: &mut Vec<Diagnostic>, span: crate::span::Span, msg: String, label: &str) {
+    diags.push(
+        Diagnostic::new(Code::PortApproximate, msg)
+            .primary(span, label.to_string())
+            .help("check the tool's offsets on the target machine"),
+    );
+}
+
+fn tools(p: &mut Program, to: &DialectSpec, opts: &PortOptions, diags: &mut Vec<Diagnostic>) {
+    let edge_target = to.family == Family::Sinumerik;
+    let no_g43 = to
+        .code_for(Meaning::LengthComp(LengthComp::Positive))
+        .is_none();
+    let mut modal = Modal::new(to);
+    for b in &mut p.blocks {
+        for s in &mut b.stmts {
+            let span = s.span;
+            match &mut s.kind {
+                StmtKind::ToolSelect(ToolRef::Number(v)) => {
+                    if !opts.tool_map.is_empty() && v.number().is_none() {
+                        warn(
+                            diags,
+                            span,
+                            "a tool number chosen at run time is not renumbered by the tool map"
+                                .into(),
+                            "T is an expression",
+                        );
+                    }
+                    *v = mapped_number(v, opts);
+                }
+                StmtKind::LengthComp { mode, register, .. } if edge_target && no_g43 => {
+                    match mode {
+                        LengthComp::Cancel => {
+                            s.kind = StmtKind::CuttingEdge(Value::Number(Decimal::from_int(0)))
+                        }
+                        LengthComp::Positive => {
+                            if let (Some(h), Some(t)) = (register.as_ref(), modal.tool.as_ref()) {
+                                if mapped_number(h, opts) != *t {
+                                    warn(diags, span, "G43 H is not the tool's number; D1 takes the length of the tool in the spindle".into(), "H register");
+                                }
+                            }
+                            s.kind = StmtKind::CuttingEdge(Value::Number(Decimal::from_int(1)));
+                        }
+                        _ => {}
+                    }
+                }
+                StmtKind::LengthComp {
+                    register: Some(h), ..
+                } => *h = mapped_number(h, opts),
+                StmtKind::RadiusComp {
+                    register: Some(d),
+                    diameter: false,
+                    ..
+                } => *d = mapped_number(d, opts),
+                StmtKind::OffsetRegister { value, .. } => *value = mapped_number(value, opts),
+                StmtKind::CuttingEdge(v) if !edge_target => {
+                    let d = v.number().and_then(|d| d.as_int());
+                    match (d, modal.tool.clone()) {
+                        (Some(0), _) => {
+                            s.kind = StmtKind::LengthComp {
+                                mode: LengthComp::Cancel,
+                                register: None,
+                                axes: Box::new(Axes::default()),
+                            }
+                        }
+                        (Some(d), Some(t)) => {
+                            if d != 1 {
+                                warn(
+                                    diags,
+                                    span,
+                                    format!(
+                                        "cutting edge D{d} becomes the tool's length register H"
+                                    ),
+                                    "edge number dropped",
+                                );
+                            }
+                            s.kind = StmtKind::LengthComp {
+                                mode: LengthComp::Positive,
+                                register: Some(t),
+                                axes: Box::new(Axes::default()),
+                            };
+                        }
+                        _ => {}
+                    }
+                }
+                _ => {}
+            }
+            modal.see(s);
+        }
+    }
+}
