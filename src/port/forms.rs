@@ -36,7 +36,7 @@ pub fn run(p: &mut Program, to: &DialectSpec, opts: &PortOptions, diags: &mut Ve
 /// Fanuc `O1234 (TITLE)`) stays as a comment and the number names it.
 fn program_name(p: &mut Program, to: &DialectSpec) {
     if to.family != Family::Sinumerik {
-        return;
+        return numbered_program(p, to);
     }
     for b in &mut p.blocks {
         let mut titles = Vec::new();
@@ -63,6 +63,29 @@ fn program_name(p: &mut Program, to: &DialectSpec) {
             }
         }
         b.stmts.extend(titles);
+    }
+}
+
+/// For a target of numbered programs: Siemens `%_N_O2000_MPF` (read as
+/// the name `O2000_MPF`) is program 2000; a bare `%` start is the tape mark.
+fn numbered_program(p: &mut Program, to: &DialectSpec) {
+    if !to.has(Capability::NumberedPrograms) {
+        return;
+    }
+    for b in &mut p.blocks {
+        for s in &mut b.stmts {
+            let StmtKind::ProgramStart { number: None, name } = &s.kind else { continue };
+            let Some(name) = name.as_ref().filter(|n| !n.is_empty()) else {
+                s.kind = StmtKind::Tape;
+                continue;
+            };
+            let upper = name.to_ascii_uppercase();
+            let base = upper.trim_end_matches("_MPF").trim_end_matches("_SPF");
+            let digits = base.strip_prefix('O').unwrap_or(base);
+            if let Ok(n) = digits.parse::<u32>() {
+                s.kind = StmtKind::ProgramStart { number: Some(n), name: None };
+            }
+        }
     }
 }
 
