@@ -125,6 +125,11 @@ fn verify_port(
         verify::events(Rc::new(reread), s.target, &opts, &mut loader)
     };
     let run_errors = |d: &[Diagnostic]| d.iter().filter(|d| d.is_error()).count();
+    if run_errors(&da) > 0 {
+        diags.extend(da.into_iter().filter(|d| d.is_error()));
+        eprintln!("verify: FAILED: the source program stops with an error, so there is nothing to compare");
+        return false;
+    }
     if run_errors(&db) > run_errors(&da) {
         diags.extend(db.into_iter().filter(|d| d.is_error()));
         eprintln!(

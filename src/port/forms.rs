@@ -74,7 +74,9 @@ fn numbered_program(p: &mut Program, to: &DialectSpec) {
     }
     for b in &mut p.blocks {
         for s in &mut b.stmts {
-            let StmtKind::ProgramStart { number: None, name } = &s.kind else { continue };
+            let StmtKind::ProgramStart { number: None, name } = &s.kind else {
+                continue;
+            };
             let Some(name) = name.as_ref().filter(|n| !n.is_empty()) else {
                 s.kind = StmtKind::Tape;
                 continue;
@@ -83,7 +85,10 @@ fn numbered_program(p: &mut Program, to: &DialectSpec) {
             let base = upper.trim_end_matches("_MPF").trim_end_matches("_SPF");
             let digits = base.strip_prefix('O').unwrap_or(base);
             if let Ok(n) = digits.parse::<u32>() {
-                s.kind = StmtKind::ProgramStart { number: Some(n), name: None };
+                s.kind = StmtKind::ProgramStart {
+                    number: Some(n),
+                    name: None,
+                };
             }
         }
     }

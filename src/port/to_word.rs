@@ -81,7 +81,8 @@ impl Pass<'_> {
                         self.active = Some(pend);
                     } else {
                         self.holes(&b, pend, None, span, &mut before, &mut cur);
-                        cur.push(Stmt::new(StmtKind::CycleCancel, span));
+                        let cancel = Stmt::new(StmtKind::CycleCancel, span);
+                        after.push(follow_block(&b, vec![cancel]));
                     }
                 }
                 StmtKind::ModalCallCancel if self.active.is_some() => {

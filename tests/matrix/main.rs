@@ -21,7 +21,9 @@ fn sources(dir: &Path) -> Vec<(PathBuf, String)> {
     for e in std::fs::read_dir(dir).unwrap() {
         let p = e.unwrap().path();
         let name = p.file_name().unwrap().to_string_lossy().to_string();
-        let Some(rest) = name.strip_prefix("from-") else { continue };
+        let Some(rest) = name.strip_prefix("from-") else {
+            continue;
+        };
         if rest.contains(".to-") {
             continue;
         }
@@ -59,15 +61,22 @@ fn cell(src: &Path, from: &str, to: &str, update: bool) -> Option<String> {
         if !stderr.contains("verify: OK") {
             return Some(format!("{what}: no verification verdict\n{stderr}"));
         }
-        return (stdout != expected).then(|| format!("{what}: text differs\n--- expected\n{expected}--- got\n{stdout}"));
+        return (stdout != expected)
+            .then(|| format!("{what}: text differs\n--- expected\n{expected}--- got\n{stdout}"));
     }
     if let Ok(codes) = std::fs::read_to_string(&error_cell) {
         let codes: Vec<&str> = codes.split_whitespace().collect();
         if code != 1 {
-            return Some(format!("{what}: expected refusal {codes:?}, got exit {code}\n{stdout}"));
+            return Some(format!(
+                "{what}: expected refusal {codes:?}, got exit {code}\n{stdout}"
+            ));
         }
-        let missing: Vec<_> = codes.iter().filter(|c| !stderr.contains(&format!("[{c}"))).collect();
-        return (!missing.is_empty()).then(|| format!("{what}: refusal without {missing:?}\n{stderr}"));
+        let missing: Vec<_> = codes
+            .iter()
+            .filter(|c| !stderr.contains(&format!("[{c}")))
+            .collect();
+        return (!missing.is_empty())
+            .then(|| format!("{what}: refusal without {missing:?}\n{stderr}"));
     }
     if update {
         if code == 0 {
@@ -84,7 +93,11 @@ fn cell(src: &Path, from: &str, to: &str, update: bool) -> Option<String> {
         }
         return None;
     }
-    Some(format!("{what}: no cell (write {} or {})", text_cell.display(), error_cell.display()))
+    Some(format!(
+        "{what}: no cell (write {} or {})",
+        text_cell.display(),
+        error_cell.display()
+    ))
 }
 
 #[test]
@@ -108,5 +121,10 @@ fn port_matrix() {
         }
     }
     assert!(cells > 0, "no matrix cells under {}", root.display());
-    assert!(failures.is_empty(), "{} of {cells} cells fail:\n{}", failures.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} of {cells} cells fail:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }
