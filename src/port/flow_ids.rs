@@ -14,15 +14,20 @@ use crate::span::Span;
 
 struct Ids<'a> {
     to: &'a DialectSpec,
-    stack: Vec<FlowId>,
+    /// The open structures: their new id and whether they are loops.
+    stack: Vec<(FlowId, bool)>,
     next_oword: u32,
     diags: &'a mut Vec<Diagnostic>,
 }
 
 #[derive(Clone, Copy, PartialEq)]
 enum Role {
-    Open,
+    /// Opens a structure (`true`: a loop).
+    Open(bool),
+    /// ELSE/ELSEIF: of the innermost structure.
     Middle,
+    /// BREAK/CONTINUE: of the innermost loop.
+    LoopExit,
     Close,
 }
 
@@ -37,15 +42,12 @@ pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
         for s in &mut b.stmts {
             let span = s.span;
             let (id, role, is_while) = match &mut s.kind {
-                StmtKind::While { id, .. } => (id, Role::Open, true),
+                StmtKind::While { id, .. } => (id, Role::Open(true), true),
                 StmtKind::EndWhile { id } => (id, Role::Close, true),
-                StmtKind::If { id, .. } | StmtKind::Do { id } | StmtKind::Repeat { id, .. } => {
-                    (id, Role::Open, false)
-                }
-                StmtKind::ElseIf { id, .. }
-                | StmtKind::Else { id }
-                | StmtKind::Break { id }
-                | StmtKind::Continue { id } => (id, Role::Middle, false),
+                StmtKind::If { id, .. } => (id, Role::Open(false), false),
+                StmtKind::Do { id } | StmtKind::Repeat { id, .. } => (id, Role::Open(true), false),
+                StmtKind::ElseIf { id, .. } | StmtKind::Else { id } => (id, Role::Middle, false),
+                StmtKind::Break { id } | StmtKind::Continue { id } => (id, Role::LoopExit, false),
                 StmtKind::EndIf { id }
                 | StmtKind::DoWhile { id, .. }
                 | StmtKind::EndRepeat { id } => (id, Role::Close, false),
@@ -67,19 +69,23 @@ fn cap_of(id: &FlowId) -> Capability {
 impl Ids<'_> {
     fn fix(&mut self, id: &mut FlowId, role: Role, is_while: bool, span: Span) {
         match role {
-            Role::Open => {
+            Role::Open(is_loop) => {
                 let new = self.choose(id, is_while, span);
-                self.stack.push(new.clone());
+                self.stack.push((new.clone(), is_loop));
                 *id = new;
             }
             Role::Middle => {
-                // break/continue name the innermost loop; else/elseif their if.
-                if let Some(top) = self.stack.last() {
+                if let Some((top, _)) = self.stack.last() {
+                    *id = top.clone();
+                }
+            }
+            Role::LoopExit => {
+                if let Some((top, _)) = self.stack.iter().rev().find(|(_, l)| *l) {
                     *id = top.clone();
                 }
             }
             Role::Close => {
-                if let Some(top) = self.stack.pop() {
+                if let Some((top, _)) = self.stack.pop() {
                     *id = top;
                 }
             }
@@ -100,7 +106,7 @@ impl Ids<'_> {
         let depth = self
             .stack
             .iter()
-            .filter(|i| matches!(i, FlowId::Do(_)))
+            .filter(|(i, _)| matches!(i, FlowId::Do(_)))
             .count() as u8;
         if is_while && self.to.has(Capability::MacroB) && depth < 3 {
             return FlowId::Do(depth + 1);
