@@ -9,6 +9,7 @@
 pub mod canon;
 pub mod check;
 pub mod cli;
+pub mod compare;
 pub mod diag;
 pub mod dialect;
 pub mod driver;
