@@ -77,6 +77,7 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
             dir: &dir,
             source: (program, &spec),
             target: &target,
+            tools: &opts.tool_map,
         };
         let ok = verify_port(ctx, &sides, &name, &out, &mut diags);
         ctx.print(&diags, a.format);
@@ -94,6 +95,7 @@ struct Sides<'a> {
     dir: &'a Path,
     source: (Program, &'a Arc<DialectSpec>),
     target: &'a Arc<DialectSpec>,
+    tools: &'a ToolMap,
 }
 
 /// Reads the output back, runs both and compares; prints the verdict.
@@ -137,7 +139,7 @@ fn verify_port(
         );
         return false;
     }
-    let v = verify::compare(&ea, &eb);
+    let v = verify::compare(&ea, &eb, s.tools);
     report(ctx, &v, out_id);
     for r in &v.rapids {
         let mut d = Diagnostic::new(Code::VerifyRapids, r.what.clone());
@@ -165,7 +167,7 @@ fn place(ctx: &Context, sp: Option<Span>) -> String {
 fn report(ctx: &Context, v: &Verdict, _out: FileId) {
     match &v.cutting {
         None => eprintln!(
-            "verify: OK: the same {} cutting moves (within {} mm); {} rapid(s) differ",
+            "verify: OK: the same {} operations (within {} mm); {} rapid(s) differ",
             v.cutting_moves,
             verify::TOLERANCE_MM,
             v.rapids.len()

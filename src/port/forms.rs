@@ -24,7 +24,14 @@ use crate::ir::{
 use crate::span::Spanned;
 use std::collections::HashMap;
 
-pub fn run(p: &mut Program, to: &DialectSpec, opts: &PortOptions, diags: &mut Vec<Diagnostic>) {
+pub fn run(
+    p: &mut Program,
+    from: &DialectSpec,
+    to: &DialectSpec,
+    opts: &PortOptions,
+    diags: &mut Vec<Diagnostic>,
+) {
+    cycle_dwells(p, from, to);
     program_name(p, to);
     variables(p, to, diags);
     super::flow_ids::run(p, to, diags);
@@ -89,6 +96,38 @@ fn numbered_program(p: &mut Program, to: &DialectSpec) {
                     number: Some(n),
                     name: None,
                 };
+            }
+        }
+    }
+}
+
+fn p_unit(spec: &DialectSpec) -> Option<crate::ir::DwellUnit> {
+    spec.code_for(Meaning::Dwell).and_then(|c| {
+        c.dwell_units
+            .iter()
+            .find(|(l, _)| *l == 'P')
+            .map(|(_, u)| *u)
+    })
+}
+
+/// A canned cycle's dwell P in the target's unit (Fanuc milliseconds,
+/// LinuxCNC seconds): numbers are converted exactly (a conversion that is
+/// not exact is left for the writer to report).
+fn cycle_dwells(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
+    use crate::ir::DwellUnit::{Milliseconds, Seconds};
+    let shift = match (p_unit(from), p_unit(to)) {
+        (Some(Milliseconds), Some(Seconds)) => -3,
+        (Some(Seconds), Some(Milliseconds)) => 3,
+        _ => return,
+    };
+    for b in &mut p.blocks {
+        for s in &mut b.stmts {
+            if let StmtKind::Cycle(c) = &mut s.kind {
+                if let Some(Value::Number(d)) = &c.p {
+                    if let Some(n) = crate::emit::number::shift_decimal(*d, shift) {
+                        c.p = Some(Value::Number(n));
+                    }
+                }
             }
         }
     }

@@ -55,7 +55,7 @@ pub fn port_program(
     }
     to_named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
-    forms::run(&mut out, to, opts, &mut diags);
+    forms::run(&mut out, from, to, opts, &mut diags);
     out.dialect = to.id.clone();
     (out, diags)
 }
