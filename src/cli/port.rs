@@ -10,6 +10,7 @@ use crate::dialect::DialectSpec;
 use crate::driver::{read_program, FsLoader};
 use crate::emit::write_program;
 use crate::ir::Program;
+use crate::port::subload::PortingLoader;
 use crate::port::verify::{self, Difference, Verdict};
 use crate::port::{port_program, PortOptions, ToolMap};
 use crate::span::{FileId, Span};
@@ -77,7 +78,7 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
             dir: &dir,
             source: (program, &spec),
             target: &target,
-            tools: &opts.tool_map,
+            opts: &opts,
         };
         let ok = verify_port(ctx, &sides, &name, &out, &mut diags);
         ctx.print(&diags, a.format);
@@ -95,7 +96,7 @@ struct Sides<'a> {
     dir: &'a Path,
     source: (Program, &'a Arc<DialectSpec>),
     target: &'a Arc<DialectSpec>,
-    tools: &'a ToolMap,
+    opts: &'a PortOptions,
 }
 
 /// Reads the output back, runs both and compares; prints the verdict.
@@ -122,10 +123,20 @@ fn verify_port(
         let mut loader = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
         verify::events(Rc::new(src_prog.clone()), src_spec, &opts, &mut loader)
     };
-    let (eb, db) = {
-        let mut loader = FsLoader::new(s.dir.to_path_buf(), s.target.clone(), &mut ctx.files);
-        verify::events(Rc::new(reread), s.target, &opts, &mut loader)
+    let (eb, mut db) = {
+        let source = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
+        let mut loader = PortingLoader {
+            source,
+            from: src_spec,
+            to: s.target,
+            opts: s.opts,
+            diags: Vec::new(),
+        };
+        let (e, mut d) = verify::events(Rc::new(reread), s.target, &opts, &mut loader);
+        d.extend(loader.diags.into_iter().filter(Diagnostic::is_error));
+        (e, d)
     };
+    db.retain(|d| d.is_error());
     let run_errors = |d: &[Diagnostic]| d.iter().filter(|d| d.is_error()).count();
     if run_errors(&da) > 0 {
         diags.extend(da.into_iter().filter(|d| d.is_error()));
@@ -139,7 +150,7 @@ fn verify_port(
         );
         return false;
     }
-    let v = verify::compare(&ea, &eb, s.tools);
+    let v = verify::compare(&ea, &eb, &s.opts.tool_map);
     report(ctx, &v, out_id);
     for r in &v.rapids {
         let mut d = Diagnostic::new(Code::VerifyRapids, r.what.clone());

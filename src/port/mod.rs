@@ -21,6 +21,7 @@ pub mod expand;
 mod flow_ids;
 pub mod forms;
 mod levels;
+pub mod subload;
 pub mod to_named;
 pub mod to_word;
 pub mod toolmap;
