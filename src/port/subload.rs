@@ -42,9 +42,15 @@ impl ProgramLoader for PortingLoader<'_> {
                 return None;
             }
         };
-        let (p, mut d) = read_program(&text, src.file, self.to);
-        let failed = d.iter().any(Diagnostic::is_error);
-        self.diags.append(&mut d);
+        // A subprogram file need not end the program (E0305 is for mains);
+        // any other error means the port does not read back.
+        let (p, d) = read_program(&text, src.file, self.to);
+        let mut errs: Vec<Diagnostic> = d
+            .into_iter()
+            .filter(|d| d.is_error() && d.code != crate::diag::Code::NoProgramEnd)
+            .collect();
+        let failed = !errs.is_empty();
+        self.diags.append(&mut errs);
         (!failed).then(|| Rc::new(p))
     }
 }
