@@ -25,6 +25,7 @@ pub mod subload;
 pub mod to_named;
 pub mod to_word;
 pub mod toolmap;
+mod tools;
 pub mod verify;
 
 use crate::diag::Diagnostic;
