@@ -1,8 +1,9 @@
 //! `cncc port` end to end: the Fanuc demo (facing, G81 holes, a G83 hole,
 //! a pocket and a slot) to Siemens 840D and back, both verified; the tool
-//! map; the `--expand-cycles` fallback; a verification that must fail.
+//! map; the `--expand-cycles` fallback; the first difference a failed
+//! verification names.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::{Command, Output};
 
 fn root() -> PathBuf {
@@ -117,24 +118,47 @@ fn chip_breaking_needs_the_fallback() {
 }
 
 #[test]
-fn a_port_that_cuts_differently_fails_verification() {
-    // CYCLE84 taps rigidly (synchronised feed), G84 feeds at F: the cutting
-    // moves are not the same, so the port is refused and nothing is written.
-    let src = root().join("tests/matrix/tapping/from-siemens840d.mpf");
-    let dir = tempfile::tempdir().unwrap();
-    let out_file = dir.path().join("tap.nc");
-    let out = cncc(&[
-        "port",
-        &src.display().to_string(),
-        "--to",
-        "fanuc",
-        "--verify",
-        "-o",
-        &out_file.display().to_string(),
-    ]);
-    let e = text(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "{e}");
-    assert!(e.contains("verify: DIFFERENT"), "{e}");
-    assert!(e.contains("E0616"), "{e}");
-    assert!(!Path::new(&out_file).exists());
+fn verification_names_the_first_cutting_difference() {
+    use cncc::dialect::builtin::builtin;
+    use cncc::driver::read_program;
+    use cncc::interp::{flow::NoLoader, Options};
+    use cncc::port::{verify, ToolMap};
+    use cncc::span::FileId;
+    let spec = builtin("fanuc").unwrap();
+    let run = |text: &str, file: u32| {
+        let (p, d) = read_program(text, FileId(file), &spec);
+        assert!(d.iter().all(|d| !d.is_error()), "{d:?}");
+        verify::events(
+            std::rc::Rc::new(p),
+            &spec,
+            &Options::default(),
+            &mut NoLoader,
+        )
+        .0
+    };
+    let head = "G21 G90 G94\nT1 M6\nS1000 M3\nG0 X0 Y0 Z5.\nG1 Z-1. F100.\n";
+    let a = run(&format!("{head}X10.\nY10.\nM30\n"), 0);
+    let same = run(&format!("{head}X10.\nY10.\nM30\n"), 1);
+    let off = run(&format!("{head}X10.\nY10.002\nM30\n"), 2);
+    let tools = ToolMap::default();
+    assert!(verify::compare(&a, &same, &tools).same());
+    let v = verify::compare(&a, &off, &tools);
+    assert!(!v.same());
+    let d = v.cutting.unwrap();
+    // Both sides point at line 7 (`Y10.` / `Y10.002`).
+    let line_of = |sp: Option<cncc::span::Span>, text: &str| {
+        let sp = sp.unwrap();
+        text[..sp.start as usize].matches('\n').count() + 1
+    };
+    let ta = format!("{head}X10.\nY10.\nM30\n");
+    let tb = format!("{head}X10.\nY10.002\nM30\n");
+    assert_eq!((line_of(d.a, &ta), line_of(d.b, &tb)), (7, 7), "{}", d.what);
+    // A tool map renumbers the source's tools before comparing.
+    let t5 = run(
+        &format!("G21 G90 G94\nT5 M6\nS1000 M3\nG0 X0 Y0 Z5.\nG1 Z-1. F100.\nX10.\nY10.\nM30\n"),
+        3,
+    );
+    assert!(!verify::compare(&a, &t5, &tools).same());
+    let map = ToolMap::parse("1=5").unwrap();
+    assert!(verify::compare(&a, &t5, &map).same());
 }
