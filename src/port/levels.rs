@@ -13,8 +13,13 @@ use crate::ir::{DimMode, LengthUnit, SpindleState, Stmt, StmtKind, ToolRef, Valu
 pub struct Modal {
     pub absolute: bool,
     pub unit: LengthUnit,
+    /// The last known X and Y in program coordinates (None: not known).
+    pub x: Option<Value>,
+    pub y: Option<Value>,
     /// The last known Z in program coordinates (None: not known here).
     pub z: Option<Value>,
+    /// The active plane is XY (G17).
+    pub plane_xy: bool,
     pub feed: Option<Value>,
     pub speed: Option<Value>,
     /// Spindle turning counter-clockwise (M4).
@@ -22,6 +27,8 @@ pub struct Modal {
     /// G98 (true) / G99 (false).
     pub return_initial: bool,
     pub tool: Option<Value>,
+    /// G53 in this block: its move is in machine coordinates.
+    machine: bool,
 }
 
 impl Modal {
@@ -29,12 +36,16 @@ impl Modal {
         Modal {
             absolute: true,
             unit: LengthUnit::Mm,
+            x: None,
+            y: None,
             z: None,
+            plane_xy: true,
             feed: None,
             speed: None,
             ccw: false,
             return_initial: !spec.has(Capability::CycleRetractRPlaneAtStart),
             tool: None,
+            machine: false,
         }
     }
 
@@ -49,23 +60,55 @@ impl Modal {
             StmtKind::Spindle(SpindleState::Ccw) => self.ccw = true,
             StmtKind::ReturnToInitial(b) => self.return_initial = *b,
             StmtKind::ToolSelect(ToolRef::Number(v)) => self.tool = Some(v.clone()),
-            StmtKind::Motion(m) => {
-                if let Some(z) = &m.target.z {
-                    self.z = if self.absolute && z.dim != Some(DimMode::Incremental) {
-                        Some(z.value.clone())
-                    } else {
-                        None
-                    };
-                }
+            StmtKind::Plane(p) => self.plane_xy = *p == crate::ir::Plane::XY,
+            StmtKind::Motion(_) if self.machine => {
+                self.machine = false;
+                self.forget();
+            }
+            StmtKind::Motion(m) => self.follow(&m.target),
+            StmtKind::Cycle(c) => {
+                // The hole position; the level after it is set by the passes.
+                self.follow(&crate::ir::Axes {
+                    x: c.target.x.clone(),
+                    y: c.target.y.clone(),
+                    ..Default::default()
+                })
+            }
+            StmtKind::MachineCoords => {
+                self.machine = true;
+                self.forget();
             }
             StmtKind::RefReturn { .. }
             | StmtKind::Call { .. }
-            | StmtKind::MachineCoords
             | StmtKind::CoordShift { .. }
             | StmtKind::Transform(_)
-            | StmtKind::WorkOffset { .. } => self.z = None,
+            | StmtKind::WorkOffset { .. } => self.forget(),
             _ => {}
         }
+    }
+
+    /// The position is not known any more.
+    fn forget(&mut self) {
+        self.x = None;
+        self.y = None;
+        self.z = None;
+    }
+
+    /// Follows the end point of a move.
+    pub fn follow(&mut self, t: &crate::ir::Axes) {
+        let absolute = self.absolute;
+        let set = |slot: &mut Option<Value>, c: &Option<crate::ir::Coord>| {
+            if let Some(c) = c {
+                *slot = if absolute && c.dim != Some(DimMode::Incremental) {
+                    Some(c.value.clone())
+                } else {
+                    None
+                };
+            }
+        };
+        set(&mut self.x, &t.x);
+        set(&mut self.y, &t.y);
+        set(&mut self.z, &t.z);
     }
 
     /// Re-entry distance of a Fanuc-style G83 peck (LinuxCNC: 0.010 in).

@@ -11,12 +11,14 @@
 //! * [`forms`]: numbered variables (`#n` ↔ `Rn`), loop and conditional
 //!   forms (Fanuc DO ids, Siemens nesting, LinuxCNC o-words), labels to
 //!   sequence numbers, tool length (G43 H / G49 ↔ D / D0), and the tool map.
+//! * [`arcs`]: Siemens `CIP` arcs as `G2`/`G3` with their centre.
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
 //!   as the moves the interpreter makes for it.
 //!
 //! What the target cannot express is an error naming the construct and
 //! where it is (E0601, E0610..E0614); the writer reports the rest.
 
+mod arcs;
 pub mod expand;
 mod flow_ids;
 pub mod forms;
@@ -57,6 +59,7 @@ pub fn port_program(
     }
     to_named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
+    arcs::run(&mut out, from, to);
     forms::run(&mut out, from, to, opts, &mut diags);
     out.dialect = to.id.clone();
     (out, diags)

@@ -1,5 +1,5 @@
 //! The port matrix: one folder per topic under `tests/matrix/`, each with
-//! source programs `from-<dialect>.<ext>` and, for every target dialect,
+//! source programs `from-<dialect>[-<variant>].<ext>` and, for every target dialect,
 //! one cell:
 //!
 //! * `from-<dialect>.to-<target>`: the exact text `cncc port --verify`
@@ -31,7 +31,8 @@ fn sources(dir: &Path) -> Vec<(PathBuf, String)> {
         if rest.contains(".to-") {
             continue;
         }
-        let dialect = rest.split('.').next().unwrap().to_string();
+        // `from-<dialect>[-<variant>].<ext>`
+        let dialect = rest.split(['.', '-']).next().unwrap().to_string();
         out.push((p, dialect));
     }
     out.sort();
