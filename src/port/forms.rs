@@ -97,6 +97,50 @@ fn numbered_program(p: &mut Program, to: &DialectSpec) {
     }
 }
 
+fn sequence_jumps_to_labels(p: &mut Program) {
+    let mut jumps = Vec::new();
+    for (bi, b) in p.blocks.iter().enumerate() {
+        for (si, s) in b.stmts.iter().enumerate() {
+            if let StmtKind::Goto {
+                target: JumpTarget::Sequence(Value::Number(d)),
+                ..
+            } = &s.kind
+            {
+                if let Some(n) = d.as_int() {
+                    jumps.push((bi, si, n));
+                }
+            }
+        }
+    }
+    for (bi, si, n) in jumps {
+        let Some(ti) = p
+            .blocks
+            .iter()
+            .position(|b| b.number.as_ref().is_some_and(|x| x.node as i64 == n))
+        else {
+            continue;
+        };
+        let target = &mut p.blocks[ti];
+        let span = target.span;
+        let label = target
+            .label
+            .get_or_insert_with(|| Spanned {
+                node: format!("SEQ{n}"),
+                span,
+            })
+            .node
+            .clone();
+        if let StmtKind::Goto { target, dir, .. } = &mut p.blocks[bi].stmts[si].kind {
+            *target = JumpTarget::Label(label);
+            *dir = if ti <= bi {
+                JumpDir::Backward
+            } else {
+                JumpDir::Forward
+            };
+        }
+    }
+}
+
 fn p_unit(spec: &DialectSpec) -> Option<crate::ir::DwellUnit> {
     spec.code_for(Meaning::Dwell).and_then(|c| {
         c.dwell_units
@@ -180,9 +224,15 @@ fn variables(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     }
 }
 
-/// Labels to sequence numbers for a target without labels.
+/// Jumps to sequence numbers become jumps to labels for a target with
+/// labels (`GOTO 10` → `GOTOB SEQ10` with `SEQ10:` on block N10, the
+/// direction from where the block is); labels become sequence numbers for
+/// a target without them.
 fn labels(p: &mut Program, to: &DialectSpec) {
-    if to.has(Capability::StructuredControl) || p.blocks.iter().all(|b| b.label.is_none()) {
+    if to.has(Capability::StructuredControl) {
+        return sequence_jumps_to_labels(p);
+    }
+    if p.blocks.iter().all(|b| b.label.is_none()) {
         return;
     }
     let top = p
@@ -195,6 +245,12 @@ fn labels(p: &mut Program, to: &DialectSpec) {
     let mut numbers = HashMap::new();
     for b in &mut p.blocks {
         let Some(l) = b.label.take() else { continue };
+        // The label's name stays as a comment on its block.
+        let note = StmtKind::Comment {
+            text: format!("{}:", l.node),
+            style: crate::ir::CommentStyle::Paren,
+        };
+        b.stmts.push(crate::ir::Stmt::new(note, l.span));
         let n = match &b.number {
             Some(n) => n.node,
             None => {
