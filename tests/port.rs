@@ -162,3 +162,19 @@ fn verification_names_the_first_cutting_difference() {
     let map = ToolMap::parse("1=5").unwrap();
     assert!(verify::compare(&a, &t5, &map).same());
 }
+
+#[test]
+fn siemens_pocket_and_face_cycles_expand_for_fanuc() {
+    for topic in ["pockets", "faces"] {
+        let src = root().join(format!("tests/matrix/{topic}/from-siemens840d.mpf"));
+        let src = src.display().to_string();
+        let refused = cncc(&["port", &src, "--to", "fanuc"]);
+        assert_eq!(refused.status.code(), Some(1), "{topic}");
+        let out = cncc(&["port", &src, "--to", "fanuc", "--expand-cycles", "--verify"]);
+        let (o, e) = (text(&out.stdout), text(&out.stderr));
+        assert_eq!(out.status.code(), Some(0), "{topic}: {e}");
+        assert!(e.contains("verify: OK"), "{e}");
+        assert!(!o.contains("POCKET") && !o.contains("CYCLE"), "{o}");
+        assert!(o.lines().any(|l| l.starts_with("G1 X")), "{o}");
+    }
+}
