@@ -11,6 +11,8 @@
 //! * [`forms`]: numbered variables (`#n` ↔ `Rn`), loop and conditional
 //!   forms (Fanuc DO ids, Siemens nesting, LinuxCNC o-words), labels to
 //!   sequence numbers, tool length (G43 H / G49 ↔ D / D0), and the tool map.
+//! * [`decls`]: Siemens `DEF` variables as named or free numbered ones;
+//!   [`loops`]: `FOR` as a WHILE loop where the target has no FOR.
 //! * [`arcs`]: Siemens `CIP` arcs as `G2`/`G3` with their centre.
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
 //!   as the moves the interpreter makes for it.
@@ -19,10 +21,12 @@
 //! where it is (E0601, E0610..E0614); the writer reports the rest.
 
 mod arcs;
+mod decls;
 pub mod expand;
 mod flow_ids;
 pub mod forms;
 mod levels;
+mod loops;
 pub mod subload;
 pub mod to_named;
 pub mod to_word;
@@ -59,6 +63,8 @@ pub fn port_program(
     }
     to_named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
+    decls::run(&mut out, to, &mut diags);
+    loops::run(&mut out, to, &mut diags);
     arcs::run(&mut out, from, to);
     forms::run(&mut out, from, to, opts, &mut diags);
     out.dialect = to.id.clone();
