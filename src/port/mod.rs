@@ -13,6 +13,8 @@
 //!   sequence numbers, tool length (G43 H / G49 ↔ D / D0), and the tool map.
 //! * [`decls`]: Siemens `DEF` variables as named or free numbered ones;
 //!   [`loops`]: `FOR` as a WHILE loop where the target has no FOR.
+//! * [`groups`]: a code moved to its own block where the target puts it in
+//!   the modal group of another code in the block (`G80` with `G0`).
 //! * [`arcs`]: Siemens `CIP` arcs as `G2`/`G3` with their centre.
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
 //!   as the moves the interpreter makes for it.
@@ -25,6 +27,7 @@ mod decls;
 pub mod expand;
 mod flow_ids;
 pub mod forms;
+mod groups;
 mod levels;
 mod loops;
 pub mod subload;
@@ -67,6 +70,7 @@ pub fn port_program(
     loops::run(&mut out, to, &mut diags);
     arcs::run(&mut out, from, to);
     forms::run(&mut out, from, to, opts, &mut diags);
+    groups::run(&mut out, to);
     out.dialect = to.id.clone();
     (out, diags)
 }
