@@ -9,6 +9,7 @@
 pub mod canon;
 pub mod check;
 pub mod cli;
+pub mod compare;
 pub mod diag;
 pub mod dialect;
 pub mod driver;
@@ -19,6 +20,7 @@ pub mod ir;
 pub mod lower;
 pub mod post;
 pub mod raise;
+pub mod port;
 pub mod source;
 pub mod span;
 pub mod stepnc;

@@ -80,6 +80,15 @@ pub enum Command {
         /// Write here (whole or not at all) instead of stdout.
         #[arg(short, long)]
         output: Option<PathBuf>,
+        /// Renumber tools: `OLD=NEW` pairs (`1=5,2=7`) or a file of them.
+        #[arg(long = "tool-map", value_name = "MAP")]
+        tool_map: Option<String>,
+        /// Fallback: write every canned cycle as the moves it makes.
+        #[arg(long = "expand-cycles")]
+        expand_cycles: bool,
+        /// Run both programs and compare their cutting moves; exit 1 if they differ.
+        #[arg(long)]
+        verify: bool,
         #[arg(long, value_enum, default_value_t = Format::Human)]
         format: Format,
     },

@@ -1,43 +1,211 @@
-//! `cncc port`: read a program in one dialect, write it in another (or the
-//! same one). Nothing is written unless the whole program could be.
+//! `cncc port`: read a program in one dialect, turn it into the target's
+//! forms ([`crate::port`]), write it with the target's writer and, with
+//! `--verify`, prove that it cuts the same. Nothing is written unless the
+//! whole program could be (and, with `--verify`, was proved the same).
 
 use crate::cli::args::Format;
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
-use crate::driver::read_program;
+use crate::diag::{Code, Diagnostic};
+use crate::dialect::DialectSpec;
+use crate::driver::{read_program, FsLoader};
 use crate::emit::write_program;
+use crate::ir::Program;
+use crate::port::subload::PortingLoader;
+use crate::port::verify::{self, Difference, Verdict};
+use crate::port::{port_program, PortOptions, ToolMap};
+use crate::span::{FileId, Span};
 use std::path::Path;
+use std::rc::Rc;
+use std::sync::Arc;
 
 pub struct PortArgs<'a> {
     pub file: &'a Path,
     pub to: &'a str,
     pub from: Option<&'a str>,
     pub output: Option<&'a Path>,
+    pub tool_map: Option<&'a str>,
+    pub expand_cycles: bool,
+    pub verify: bool,
     pub format: Format,
 }
 
 pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
     let target = ctx.spec(a.to)?;
+    let tool_map = match a.tool_map {
+        Some(m) => ToolMap::from_arg(m).map_err(|why| {
+            Failure::from(
+                Diagnostic::new(Code::BadToolMap, format!("--tool-map: {why}"))
+                    .help("write pairs OLD=NEW separated by commas, e.g. 1=5,2=7"),
+            )
+        })?,
+        None => ToolMap::default(),
+    };
+    let opts = PortOptions {
+        tool_map,
+        expand_cycles: a.expand_cycles,
+    };
     let (id, text) = ctx.add_file(a.file)?;
     let (spec, reason) = ctx.spec_for(a.from, a.file, &text)?;
     if let Some(r) = reason {
         report_detection(a.file, &spec, &r);
     }
-    let (program, diags) = read_program(&text, id, &spec);
+    let (program, mut diags) = read_program(&text, id, &spec);
     if diags.iter().any(|d| d.is_error()) {
         ctx.print(&diags, a.format);
         return Ok(EXIT_INPUT_ERRORS);
     }
-    match write_program(&program, &target) {
-        Ok(out) => {
-            ctx.print(&diags, a.format);
-            crate::cli::output::emit_output(a.output, &out)?;
-            Ok(EXIT_OK)
-        }
-        Err(errs) => {
-            let mut all = diags;
-            all.extend(errs);
-            ctx.print(&all, a.format);
-            Ok(EXIT_INPUT_ERRORS)
-        }
+    let (ported, port_diags) = port_program(&program, &spec, &target, &opts);
+    diags.extend(port_diags);
+    if diags.iter().any(|d| d.is_error()) {
+        ctx.print(&diags, a.format);
+        return Ok(EXIT_INPUT_ERRORS);
     }
+    let out = match write_program(&ported, &target) {
+        Ok(out) => out,
+        Err(errs) => {
+            diags.extend(errs);
+            ctx.print(&diags, a.format);
+            return Ok(EXIT_INPUT_ERRORS);
+        }
+    };
+    if a.verify {
+        let name = match a.output {
+            Some(p) => p.display().to_string(),
+            None => format!("{} (ported to {})", a.file.display(), target.id),
+        };
+        let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
+        let sides = Sides {
+            dir: &dir,
+            source: (program, &spec),
+            target: &target,
+            opts: &opts,
+        };
+        let ok = verify_port(ctx, &sides, &name, &out, &mut diags);
+        ctx.print(&diags, a.format);
+        if !ok {
+            return Ok(EXIT_INPUT_ERRORS);
+        }
+    } else {
+        ctx.print(&diags, a.format);
+    }
+    crate::cli::output::emit_output(a.output, &out)?;
+    Ok(EXIT_OK)
+}
+
+struct Sides<'a> {
+    dir: &'a Path,
+    source: (Program, &'a Arc<DialectSpec>),
+    target: &'a Arc<DialectSpec>,
+    opts: &'a PortOptions,
+}
+
+/// Reads the output back, runs both and compares; prints the verdict.
+fn verify_port(
+    ctx: &mut Context,
+    s: &Sides<'_>,
+    name: &str,
+    out: &str,
+    diags: &mut Vec<Diagnostic>,
+) -> bool {
+    let out_id = ctx.files.add(name.to_string(), out.to_string());
+    let (reread, read_diags) = read_program(out, out_id, s.target);
+    if read_diags.iter().any(|d| d.is_error()) {
+        diags.extend(read_diags);
+        eprintln!(
+            "verify: FAILED: the ported program does not read back as {}",
+            s.target.id
+        );
+        return false;
+    }
+    let opts = crate::interp::Options::default();
+    let (src_prog, src_spec) = (&s.source.0, s.source.1);
+    let (ea, da) = {
+        let mut loader = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
+        verify::events(Rc::new(src_prog.clone()), src_spec, &opts, &mut loader)
+    };
+    let (eb, mut db) = {
+        let source = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
+        let mut loader = PortingLoader {
+            source,
+            from: src_spec,
+            to: s.target,
+            opts: s.opts,
+            diags: Vec::new(),
+        };
+        let (e, mut d) = verify::events(Rc::new(reread), s.target, &opts, &mut loader);
+        d.extend(loader.diags.into_iter().filter(Diagnostic::is_error));
+        (e, d)
+    };
+    db.retain(|d| d.is_error());
+    let run_errors = |d: &[Diagnostic]| d.iter().filter(|d| d.is_error()).count();
+    if run_errors(&da) > 0 {
+        diags.extend(da.into_iter().filter(|d| d.is_error()));
+        eprintln!("verify: FAILED: the source program stops with an error, so there is nothing to compare");
+        return false;
+    }
+    if run_errors(&db) > run_errors(&da) {
+        diags.extend(db.into_iter().filter(|d| d.is_error()));
+        eprintln!(
+            "verify: FAILED: the ported program stops with an error the source does not have"
+        );
+        return false;
+    }
+    let v = verify::compare(&ea, &eb, &s.opts.tool_map);
+    report(ctx, &v, out_id);
+    for r in &v.rapids {
+        let mut d = Diagnostic::new(Code::VerifyRapids, r.what.clone());
+        if let Some(sp) = r.b.or(r.a) {
+            d = d.primary(sp, "here");
+        }
+        diags.push(d);
+    }
+    if let Some(first) = &v.cutting {
+        diags.push(mismatch(first));
+    }
+    v.same()
+}
+
+fn place(ctx: &Context, sp: Option<Span>) -> String {
+    match sp {
+        Some(sp) => {
+            let (line, _) = ctx.files.line_col(sp.file, sp.start as usize);
+            format!("{}:{line}", ctx.files.name(sp.file))
+        }
+        None => "(nothing)".into(),
+    }
+}
+
+fn report(ctx: &Context, v: &Verdict, _out: FileId) {
+    match &v.cutting {
+        None => eprintln!(
+            "verify: OK: the same {} operations (within {} mm); {} rapid(s) differ",
+            v.cutting_moves,
+            verify::TOLERANCE_MM,
+            v.rapids.len()
+        ),
+        Some(d) => eprintln!(
+            "verify: DIFFERENT: {}\n  source: {}\n  port:   {}",
+            d.what,
+            place(ctx, d.a),
+            place(ctx, d.b)
+        ),
+    }
+}
+
+fn mismatch(d: &Difference) -> Diagnostic {
+    let mut diag = Diagnostic::new(
+        Code::VerifyMismatch,
+        format!("the port cuts differently: {}", d.what),
+    );
+    if let Some(a) = d.a {
+        diag = diag.primary(a, "the source cuts this");
+    }
+    if let Some(b) = d.b {
+        diag = if d.a.is_some() {
+            diag.secondary(b, "the port cuts this")
+        } else {
+            diag.primary(b, "the port cuts this")
+        };
+    }
+    diag.help("the port is not written; report the construct, or use --expand-cycles for cycles")
 }

@@ -187,6 +187,33 @@ codes! {
     PostNotCarried = "W0900", "post-not-carried", Warning,
         "a STEP-NC value the target's cycle or toolpath cannot carry",
         "The posted program cannot express this value (a drilling strategy's reduced feeds, a spindle stop at the bottom of a reaming pass...). It is named in a comment in the program at the workingstep it belongs to, so nothing is dropped silently; check whether the machining still meets the plan.";
+    PortCycle = "E0610", "port-cycle", Error,
+        "a canned cycle the target has no equivalent for",
+        "`cncc port` maps drilling cycles to the target's own cycles (G81..G89 to CYCLE81..CYCLE89 and back). This cycle, or this combination of its words, has no equivalent that cuts the same way in the target. Allow the documented fallback `--expand-cycles` to write the cycle as the moves it makes.";
+    PortCycleBlock = "E0611", "port-cycle-block", Error,
+        "a block in a modal cycle that does more than position the next hole",
+        "While a canned cycle (or an MCALL) is in force, `cncc port` carries blocks that give only the next hole position (X, Y). A block that also changes the depth, another axis or the cycle's words there cannot be carried one-to-one. Cancel the cycle (G80 / MCALL) and start it again with the new words, or use `--expand-cycles`.";
+    PortRunTimeValue = "E0612", "port-run-time-value", Error,
+        "a cycle parameter the port needs but that is known only at run time",
+        "Mapping a cycle computes some parameters from the modal state (the initial level for G98, the feed and speed for a tapping pitch, sums of planes). Here a value it needs is an expression, incremental, or not set before the cycle. Give the value as a number before the cycle, use G99, or use `--expand-cycles`.";
+    PortVariable = "E0613", "port-variable", Error,
+        "a variable the target has no equivalent for",
+        "Numbered variables map one-to-one: Fanuc/Haas/LinuxCNC `#n` to Siemens `Rn` and back, when the target has that number. Named and declared variables, and numbers outside the target's ranges, cannot be carried; rename them to numbered variables in the source.";
+    PortControlFlow = "E0614", "port-control-flow", Error,
+        "a control-flow structure the target cannot express",
+        "Loops and conditionals are written in the target's own form (Fanuc WHILE [..] DO1 / END1, Siemens WHILE / ENDWHILE, LinuxCNC o-words). This one has no form in the target (for example more than three nested Fanuc DO loops, or an IF block in Fanuc Macro B). Rewrite it with jumps, or choose another target.";
+    BadToolMap = "E0615", "bad-tool-map", Error,
+        "a tool map that cannot be read",
+        "`--tool-map` takes pairs `OLD=NEW` separated by commas (`1=5,2=7`) or a file with one pair per line (`#` starts a comment). Tool numbers are whole and not negative; each old number appears once.";
+    VerifyMismatch = "E0616", "verify-mismatch", Error,
+        "the ported program does not cut the same as the source",
+        "`cncc port --verify` runs both programs and compares their cutting moves (feed moves and arcs, within 1 micrometre, with their feed rates). The first difference is shown with the statement in each program. Rapids that differ are listed as notes only.";
+    PortApproximate = "W0610", "port-approximate", Warning,
+        "a construct carried to the target with a documented difference",
+        "The target's form of this construct does the same cutting but differs in something the port cannot make equal (a spindle orientation, a register the target derives itself, a re-entry distance). Read the message; `--verify` shows whether the cutting moves still match.";
+    VerifyRapids = "W0611", "verify-rapids-differ", Warning,
+        "the ported program's rapid moves differ from the source's",
+        "`--verify` found the same cutting moves, but some rapid (G0) moves go elsewhere (for example a cycle that returns to another level). They do not cut, but check them for collisions.";
     LengthWithoutPoint = "W0001", "length-without-decimal-point", Warning,
         "a length written without a decimal point",
         "With the decimal-point rule of this dialect (Fanuc parameter 3401#0 = 0), `X10` means 10 least input increments (0.010 mm or 0.0010 in), not 10 mm. Write `X10.` if whole units are meant. Load a spec with `integer-lengths=\"units\"` for a control set to calculator-type input.";

@@ -174,7 +174,7 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
             w.cannot(
                 span,
                 &format!("the named cycle call `{}`", c.name),
-                "use the target's canned cycles (G81..G89)",
+                "use the target's canned cycles (G81..G89), or `cncc port --expand-cycles` to write it as the moves it makes",
             );
         }
         K::CycleCall(c) => sin::cycle_call(w, c, words),

@@ -1,0 +1,329 @@
+//! Walks two operation lists side by side. Where they part, it looks
+//! ahead for the nearest place both go on the same way (a few operations
+//! matching in a row) and reports what lies between as one difference, so
+//! one changed block gives one difference, not a cascade. On operations
+//! that match it compares the technology (feeds, speeds, dwells) and the
+//! rapids that led to them.
+
+use super::describe::{self, num};
+use super::ops::{Op, OpKind, Ops};
+use super::{CompareOptions, Comparison, DiffKind, Difference};
+use crate::toolpath::P3;
+use std::ops::Range;
+
+/// How far ahead (operations, on each side) a resynchronisation looks.
+const WINDOW: usize = 256;
+/// How many operations must match in a row to count as back in step.
+const RUN: usize = 3;
+/// Differences reported before the comparison stops.
+pub const MAX_DIFFERENCES: usize = 1000;
+
+pub(super) struct Aligner<'a> {
+    a: &'a Ops,
+    b: &'a Ops,
+    opts: &'a CompareOptions,
+    out: Comparison,
+    /// The open technology difference (kind, A value, B value), which
+    /// following matched operations with the same values extend.
+    open_tech: Option<(DiffKind, f64, f64)>,
+}
+
+fn close(p: P3, q: P3, tol: f64) -> bool {
+    (0..3).all(|k| (p[k] - q[k]).abs() <= tol)
+}
+
+/// Do two operations cut the same (geometry only)?
+pub fn same_cut(x: &Op, y: &Op, tol: f64) -> bool {
+    match (&x.kind, &y.kind) {
+        (OpKind::Line { to: p, .. }, OpKind::Line { to: q, .. })
+        | (OpKind::Probe { to: p }, OpKind::Probe { to: q }) => close(*p, *q, tol),
+        (OpKind::Plunge { at: p, .. }, OpKind::Plunge { at: q, .. }) => close(*p, *q, tol),
+        (OpKind::Arc { to: p, geom: g, .. }, OpKind::Arc { to: q, geom: h, .. }) => {
+            let [u, v, _] = g.axes;
+            g.axes == h.axes
+                && g.rotation == h.rotation
+                && close(*p, *q, tol)
+                && (g.centre[u] - h.centre[u]).abs() <= tol
+                && (g.centre[v] - h.centre[v]).abs() <= tol
+        }
+        (OpKind::Tool(s), OpKind::Tool(t)) => s == t,
+        _ => false,
+    }
+}
+
+fn differ(x: f64, y: f64) -> bool {
+    (x - y).abs() > 1e-6 * x.abs().max(y.abs()).max(1.0)
+}
+
+impl<'a> Aligner<'a> {
+    pub fn new(a: &'a Ops, b: &'a Ops, opts: &'a CompareOptions) -> Self {
+        let out = Comparison {
+            same: true,
+            differences: Vec::new(),
+            rapid_differences: Vec::new(),
+            truncated: false,
+            ops_a: a.ops.len(),
+            ops_b: b.ops.len(),
+        };
+        Aligner {
+            a,
+            b,
+            opts,
+            out,
+            open_tech: None,
+        }
+    }
+
+    fn same(&self, i: usize, j: usize) -> bool {
+        same_cut(&self.a.ops[i], &self.b.ops[j], self.opts.tolerance_mm)
+    }
+
+    pub fn run(mut self) -> Comparison {
+        let (na, nb) = (self.a.ops.len(), self.b.ops.len());
+        let (mut i, mut j) = (0, 0);
+        while i < na || j < nb {
+            if self.out.differences.len() >= MAX_DIFFERENCES {
+                self.out.truncated = true;
+                break;
+            }
+            if i < na && j < nb && self.same(i, j) {
+                self.matched(i, j);
+                i += 1;
+                j += 1;
+                continue;
+            }
+            self.open_tech = None;
+            let (di, dj) = self.resync(i, j);
+            self.region(i..i + di, j..j + dj);
+            i += di;
+            j += dj;
+        }
+        self.out.same = self.out.differences.is_empty();
+        self.out
+    }
+
+    /// Are `a[p..]` and `b[q..]` in step: [`RUN`] matches in a row, or
+    /// both ending together?
+    fn in_step(&self, p: usize, q: usize) -> bool {
+        let (na, nb) = (self.a.ops.len(), self.b.ops.len());
+        for k in 0..RUN {
+            if p + k == na || q + k == nb {
+                return p + k == na && q + k == nb;
+            }
+            if !self.same(p + k, q + k) {
+                return false;
+            }
+        }
+        true
+    }
+
+    /// The fewest operations to skip on each side (fewest in all first)
+    /// before the two are in step again; the rest of both when never.
+    fn resync(&self, i: usize, j: usize) -> (usize, usize) {
+        let (ra, rb) = (self.a.ops.len() - i, self.b.ops.len() - j);
+        for total in 1..=2 * WINDOW {
+            // Prefer a replacement (equal skips) over an insertion.
+            let mut order: Vec<usize> = (0..=total).collect();
+            order.sort_by_key(|&di| (di as isize - (total - di) as isize).unsigned_abs());
+            for di in order {
+                let dj = total - di;
+                if di > WINDOW || dj > WINDOW || di > ra || dj > rb {
+                    continue;
+                }
+                if self.in_step(i + di, j + dj) {
+                    return (di, dj);
+                }
+            }
+        }
+        (ra, rb)
+    }
+
+    /// The operation group and tool at the start of a range (the
+    /// neighbouring operation's when the range is empty).
+    fn group_of(ops: &Ops, r: &Range<usize>) -> (usize, i64) {
+        let k = r.start.min(ops.ops.len().saturating_sub(1));
+        ops.ops.get(k).map(|o| (o.group, o.tool)).unwrap_or((0, 0))
+    }
+
+    /// Reports the operations between two in-step places as one difference.
+    fn region(&mut self, ra: Range<usize>, rb: Range<usize>) {
+        let (a, b) = (&self.a.ops[ra.clone()], &self.b.ops[rb.clone()]);
+        let tools = |s: &[Op]| s.iter().all(|o| matches!(o.kind, OpKind::Tool(_)));
+        let kind = if tools(a) && tools(b) {
+            DiffKind::Tool
+        } else {
+            DiffKind::Cuts
+        };
+        let what = match (a, b) {
+            ([], [x, ..]) => format!(
+                "only in B: {} ({} operation{})",
+                describe::op(x),
+                b.len(),
+                s(b.len())
+            ),
+            ([x, ..], []) => format!(
+                "only in A: {} ({} operation{})",
+                describe::op(x),
+                a.len(),
+                s(a.len())
+            ),
+            ([x], [y]) => format!("A: {}; B: {}", describe::op(x), describe::op(y)),
+            ([x, ..], [y, ..]) => format!(
+                "A: {} operations from {}; B: {} operations from {}",
+                a.len(),
+                describe::op(x),
+                b.len(),
+                describe::op(y)
+            ),
+            ([], []) => return,
+        };
+        let pts: Vec<P3> = a.iter().chain(b).filter_map(describe::end_of).collect();
+        let d = self.difference(kind, what, ra, rb, pts);
+        self.out.differences.push(d);
+    }
+
+    fn difference(
+        &self,
+        kind: DiffKind,
+        what: String,
+        ra: Range<usize>,
+        rb: Range<usize>,
+        pts: Vec<P3>,
+    ) -> Difference {
+        let span = |ops: &Ops, r: &Range<usize>| {
+            ops.ops
+                .get(r.start)
+                .filter(|_| !r.is_empty())
+                .map(|o| o.span)
+        };
+        let (group_a, tool_a) = Self::group_of(self.a, &ra);
+        let (group_b, tool_b) = Self::group_of(self.b, &rb);
+        Difference {
+            kind,
+            what,
+            a: span(self.a, &ra),
+            b: span(self.b, &rb),
+            a_ops: ra,
+            b_ops: rb,
+            group_a,
+            group_b,
+            tool_a,
+            tool_b,
+            region: bbox(&pts),
+        }
+    }
+
+    /// Compares what two matching operations ran with.
+    fn matched(&mut self, i: usize, j: usize) {
+        let (x, y) = (&self.a.ops[i], &self.b.ops[j]);
+        if self.opts.compare_rapids {
+            self.rapids(i, j);
+        }
+        if !self.opts.compare_feeds || matches!(x.kind, OpKind::Tool(_)) {
+            return;
+        }
+        let checks = [
+            (DiffKind::Feed, x.feed, y.feed),
+            (DiffKind::Spindle, x.spindle, y.spindle),
+            (DiffKind::Dwell, x.dwell, y.dwell),
+        ];
+        let mut found = None;
+        for (kind, p, q) in checks {
+            if differ(p, q) {
+                found = Some((kind, p, q));
+                break;
+            }
+        }
+        let Some((kind, p, q)) = found else {
+            self.open_tech = None;
+            return;
+        };
+        if let Some((k, op, oq)) = self.open_tech {
+            if let Some(last) = self.out.differences.last_mut() {
+                if k == kind && !differ(op, p) && !differ(oq, q) && last.a_ops.end == i {
+                    last.a_ops.end = i + 1;
+                    last.b_ops.end = j + 1;
+                    return;
+                }
+            }
+        }
+        self.open_tech = Some((kind, p, q));
+        let what = match kind {
+            DiffKind::Feed => format!(
+                "feed: A {}; B {} ({})",
+                describe::feed(x),
+                describe::feed(y),
+                describe::op(x)
+            ),
+            DiffKind::Spindle => format!(
+                "spindle: A S{}; B S{} ({})",
+                num(p),
+                num(q),
+                describe::op(x)
+            ),
+            _ => format!(
+                "dwell: A {} s; B {} s (after {})",
+                num(p),
+                num(q),
+                describe::op(x)
+            ),
+        };
+        let pts: Vec<P3> = describe::end_of(x).into_iter().collect();
+        let d = self.difference(kind, what, i..i + 1, j..j + 1, pts);
+        self.out.differences.push(d);
+    }
+
+    /// Lists rapids before two matching operations that differ.
+    fn rapids(&mut self, i: usize, j: usize) {
+        let (x, y) = (&self.a.ops[i], &self.b.ops[j]);
+        let ra = &self.a.rapids[x.rapids.clone()];
+        let rb = &self.b.rapids[y.rapids.clone()];
+        let tol = self.opts.tolerance_mm;
+        let same = ra.len() == rb.len() && ra.iter().zip(rb).all(|(p, q)| close(p.0, q.0, tol));
+        if same || self.out.rapid_differences.len() >= MAX_DIFFERENCES {
+            return;
+        }
+        let via = |r: &[(P3, crate::span::Span)]| {
+            if r.is_empty() {
+                "none".to_string()
+            } else {
+                r.iter()
+                    .map(|p| describe::point(p.0))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            }
+        };
+        let what = format!(
+            "rapids before {}: A via {}; B via {}",
+            describe::op(x),
+            via(ra),
+            via(rb)
+        );
+        let pts: Vec<P3> = ra.iter().chain(rb).map(|p| p.0).collect();
+        let mut d = self.difference(DiffKind::Rapids, what, i..i + 1, j..j + 1, pts);
+        d.a = ra.first().map(|p| p.1).or(d.a);
+        d.b = rb.first().map(|p| p.1).or(d.b);
+        self.out.rapid_differences.push(d);
+    }
+}
+
+fn s(n: usize) -> &'static str {
+    if n == 1 {
+        ""
+    } else {
+        "s"
+    }
+}
+
+/// The box around points (none when there are none).
+pub fn bbox(pts: &[P3]) -> Option<[P3; 2]> {
+    let first = *pts.first()?;
+    let mut b = [first, first];
+    for p in pts {
+        for k in 0..3 {
+            b[0][k] = b[0][k].min(p[k]);
+            b[1][k] = b[1][k].max(p[k]);
+        }
+    }
+    Some(b)
+}

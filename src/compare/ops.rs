@@ -1,0 +1,216 @@
+//! The resolved event stream reduced to the operations a comparison looks
+//! at: cutting moves, drilled plunges and tool changes, each with the
+//! technology it ran with and the rapids that led to it.
+//!
+//! A run of vertical feed moves at one X Y, with only vertical rapids
+//! between them, is one [`OpKind::Plunge`] (a hole), known by its X Y and
+//! deepest Z: G83 pecks, CYCLE83 pecks and a single G81 plunge to the same
+//! depth are the same hole. Dwells are added to the operation before them;
+//! comments, stops and coolant are not compared.
+
+use crate::span::Span;
+use crate::toolpath::{ArcGeom, Event, FeedMode, Move, MoveKind, P3};
+use std::ops::Range;
+
+/// What one operation does.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum OpKind {
+    /// A straight feed move, compared by its end point.
+    Line { from: P3, to: P3 },
+    /// A circular or helical move: end point, centre, direction, turns.
+    Arc { from: P3, to: P3, geom: ArcGeom },
+    /// Vertical feeds at one X Y: `at` is X, Y and the deepest Z reached;
+    /// `top` the highest Z the feeds started from.
+    Plunge { at: P3, top: f64 },
+    /// A probing move, by its end point.
+    Probe { to: P3 },
+    /// A tool change to this tool.
+    Tool(i64),
+}
+
+/// One operation with its technology and where it came from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Op {
+    pub kind: OpKind,
+    /// The statement of its first move (of the tool change).
+    pub span: Span,
+    /// The statement of its last move (a plunge's last peck).
+    pub last_span: Span,
+    /// Feed rate in mm/min (per-revolution feeds times the spindle speed).
+    pub feed: f64,
+    pub feed_mode: FeedMode,
+    /// Spindle speed in rpm, signed (negative: counter-clockwise).
+    pub spindle: f64,
+    /// The tool in the spindle.
+    pub tool: i64,
+    /// Seconds of dwell after it.
+    pub dwell: f64,
+    /// The rapids since the operation before, as indices into
+    /// [`Ops::rapids`].
+    pub rapids: Range<usize>,
+    /// How many tool changes came before it (its operation group).
+    pub group: usize,
+}
+
+/// The operations of one program, with the rapids between them.
+#[derive(Clone, Debug, Default)]
+pub struct Ops {
+    pub ops: Vec<Op>,
+    /// Rapid end points with their statements, in order.
+    pub rapids: Vec<(P3, Span)>,
+}
+
+impl Ops {
+    /// The operations of a whole event list.
+    pub fn from_events(events: &[Event], tolerance_mm: f64) -> Ops {
+        let mut b = OpBuilder::new(tolerance_mm);
+        for e in events {
+            b.push(e);
+        }
+        b.finish()
+    }
+}
+
+/// Builds [`Ops`] from events one at a time (for streamed runs).
+#[derive(Clone, Debug)]
+pub struct OpBuilder {
+    out: Ops,
+    tol: f64,
+    /// Is the last operation a plunge that may still grow?
+    open_plunge: bool,
+    rapids_start: usize,
+    group: usize,
+}
+
+impl OpBuilder {
+    pub fn new(tolerance_mm: f64) -> OpBuilder {
+        OpBuilder {
+            out: Ops::default(),
+            tol: tolerance_mm.max(1e-9),
+            open_plunge: false,
+            rapids_start: 0,
+            group: 0,
+        }
+    }
+
+    fn same_xy(&self, a: P3, b: P3) -> bool {
+        (a[0] - b[0]).abs() <= self.tol && (a[1] - b[1]).abs() <= self.tol
+    }
+
+    pub fn push(&mut self, e: &Event) {
+        match e {
+            Event::Move(m) => self.motion(m),
+            Event::ToolChange { tool, span } => {
+                self.open_plunge = false;
+                self.group += 1;
+                let op = Op {
+                    kind: OpKind::Tool(*tool),
+                    span: *span,
+                    last_span: *span,
+                    feed: 0.0,
+                    feed_mode: FeedMode::PerMinute,
+                    spindle: 0.0,
+                    tool: *tool,
+                    dwell: 0.0,
+                    rapids: self.take_rapids(),
+                    group: self.group,
+                };
+                self.out.ops.push(op);
+            }
+            Event::Dwell { seconds, .. } => {
+                if let Some(last) = self.out.ops.last_mut() {
+                    last.dwell += seconds;
+                }
+            }
+            Event::Stop { .. } | Event::Comment { .. } => {}
+        }
+    }
+
+    pub fn finish(self) -> Ops {
+        self.out
+    }
+
+    fn take_rapids(&mut self) -> Range<usize> {
+        let r = self.rapids_start..self.out.rapids.len();
+        self.rapids_start = self.out.rapids.len();
+        r
+    }
+
+    fn motion(&mut self, m: &Move) {
+        let vertical = self.same_xy(m.from, m.to);
+        let kind = match m.kind {
+            MoveKind::Rapid => {
+                if !(self.open_plunge && vertical) {
+                    self.open_plunge = false;
+                    self.out.rapids.push((m.to, m.span));
+                }
+                return;
+            }
+            MoveKind::Line if vertical => {
+                if (m.from[2] - m.to[2]).abs() <= self.tol {
+                    return; // a move of no length cuts nothing
+                }
+                if self.grow_plunge(m) {
+                    return;
+                }
+                self.open_plunge = true;
+                let at = [m.to[0], m.to[1], m.to[2].min(m.from[2])];
+                OpKind::Plunge {
+                    at,
+                    top: m.from[2].max(m.to[2]),
+                }
+            }
+            MoveKind::Line => OpKind::Line {
+                from: m.from,
+                to: m.to,
+            },
+            MoveKind::Arc(geom) => OpKind::Arc {
+                from: m.from,
+                to: m.to,
+                geom,
+            },
+            MoveKind::Probe => OpKind::Probe { to: m.to },
+        };
+        if !matches!(kind, OpKind::Plunge { .. }) {
+            self.open_plunge = false;
+        }
+        let feed = match m.feed_mode {
+            FeedMode::PerMinute => m.feed,
+            FeedMode::PerRev => m.feed * m.spindle.abs(),
+        };
+        let op = Op {
+            kind,
+            span: m.span,
+            last_span: m.span,
+            feed,
+            feed_mode: m.feed_mode,
+            spindle: m.spindle,
+            tool: m.tool,
+            dwell: 0.0,
+            rapids: self.take_rapids(),
+            group: self.group,
+        };
+        self.out.ops.push(op);
+    }
+
+    /// Adds a vertical feed to the open plunge at its X Y, if there is one.
+    fn grow_plunge(&mut self, m: &Move) -> bool {
+        if !self.open_plunge {
+            return false;
+        }
+        let tol = self.tol;
+        let Some(last) = self.out.ops.last_mut() else {
+            return false;
+        };
+        let OpKind::Plunge { at, top } = &mut last.kind else {
+            return false;
+        };
+        if (at[0] - m.to[0]).abs() > tol || (at[1] - m.to[1]).abs() > tol {
+            return false;
+        }
+        at[2] = at[2].min(m.to[2]);
+        *top = top.max(m.from[2]).max(m.to[2]);
+        last.last_span = m.span;
+        true
+    }
+}

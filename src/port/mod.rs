@@ -1,0 +1,110 @@
+//! `cncc port`: a program read in one dialect turned into the forms the
+//! target dialect has, before the target's writer prints it.
+//!
+//! The passes work on a copy of the meta-model, each asking the target
+//! spec (capabilities, code table, cycle signatures), never its name:
+//!
+//! * [`to_named`]: word-address cycles (G81..G89 with R, Z, Q, P, G98/G99,
+//!   the position-only blocks that repeat them, G80) become named cycle
+//!   calls `MCALL CYCLE8x(..)` + positions + `MCALL` where the target has
+//!   named cycles and no G8x codes; [`to_word`] does the reverse.
+//! * [`forms`]: numbered variables (`#n` ↔ `Rn`), loop and conditional
+//!   forms (Fanuc DO ids, Siemens nesting, LinuxCNC o-words), labels to
+//!   sequence numbers, tool length (G43 H / G49 ↔ D / D0), and the tool map.
+//! * [`decls`]: Siemens `DEF` variables as named or free numbered ones;
+//!   [`loops`]: `FOR` as a WHILE loop where the target has no FOR.
+//! * [`groups`]: a code moved to its own block where the target puts it in
+//!   the modal group of another code in the block (`G80` with `G0`).
+//! * [`arcs`]: Siemens `CIP` arcs as `G2`/`G3` with their centre.
+//! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
+//!   as the moves the interpreter makes for it.
+//!
+//! What the target cannot express is an error naming the construct and
+//! where it is (E0601, E0610..E0614); the writer reports the rest.
+
+mod arcs;
+mod decls;
+pub mod expand;
+mod flow_ids;
+pub mod forms;
+mod groups;
+mod levels;
+mod loops;
+pub mod subload;
+pub mod to_named;
+pub mod to_word;
+pub mod toolmap;
+mod tools;
+pub mod verify;
+
+use crate::diag::Diagnostic;
+use crate::dialect::DialectSpec;
+use crate::ir::{Block, Decimal, Expr, ExprId, ExprKind, Program, Value};
+use crate::span::Span;
+pub use toolmap::ToolMap;
+
+/// What the user allowed and asked for.
+#[derive(Clone, Debug, Default)]
+pub struct PortOptions {
+    pub tool_map: ToolMap,
+    /// Write cycles the target cannot express as the moves they make.
+    pub expand_cycles: bool,
+}
+
+/// Turns `p` (read as `from`) into the target's forms. Diagnostics may be
+/// errors (the program cannot be ported as asked) or warnings.
+pub fn port_program(
+    p: &Program,
+    from: &DialectSpec,
+    to: &DialectSpec,
+    opts: &PortOptions,
+) -> (Program, Vec<Diagnostic>) {
+    let mut out = p.clone();
+    let mut diags = Vec::new();
+    if opts.expand_cycles {
+        expand::expand_unmappable(&mut out, from, to, &mut diags);
+    }
+    to_named::run(&mut out, from, to, &mut diags);
+    to_word::run(&mut out, from, to, &mut diags);
+    decls::run(&mut out, to, &mut diags);
+    loops::run(&mut out, to, &mut diags);
+    arcs::run(&mut out, from, to);
+    forms::run(&mut out, from, to, opts, &mut diags);
+    groups::run(&mut out, to);
+    out.dialect = to.id.clone();
+    (out, diags)
+}
+
+/// A number as an expression in `p`'s arena (for cycle arguments).
+pub(crate) fn number_expr(p: &mut Program, d: Decimal, span: Span) -> ExprId {
+    p.exprs.alloc(Expr {
+        kind: ExprKind::Number(d),
+        span,
+    })
+}
+
+/// A value as an expression (numbers get a new node, expressions are shared).
+pub(crate) fn value_expr(p: &mut Program, v: &Value, span: Span) -> ExprId {
+    match v {
+        Value::Number(d) => number_expr(p, *d, span),
+        Value::Expr(e) => *e,
+    }
+}
+
+/// A computed length written back exactly enough: six places, trimmed.
+pub(crate) fn decimal(v: f64) -> Decimal {
+    let mut d = Decimal::from_f64(v, 6).normalized();
+    d.point = true;
+    d
+}
+
+/// A block made by a pass from `like`: same skip level, no number or label.
+pub(crate) fn follow_block(like: &Block, stmts: Vec<crate::ir::Stmt>) -> Block {
+    Block {
+        span: like.span,
+        skip: like.skip.clone(),
+        number: None,
+        label: None,
+        stmts,
+    }
+}

@@ -1,0 +1,180 @@
+//! `cncc port` end to end: the Fanuc demo (facing, G81 holes, a G83 hole,
+//! a pocket and a slot) to Siemens 840D and back, both verified; the tool
+//! map; the `--expand-cycles` fallback; the first difference a failed
+//! verification names.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn cncc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_cncc"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+fn demo() -> String {
+    root()
+        .join("tests/programs/fanuc/port_demo.nc")
+        .display()
+        .to_string()
+}
+
+#[test]
+fn demo_to_siemens_and_back_verifies() {
+    let dir = tempfile::tempdir().unwrap();
+    let mpf = dir.path().join("demo.mpf");
+    let mpf_s = mpf.display().to_string();
+    let out = cncc(&[
+        "port",
+        &demo(),
+        "--to",
+        "siemens840d",
+        "--verify",
+        "-o",
+        &mpf_s,
+    ]);
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("verify: OK"), "{err}");
+    let siemens = std::fs::read_to_string(&mpf).unwrap();
+    assert!(siemens.contains("MCALL CYCLE81(2,2,0,-10)"), "{siemens}");
+    assert!(
+        siemens.contains("MCALL CYCLE83(2,2,0,-20,,,5,0,,,1,1,,,,,0.254)"),
+        "{siemens}"
+    );
+    // The explicit moves are the same statements in Siemens form.
+    for line in [
+        "G1 Z-3 F150",
+        "G3 X80 Y20 I0 J5",
+        "G3 X75 Y35 CR=5",
+        "X90 F300",
+    ] {
+        assert!(
+            siemens.lines().any(|l| l == line),
+            "no `{line}` in\n{siemens}"
+        );
+    }
+    let back = dir.path().join("back.nc");
+    let back_s = back.display().to_string();
+    let out = cncc(&["port", &mpf_s, "--to", "fanuc", "--verify", "-o", &back_s]);
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("verify: OK"), "{err}");
+    let fanuc = std::fs::read_to_string(&back).unwrap();
+    assert!(fanuc.contains("G99 G81 X10. Y10. Z-10. R2."), "{fanuc}");
+    assert!(fanuc.contains("G99 G83 X50. Y40. Z-20. R2. Q5."), "{fanuc}");
+    assert!(fanuc.contains("G80"), "{fanuc}");
+}
+
+#[test]
+fn tool_map_renumbers_tools_and_registers() {
+    let out = cncc(&[
+        "port",
+        &demo(),
+        "--to",
+        "fanuc",
+        "--tool-map",
+        "1=11,2=12",
+        "--verify",
+    ]);
+    let (o, e) = (text(&out.stdout), text(&out.stderr));
+    assert_eq!(out.status.code(), Some(0), "{e}");
+    assert!(o.contains("T11 M6") && o.contains("G43 H11"), "{o}");
+    assert!(o.contains("T12 M6") && o.contains("T3 M6"), "{o}");
+    let bad = cncc(&["port", &demo(), "--to", "fanuc", "--tool-map", "1=5,1=6"]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(text(&bad.stderr).contains("E0615"), "{}", text(&bad.stderr));
+}
+
+#[test]
+fn chip_breaking_needs_the_fallback() {
+    let src = root().join("tests/matrix/pecking/from-linuxcnc.ngc");
+    let src = src.display().to_string();
+    let refused = cncc(&["port", &src, "--to", "siemens840d"]);
+    assert_eq!(refused.status.code(), Some(1));
+    assert!(text(&refused.stderr).contains("E0610"));
+    let out = cncc(&[
+        "port",
+        &src,
+        "--to",
+        "siemens840d",
+        "--expand-cycles",
+        "--verify",
+    ]);
+    let (o, e) = (text(&out.stdout), text(&out.stderr));
+    assert_eq!(out.status.code(), Some(0), "{e}");
+    assert!(e.contains("verify: OK"), "{e}");
+    assert!(!o.contains("CYCLE"), "{o}");
+    assert!(o.contains("G1 X40 Y20 Z-1"), "{o}");
+}
+
+#[test]
+fn verification_names_the_first_cutting_difference() {
+    use cncc::dialect::builtin::builtin;
+    use cncc::driver::read_program;
+    use cncc::interp::{flow::NoLoader, Options};
+    use cncc::port::{verify, ToolMap};
+    use cncc::span::FileId;
+    let spec = builtin("fanuc").unwrap();
+    let run = |text: &str, file: u32| {
+        let (p, d) = read_program(text, FileId(file), &spec);
+        assert!(d.iter().all(|d| !d.is_error()), "{d:?}");
+        verify::events(
+            std::rc::Rc::new(p),
+            &spec,
+            &Options::default(),
+            &mut NoLoader,
+        )
+        .0
+    };
+    let head = "G21 G90 G94\nT1 M6\nS1000 M3\nG0 X0 Y0 Z5.\nG1 Z-1. F100.\n";
+    let a = run(&format!("{head}X10.\nY10.\nM30\n"), 0);
+    let same = run(&format!("{head}X10.\nY10.\nM30\n"), 1);
+    let off = run(&format!("{head}X10.\nY10.002\nM30\n"), 2);
+    let tools = ToolMap::default();
+    assert!(verify::compare(&a, &same, &tools).same());
+    let v = verify::compare(&a, &off, &tools);
+    assert!(!v.same());
+    let d = v.cutting.unwrap();
+    // Both sides point at line 7 (`Y10.` / `Y10.002`).
+    let line_of = |sp: Option<cncc::span::Span>, text: &str| {
+        let sp = sp.unwrap();
+        text[..sp.start as usize].matches('\n').count() + 1
+    };
+    let ta = format!("{head}X10.\nY10.\nM30\n");
+    let tb = format!("{head}X10.\nY10.002\nM30\n");
+    assert_eq!((line_of(d.a, &ta), line_of(d.b, &tb)), (7, 7), "{}", d.what);
+    // A tool map renumbers the source's tools before comparing.
+    let t5 = run(
+        &format!("G21 G90 G94\nT5 M6\nS1000 M3\nG0 X0 Y0 Z5.\nG1 Z-1. F100.\nX10.\nY10.\nM30\n"),
+        3,
+    );
+    assert!(!verify::compare(&a, &t5, &tools).same());
+    let map = ToolMap::parse("1=5").unwrap();
+    assert!(verify::compare(&a, &t5, &map).same());
+}
+
+#[test]
+fn siemens_pocket_and_face_cycles_expand_for_fanuc() {
+    for topic in ["pockets", "faces"] {
+        let src = root().join(format!("tests/matrix/{topic}/from-siemens840d.mpf"));
+        let src = src.display().to_string();
+        let refused = cncc(&["port", &src, "--to", "fanuc"]);
+        assert_eq!(refused.status.code(), Some(1), "{topic}");
+        let out = cncc(&["port", &src, "--to", "fanuc", "--expand-cycles", "--verify"]);
+        let (o, e) = (text(&out.stdout), text(&out.stderr));
+        assert_eq!(out.status.code(), Some(0), "{topic}: {e}");
+        assert!(e.contains("verify: OK"), "{e}");
+        assert!(!o.contains("POCKET") && !o.contains("CYCLE"), "{o}");
+        assert!(o.lines().any(|l| l.starts_with("G1 X")), "{o}");
+    }
+}
