@@ -93,6 +93,9 @@ pub enum Capability {
     /// interpreter does; otherwise to the initial level (G98), as Fanuc,
     /// Haas and Siemens controls do at power-on.
     CycleRetractRPlaneAtStart,
+    /// `;` is the end-of-block character (Fanuc, Haas): read as the start
+    /// of a comment, never written as one (comments are written `( )`).
+    SemicolonEndOfBlock,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -126,6 +129,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
         "cycle-retract-r-plane-at-start",
         Capability::CycleRetractRPlaneAtStart,
     ),
+    ("semicolon-end-of-block", Capability::SemicolonEndOfBlock),
 ];
 
 impl Capability {

@@ -278,13 +278,13 @@ fn comment(
     last: bool,
     words: &mut Vec<String>,
 ) {
-    use crate::dialect::Capability::{ParenComments, SemicolonComments};
+    use crate::dialect::Capability::{ParenComments, SemicolonComments, SemicolonEndOfBlock};
     use crate::ir::CommentStyle;
     // A `(` inside a comment read as `( )` reads back the same way.
     let paren_ok = w.spec.has(ParenComments)
         && !text.contains(')')
         && (style == CommentStyle::Paren || !text.contains('('));
-    let semi = w.spec.has(SemicolonComments);
+    let semi = w.spec.has(SemicolonComments) && !w.spec.has(SemicolonEndOfBlock);
     if paren_ok && (style == CommentStyle::Paren || !semi || !last) {
         words.push(format!("({text})"));
     } else if semi {

@@ -26,6 +26,8 @@ pub struct Tracker {
     /// +1 clockwise, -1 counter-clockwise, 0 stopped.
     direction: f64,
     coolant: CoolantState,
+    /// Spindle-synchronised feed (rigid tapping): mm per revolution.
+    sync_pitch: Option<f64>,
 }
 
 impl Default for Tracker {
@@ -50,6 +52,7 @@ impl Tracker {
             speed: 0.0,
             direction: 0.0,
             coolant: CoolantState::default(),
+            sync_pitch: None,
         }
     }
 
@@ -88,11 +91,17 @@ impl Tracker {
 
     fn make(&mut self, kind: MoveKind, to: P3, span: Span) -> Event {
         let from = std::mem::replace(&mut self.pos, to);
+        // Synchronised with the spindle, a move advances one pitch per
+        // revolution: pitch x speed per minute.
+        let feed = match self.sync_pitch {
+            Some(p) if kind != MoveKind::Rapid => p * self.speed,
+            _ => self.feed,
+        };
         Event::Move(Move {
             kind,
             from,
             to,
-            feed: self.feed,
+            feed,
             feed_mode: self.feed_mode,
             tool: self.tool,
             spindle: self.speed * self.direction,
@@ -180,6 +189,8 @@ impl Tracker {
                     span,
                 ))
             }
+            StartSpeedFeedSync { pitch, .. } => self.sync_pitch = Some(pitch * self.scale),
+            StopSpeedFeedSync => self.sync_pitch = None,
             Dwell(s) => return Some(Event::Dwell { seconds: *s, span }),
             ProgramStop | OptionalProgramStop => return Some(Event::Stop { end: false, span }),
             ProgramEnd => return Some(Event::Stop { end: true, span }),
@@ -212,8 +223,6 @@ impl Tracker {
             | DisableAdaptiveFeed
             | EnableFeedHold
             | DisableFeedHold
-            | StartSpeedFeedSync { .. }
-            | StopSpeedFeedSync
             | TurnProbeOn
             | TurnProbeOff
             | SetToolTableEntry { .. }
