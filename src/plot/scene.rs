@@ -186,6 +186,9 @@ pub struct Scene {
     pub marks: Vec<[P3; 2]>,
     /// Tool diameters (mm), for drawing holes.
     pub diameters: std::collections::HashMap<i64, f64>,
+    /// The bottom of the last plunge (file, point) while its tool stays
+    /// over it.
+    plunged: Option<(usize, P3)>,
 }
 
 impl Scene {
@@ -196,6 +199,7 @@ impl Scene {
             tools: Vec::new(),
             marks: Vec::new(),
             diameters: Default::default(),
+            plunged: None,
         }
     }
 
@@ -206,6 +210,10 @@ impl Scene {
         if !rapid {
             self.note_feed(file, m);
         }
+        // A drilled hole: a vertical feed down, then straight back up
+        // (a plunge followed by a move sideways is an entry, not a hole).
+        let vertical = (m.from[0] - m.to[0]).abs() < 1e-6 && (m.from[1] - m.to[1]).abs() < 1e-6;
+        let hole = vertical && m.to[2] > m.from[2] && self.plunged.is_some_and(|(f, _)| f == file);
         for (i, panel) in self.layout.panels.iter().enumerate() {
             let key = LayerKey {
                 panel: i,
@@ -215,16 +223,33 @@ impl Scene {
             };
             let layer = self.layers.entry(key).or_default();
             draw_move(layer, panel, m);
-            let plunge = matches!(m.kind, MoveKind::Line)
-                && (m.from[0] - m.to[0]).abs() < 1e-6
-                && (m.from[1] - m.to[1]).abs() < 1e-6
-                && m.to[2] < m.from[2];
-            if plunge && panel.view == super::View::Top {
+            if hole && panel.view == super::View::Top {
                 let dia = self.diameters.get(&m.tool).copied().unwrap_or(0.0);
                 let r = (dia / 2.0 * panel.scale).max(3.0);
-                layer.hole(panel.px(m.to), r);
+                let at = self.plunged.map(|(_, p)| p).unwrap_or(m.from);
+                let key = LayerKey {
+                    rapid: false,
+                    tool: m.tool,
+                    ..key
+                };
+                self.layers.entry(key).or_default().hole(panel.px(at), r);
             }
         }
+        self.note_plunge(file, m);
+    }
+
+    fn note_plunge(&mut self, file: usize, m: &Move) {
+        let vertical = (m.from[0] - m.to[0]).abs() < 1e-6 && (m.from[1] - m.to[1]).abs() < 1e-6;
+        self.plunged = match self.plunged {
+            _ if vertical && matches!(m.kind, MoveKind::Line) && m.to[2] < m.from[2] => {
+                Some((file, m.to))
+            }
+            // Peck retracts and re-entries keep the hole open.
+            Some((f, p)) if vertical && f == file => {
+                Some((f, if m.to[2] < p[2] { m.to } else { p }))
+            }
+            _ => None,
+        };
     }
 
     fn note_feed(&mut self, file: usize, m: &Move) {
