@@ -1,7 +1,7 @@
 //! `cncc plot FILE... -o OUT.svg|OUT.png`: draws one program, or two
 //! overlaid with their differences marked (see [`crate::plot`]). Each
-//! file is run twice as a stream (extent, then drawing), so memory holds
-//! only the simplified picture (and, for an overlay, the operations being
+//! file is run once as a stream, so memory holds only the simplified
+//! picture (and, for an overlay, the operations being
 //! compared).
 
 use crate::cli::args::Format;
@@ -10,9 +10,9 @@ use crate::cli::output::write_bytes_atomically;
 use crate::cli::stats::{keep_lines_at, load_tool_table, machine_mm, stream_events};
 use crate::compare::{compare_ops, CompareOptions, OpBuilder};
 use crate::interp::Options;
-use crate::plot::{legend, png, svg, Layout, Picture, Scene, View};
+use crate::plot::{legend, png, svg, Picture, Scene, View};
 use crate::stats::Bounds;
-use crate::toolpath::{Event, Stock};
+use crate::toolpath::Stock;
 use std::path::{Path, PathBuf};
 
 pub struct PlotArgs<'a> {
@@ -71,28 +71,13 @@ fn parse_args(a: &PlotArgs<'_>) -> Result<(Kind, Vec<View>, Option<Stock>), Fail
 pub fn run(ctx: &mut Context, mut a: PlotArgs<'_>) -> Result<i32, Failure> {
     let (kind, views, stock) = parse_args(&a)?;
     let mut diags = load_tool_table(ctx, a.tool_table, &mut a.options)?;
-    // Pass 1: the extent of every move (and the stock).
     let mut bounds = Bounds::default();
     if let Some(s) = stock {
         bounds.add(s.corner);
         bounds.add(s.max());
     }
-    for path in a.files {
-        let (id, d) = stream_events(ctx, path, a.dialect, &a.options, true, |e| {
-            if let Event::Move(m) = e {
-                bounds.add_move(m);
-            }
-        })?;
-        keep_lines_at(ctx, path, id, &d, &[])?;
-        diags.extend(d);
-    }
-    ctx.print(&diags, a.format);
-    if diags.iter().any(|d| d.is_error()) {
-        return Ok(EXIT_INPUT_ERRORS);
-    }
-    // Pass 2: draw, and gather operations to compare an overlay.
     let overlay = a.files.len() > 1;
-    let mut scene = Scene::new(Layout::new(&views, &bounds, a.width as f64));
+    let mut scene = Scene::new(views, a.width as f64, bounds);
     let mm = machine_mm(&a.options);
     let table = &a.options.tool_table;
     scene.diameters = table
@@ -100,17 +85,24 @@ pub fn run(ctx: &mut Context, mut a: PlotArgs<'_>) -> Result<i32, Failure> {
         .iter()
         .map(|t| (t.number, t.diameter * mm))
         .collect();
+    // One pass per file: draw, and gather operations to compare an overlay.
     let copts = CompareOptions::default();
     let mut ops = Vec::new();
     for (i, path) in a.files.iter().enumerate() {
         let mut builder = OpBuilder::new(copts.tolerance_mm);
-        stream_events(ctx, path, a.dialect, &a.options, false, |e| {
+        let (id, d) = stream_events(ctx, path, a.dialect, &a.options, true, |e| {
             scene.push(i, e);
             if overlay {
                 builder.push(e);
             }
         })?;
+        keep_lines_at(ctx, path, id, &d, &[])?;
+        diags.extend(d);
         ops.push(builder.finish());
+    }
+    ctx.print(&diags, a.format);
+    if diags.iter().any(|d| d.is_error()) {
+        return Ok(EXIT_INPUT_ERRORS);
     }
     scene.finish();
     let mut differences = None;
@@ -143,6 +135,7 @@ pub fn run(ctx: &mut Context, mut a: PlotArgs<'_>) -> Result<i32, Failure> {
         differences,
     );
     let picture = Picture {
+        layout: scene.layout(),
         scene,
         stock,
         legend,

@@ -32,7 +32,11 @@ pub struct Panel {
 impl Panel {
     /// A point in picture pixels.
     pub fn px(&self, p: P3) -> (f64, f64) {
-        let (u, v) = self.view.project(p);
+        self.uv(self.view.project(p))
+    }
+
+    /// A view-plane point (mm, v up) in picture pixels.
+    pub fn uv(&self, (u, v): (f64, f64)) -> (f64, f64) {
         (
             self.x + MARGIN + (u - self.left) * self.scale,
             self.y + MARGIN + TITLE + (self.top - v) * self.scale,
@@ -66,29 +70,55 @@ fn extent(view: View, b: &Bounds) -> (f64, f64, f64, f64) {
     (l, r, bot, top)
 }
 
+/// The box, grown to at least a millimetre along each axis.
+fn padded(bounds: &Bounds) -> Bounds {
+    let mut b = *bounds;
+    if b.is_empty() {
+        b.add([0.0; 3]);
+    }
+    // A flat or empty extent still gets a millimetre (as a function of
+    // the extent that never falls as the extent grows).
+    for k in 0..3 {
+        let short = 1.0 - (b.max[k] - b.min[k]);
+        if short > 0.0 {
+            b.min[k] -= short / 2.0;
+            b.max[k] += short / 2.0;
+        }
+    }
+    b
+}
+
+/// The common scale (pixels per mm) and each view's extent.
+fn scale_and_extents(
+    views: &[View],
+    bounds: &Bounds,
+    width: f64,
+) -> (f64, Vec<(f64, f64, f64, f64)>) {
+    let b = padded(bounds);
+    let draw_w = (width - LEGEND_W - 2.0 * MARGIN).max(100.0);
+    let ext: Vec<_> = views.iter().map(|v| extent(*v, &b)).collect();
+    let widest = ext.iter().map(|e| e.1 - e.0).fold(1e-9, f64::max);
+    let mut scale = draw_w / widest;
+    // Keep the picture no taller than three widths.
+    let tall: f64 = ext.iter().map(|e| e.3 - e.2).sum();
+    if tall * scale > 3.0 * width {
+        scale = 3.0 * width / tall;
+    }
+    (scale, ext)
+}
+
 impl Layout {
+    /// The scale a picture of what lies in `bounds` would have. It only
+    /// falls as the box grows: a scene simplified at the scale of a part
+    /// of the program is fine enough for the whole.
+    pub fn scale(views: &[View], bounds: &Bounds, width: f64) -> f64 {
+        scale_and_extents(views, bounds, width).0
+    }
+
     /// Panels for `views` of what lies in `bounds`, `width` pixels wide.
     pub fn new(views: &[View], bounds: &Bounds, width: f64) -> Layout {
-        let mut b = *bounds;
-        if b.is_empty() {
-            b.add([0.0; 3]);
-        }
-        // A flat or empty extent still gets a millimetre.
-        for k in 0..3 {
-            if b.max[k] - b.min[k] < 1.0 {
-                b.min[k] -= 0.5;
-                b.max[k] += 0.5;
-            }
-        }
+        let (scale, ext) = scale_and_extents(views, bounds, width);
         let draw_w = (width - LEGEND_W - 2.0 * MARGIN).max(100.0);
-        let ext: Vec<_> = views.iter().map(|v| extent(*v, &b)).collect();
-        let widest = ext.iter().map(|e| e.1 - e.0).fold(1e-9, f64::max);
-        let mut scale = draw_w / widest;
-        // Keep the picture no taller than three widths.
-        let tall: f64 = ext.iter().map(|e| e.3 - e.2).sum();
-        if tall * scale > 3.0 * width {
-            scale = 3.0 * width / tall;
-        }
         let mut y = 0.0;
         let mut panels = Vec::new();
         for (view, e) in views.iter().zip(&ext) {

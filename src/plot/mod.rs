@@ -4,11 +4,13 @@
 //! diameters and feeds); two programs overlaid, one colour each, with
 //! their differences (from [`crate::compare`]) circled in red.
 //!
-//! A plot is made in two passes over the events: the first finds the
-//! extent ([`crate::stats::Bounds`]) for the [`layout::Layout`], the
-//! second streams the moves into a [`scene::Scene`] that drops detail
-//! below the pixel as it comes. [`svg::render`] writes SVG text directly;
-//! [`png::render`] rasterises with tiny-skia.
+//! A plot is made in one pass over the events: a [`scene::Scene`] takes
+//! the moves as they stream in, in view-plane millimetres, and drops
+//! detail below the pixel as it comes (at the scale of the box seen so
+//! far, which is never coarser than the final one); the
+//! [`layout::Layout`] is made at the end from the whole box.
+//! [`svg::render`] writes SVG text directly; [`png::render`] rasterises
+//! with tiny-skia.
 
 pub mod layout;
 pub mod legend;
@@ -27,6 +29,8 @@ use crate::toolpath::{Stock, P3};
 #[derive(Clone, Debug)]
 pub struct Picture {
     pub scene: Scene,
+    /// Where the views go (from [`Scene::layout`]).
+    pub layout: Layout,
     pub stock: Option<Stock>,
     pub legend: Vec<legend::Entry>,
     /// Two files overlaid.

@@ -2,6 +2,7 @@
 //! marks and legend as the SVG, arcs flattened to a quarter pixel, text in
 //! an 8x8 bitmap font (font8x8; characters outside ASCII show as `?`).
 
+use super::layout::Panel;
 use super::legend::{Rgb, MARK, STOCK};
 use super::scene::Seg;
 use super::Picture;
@@ -29,12 +30,22 @@ fn stroke(width: f32, dashed: bool) -> Stroke {
     }
 }
 
-fn build(segs: &[Seg]) -> Option<tiny_skia::Path> {
+fn build(segs: &[Seg], panel: &Panel) -> Option<tiny_skia::Path> {
     let mut pb = PathBuilder::new();
+    let at = |p| {
+        let (x, y) = panel.uv(p);
+        (x as f32, y as f32)
+    };
     for s in segs {
         match *s {
-            Seg::Move((x, y)) => pb.move_to(x as f32, y as f32),
-            Seg::Line((x, y)) => pb.line_to(x as f32, y as f32),
+            Seg::Move(p) => {
+                let (x, y) = at(p);
+                pb.move_to(x, y)
+            }
+            Seg::Line(p) => {
+                let (x, y) = at(p);
+                pb.line_to(x, y)
+            }
             Seg::Arc {
                 to,
                 centre,
@@ -43,16 +54,20 @@ fn build(segs: &[Seg]) -> Option<tiny_skia::Path> {
                 sweep,
             } => {
                 // Chords within a quarter pixel of the circle.
-                let step = 2.0 * (1.0 - (0.25 / r).min(1.0)).acos().max(1e-3);
+                let rp = r * panel.scale;
+                let step = 2.0 * (1.0 - (0.25 / rp).min(1.0)).acos().max(1e-3);
                 let n = ((sweep.abs() / step).ceil() as usize).clamp(1, 10_000);
                 for k in 1..n {
                     let a = start + sweep * k as f64 / n as f64;
-                    pb.line_to(
-                        (centre.0 + r * a.cos()) as f32,
-                        (centre.1 + r * a.sin()) as f32,
-                    );
+                    let (x, y) = at((centre.0 + r * a.cos(), centre.1 + r * a.sin()));
+                    pb.line_to(x, y);
                 }
-                pb.line_to(to.0 as f32, to.1 as f32);
+                let (x, y) = at(to);
+                pb.line_to(x, y);
+            }
+            Seg::Hole { centre, r } => {
+                let (x, y) = at(centre);
+                pb.push_circle(x, y, super::svg::hole_px(r, panel) as f32);
             }
         }
     }
@@ -102,7 +117,7 @@ fn text(pm: &mut Pixmap, x: i64, y: i64, s: &str, c: Rgb) {
 
 /// The picture as PNG bytes.
 pub fn render(p: &Picture) -> Result<Vec<u8>, String> {
-    let l = &p.scene.layout;
+    let l = &p.layout;
     let (w, h) = (l.width.min(MAX_SIDE) as u32, l.height.min(MAX_SIDE) as u32);
     let mut pm = Pixmap::new(w.max(1), h.max(1)).ok_or("picture too large")?;
     pm.fill(Color::WHITE);
@@ -140,7 +155,7 @@ pub fn render(p: &Picture) -> Result<Vec<u8>, String> {
         layers.sort_by_key(|(k, _)| (!k.rapid, k.file, k.tool));
         for (key, layer) in layers {
             let (colour, dashed) = super::legend::style(&p.scene, p.overlay, key);
-            if let Some(path) = build(&layer.segs) {
+            if let Some(path) = build(&layer.segs, panel) {
                 let width = super::svg::line_width(p.overlay, key);
                 pm.stroke_path(
                     &path,

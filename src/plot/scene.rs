@@ -1,39 +1,53 @@
-//! What a plot draws, in picture pixels: for each view, file, tool and
-//! kind of move (feed or rapid) one layer of paths, built while the events
-//! stream in. Detail below the pixel is dropped as it comes: points closer
-//! than half a pixel to the last one kept are merged, and a point that
-//! lies within a quarter pixel of the straight line past it is left out,
-//! so a program of millions of moves keeps its shape in a few thousand
-//! segments per view.
+//! What a plot draws, built in one pass while the events stream in: for
+//! each view, file, tool and kind of move (feed or rapid) one layer of
+//! paths, in view-plane millimetres (u right, v up).
+//!
+//! Detail below the pixel is dropped as it comes. The scale of the final
+//! picture is not known until the end, but it can only fall as the box
+//! around the moves grows, so the scale of the box seen so far
+//! ([`Layout::scale`]) gives a tolerance that is fine enough: points
+//! closer than half a pixel to the last one kept are merged, and a point
+//! is left out when the straight line past it stays within a quarter
+//! pixel of every point left out since the last one kept (a sleeve, in
+//! constant time per point). A program of millions of moves keeps its
+//! shape in a few thousand segments per view.
 
-use super::layout::{Layout, Panel};
+use super::layout::Layout;
+use super::view::View;
+use crate::stats::Bounds;
 use crate::toolpath::{Event, Move, MoveKind, P3};
 use std::collections::BTreeMap;
 
 /// Points closer than this (pixels) are one.
 const MERGE_PX: f64 = 0.5;
-/// A point this close (pixels) to the chord past it is left out.
+/// Points left out stay this close (pixels) to the line drawn.
 const CHORD_PX: f64 = 0.25;
-/// Most points left out of one straight run before one is kept anyway.
-const MAX_SKIPPED: usize = 32;
+/// Moves between re-estimates of the scale.
+const RESCALE_EVERY: u64 = 1024;
 
-type Pt = (f64, f64);
+/// A view-plane point, mm.
+pub type Pt = (f64, f64);
 
-/// One piece of a path, pixels.
+/// One piece of a path, view-plane millimetres.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Seg {
     /// Start a new subpath here.
     Move(Pt),
     Line(Pt),
-    /// A circular arc to `to` around `centre`: `start` angle and signed
-    /// `sweep` in screen radians (y down, positive turning clockwise as
-    /// seen).
+    /// A circular arc to `to` around `centre`, from angle `start` through
+    /// the signed `sweep` (radians, counter-clockwise positive, v up).
     Arc {
         to: Pt,
         centre: Pt,
         r: f64,
         start: f64,
         sweep: f64,
+    },
+    /// A drilled hole seen from above: a circle of the tool's radius
+    /// (drawn at least a few pixels wide).
+    Hole {
+        centre: Pt,
+        r: f64,
     },
 }
 
@@ -46,34 +60,42 @@ pub struct LayerKey {
     pub tool: i64,
 }
 
+/// The straight run being extended: its start, first direction, and the
+/// cone of directions (relative to the first) that keep every point left
+/// out within tolerance.
+#[derive(Clone, Copy, Debug)]
+struct Sleeve {
+    anchor: Pt,
+    dir: f64,
+    lo: f64,
+    hi: f64,
+    reach: f64,
+}
+
 /// One layer's paths, with the state of the simplifier.
 #[derive(Clone, Debug, Default)]
 pub struct Layer {
     pub segs: Vec<Seg>,
     last: Option<Pt>,
-    /// The start of the straight run that ends at `last`, and the points
-    /// left out of it.
-    anchor: Option<Pt>,
-    skipped: Vec<Pt>,
+    sleeve: Option<Sleeve>,
     pending: Option<Pt>,
-    /// Where the last hole circle was drawn (pecks draw it once).
+    /// Where the last hole was drawn (pecks draw it once).
     last_hole: Option<Pt>,
 }
 
-fn d2(a: Pt, b: Pt) -> f64 {
-    (a.0 - b.0).powi(2) + (a.1 - b.1).powi(2)
+fn dist(a: Pt, b: Pt) -> f64 {
+    (a.0 - b.0).hypot(a.1 - b.1)
 }
 
-/// Distance from `p` to the segment a-b.
-fn to_segment(p: Pt, a: Pt, b: Pt) -> f64 {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 == 0.0 {
-        0.0
+/// An angle difference in (-pi, pi].
+fn wrap(a: f64) -> f64 {
+    use std::f64::consts::{PI, TAU};
+    let a = a.rem_euclid(TAU);
+    if a > PI {
+        a - TAU
     } else {
-        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len2).clamp(0.0, 1.0)
-    };
-    d2(p, (a.0 + t * dx, a.1 + t * dy)).sqrt()
+        a
+    }
 }
 
 impl Layer {
@@ -81,48 +103,51 @@ impl Layer {
         self.pending.or(self.last)
     }
 
-    fn begin(&mut self, p: Pt) {
-        if let Some(q) = self.pen() {
-            if d2(p, q) < MERGE_PX * MERGE_PX {
-                return;
-            }
+    fn begin(&mut self, p: Pt, merge: f64) {
+        if self.pen().is_some_and(|q| dist(p, q) < merge) {
+            return;
         }
         self.flush();
         self.segs.push(Seg::Move(p));
         self.last = Some(p);
-        self.anchor = None;
-        self.skipped.clear();
+        self.sleeve = None;
     }
 
-    fn line_to(&mut self, p: Pt) {
+    /// `merge` and `chord` are the tolerances in mm.
+    fn line_to(&mut self, p: Pt, merge: f64, chord: f64) {
         let Some(last) = self.last else {
-            self.begin(p);
+            self.begin(p, merge);
             return;
         };
-        if d2(p, last) < MERGE_PX * MERGE_PX {
+        if dist(p, last) < merge {
             self.pending = Some(p);
             return;
         }
         self.pending = None;
-        if let (Some(a), Some(Seg::Line(_))) = (self.anchor, self.segs.last()) {
-            let straight = self.skipped.len() < MAX_SKIPPED
-                && to_segment(last, a, p) <= CHORD_PX
-                && self
-                    .skipped
-                    .iter()
-                    .all(|&s| to_segment(s, a, p) <= CHORD_PX);
-            if straight {
-                self.skipped.push(last);
-                if let Some(Seg::Line(end)) = self.segs.last_mut() {
-                    *end = p;
-                }
+        if let (Some(s), Some(Seg::Line(end))) = (self.sleeve.as_mut(), self.segs.last_mut()) {
+            let d = dist(p, s.anchor);
+            let rel = wrap((p.1 - s.anchor.1).atan2(p.0 - s.anchor.0) - s.dir);
+            if d >= s.reach && rel >= s.lo && rel <= s.hi {
+                // `last` is left out: the line now ends at `p`.
+                let half = (chord / d).min(1.0).asin();
+                s.lo = s.lo.max(rel - half);
+                s.hi = s.hi.min(rel + half);
+                s.reach = d;
+                *end = p;
                 self.last = Some(p);
                 return;
             }
         }
         self.segs.push(Seg::Line(p));
-        self.anchor = Some(last);
-        self.skipped.clear();
+        let d = dist(p, last);
+        let half = (chord / d).min(1.0).asin();
+        self.sleeve = Some(Sleeve {
+            anchor: last,
+            dir: (p.1 - last.1).atan2(p.0 - last.0),
+            lo: -half,
+            hi: half,
+            reach: d,
+        });
         self.last = Some(p);
     }
 
@@ -130,37 +155,25 @@ impl Layer {
         self.flush();
         self.segs.push(seg);
         self.last = Some(to);
-        self.anchor = None;
-        self.skipped.clear();
+        self.sleeve = None;
     }
 
-    /// A circle of radius `r` around `c` (a hole seen from above).
-    fn hole(&mut self, c: Pt, r: f64) {
-        if self
-            .last_hole
-            .is_some_and(|h| d2(h, c) < MERGE_PX * MERGE_PX)
-        {
+    fn hole(&mut self, centre: Pt, r: f64, merge: f64) {
+        if self.last_hole.is_some_and(|h| dist(h, centre) < merge) {
             return;
         }
-        self.last_hole = Some(c);
-        let start = (c.0 + r, c.1);
-        self.begin(start);
-        let seg = Seg::Arc {
-            to: start,
-            centre: c,
-            r,
-            start: 0.0,
-            sweep: std::f64::consts::TAU,
-        };
-        self.arc_to(seg, start);
+        self.last_hole = Some(centre);
+        self.flush();
+        self.segs.push(Seg::Hole { centre, r });
+        self.last = None;
+        self.sleeve = None;
     }
 
     /// Draws a merged last point, if any.
     fn flush(&mut self) {
         if let Some(p) = self.pending.take() {
             self.segs.push(Seg::Line(p));
-            self.anchor = self.last;
-            self.skipped.clear();
+            self.sleeve = None;
             self.last = Some(p);
         }
     }
@@ -178,7 +191,10 @@ pub struct ToolUse {
 /// Everything to draw.
 #[derive(Clone, Debug)]
 pub struct Scene {
-    pub layout: Layout,
+    pub views: Vec<View>,
+    pub width: f64,
+    /// The box around every move (and the stock).
+    pub bounds: Bounds,
     pub layers: BTreeMap<LayerKey, Layer>,
     /// Tools in order of first use (per file).
     pub tools: Vec<ToolUse>,
@@ -186,35 +202,65 @@ pub struct Scene {
     pub marks: Vec<[P3; 2]>,
     /// Tool diameters (mm), for drawing holes.
     pub diameters: std::collections::HashMap<i64, f64>,
-    /// The bottom of the last plunge (file, point) while its tool stays
+    /// Half a pixel at the scale of the box seen so far, mm.
+    half_px: f64,
+    moves: u64,
+    rescaled_at: Bounds,
+    /// The bottom of the last plunge (file, point) while the tool stays
     /// over it.
     plunged: Option<(usize, P3)>,
 }
 
 impl Scene {
-    pub fn new(layout: Layout) -> Scene {
-        Scene {
-            layout,
+    /// An empty scene of `views`, `width` pixels wide, around `bounds`
+    /// (the stock, or nothing).
+    pub fn new(views: Vec<View>, width: f64, bounds: Bounds) -> Scene {
+        let mut s = Scene {
+            views,
+            width,
+            bounds,
             layers: BTreeMap::new(),
             tools: Vec::new(),
             marks: Vec::new(),
             diameters: Default::default(),
+            half_px: 0.0,
+            moves: 0,
+            rescaled_at: bounds,
             plunged: None,
-        }
+        };
+        s.rescale();
+        s
+    }
+
+    fn rescale(&mut self) {
+        let scale = Layout::scale(&self.views, &self.bounds, self.width);
+        self.half_px = MERGE_PX / scale.max(1e-12);
+        self.rescaled_at = self.bounds;
+    }
+
+    /// The picture's layout, from everything seen.
+    pub fn layout(&self) -> Layout {
+        Layout::new(&self.views, &self.bounds, self.width)
     }
 
     /// Adds one event of file `file` (0 or 1).
     pub fn push(&mut self, file: usize, e: &Event) {
         let Event::Move(m) = e else { return };
+        self.bounds.add_move(m);
+        self.moves += 1;
+        if self.moves.is_multiple_of(RESCALE_EVERY) && self.bounds != self.rescaled_at {
+            self.rescale();
+        }
         let rapid = matches!(m.kind, MoveKind::Rapid);
         if !rapid {
             self.note_feed(file, m);
         }
-        // A drilled hole: a vertical feed down, then straight back up
-        // (a plunge followed by a move sideways is an entry, not a hole).
+        // A drilled hole: a vertical feed down, then straight back up (a
+        // plunge followed by a move sideways is an entry, not a hole).
         let vertical = (m.from[0] - m.to[0]).abs() < 1e-6 && (m.from[1] - m.to[1]).abs() < 1e-6;
         let hole = vertical && m.to[2] > m.from[2] && self.plunged.is_some_and(|(f, _)| f == file);
-        for (i, panel) in self.layout.panels.iter().enumerate() {
+        let (merge, chord) = (self.half_px, self.half_px * CHORD_PX / MERGE_PX);
+        for (i, view) in self.views.iter().enumerate() {
             let key = LayerKey {
                 panel: i,
                 file,
@@ -222,28 +268,28 @@ impl Scene {
                 tool: if rapid { 0 } else { m.tool },
             };
             let layer = self.layers.entry(key).or_default();
-            draw_move(layer, panel, m);
-            if hole && panel.view == super::View::Top {
-                let dia = self.diameters.get(&m.tool).copied().unwrap_or(0.0);
-                let r = (dia / 2.0 * panel.scale).max(3.0);
+            draw_move(layer, *view, m, merge, chord);
+            if hole && *view == View::Top {
+                let r = self.diameters.get(&m.tool).copied().unwrap_or(0.0) / 2.0;
                 let at = self.plunged.map(|(_, p)| p).unwrap_or(m.from);
                 let key = LayerKey {
                     rapid: false,
                     tool: m.tool,
                     ..key
                 };
-                self.layers.entry(key).or_default().hole(panel.px(at), r);
+                self.layers
+                    .entry(key)
+                    .or_default()
+                    .hole(view.project(at), r, merge);
             }
         }
-        self.note_plunge(file, m);
+        self.note_plunge(file, m, vertical);
     }
 
-    fn note_plunge(&mut self, file: usize, m: &Move) {
-        let vertical = (m.from[0] - m.to[0]).abs() < 1e-6 && (m.from[1] - m.to[1]).abs() < 1e-6;
+    fn note_plunge(&mut self, file: usize, m: &Move, vertical: bool) {
+        let down = vertical && matches!(m.kind, MoveKind::Line) && m.to[2] < m.from[2];
         self.plunged = match self.plunged {
-            _ if vertical && matches!(m.kind, MoveKind::Line) && m.to[2] < m.from[2] => {
-                Some((file, m.to))
-            }
+            _ if down => Some((file, m.to)),
             // Peck retracts and re-entries keep the hole open.
             Some((f, p)) if vertical && f == file => {
                 Some((f, if m.to[2] < p[2] { m.to } else { p }))
@@ -289,34 +335,30 @@ impl Scene {
     }
 }
 
-fn draw_move(layer: &mut Layer, panel: &Panel, m: &Move) {
-    layer.begin(panel.px(m.from));
+fn draw_move(layer: &mut Layer, view: View, m: &Move, merge: f64, chord: f64) {
+    layer.begin(view.project(m.from), merge);
     match &m.kind {
-        MoveKind::Rapid | MoveKind::Line | MoveKind::Probe => layer.line_to(panel.px(m.to)),
-        MoveKind::Arc(g) => {
-            let r = g.radius(m.from) * panel.scale;
-            match panel.view.arc_sign(g) {
-                Some(sign) if r >= 1.0 => {
-                    let centre = panel.px(g.centre);
-                    let (from, to) = (panel.px(m.from), panel.px(m.to));
-                    let start = (from.1 - centre.1).atan2(from.0 - centre.0);
-                    let sweep = sign * g.sweep(m.from, m.to);
-                    let seg = Seg::Arc {
-                        to,
-                        centre,
-                        r,
-                        start,
-                        sweep,
-                    };
-                    layer.arc_to(seg, to);
-                }
-                _ => {
-                    let tol = 0.5 / panel.scale.max(1e-9);
-                    for p in g.points(m.from, m.to, tol) {
-                        layer.line_to(panel.px(p));
-                    }
+        MoveKind::Rapid | MoveKind::Line | MoveKind::Probe => {
+            layer.line_to(view.project(m.to), merge, chord)
+        }
+        MoveKind::Arc(g) => match view.arc_sign(g) {
+            Some(sign) if g.radius(m.from) >= merge => {
+                let centre = view.project(g.centre);
+                let (from, to) = (view.project(m.from), view.project(m.to));
+                let seg = Seg::Arc {
+                    to,
+                    centre,
+                    r: g.radius(m.from),
+                    start: (from.1 - centre.1).atan2(from.0 - centre.0),
+                    sweep: sign * g.sweep(m.from, m.to),
+                };
+                layer.arc_to(seg, to);
+            }
+            _ => {
+                for p in g.points(m.from, m.to, chord) {
+                    layer.line_to(view.project(p), merge, chord);
                 }
             }
-        }
+        },
     }
 }

@@ -3,6 +3,7 @@
 //! `<g class="legend-entry">`, difference marks as
 //! `<circle class="mark">`.
 
+use super::layout::Panel;
 use super::legend::{hex, Entry, MARK, STOCK};
 use super::scene::Seg;
 use super::Picture;
@@ -16,13 +17,19 @@ fn esc(s: &str) -> String {
         .replace('"', "&quot;")
 }
 
-/// Path data of one layer.
-fn path_data(segs: &[Seg]) -> String {
+/// Path data of one layer, in the panel's pixels.
+fn path_data(segs: &[Seg], panel: &Panel) -> String {
     let mut d = String::with_capacity(segs.len() * 14);
     for s in segs {
         let _ = match *s {
-            Seg::Move((x, y)) => write!(d, "M{x:.1} {y:.1}"),
-            Seg::Line((x, y)) => write!(d, "L{x:.1} {y:.1}"),
+            Seg::Move(p) => {
+                let (x, y) = panel.uv(p);
+                write!(d, "M{x:.1} {y:.1}")
+            }
+            Seg::Line(p) => {
+                let (x, y) = panel.uv(p);
+                write!(d, "L{x:.1} {y:.1}")
+            }
             Seg::Arc {
                 to,
                 centre,
@@ -30,23 +37,43 @@ fn path_data(segs: &[Seg]) -> String {
                 start,
                 sweep,
             } => {
+                let rp = r * panel.scale;
                 // At most a half turn per SVG arc (a full circle needs two).
+                // Counter-clockwise with v up is clockwise in SVG's y down:
+                // sweep-flag 1 is clockwise as seen.
                 let n = (sweep.abs() / PI).ceil().max(1.0) as usize;
-                let flag = u8::from(sweep > 0.0);
+                let flag = u8::from(sweep < 0.0);
                 for k in 1..=n {
-                    let (x, y) = if k == n {
+                    let p = if k == n {
                         to
                     } else {
                         let a = start + sweep * k as f64 / n as f64;
                         (centre.0 + r * a.cos(), centre.1 + r * a.sin())
                     };
-                    let _ = write!(d, "A{r:.1} {r:.1} 0 0 {flag} {x:.1} {y:.1}");
+                    let (x, y) = panel.uv(p);
+                    let _ = write!(d, "A{rp:.1} {rp:.1} 0 0 {flag} {x:.1} {y:.1}");
                 }
                 Ok(())
+            }
+            Seg::Hole { centre, r } => {
+                let (x, y) = panel.uv(centre);
+                let rp = hole_px(r, panel);
+                write!(
+                    d,
+                    "M{:.1} {y:.1}A{rp:.1} {rp:.1} 0 1 0 {:.1} {y:.1}A{rp:.1} {rp:.1} 0 1 0 {:.1} {y:.1}",
+                    x + rp,
+                    x - rp,
+                    x + rp
+                )
             }
         };
     }
     d
+}
+
+/// A hole's radius in pixels: the tool's, at least 3.
+pub fn hole_px(r: f64, panel: &Panel) -> f64 {
+    (r * panel.scale).max(3.0)
 }
 
 fn legend(out: &mut String, entries: &[Entry], x: f64) {
@@ -100,7 +127,7 @@ pub fn line_width(overlay: bool, key: &super::scene::LayerKey) -> f32 {
 
 /// The picture as an SVG document.
 pub fn render(p: &Picture) -> String {
-    let l = &p.scene.layout;
+    let l = &p.layout;
     let mut out = String::new();
     let _ = writeln!(
         out,
@@ -158,7 +185,7 @@ pub fn render(p: &Picture) -> String {
                 key.tool,
                 hex(colour),
                 line_width(p.overlay, key),
-                path_data(&layer.segs)
+                path_data(&layer.segs, panel)
             );
         }
         for ((x, y), r) in p.marks(panel) {

@@ -44,14 +44,14 @@ impl View {
 
     /// How an arc's sweep shows in this view, when it shows as a circular
     /// arc: the factor (+1 or -1) from the arc's signed sweep to the sweep
-    /// in screen angles (y down). None: draw it as a polyline.
+    /// in view-plane angles (counter-clockwise positive, v up). None: draw
+    /// it as a polyline.
     pub fn arc_sign(self, g: &ArcGeom) -> Option<f64> {
         match (self, g.axes) {
-            // Model y up becomes screen y down: angles change sign.
-            (View::Top, [0, 1, 2]) => Some(-1.0),
+            (View::Top, [0, 1, 2]) => Some(1.0),
             // XZ arcs measure from Z towards X; seen with X right and Z
-            // up, screen angle = model angle - 90 degrees, same sign.
-            (View::Side, [2, 0, 1]) => Some(1.0),
+            // up, the view angle is 90 degrees less the arc's: reversed.
+            (View::Side, [2, 0, 1]) => Some(-1.0),
             _ => None,
         }
     }
