@@ -70,9 +70,13 @@ pub fn run(ctx: &mut Context, mut a: DiffArgs<'_>) -> Result<i32, Failure> {
         compare_rapids: a.rapids,
     };
     let mut diags = load_tool_table(ctx, a.tool_table, &mut a.options)?;
-    let mut ba = OpBuilder::new(opts.tolerance_mm);
+    let builder = || match opts.compare_rapids {
+        true => OpBuilder::new(opts.tolerance_mm),
+        false => OpBuilder::without_rapids(opts.tolerance_mm),
+    };
+    let mut ba = builder();
     let (ida, da) = stream_events(ctx, a.a, a.dialect_a, &a.options, true, |e| ba.push(e))?;
-    let mut bb = OpBuilder::new(opts.tolerance_mm);
+    let mut bb = builder();
     let (idb, db) = stream_events(ctx, a.b, a.dialect_b, &a.options, true, |e| bb.push(e))?;
     let (oa, ob) = (ba.finish(), bb.finish());
     let c = compare_ops(&oa, &ob, &opts);

@@ -86,10 +86,13 @@ pub fn run(ctx: &mut Context, mut a: PlotArgs<'_>) -> Result<i32, Failure> {
         .map(|t| (t.number, t.diameter * mm))
         .collect();
     // One pass per file: draw, and gather operations to compare an overlay.
-    let copts = CompareOptions::default();
+    let copts = CompareOptions {
+        compare_rapids: false,
+        ..CompareOptions::default()
+    };
     let mut ops = Vec::new();
     for (i, path) in a.files.iter().enumerate() {
-        let mut builder = OpBuilder::new(copts.tolerance_mm);
+        let mut builder = OpBuilder::without_rapids(copts.tolerance_mm);
         let (id, d) = stream_events(ctx, path, a.dialect, &a.options, true, |e| {
             scene.push(i, e);
             if overlay {

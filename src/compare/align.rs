@@ -38,13 +38,25 @@ pub fn same_cut(x: &Op, y: &Op, tol: f64) -> bool {
         (OpKind::Line { to: p, .. }, OpKind::Line { to: q, .. })
         | (OpKind::Probe { to: p }, OpKind::Probe { to: q }) => close(*p, *q, tol),
         (OpKind::Plunge { at: p, .. }, OpKind::Plunge { at: q, .. }) => close(*p, *q, tol),
-        (OpKind::Arc { to: p, geom: g, .. }, OpKind::Arc { to: q, geom: h, .. }) => {
-            let [u, v, _] = g.axes;
-            g.axes == h.axes
-                && g.rotation == h.rotation
+        (
+            OpKind::Arc {
+                to: p,
+                centre: c,
+                axes: a,
+                rotation: r,
+            },
+            OpKind::Arc {
+                to: q,
+                centre: d,
+                axes: b,
+                rotation: t,
+            },
+        ) => {
+            a == b
+                && r == t
                 && close(*p, *q, tol)
-                && (g.centre[u] - h.centre[u]).abs() <= tol
-                && (g.centre[v] - h.centre[v]).abs() <= tol
+                && (c[0] - d[0]).abs() <= tol
+                && (c[1] - d[1]).abs() <= tol
         }
         (OpKind::Tool(s), OpKind::Tool(t)) => s == t,
         _ => false,
@@ -142,7 +154,10 @@ impl<'a> Aligner<'a> {
     /// neighbouring operation's when the range is empty).
     fn group_of(ops: &Ops, r: &Range<usize>) -> (usize, i64) {
         let k = r.start.min(ops.ops.len().saturating_sub(1));
-        ops.ops.get(k).map(|o| (o.group, o.tool)).unwrap_or((0, 0))
+        ops.ops
+            .get(k)
+            .map(|o| (o.group as usize, o.tool))
+            .unwrap_or((0, 0))
     }
 
     /// Reports the operations between two in-step places as one difference.
@@ -225,7 +240,7 @@ impl<'a> Aligner<'a> {
         let checks = [
             (DiffKind::Feed, x.feed, y.feed),
             (DiffKind::Spindle, x.spindle, y.spindle),
-            (DiffKind::Dwell, x.dwell, y.dwell),
+            (DiffKind::Dwell, x.dwell as f64, y.dwell as f64),
         ];
         let mut found = None;
         for (kind, p, q) in checks {
@@ -276,8 +291,9 @@ impl<'a> Aligner<'a> {
     /// Lists rapids before two matching operations that differ.
     fn rapids(&mut self, i: usize, j: usize) {
         let (x, y) = (&self.a.ops[i], &self.b.ops[j]);
-        let ra = &self.a.rapids[x.rapids.clone()];
-        let rb = &self.b.rapids[y.rapids.clone()];
+        let range = |r: &Range<u32>| r.start as usize..r.end as usize;
+        let ra = &self.a.rapids[range(&x.rapids)];
+        let rb = &self.b.rapids[range(&y.rapids)];
         let tol = self.opts.tolerance_mm;
         let same = ra.len() == rb.len() && ra.iter().zip(rb).all(|(p, q)| close(p.0, q.0, tol));
         if same || self.out.rapid_differences.len() >= MAX_DIFFERENCES {

@@ -121,7 +121,7 @@ pub fn line_width(overlay: bool, key: &super::scene::LayerKey) -> f32 {
     match (key.rapid, overlay, key.file) {
         (true, _, _) => 0.8,
         (false, true, 0) => 3.0,
-        (false, _, _) => 1.2,
+        (false, _, _) => 1.0,
     }
 }
 
