@@ -82,7 +82,7 @@ pub(crate) fn stream_events(
         tracker.push(&call, span, |e| on_event(&e));
         count += 1;
         if let Some(b) = &bar {
-            if count % 4096 == 0 && span.file == id {
+            if count.is_multiple_of(4096) && span.file == id {
                 b.set_position(span.start as u64);
             }
         }

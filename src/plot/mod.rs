@@ -12,6 +12,7 @@
 //! [`svg::render`] writes SVG text directly; [`png::render`] rasterises
 //! with tiny-skia.
 
+pub mod layer;
 pub mod layout;
 pub mod legend;
 pub mod png;
