@@ -181,7 +181,11 @@ fn human(files: &SourceMap, c: &Comparison, paths: [&Path; 2]) -> String {
         if c.rapid_differences.is_empty() {
             String::new()
         } else {
-            format!("; {} rapid differences listed", c.rapid_differences.len())
+            let n = c.rapid_differences.len();
+            format!(
+                "; {n} rapid difference{} listed",
+                if n == 1 { "" } else { "s" }
+            )
         },
         if c.truncated {
             " (stopped early: too many differences)"

@@ -100,8 +100,16 @@ impl Aligner<'_> {
         );
         let pts: Vec<P3> = ra.iter().chain(rb).map(|p| p.0).collect();
         let mut d = self.difference(DiffKind::Rapids, what, i..i + 1, j..j + 1, pts);
-        d.a = ra.first().map(|p| p.1).or(d.a);
-        d.b = rb.first().map(|p| p.1).or(d.b);
+        // Name the first rapid that differs (or the last one, where one
+        // side has more).
+        let k = ra
+            .iter()
+            .zip(rb)
+            .position(|(p, q)| !close(p.0, q.0, tol))
+            .unwrap_or(ra.len().min(rb.len()));
+        let at = |r: &[(P3, crate::span::Span)]| r.get(k).or(r.last()).map(|p| p.1);
+        d.a = at(ra).or(d.a);
+        d.b = at(rb).or(d.b);
         self.out.rapid_differences.push(d);
     }
 }
