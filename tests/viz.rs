@@ -121,6 +121,16 @@ fn diff_names_a_changed_feed_on_both_sides() {
     assert!(text.contains("faster.mpf:39: N320 X75 F350"), "{text}");
     // The F350 holds for the rest of each pass: one difference per pass.
     assert!(text.contains("different: 2 differences"), "{text}");
+    let json = cncc(&["diff", s(&samepart("part.nc")), s(&b), "--format", "json"]);
+    assert_eq!(json.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&json)).unwrap();
+    assert_eq!(v["same"], false);
+    let first = &v["differences"][0];
+    assert_eq!(first["kind"], "feed differs");
+    assert_eq!(
+        (first["a"]["line"].as_u64(), first["b"]["line"].as_u64()),
+        (Some(37), Some(39))
+    );
 }
 
 #[test]

@@ -8,8 +8,8 @@ use super::scene::Seg;
 use super::Picture;
 use tiny_skia::{Color, Paint, PathBuilder, Pixmap, Stroke, StrokeDash, Transform};
 
-/// Largest picture side drawn, pixels.
-const MAX_SIDE: f64 = 16_000.0;
+/// Most pixels a PNG may have (4 bytes each in memory).
+const MAX_PIXELS: f64 = 40e6;
 
 fn paint(c: Rgb) -> Paint<'static> {
     let mut p = Paint::default();
@@ -118,7 +118,15 @@ fn text(pm: &mut Pixmap, x: i64, y: i64, s: &str, c: Rgb) {
 /// The picture as PNG bytes.
 pub fn render(p: &Picture) -> Result<Vec<u8>, String> {
     let l = &p.layout;
-    let (w, h) = (l.width.min(MAX_SIDE) as u32, l.height.min(MAX_SIDE) as u32);
+    if l.width * l.height > MAX_PIXELS {
+        return Err(format!(
+            "a {}x{} picture is too large for PNG (at most {} Mpx): use a smaller --width or SVG",
+            l.width,
+            l.height,
+            MAX_PIXELS / 1e6
+        ));
+    }
+    let (w, h) = (l.width as u32, l.height as u32);
     let mut pm = Pixmap::new(w.max(1), h.max(1)).ok_or("picture too large")?;
     pm.fill(Color::WHITE);
     for (i, panel) in l.panels.iter().enumerate() {

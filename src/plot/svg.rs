@@ -205,3 +205,51 @@ pub fn render(p: &Picture) -> String {
     let _ = writeln!(out, "</svg>");
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plot::{Scene, View};
+    use crate::stats::Bounds;
+    use crate::toolpath::{ArcGeom, CoolantState, Event, FeedMode, Move, MoveKind};
+
+    /// The path of one XY arc from (10, 0) to (0, 10) about the origin.
+    fn arc_path(rotation: i64) -> String {
+        let mut b = Bounds::default();
+        b.add([-10.0, -10.0, 0.0]);
+        b.add([10.0, 10.0, 1.0]);
+        let mut s = Scene::new(vec![View::Top], 600.0, b);
+        let m = Move {
+            kind: MoveKind::Arc(ArcGeom {
+                axes: [0, 1, 2],
+                centre: [0.0; 3],
+                rotation,
+            }),
+            from: [10.0, 0.0, 0.0],
+            to: [0.0, 10.0, 0.0],
+            feed: 100.0,
+            feed_mode: FeedMode::PerMinute,
+            tool: 1,
+            spindle: 0.0,
+            coolant: CoolantState::default(),
+            span: Default::default(),
+        };
+        s.push(0, &Event::Move(m));
+        let layout = s.layout();
+        let layer = s.layers.values().next().unwrap();
+        path_data(&layer.segs, &layout.panels[0])
+    }
+
+    #[test]
+    fn counter_clockwise_arcs_turn_counter_clockwise_on_screen() {
+        // G3 a quarter turn: SVG's sweep-flag 0 (y down: counter-clockwise
+        // as seen), one piece.
+        let ccw = arc_path(1);
+        assert_eq!(ccw.matches('A').count(), 1, "{ccw}");
+        assert!(ccw.contains(" 0 0 0 "), "{ccw}");
+        // G2 the other way round, three quarters: flag 1, in two pieces.
+        let cw = arc_path(-1);
+        assert_eq!(cw.matches('A').count(), 2, "{cw}");
+        assert!(cw.contains(" 0 0 1 ") && !cw.contains(" 0 0 0 "), "{cw}");
+    }
+}
