@@ -148,6 +148,80 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
+    /// Machining statistics per tool and in total: cutting and rapid
+    /// lengths, estimated time, the box of the cutting moves, the Z range.
+    Stats {
+        file: PathBuf,
+        #[arg(long)]
+        dialect: Option<String>,
+        /// A tool table in LinuxCNC's .tbl format (for the tool diameters).
+        #[arg(long = "tool-table", value_name = "T.tbl")]
+        tool_table: Option<PathBuf>,
+        /// Rapid traverse rate for the time estimate, mm/min.
+        #[arg(long = "rapid-rate", value_name = "MM/MIN", default_value_t = 10000.0)]
+        rapid_rate: f64,
+        /// Seconds per tool change for the time estimate.
+        #[arg(long = "tool-change-time", value_name = "S", default_value_t = 5.0)]
+        tool_change_time: f64,
+        #[arg(long, value_enum, default_value_t = Format::Human)]
+        format: Format,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// The semantic difference of two programs (any dialects): cutting
+    /// moves, holes, tools, feeds and speeds; exit 0 when they cut the
+    /// same, 1 when not.
+    Diff {
+        a: PathBuf,
+        b: PathBuf,
+        /// The dialect of A (detected when absent).
+        #[arg(long = "dialect-a")]
+        dialect_a: Option<String>,
+        /// The dialect of B (detected when absent).
+        #[arg(long = "dialect-b")]
+        dialect_b: Option<String>,
+        /// How far apart two points may be and still be the same, mm.
+        #[arg(long, default_value_t = 0.001)]
+        tolerance: f64,
+        /// Do not compare feeds, spindle speeds and dwells.
+        #[arg(long = "no-feeds")]
+        no_feeds: bool,
+        /// Also list rapids that differ (never a difference in the verdict).
+        #[arg(long)]
+        rapids: bool,
+        #[arg(long = "tool-table", value_name = "T.tbl")]
+        tool_table: Option<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Format::Human)]
+        format: Format,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Draw toolpaths as SVG or PNG: top (XY), side (XZ) and isometric
+    /// views; two files are overlaid with their differences marked.
+    Plot {
+        #[arg(required = true, num_args = 1..=2)]
+        files: Vec<PathBuf>,
+        /// The picture to write: .svg or .png.
+        #[arg(short, long)]
+        output: PathBuf,
+        #[arg(long)]
+        dialect: Option<String>,
+        /// Views to draw, in order: top, side, iso.
+        #[arg(long, value_delimiter = ',', default_value = "top,side")]
+        views: Vec<String>,
+        /// The stock: LxWxH[+X+Y+Z] (mm; corner default 0, 0, -H).
+        #[arg(long)]
+        stock: Option<String>,
+        #[arg(long = "tool-table", value_name = "T.tbl")]
+        tool_table: Option<PathBuf>,
+        /// Picture width in pixels (the height follows).
+        #[arg(long, default_value_t = 1200)]
+        width: u32,
+        #[arg(long, value_enum, default_value_t = Format::Human)]
+        format: Format,
+        #[command(flatten)]
+        run: RunArgs,
+    },
     /// List the known dialects and their capabilities.
     Dialects,
     /// Explain a diagnostic code (`E0201`) or name (`two-motion-codes`);

@@ -4,12 +4,15 @@ pub mod args;
 pub mod canon;
 pub mod check;
 pub mod context;
+pub mod diff;
 pub mod info;
 pub mod ir;
 pub mod output;
+pub mod plot;
 pub mod port;
 pub mod post;
 pub mod raise;
+pub mod stats;
 
 use args::{Cli, Command, Format};
 use context::{Context, Failure, EXIT_USAGE};
@@ -22,7 +25,10 @@ pub fn run(cli: Cli) -> i32 {
         | Command::Port { format, .. }
         | Command::Post { format, .. }
         | Command::Canon { format, .. }
-        | Command::Stepnc { format, .. } => *format,
+        | Command::Stepnc { format, .. }
+        | Command::Stats { format, .. }
+        | Command::Diff { format, .. }
+        | Command::Plot { format, .. } => *format,
         _ => Format::Human,
     };
     let mut ctx = match Context::new(&cli, format) {
@@ -120,6 +126,76 @@ pub fn run(cli: Cli) -> i32 {
                 cc2: *cc2,
                 summary: *summary,
                 output: output.as_deref(),
+                format: *format,
+                options: run.options(),
+            },
+        ),
+        Command::Stats {
+            file,
+            dialect,
+            tool_table,
+            rapid_rate,
+            tool_change_time,
+            format,
+            run,
+        } => stats::run(
+            &mut ctx,
+            stats::StatsArgs {
+                file,
+                dialect: dialect.as_deref(),
+                tool_table: tool_table.as_deref(),
+                rapid_rate: *rapid_rate,
+                tool_change_time: *tool_change_time,
+                format: *format,
+                options: run.options(),
+            },
+        ),
+        Command::Diff {
+            a,
+            b,
+            dialect_a,
+            dialect_b,
+            tolerance,
+            no_feeds,
+            rapids,
+            tool_table,
+            format,
+            run,
+        } => diff::run(
+            &mut ctx,
+            diff::DiffArgs {
+                a,
+                b,
+                dialect_a: dialect_a.as_deref(),
+                dialect_b: dialect_b.as_deref(),
+                tolerance: *tolerance,
+                feeds: !*no_feeds,
+                rapids: *rapids,
+                tool_table: tool_table.as_deref(),
+                format: *format,
+                options: run.options(),
+            },
+        ),
+        Command::Plot {
+            files,
+            output,
+            dialect,
+            views,
+            stock,
+            tool_table,
+            width,
+            format,
+            run,
+        } => plot::run(
+            &mut ctx,
+            plot::PlotArgs {
+                files,
+                output,
+                dialect: dialect.as_deref(),
+                views,
+                stock: stock.as_deref(),
+                tool_table: tool_table.as_deref(),
+                width: *width,
                 format: *format,
                 options: run.options(),
             },

@@ -3,9 +3,9 @@
 //! matching in a row) and reports what lies between as one difference, so
 //! one changed block gives one difference, not a cascade. On operations
 //! that match it compares the technology (feeds, speeds, dwells) and the
-//! rapids that led to them.
+//! rapids that led to them ([`super::technology`]).
 
-use super::describe::{self, num};
+use super::describe;
 use super::ops::{Op, OpKind, Ops};
 use super::{CompareOptions, Comparison, DiffKind, Difference};
 use crate::toolpath::P3;
@@ -19,16 +19,16 @@ const RUN: usize = 3;
 pub const MAX_DIFFERENCES: usize = 1000;
 
 pub(super) struct Aligner<'a> {
-    a: &'a Ops,
-    b: &'a Ops,
-    opts: &'a CompareOptions,
-    out: Comparison,
+    pub(super) a: &'a Ops,
+    pub(super) b: &'a Ops,
+    pub(super) opts: &'a CompareOptions,
+    pub(super) out: Comparison,
     /// The open technology difference (kind, A value, B value), which
     /// following matched operations with the same values extend.
-    open_tech: Option<(DiffKind, f64, f64)>,
+    pub(super) open_tech: Option<(DiffKind, f64, f64)>,
 }
 
-fn close(p: P3, q: P3, tol: f64) -> bool {
+pub(super) fn close(p: P3, q: P3, tol: f64) -> bool {
     (0..3).all(|k| (p[k] - q[k]).abs() <= tol)
 }
 
@@ -38,20 +38,32 @@ pub fn same_cut(x: &Op, y: &Op, tol: f64) -> bool {
         (OpKind::Line { to: p, .. }, OpKind::Line { to: q, .. })
         | (OpKind::Probe { to: p }, OpKind::Probe { to: q }) => close(*p, *q, tol),
         (OpKind::Plunge { at: p, .. }, OpKind::Plunge { at: q, .. }) => close(*p, *q, tol),
-        (OpKind::Arc { to: p, geom: g, .. }, OpKind::Arc { to: q, geom: h, .. }) => {
-            let [u, v, _] = g.axes;
-            g.axes == h.axes
-                && g.rotation == h.rotation
+        (
+            OpKind::Arc {
+                to: p,
+                centre: c,
+                axes: a,
+                rotation: r,
+            },
+            OpKind::Arc {
+                to: q,
+                centre: d,
+                axes: b,
+                rotation: t,
+            },
+        ) => {
+            a == b
+                && r == t
                 && close(*p, *q, tol)
-                && (g.centre[u] - h.centre[u]).abs() <= tol
-                && (g.centre[v] - h.centre[v]).abs() <= tol
+                && (c[0] - d[0]).abs() <= tol
+                && (c[1] - d[1]).abs() <= tol
         }
         (OpKind::Tool(s), OpKind::Tool(t)) => s == t,
         _ => false,
     }
 }
 
-fn differ(x: f64, y: f64) -> bool {
+pub(super) fn differ(x: f64, y: f64) -> bool {
     (x - y).abs() > 1e-6 * x.abs().max(y.abs()).max(1.0)
 }
 
@@ -142,7 +154,10 @@ impl<'a> Aligner<'a> {
     /// neighbouring operation's when the range is empty).
     fn group_of(ops: &Ops, r: &Range<usize>) -> (usize, i64) {
         let k = r.start.min(ops.ops.len().saturating_sub(1));
-        ops.ops.get(k).map(|o| (o.group, o.tool)).unwrap_or((0, 0))
+        ops.ops
+            .get(k)
+            .map(|o| (o.group as usize, o.tool))
+            .unwrap_or((0, 0))
     }
 
     /// Reports the operations between two in-step places as one difference.
@@ -182,7 +197,7 @@ impl<'a> Aligner<'a> {
         self.out.differences.push(d);
     }
 
-    fn difference(
+    pub(super) fn difference(
         &self,
         kind: DiffKind,
         what: String,
@@ -211,99 +226,6 @@ impl<'a> Aligner<'a> {
             tool_b,
             region: bbox(&pts),
         }
-    }
-
-    /// Compares what two matching operations ran with.
-    fn matched(&mut self, i: usize, j: usize) {
-        let (x, y) = (&self.a.ops[i], &self.b.ops[j]);
-        if self.opts.compare_rapids {
-            self.rapids(i, j);
-        }
-        if !self.opts.compare_feeds || matches!(x.kind, OpKind::Tool(_)) {
-            return;
-        }
-        let checks = [
-            (DiffKind::Feed, x.feed, y.feed),
-            (DiffKind::Spindle, x.spindle, y.spindle),
-            (DiffKind::Dwell, x.dwell, y.dwell),
-        ];
-        let mut found = None;
-        for (kind, p, q) in checks {
-            if differ(p, q) {
-                found = Some((kind, p, q));
-                break;
-            }
-        }
-        let Some((kind, p, q)) = found else {
-            self.open_tech = None;
-            return;
-        };
-        if let Some((k, op, oq)) = self.open_tech {
-            if let Some(last) = self.out.differences.last_mut() {
-                if k == kind && !differ(op, p) && !differ(oq, q) && last.a_ops.end == i {
-                    last.a_ops.end = i + 1;
-                    last.b_ops.end = j + 1;
-                    return;
-                }
-            }
-        }
-        self.open_tech = Some((kind, p, q));
-        let what = match kind {
-            DiffKind::Feed => format!(
-                "feed: A {}; B {} ({})",
-                describe::feed(x),
-                describe::feed(y),
-                describe::op(x)
-            ),
-            DiffKind::Spindle => format!(
-                "spindle: A S{}; B S{} ({})",
-                num(p),
-                num(q),
-                describe::op(x)
-            ),
-            _ => format!(
-                "dwell: A {} s; B {} s (after {})",
-                num(p),
-                num(q),
-                describe::op(x)
-            ),
-        };
-        let pts: Vec<P3> = describe::end_of(x).into_iter().collect();
-        let d = self.difference(kind, what, i..i + 1, j..j + 1, pts);
-        self.out.differences.push(d);
-    }
-
-    /// Lists rapids before two matching operations that differ.
-    fn rapids(&mut self, i: usize, j: usize) {
-        let (x, y) = (&self.a.ops[i], &self.b.ops[j]);
-        let ra = &self.a.rapids[x.rapids.clone()];
-        let rb = &self.b.rapids[y.rapids.clone()];
-        let tol = self.opts.tolerance_mm;
-        let same = ra.len() == rb.len() && ra.iter().zip(rb).all(|(p, q)| close(p.0, q.0, tol));
-        if same || self.out.rapid_differences.len() >= MAX_DIFFERENCES {
-            return;
-        }
-        let via = |r: &[(P3, crate::span::Span)]| {
-            if r.is_empty() {
-                "none".to_string()
-            } else {
-                r.iter()
-                    .map(|p| describe::point(p.0))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            }
-        };
-        let what = format!(
-            "rapids before {}: A via {}; B via {}",
-            describe::op(x),
-            via(ra),
-            via(rb)
-        );
-        let pts: Vec<P3> = ra.iter().chain(rb).map(|p| p.0).collect();
-        let mut d = self.difference(DiffKind::Rapids, what, i..i + 1, j..j + 1, pts);
-        d.a = ra.first().map(|p| p.1).or(d.a);
-        d.b = rb.first().map(|p| p.1).or(d.b);
-        self.out.rapid_differences.push(d);
     }
 }
 

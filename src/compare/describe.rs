@@ -22,11 +22,16 @@ pub fn point(p: P3) -> String {
 /// What an operation does, in a few words.
 pub fn op(o: &Op) -> String {
     match &o.kind {
-        OpKind::Line { to, .. } => format!("line to {}", point(*to)),
-        OpKind::Arc { to, geom, .. } => {
-            let [u, v, _] = geom.axes;
+        OpKind::Line { to } => format!("line to {}", point(*to)),
+        OpKind::Arc {
+            to,
+            centre,
+            axes,
+            rotation,
+        } => {
             let names = ["X", "Y", "Z"];
-            let turns = geom.rotation.unsigned_abs();
+            let (u, v) = (axes[0] as usize % 3, axes[1] as usize % 3);
+            let turns = rotation.unsigned_abs();
             let extra = if turns > 1 {
                 format!(", {turns} turns")
             } else {
@@ -34,12 +39,12 @@ pub fn op(o: &Op) -> String {
             };
             format!(
                 "{} arc to {} about {}{} {}{}{extra}",
-                if geom.ccw() { "ccw" } else { "cw" },
+                if *rotation > 0 { "ccw" } else { "cw" },
                 point(*to),
                 names[u],
-                num(geom.centre[u]),
+                num(centre[0]),
                 names[v],
-                num(geom.centre[v]),
+                num(centre[1]),
             )
         }
         OpKind::Plunge { at, .. } => {
@@ -53,7 +58,7 @@ pub fn op(o: &Op) -> String {
 /// The point an operation ends at (a plunge's bottom); none for a tool change.
 pub fn end_of(o: &Op) -> Option<P3> {
     match &o.kind {
-        OpKind::Line { to, .. } | OpKind::Arc { to, .. } | OpKind::Probe { to } => Some(*to),
+        OpKind::Line { to } | OpKind::Arc { to, .. } | OpKind::Probe { to } => Some(*to),
         OpKind::Plunge { at, .. } => Some(*at),
         OpKind::Tool(_) => None,
     }

@@ -34,11 +34,15 @@
 pub mod align;
 pub mod describe;
 pub mod ops;
+mod technology;
 
 #[cfg(test)]
 mod tests;
 
 pub use ops::{Op, OpBuilder, OpKind, Ops};
+
+/// Rapid differences listed at most.
+pub const MAX_LISTED: usize = align::MAX_DIFFERENCES;
 
 use crate::span::Span;
 use crate::toolpath::{Event, P3};

@@ -16,9 +16,16 @@ use std::ops::Range;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum OpKind {
     /// A straight feed move, compared by its end point.
-    Line { from: P3, to: P3 },
-    /// A circular or helical move: end point, centre, direction, turns.
-    Arc { from: P3, to: P3, geom: ArcGeom },
+    Line { to: P3 },
+    /// A circular or helical move: end point, centre (in-plane
+    /// coordinates), plane (the in-plane and normal axes, as in
+    /// [`ArcGeom::axes`]), and rotation (sign: direction, magnitude: turns).
+    Arc {
+        to: P3,
+        centre: [f64; 2],
+        axes: [u8; 3],
+        rotation: i32,
+    },
     /// Vertical feeds at one X Y: `at` is X, Y and the deepest Z reached;
     /// `top` the highest Z the feeds started from.
     Plunge { at: P3, top: f64 },
@@ -34,8 +41,6 @@ pub struct Op {
     pub kind: OpKind,
     /// The statement of its first move (of the tool change).
     pub span: Span,
-    /// The statement of its last move (a plunge's last peck).
-    pub last_span: Span,
     /// Feed rate in mm/min (per-revolution feeds times the spindle speed).
     pub feed: f64,
     pub feed_mode: FeedMode,
@@ -44,12 +49,12 @@ pub struct Op {
     /// The tool in the spindle.
     pub tool: i64,
     /// Seconds of dwell after it.
-    pub dwell: f64,
+    pub dwell: f32,
     /// The rapids since the operation before, as indices into
-    /// [`Ops::rapids`].
-    pub rapids: Range<usize>,
+    /// [`Ops::rapids`] (kept only when the builder is asked to).
+    pub rapids: Range<u32>,
     /// How many tool changes came before it (its operation group).
-    pub group: usize,
+    pub group: u32,
 }
 
 /// The operations of one program, with the rapids between them.
@@ -71,6 +76,16 @@ impl Ops {
     }
 }
 
+fn arc_op(to: P3, g: &ArcGeom) -> OpKind {
+    let [u, v, w] = g.axes;
+    OpKind::Arc {
+        to,
+        centre: [g.centre[u], g.centre[v]],
+        axes: [u as u8, v as u8, w as u8],
+        rotation: g.rotation.clamp(i32::MIN as i64, i32::MAX as i64) as i32,
+    }
+}
+
 /// Builds [`Ops`] from events one at a time (for streamed runs).
 #[derive(Clone, Debug)]
 pub struct OpBuilder {
@@ -79,17 +94,29 @@ pub struct OpBuilder {
     /// Is the last operation a plunge that may still grow?
     open_plunge: bool,
     rapids_start: usize,
-    group: usize,
+    keep_rapids: bool,
+    group: u32,
 }
 
 impl OpBuilder {
+    /// A builder that keeps the rapids between operations.
     pub fn new(tolerance_mm: f64) -> OpBuilder {
         OpBuilder {
             out: Ops::default(),
             tol: tolerance_mm.max(1e-9),
             open_plunge: false,
             rapids_start: 0,
+            keep_rapids: true,
             group: 0,
+        }
+    }
+
+    /// A builder that keeps no rapids (less memory; for comparisons
+    /// without `compare_rapids`).
+    pub fn without_rapids(tolerance_mm: f64) -> OpBuilder {
+        OpBuilder {
+            keep_rapids: false,
+            ..OpBuilder::new(tolerance_mm)
         }
     }
 
@@ -106,7 +133,6 @@ impl OpBuilder {
                 let op = Op {
                     kind: OpKind::Tool(*tool),
                     span: *span,
-                    last_span: *span,
                     feed: 0.0,
                     feed_mode: FeedMode::PerMinute,
                     spindle: 0.0,
@@ -119,7 +145,7 @@ impl OpBuilder {
             }
             Event::Dwell { seconds, .. } => {
                 if let Some(last) = self.out.ops.last_mut() {
-                    last.dwell += seconds;
+                    last.dwell += *seconds as f32;
                 }
             }
             Event::Stop { .. } | Event::Comment { .. } => {}
@@ -130,9 +156,10 @@ impl OpBuilder {
         self.out
     }
 
-    fn take_rapids(&mut self) -> Range<usize> {
-        let r = self.rapids_start..self.out.rapids.len();
-        self.rapids_start = self.out.rapids.len();
+    fn take_rapids(&mut self) -> Range<u32> {
+        let end = self.out.rapids.len();
+        let r = self.rapids_start as u32..end as u32;
+        self.rapids_start = end;
         r
     }
 
@@ -142,7 +169,10 @@ impl OpBuilder {
             MoveKind::Rapid => {
                 if !(self.open_plunge && vertical) {
                     self.open_plunge = false;
-                    self.out.rapids.push((m.to, m.span));
+                    // Indices stay within u32: past that, rapids are not kept.
+                    if self.keep_rapids && self.out.rapids.len() < u32::MAX as usize {
+                        self.out.rapids.push((m.to, m.span));
+                    }
                 }
                 return;
             }
@@ -160,15 +190,8 @@ impl OpBuilder {
                     top: m.from[2].max(m.to[2]),
                 }
             }
-            MoveKind::Line => OpKind::Line {
-                from: m.from,
-                to: m.to,
-            },
-            MoveKind::Arc(geom) => OpKind::Arc {
-                from: m.from,
-                to: m.to,
-                geom,
-            },
+            MoveKind::Line => OpKind::Line { to: m.to },
+            MoveKind::Arc(geom) => arc_op(m.to, &geom),
             MoveKind::Probe => OpKind::Probe { to: m.to },
         };
         if !matches!(kind, OpKind::Plunge { .. }) {
@@ -181,7 +204,6 @@ impl OpBuilder {
         let op = Op {
             kind,
             span: m.span,
-            last_span: m.span,
             feed,
             feed_mode: m.feed_mode,
             spindle: m.spindle,
@@ -210,7 +232,6 @@ impl OpBuilder {
         }
         at[2] = at[2].min(m.to[2]);
         *top = top.max(m.from[2]).max(m.to[2]);
-        last.last_span = m.span;
         true
     }
 }

@@ -12,9 +12,11 @@
 //! Every move keeps the span of the statement it came from.
 
 mod arc;
+pub mod stock;
 mod track;
 
 pub use arc::ArcGeom;
+pub use stock::Stock;
 pub use track::Tracker;
 
 use crate::span::Span;
