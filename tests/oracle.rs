@@ -349,6 +349,46 @@ fn samples_match_live_rs274() {
     judge("samples", &results);
 }
 
+/// Our own LinuxCNC programs written to pin rs274's behaviour
+/// (`tests/programs/linuxcnc/oracle/*.ngc`): run live through rs274 and
+/// cncc with the default tool table. Both must agree on success or error,
+/// and on every call, including the calls made before an error.
+#[test]
+fn own_programs_match_live_rs274() {
+    if !common::root().join("../shared/tools").is_dir() {
+        return skip("../shared/tools is absent");
+    }
+    if !rs274_present() {
+        return skip("rs274 is not installed (apt-get install linuxcnc-uspace)");
+    }
+    let dir = common::root().join("tests/programs/linuxcnc/oracle");
+    let mut programs: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .expect("tests/programs/linuxcnc/oracle")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "ngc"))
+        .collect();
+    programs.sort();
+    let oracle = common::root().join("../shared/tools/rs274-canon");
+    let table = default_table();
+    let results = parallel(&programs, |p| {
+        let want = run(Command::new(&oracle).arg(p).arg(&table));
+        let got = cncc_canon(p, &table);
+        let v = match want.code {
+            0 => verdict(0, &want.stdout, &got),
+            1 if got.code != 1 => Some(format!("rs274 reports an error; cncc exit {}", got.code)),
+            1 => compare(&want.stdout, &got.stdout),
+            c => Some(format!(
+                "rs274-canon failed (exit {c}): {}",
+                want.stderr.trim()
+            )),
+        };
+        let name = p.file_name().unwrap().to_string_lossy().into_owned();
+        (format!("own/{name}"), v)
+    });
+    assert!(!results.is_empty(), "no programs in {}", dir.display());
+    judge("own programs", &results);
+}
+
 /// Runs `f` over `items` on two threads, keeping their order.
 fn parallel<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
     let half = items.len().div_ceil(2);

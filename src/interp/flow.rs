@@ -240,6 +240,7 @@ impl<'l> Walker<'l> {
                 None => Next::Step,
             });
         }
+        it.line = pc as u32 + 1;
         it.block(block, exprs)?;
         self.assignments(it, &block.stmts, exprs)?;
         for s in &block.stmts {

@@ -79,6 +79,10 @@ pub struct Interp<'a, 's> {
     pub tool_table: tooltable::ToolTable,
     /// The span of the block being run.
     pub block_span: Span,
+    /// The block's line in its file, from 1 (`#<_line>`): the readers keep
+    /// one block per source line, blank lines included, so it is the
+    /// block's index plus one. Set by the walker and the streamed run.
+    pub line: u32,
     /// M70's saved modal state; M73's, with the call level that restores it.
     pub saved_modal: Option<Box<State>>,
     pub auto_restore: Vec<(usize, Box<State>)>,
@@ -100,6 +104,7 @@ impl<'a, 's> Interp<'a, 's> {
             comp_tags: std::collections::VecDeque::new(),
             tool_table: opts.tool_table.clone(),
             block_span: Span::default(),
+            line: 0,
             saved_modal: None,
             auto_restore: Vec::new(),
             siemens: siemens::SiemensState::default(),

@@ -57,6 +57,7 @@ impl StreamRun {
                 return;
             }
         }
+        it.line = index as u32 + 1;
         let r = it.block(b, exprs);
         self.stop(it, r);
     }
