@@ -95,6 +95,11 @@ fn motion_inner(
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
+    // Polar words beside a cycle's G code belong to that cycle, which the
+    // cycle statement of the block runs.
+    if m.kind == MotionKind::Implicit && has(block, |k| matches!(k, StmtKind::Cycle(_))) {
+        return Ok(());
+    }
     let kind = match m.kind {
         MotionKind::Implicit => match it.state.motion {
             _ if m.target.is_empty()
@@ -324,6 +329,7 @@ fn base_block(
         incremental: !it.state.absolute,
         return_initial: it.state.retract_initial,
         code_in_block: false,
+        polar_step: None,
         span: it.span,
     })
 }
@@ -427,11 +433,21 @@ fn polar(
     if m.polar_radius.is_none() && m.polar_angle.is_none() {
         return Ok(None);
     }
+    if let Some(i) = (0..2).find(|&i| m.target.get(['X', 'Y'][i]).is_some()) {
+        return Err(polar_with_xy(it, i));
+    }
     let (cx, cy) = (
         it.state.to_prog(it.state.pos[0]),
         it.state.to_prog(it.state.pos[1]),
     );
     let (cr, ca) = (cx.hypot(cy), cy.atan2(cx));
+    if !it.state.absolute && cx == 0.0 && cy == 0.0 {
+        return Err(it.error_at(
+            it.span,
+            Code::PolarAtOrigin,
+            "G91 motion with polar coordinates is indeterminate when at the origin",
+        ));
+    }
     let r = num(it, &m.polar_radius, exprs)?;
     let a = num(it, &m.polar_angle, exprs)?.map(f64::to_radians);
     let (r, a) = if it.state.absolute {
@@ -442,8 +458,19 @@ fn polar(
     Ok(Some((r * a.cos(), r * a.sin())))
 }
 
-/// A cycle block with polar words: each repeat steps in polar terms, so
-/// the holes are run one by one.
+/// Polar words give X and Y: an X or Y word beside them is an error.
+fn polar_with_xy(it: &Interp<'_, '_>, axis: usize) -> Stop {
+    let msg = format!(
+        "Cannot specify both polar coordinate and {} word",
+        ["X", "Y"][axis]
+    );
+    it.error_at(it.span, Code::BadWordValue, msg)
+}
+
+/// A cycle block with polar words. Under G90 they give the hole's X Y
+/// (L repeats drill it again); under G91 they are a step in distance and
+/// angle about the program origin that every repeat takes, as LinuxCNC
+/// does (the cycle code turns the step into positions).
 fn polar_cycle(
     it: &mut Interp<'_, '_>,
     mut cb: CycleBlock,
@@ -451,25 +478,16 @@ fn polar_cycle(
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    let n = cb.repeat.unwrap_or(1.0).max(1.0) as u64;
-    for k in 0..n.min(100_000) {
-        let Some((x, y)) = polar(it, m, exprs)? else {
-            break;
-        };
-        let (cx, cy) = (
-            it.state.to_prog(it.state.pos[0]),
-            it.state.to_prog(it.state.pos[1]),
-        );
-        let (x, y) = if cb.incremental {
-            (x - cx, y - cy)
-        } else {
-            (x, y)
-        };
+    if let Some(i) = (0..2).find(|&i| cb.axes[i].is_some()) {
+        return Err(polar_with_xy(it, i));
+    }
+    if cb.incremental {
+        let r = num(it, &m.polar_radius, exprs)?.unwrap_or(0.0);
+        let a = num(it, &m.polar_angle, exprs)?.unwrap_or(0.0);
+        cb.polar_step = Some((r, a));
+    } else if let Some((x, y)) = polar(it, m, exprs)? {
         cb.axes[0] = Some(x);
         cb.axes[1] = Some(y);
-        cb.repeat = Some(1.0);
-        cb.code_in_block = cb.code_in_block && k == 0;
-        run_cycle(it, cb.clone(), block)?;
     }
-    Ok(())
+    run_cycle(it, cb, block)
 }
