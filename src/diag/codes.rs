@@ -262,6 +262,9 @@ codes! {
     ArcBadWords = "E0512", "arc-bad-words", Error,
         "an arc without a centre or radius, or with both",
         "G2/G3 need either the centre words (I J K for the active plane) or R, not both and not neither. A full circle needs the centre words.";
+    NurbsAbandoned = "E0514", "nurbs-abandoned", Warning,
+        "NURBS control points gathered by G5.2 that are never cut",
+        "G5.2 blocks gather control points that G5.3 cuts as one curve. Another motion (or the program end) before G5.3 drops them: LinuxCNC cuts nothing and says nothing. End the G5.2 block with G5.3.";
     PolarAtOrigin = "E0513", "polar-at-origin", Error,
         "incremental polar words (@ ^) at the program origin",
         "Under G91 the polar words add to the current point's distance and angle from the program origin; at the origin that angle is undefined, so LinuxCNC rejects the move (or the canned-cycle repeat). Move off the origin first, or use G90 polar words.";

@@ -334,6 +334,7 @@ pub fn program_end(it: &mut Interp<'_, '_>, rewind: bool) -> Result<(), Stop> {
     }
     it.state.mist = false;
     it.state.flood = false;
+    super::splines::leaving_nurbs(it);
     it.state.motion = super::state::ModalMotion::Move(crate::ir::MotionKind::Linear);
     it.cycles.cancel();
     if rewind {

@@ -26,6 +26,7 @@ pub mod options;
 pub mod params;
 pub mod predefined;
 pub mod siemens;
+pub mod splines;
 pub mod state;
 pub mod stream;
 pub mod target;
@@ -86,6 +87,8 @@ pub struct Interp<'a, 's> {
     /// M70's saved modal state; M73's, with the call level that restores it.
     pub saved_modal: Option<Box<State>>,
     pub auto_restore: Vec<(usize, Box<State>)>,
+    /// G5.2's gathered NURBS points and G5's default I J.
+    pub splines: splines::Splines,
 }
 
 impl<'a, 's> Interp<'a, 's> {
@@ -107,6 +110,7 @@ impl<'a, 's> Interp<'a, 's> {
             line: 0,
             saved_modal: None,
             auto_restore: Vec::new(),
+            splines: splines::Splines::default(),
             siemens: siemens::SiemensState::default(),
             fanuc: fanuc_xform::FanucXform::default(),
         }

@@ -24,6 +24,10 @@ pub fn exec(
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
     it.begin_block(block);
+    let keeps_nurbs = matches!(&s.kind, StmtKind::Motion(m) if m.kind == MotionKind::Implicit);
+    if !keeps_nurbs {
+        super::splines::leaving_nurbs(it);
+    }
     match &s.kind {
         StmtKind::Motion(m) => motion(it, m, block, exprs),
         StmtKind::Cycle(c) => {
@@ -43,6 +47,7 @@ pub fn exec(
         StmtKind::CycleCancel => {
             it.cycles.cancel();
             it.state.motion = ModalMotion::None;
+            it.splines.no_motion_code = false;
             it.out(Canon::Comment(
                 "interpreter: motion mode set to none".into(),
             ));
@@ -99,6 +104,19 @@ fn motion_inner(
     // cycle statement of the block runs.
     if m.kind == MotionKind::Implicit && has(block, |k| matches!(k, StmtKind::Cycle(_))) {
         return Ok(());
+    }
+    // So do the words of a spline block (G5 .. G5.3), and a G5.2
+    // continuation block gives a control point.
+    if m.kind == MotionKind::Implicit
+        && has(
+            block,
+            |k| matches!(k, StmtKind::Aux { letter, code, .. } if super::splines::is_spline(*letter, *code)),
+        )
+    {
+        return Ok(());
+    }
+    if m.kind == MotionKind::Implicit && super::splines::in_nurbs_mode(it) {
+        return super::splines::continuation(it, m, block, exprs);
     }
     let kind = match m.kind {
         MotionKind::Implicit => match it.state.motion {
@@ -425,7 +443,7 @@ fn spindle_sync(
 /// absolute X Y (program units) they give. Under G90 a missing word keeps
 /// the current point's distance or angle from the origin; under G91 both
 /// are increments to the current point's distance and angle.
-fn polar(
+pub(super) fn polar(
     it: &mut Interp<'_, '_>,
     m: &Motion,
     exprs: &Arena<Expr>,

@@ -79,6 +79,8 @@ fn modal(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
         });
     }
     match lower.as_str() {
+        // G5.3 leaves rs274's motion mode at -1 (no G code).
+        "_motion_mode" if s.motion == ModalMotion::None && it.splines.no_motion_code => Some(-1.0),
         "_motion_mode" => Some(motion_code(s.motion)),
         "_ccomp" => Some(match s.comp_side {
             CompSide::Off => 400.0,
