@@ -15,7 +15,7 @@ use cncc::source::SourceMap;
 use std::path::{Path, PathBuf};
 
 /// Probes known not to match yet, with the reason.
-const KNOWN: &[(&str, &str)] = &[("p26-io-orient-thread", "G76 threading not run")];
+const KNOWN: &[(&str, &str)] = &[];
 
 fn probe_dir() -> Option<PathBuf> {
     let d = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/oracle-probe");

@@ -19,7 +19,7 @@ pub fn phase(kind: &StmtKind) -> u8 {
         ToolChange => 6,
         Spindle(_) => 7,
         Coolant(_) => 8,
-        Aux { letter, code, .. } if super::splines::is_spline(*letter, *code) => 20,
+        Aux { letter, code, .. } if super::aux::is_motion_aux(*letter, *code) => 20,
         Aux { .. } | DynamicCode { .. } => 9,
         Dwell { .. } => 10,
         Plane(_) => 11,
@@ -124,7 +124,16 @@ fn exec_stmt(
             code,
             words,
         } if super::splines::is_spline(*letter, *code) => {
+            it.begin_block(block);
             super::splines::exec(it, *code, words, block, exprs)
+        }
+        Aux {
+            letter,
+            code,
+            words,
+        } if super::threading::is_threading(*letter, *code) => {
+            it.begin_block(block);
+            super::threading::exec(it, words, block, exprs)
         }
         Comment { .. }
         | Message(_)

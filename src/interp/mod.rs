@@ -30,6 +30,7 @@ pub mod splines;
 pub mod state;
 pub mod stream;
 pub mod target;
+pub mod threading;
 pub mod tools;
 pub mod tooltable;
 

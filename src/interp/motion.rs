@@ -110,13 +110,17 @@ fn motion_inner(
     if m.kind == MotionKind::Implicit
         && has(
             block,
-            |k| matches!(k, StmtKind::Aux { letter, code, .. } if super::splines::is_spline(*letter, *code)),
+            |k| matches!(k, StmtKind::Aux { letter, code, .. } if super::aux::is_motion_aux(*letter, *code)),
         )
     {
         return Ok(());
     }
     if m.kind == MotionKind::Implicit && super::splines::in_nurbs_mode(it) {
         return super::splines::continuation(it, m, block, exprs);
+    }
+    if m.kind == MotionKind::Implicit && super::threading::is_modal(it) && !m.target.is_empty() {
+        it.comp_block(block.span);
+        return super::threading::exec(it, &[], block, exprs);
     }
     let kind = match m.kind {
         MotionKind::Implicit => match it.state.motion {

@@ -77,14 +77,7 @@ fn value(
     letter: char,
     exprs: &Arena<Expr>,
 ) -> Result<Option<f64>, Stop> {
-    match w
-        .words
-        .iter()
-        .find(|x| x.letter.eq_ignore_ascii_case(&letter))
-    {
-        Some(x) => Ok(Some(it.value(&x.value, exprs)?)),
-        None => super::aux::block_word(it, block, letter, exprs),
-    }
+    super::aux::word_or_loose(it, w.words, block, letter, exprs)
 }
 
 fn fail(it: &Interp<'_, '_>, msg: impl Into<String>) -> Stop {
