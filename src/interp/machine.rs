@@ -208,7 +208,7 @@ impl Interp<'_, '_> {
         self.set_position(&to);
         let span = self.span;
         let sink = &mut self.sink;
-        if self.state.plane == CanonPlane::XY {
+        if self.state.plane == CanonPlane::XY || self.comp.is_on() {
             let r = self
                 .comp
                 .arc(from, to, center, rotation, &mut |c| sink(c, span));
