@@ -3,7 +3,8 @@
 //! (a) Every probe in `../shared/reference/oracle-probe/`: the stored
 //! `.canon` must equal cncc's output (interpreter notes skipped, numbers
 //! within 1e-4, as `canon-diff` compares); an error probe (`eNN-*`) must be
-//! an error in cncc too (exit 1).
+//! an error in cncc too (exit 1), with the same calls before it (a block
+//! rs274 cannot read prints nothing of its own).
 //! (b) Every sample program listed `ok` in `samples-summary.tsv` that exists
 //! on this machine: `rs274-canon` is run live, fresh each time, with the
 //! default tool table, and cncc on the same file with the same table.
@@ -221,7 +222,11 @@ fn verdict(expected_code: i32, expected: &str, got: &Run) -> Option<String> {
         }
         return compare(expected, &got.stdout);
     }
-    (got.code != 1).then(|| format!("rs274 reports an error; cncc exit {}", got.code))
+    if got.code != 1 {
+        return Some(format!("rs274 reports an error; cncc exit {}", got.code));
+    }
+    // The calls made before the error must agree too.
+    compare(expected, &got.stdout)
 }
 
 /// Splits failures into the unexpected ones and the gaps that now pass.
@@ -374,9 +379,7 @@ fn own_programs_match_live_rs274() {
         let want = run(Command::new(&oracle).arg(p).arg(&table));
         let got = cncc_canon(p, &table);
         let v = match want.code {
-            0 => verdict(0, &want.stdout, &got),
-            1 if got.code != 1 => Some(format!("rs274 reports an error; cncc exit {}", got.code)),
-            1 => compare(&want.stdout, &got.stdout),
+            0 | 1 => verdict(want.code, &want.stdout, &got),
             c => Some(format!(
                 "rs274-canon failed (exit {c}): {}",
                 want.stderr.trim()

@@ -60,7 +60,7 @@ pub struct Interp<'a, 's> {
     pub spec: &'s DialectSpec,
     pub opts: &'s Options,
     pub state: State,
-    pub sink: &'a mut Sink<'a>,
+    pub sink: Output<'a>,
     /// Non-fatal findings (warnings) collected while running.
     pub diags: Vec<Diagnostic>,
     /// The span of the statement being executed (calls are tagged with it).
@@ -98,7 +98,12 @@ impl<'a, 's> Interp<'a, 's> {
             spec,
             opts,
             state: State::new(),
-            sink,
+            sink: Output {
+                sink,
+                held: Vec::new(),
+                holding: false,
+                unread: false,
+            },
             diags: Vec::new(),
             span: Span::default(),
             ended: false,
@@ -119,7 +124,41 @@ impl<'a, 's> Interp<'a, 's> {
 
     /// Emits one call, tagged with the current statement's span.
     pub fn emit(&mut self, call: Canon) {
-        (self.sink)(call, self.span);
+        self.sink.call(call, self.span);
+    }
+
+    /// Holds the calls that follow until [`Self::settle`]: a block whose
+    /// words rs274 cannot even read (an expression that fails) prints
+    /// nothing of its own, while one that fails when it runs keeps the
+    /// calls it made before the failure.
+    pub fn hold(&mut self) {
+        self.sink.holding = true;
+    }
+
+    /// An error rs274 reports while reading the block (its word checks),
+    /// before it runs any of it: the block's own calls are dropped.
+    pub fn read_error(
+        &mut self,
+        span: Span,
+        code: crate::diag::Code,
+        msg: impl Into<String>,
+    ) -> Stop {
+        self.sink.unread = true;
+        self.error_at(span, code, msg)
+    }
+
+    /// Ends [`Self::hold`]: the held calls go out, unless `result` is an
+    /// error rs274 finds while reading the block.
+    pub fn settle<T>(&mut self, result: Result<T, Stop>) -> Result<T, Stop> {
+        self.sink.holding = false;
+        let unread = std::mem::take(&mut self.sink.unread)
+            || matches!(&result, Err(Stop::Error(d)) if read_time_error(d));
+        if unread {
+            self.sink.held.clear();
+        } else {
+            self.sink.release();
+        }
+        result
     }
 
     /// The calls every run starts with.
@@ -133,6 +172,43 @@ impl<'a, 's> Interp<'a, 's> {
             return Ok(());
         }
         exec::exec_block(self, block, exprs)
+    }
+}
+
+/// Errors rs274 meets while reading a block, before it runs any of it:
+/// the block's words are evaluated as they are read.
+fn read_time_error(d: &Diagnostic) -> bool {
+    use crate::diag::Code;
+    matches!(
+        d.code,
+        Code::DivisionByZero | Code::UndefinedVariable | Code::DomainError
+    )
+}
+
+/// Where calls go: to the sink, or held while a block may still turn out
+/// unreadable (see [`Interp::hold`]).
+pub struct Output<'a> {
+    sink: &'a mut Sink<'a>,
+    held: Vec<(Canon, Span)>,
+    holding: bool,
+    /// The block failed a check rs274 makes while reading it.
+    unread: bool,
+}
+
+impl Output<'_> {
+    /// One call, tagged with the span of its statement.
+    pub fn call(&mut self, call: Canon, span: Span) {
+        if self.holding {
+            self.held.push((call, span));
+        } else {
+            (self.sink)(call, span);
+        }
+    }
+
+    fn release(&mut self) {
+        for (c, s) in self.held.drain(..) {
+            (self.sink)(c, s);
+        }
     }
 }
 

@@ -268,7 +268,7 @@ fn probe(
     {
         let span = it.span;
         let sink = &mut it.sink;
-        it.comp.flush(&mut |c| sink(c, span));
+        it.comp.flush(&mut |c| sink.call(c, span));
     }
     let from = super::host::MotionHost::position(it);
     if it.state.feed == 0.0 {
@@ -481,12 +481,12 @@ pub(super) fn polar(
 }
 
 /// Polar words give X and Y: an X or Y word beside them is an error.
-fn polar_with_xy(it: &Interp<'_, '_>, axis: usize) -> Stop {
+fn polar_with_xy(it: &mut Interp<'_, '_>, axis: usize) -> Stop {
     let msg = format!(
         "Cannot specify both polar coordinate and {} word",
         ["X", "Y"][axis]
     );
-    it.error_at(it.span, Code::BadWordValue, msg)
+    it.read_error(it.span, Code::BadWordValue, msg)
 }
 
 /// A cycle block with polar words. Under G90 they give the hole's X Y

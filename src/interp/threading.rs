@@ -70,11 +70,13 @@ pub fn exec(
 ) -> Result<(), Stop> {
     let w = |it: &mut Interp<'_, '_>, c| super::aux::word_or_loose(it, words, block, c, exprs);
     let Some(pitch) = w(it, 'P')? else {
-        return Err(fail(it, Code::CycleMissingWord, "P word missing with G76"));
+        let span = it.span;
+        return Err(it.read_error(span, Code::CycleMissingWord, "P word missing with G76"));
     };
     let (Some(i), Some(j), Some(k)) = (w(it, 'I')?, w(it, 'J')?, w(it, 'K')?) else {
-        return Err(fail(
-            it,
+        let span = it.span;
+        return Err(it.read_error(
+            span,
             Code::CycleMissingWord,
             "I J or K words missing with G76",
         ));
