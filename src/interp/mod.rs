@@ -24,6 +24,7 @@ pub mod motion;
 pub mod offsets;
 pub mod options;
 pub mod params;
+pub mod polar;
 pub mod predefined;
 pub mod siemens;
 pub mod splines;

@@ -16,12 +16,16 @@
 //!   E0514). rs274 keeps a dropped list until the next G5.2 block, whose
 //!   weight checks then see it: cncc does the same.
 
-use super::motion::polar as polar_xy;
+mod nurbs;
+
+pub use nurbs::leaving_nurbs;
+
+use super::polar::polar as polar_xy;
 use super::state::ModalMotion;
 use super::target::{target, Frame};
 use super::{Interp, Stop};
 use crate::canon::{Canon, CanonPlane, NurbsPoint};
-use crate::diag::{Code, Diagnostic};
+use crate::diag::Code;
 use crate::ir::{Arena, Block, Decimal, Expr, FeedMode, Motion, MotionKind, StmtKind, Word};
 
 /// Spline state that outlives a block.
@@ -106,8 +110,8 @@ pub fn exec(
     };
     match code {
         0 | 1 => spline(it, &w, block, exprs),
-        2 => nurbs_point(it, &w, block, exprs),
-        _ => nurbs_end(it),
+        2 => nurbs::nurbs_point(it, &w, block, exprs),
+        _ => nurbs::nurbs_end(it),
     }
 }
 
@@ -123,7 +127,7 @@ pub fn continuation(
         words: &[],
         motion: Some(m),
     };
-    nurbs_point(it, &w, block, exprs)
+    nurbs::nurbs_point(it, &w, block, exprs)
 }
 
 /// The end point of the block's motion words (program units), and
@@ -234,109 +238,4 @@ fn feed(it: &mut Interp<'_, '_>, points: Vec<NurbsPoint>, order: u32) {
     }
     it.out(Canon::NurbsFeed { points, order });
     it.set_position(&end);
-}
-
-/// A G5.2 block or continuation: checks, then one control point (or the
-/// first point's weight).
-fn nurbs_point(
-    it: &mut Interp<'_, '_>,
-    w: &Words<'_>,
-    block: &Block,
-    exprs: &Arena<Expr>,
-) -> Result<(), Stop> {
-    let ((x, y), hx, hy) = end_xy(it, w, exprs)?;
-    if hx != hy {
-        return Err(fail(
-            it,
-            "You must specify both X and Y coordinates for Control Points",
-        ));
-    }
-    // rs274 reads a missing P as -1.
-    let p = value(it, w, block, 'P', exprs)?.unwrap_or(-1.0);
-    let l = value(it, w, block, 'L', exprs)?;
-    let gathered = !it.splines.points.is_empty();
-    if !hx && p > 0.0 && gathered {
-        return Err(fail(
-            it,
-            "Can specify P without X and Y only for the first control point",
-        ));
-    }
-    if p <= 0.0 && gathered {
-        return Err(fail(
-            it,
-            "Must specify positive weight P for every Control Point",
-        ));
-    }
-    if it.state.feed_mode == FeedMode::PerMinute && it.state.feed == 0.0 {
-        return Err(it.error_at(
-            it.span,
-            Code::NoFeedRate,
-            "Cannot make a NURBS with 0 feedrate",
-        ));
-    }
-    if !in_nurbs_mode(it) {
-        it.splines.points.clear();
-    }
-    if it.splines.points.is_empty() {
-        let here = super::host::MotionHost::position(it);
-        let weight = if !hx && p > 0.0 { p } else { 1.0 };
-        it.splines.points.push(NurbsPoint {
-            x: here[0],
-            y: here[1],
-            w: weight,
-        });
-        it.splines.order = 3;
-        it.splines.started = Some(block.span);
-    }
-    if let Some(l) = l.filter(|l| *l > 3.0) {
-        it.splines.order = l as u32;
-    }
-    if hx {
-        it.splines.points.push(NurbsPoint { x, y, w: p });
-    }
-    it.cycles.cancel();
-    it.state.motion = g5_2();
-    Ok(())
-}
-
-/// G5.3: the gathered points as one NURBS_FEED.
-fn nurbs_end(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
-    if !in_nurbs_mode(it) {
-        return Err(fail(it, "Cannot use G5.3 without G5.2 first"));
-    }
-    let order = it.splines.order;
-    if it.splines.points.len() < order as usize {
-        return Err(fail(
-            it,
-            format!(
-                "You must specify a number of control points at least equal to the order L = {order}"
-            ),
-        ));
-    }
-    let points = std::mem::take(&mut it.splines.points);
-    it.splines.started = None;
-    feed(it, points, order);
-    it.state.motion = ModalMotion::None;
-    it.splines.no_motion_code = true;
-    Ok(())
-}
-
-/// Called when a block sets another motion, or the program ends, while
-/// G5.2 points are gathered: rs274 drops them silently; cncc says so.
-pub fn leaving_nurbs(it: &mut Interp<'_, '_>) {
-    if !in_nurbs_mode(it) {
-        return;
-    }
-    if let Some(span) = it.splines.started.take() {
-        let n = it.splines.points.len();
-        it.diags.push(
-            Diagnostic::new(
-                Code::NurbsAbandoned,
-                format!("{n} NURBS control points gathered by G5.2 are never cut"),
-            )
-            .primary(it.span, "G5.2 ends here without G5.3")
-            .secondary(span, "the points start here")
-            .help("end the G5.2 block with G5.3 to cut the curve"),
-        );
-    }
 }
