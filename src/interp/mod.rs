@@ -152,8 +152,8 @@ impl<'a, 's> Interp<'a, 's> {
     /// error rs274 finds while reading the block.
     pub fn settle<T>(&mut self, result: Result<T, Stop>) -> Result<T, Stop> {
         self.sink.holding = false;
-        let unread = std::mem::take(&mut self.sink.unread)
-            || matches!(&result, Err(Stop::Error(d)) if read_time_error(d));
+        let flagged = std::mem::take(&mut self.sink.unread);
+        let unread = matches!(&result, Err(Stop::Error(d)) if flagged || read_time_error(d));
         if unread {
             self.sink.held.clear();
         } else {
