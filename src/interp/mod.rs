@@ -35,6 +35,9 @@ pub mod threading;
 pub mod tools;
 pub mod tooltable;
 
+#[cfg(test)]
+mod hold_tests;
+
 pub use options::{Limits, Options};
 
 use crate::canon::Canon;
