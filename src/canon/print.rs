@@ -187,7 +187,7 @@ pub fn write_call(out: &mut Vec<u8>, c: &Canon) {
             .s("ORIENT_SPINDLE(0, ")
             .f4(*angle)
             .s(", ")
-            .int(*mode as i64)
+            .int(*mode)
             .s(")"),
         WaitOrientComplete(t) => o.s("SPINDLE.0.WAIT_ORIENT_COMPLETE(").f4(*t).s(")"),
         UseToolLengthOffset(v) => o

@@ -46,10 +46,8 @@ fn angles(
             "{name}: NUM must be a whole number from 1 to 10000, not {n}"
         )));
     }
-    let step = match a.get(inda) {
-        i if i == 0.0 => 360.0 / n,
-        i => i,
-    };
+    let inda = a.get(inda);
+    let step = if inda == 0.0 { 360.0 / n } else { inda };
     Ok((0..n as usize)
         .map(|k| a.get(sta) + k as f64 * step)
         .collect())
