@@ -3,7 +3,8 @@
 //! (a) Every probe in `../shared/reference/oracle-probe/`: the stored
 //! `.canon` must equal cncc's output (interpreter notes skipped, numbers
 //! within 1e-4, as `canon-diff` compares); an error probe (`eNN-*`) must be
-//! an error in cncc too (exit 1).
+//! an error in cncc too (exit 1), with the same calls before it (a block
+//! rs274 cannot read prints nothing of its own).
 //! (b) Every sample program listed `ok` in `samples-summary.tsv` that exists
 //! on this machine: `rs274-canon` is run live, fresh each time, with the
 //! default tool table, and cncc on the same file with the same table.
@@ -221,7 +222,11 @@ fn verdict(expected_code: i32, expected: &str, got: &Run) -> Option<String> {
         }
         return compare(expected, &got.stdout);
     }
-    (got.code != 1).then(|| format!("rs274 reports an error; cncc exit {}", got.code))
+    if got.code != 1 {
+        return Some(format!("rs274 reports an error; cncc exit {}", got.code));
+    }
+    // The calls made before the error must agree too.
+    compare(expected, &got.stdout)
 }
 
 /// Splits failures into the unexpected ones and the gaps that now pass.
@@ -347,6 +352,44 @@ fn samples_match_live_rs274() {
         (format!("sample{}", p.display()), v)
     });
     judge("samples", &results);
+}
+
+/// Our own LinuxCNC programs written to pin rs274's behaviour
+/// (`tests/programs/linuxcnc/oracle/*.ngc`): run live through rs274 and
+/// cncc with the default tool table. Both must agree on success or error,
+/// and on every call, including the calls made before an error.
+#[test]
+fn own_programs_match_live_rs274() {
+    if !common::root().join("../shared/tools").is_dir() {
+        return skip("../shared/tools is absent");
+    }
+    if !rs274_present() {
+        return skip("rs274 is not installed (apt-get install linuxcnc-uspace)");
+    }
+    let dir = common::root().join("tests/programs/linuxcnc/oracle");
+    let mut programs: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .expect("tests/programs/linuxcnc/oracle")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "ngc"))
+        .collect();
+    programs.sort();
+    let oracle = common::root().join("../shared/tools/rs274-canon");
+    let table = default_table();
+    let results = parallel(&programs, |p| {
+        let want = run(Command::new(&oracle).arg(p).arg(&table));
+        let got = cncc_canon(p, &table);
+        let v = match want.code {
+            0 | 1 => verdict(want.code, &want.stdout, &got),
+            c => Some(format!(
+                "rs274-canon failed (exit {c}): {}",
+                want.stderr.trim()
+            )),
+        };
+        let name = p.file_name().unwrap().to_string_lossy().into_owned();
+        (format!("own/{name}"), v)
+    });
+    assert!(!results.is_empty(), "no programs in {}", dir.display());
+    judge("own programs", &results);
 }
 
 /// Runs `f` over `items` on two threads, keeping their order.

@@ -15,21 +15,7 @@ use cncc::source::SourceMap;
 use std::path::{Path, PathBuf};
 
 /// Probes known not to match yet, with the reason.
-const KNOWN: &[(&str, &str)] = &[
-    (
-        "p10-cutter-comp",
-        "G41.1/G42.1 (D is a diameter) share G41/G42's meaning in the IR",
-    ),
-    (
-        "p18-params-expr",
-        "predefined parameters (#<_abs_x>) belong to the walker's work",
-    ),
-    ("p25-splines", "G5/G5.1/G5.2 splines (NURBS_FEED) not run"),
-    (
-        "p26-io-orient-thread",
-        "M19 Q is rejected by the reader; G76 threading not run",
-    ),
-];
+const KNOWN: &[(&str, &str)] = &[];
 
 fn probe_dir() -> Option<PathBuf> {
     let d = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/oracle-probe");

@@ -35,6 +35,14 @@ pub enum MotionMode {
 /// Six axis values: x y z a b c.
 pub type Pose = [f64; 6];
 
+/// A NURBS control point: X Y in program units and its weight.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NurbsPoint {
+    pub x: f64,
+    pub y: f64,
+    pub w: f64,
+}
+
 /// One canonical call.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Canon {
@@ -117,6 +125,14 @@ pub enum Canon {
         x: f64,
         y: f64,
         z: f64,
+    },
+    /// NURBS_FEED: a NURBS curve in the XY plane at feed rate (LinuxCNC's
+    /// G5 cubic and G5.1 quadratic splines as Bezier control polygons, and
+    /// G5.2..G5.3 blocks). The control points are in program units; the
+    /// first is where the tool starts. rs274 prints only their number.
+    NurbsFeed {
+        points: Vec<NurbsPoint>,
+        order: u32,
     },
     TurnProbeOn,
     TurnProbeOff,

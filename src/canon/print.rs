@@ -187,7 +187,7 @@ pub fn write_call(out: &mut Vec<u8>, c: &Canon) {
             .s("ORIENT_SPINDLE(0, ")
             .f4(*angle)
             .s(", ")
-            .int(*mode as i64)
+            .int(*mode)
             .s(")"),
         WaitOrientComplete(t) => o.s("SPINDLE.0.WAIT_ORIENT_COMPLETE(").f4(*t).s(")"),
         UseToolLengthOffset(v) => o
@@ -214,6 +214,8 @@ pub fn write_call(out: &mut Vec<u8>, c: &Canon) {
             .int(*velocity_mode as i64)
             .s(")"),
         RigidTap { x, y, z } => o.s("RIGID_TAP(").list(&[*x, *y, *z], ", ").s(")"),
+        // rs274 prints the number of control points only.
+        NurbsFeed { points, order: _ } => o.s("NURBS_FEED(").int(points.len() as i64).s(", ...)"),
         // rs274 prints the nine offsets space-separated and no diameter.
         SetToolTableEntry {
             row,
@@ -296,6 +298,7 @@ fn fixed_text(c: &Canon) -> std::borrow::Cow<'static, str> {
         | SetNaivecamTolerance(_)
         | StartSpeedFeedSync { .. }
         | RigidTap { .. }
+        | NurbsFeed { .. }
         | SetToolTableEntry { .. }
         | Io(_)
         | LogOpen(_)
@@ -386,6 +389,14 @@ mod tests {
         assert_eq!(
             format_call(&Canon::SetXyRotation(-0.0)),
             "SET_XY_ROTATION(-0.0000)"
+        );
+        let pt = |x, y| crate::canon::NurbsPoint { x, y, w: 1.0 };
+        assert_eq!(
+            format_call(&Canon::NurbsFeed {
+                points: vec![pt(0.0, 0.0), pt(1.0, 2.0), pt(3.0, 0.0)],
+                order: 3
+            }),
+            "NURBS_FEED(3, ...)"
         );
     }
 }

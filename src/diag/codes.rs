@@ -374,6 +374,12 @@ codes! {
     KeptRaw = "W0802", "kept-raw", Warning,
         "a value cncc could not read into its model, kept as written",
         "The instance does not have the form ISO 14649 gives it (a mandatory attribute unset, an unexpected entity), so the typed model keeps it as written and carries it to the output unchanged, but it takes no part in checks, differences or posting.";
+    NurbsAbandoned = "E0514", "nurbs-abandoned", Warning,
+        "NURBS control points gathered by G5.2 that are never cut",
+        "G5.2 blocks gather control points that G5.3 cuts as one curve. Another motion (or the program end) before G5.3 drops them: LinuxCNC cuts nothing and says nothing. End the G5.2 block with G5.3.";
+    PolarAtOrigin = "E0513", "polar-at-origin", Error,
+        "incremental polar words (@ ^) at the program origin",
+        "Under G91 the polar words add to the current point's distance and angle from the program origin; at the origin that angle is undefined, so LinuxCNC rejects the move (or the canned-cycle repeat). Move off the origin first, or use G90 polar words.";
 }
 
 impl Code {

@@ -124,6 +124,26 @@ fn word(
     }
 }
 
+/// The value of a word among a statement's own `words`, else among the
+/// block's loose words.
+pub fn word_or_loose(
+    it: &mut Interp<'_, '_>,
+    words: &[Word],
+    block: &Block,
+    letter: char,
+    exprs: &Arena<Expr>,
+) -> Result<Option<f64>, Stop> {
+    match word(it, words, letter, exprs)? {
+        Some(v) => Ok(Some(v)),
+        None => block_word(it, block, letter, exprs),
+    }
+}
+
+/// Aux codes that are motions run in the motion phase (splines, G76).
+pub fn is_motion_aux(letter: char, code: crate::ir::Decimal) -> bool {
+    super::splines::is_spline(letter, code) || super::threading::is_threading(letter, code)
+}
+
 /// The value of a loose word (`StmtKind::Word`) of the block, if written.
 pub fn block_word(
     it: &mut Interp<'_, '_>,

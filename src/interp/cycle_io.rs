@@ -30,5 +30,9 @@ pub struct CycleBlock {
     pub return_initial: bool,
     /// This block wrote the cycle's G code (not only axis words).
     pub code_in_block: bool,
+    /// LinuxCNC polar words under G91: the distance and the angle
+    /// (degrees) each repeat adds to the hole's polar position about the
+    /// program origin (`G91 G81 ^60 L6` drills six holes round a circle).
+    pub polar_step: Option<(f64, f64)>,
     pub span: Span,
 }

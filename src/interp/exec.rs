@@ -19,6 +19,7 @@ pub fn phase(kind: &StmtKind) -> u8 {
         ToolChange => 6,
         Spindle(_) => 7,
         Coolant(_) => 8,
+        Aux { letter, code, .. } if super::aux::is_motion_aux(*letter, *code) => 20,
         Aux { .. } | DynamicCode { .. } => 9,
         Dwell { .. } => 10,
         Plane(_) => 11,
@@ -118,6 +119,22 @@ fn exec_stmt(
 ) -> Result<(), Stop> {
     use StmtKind::*;
     match &s.kind {
+        Aux {
+            letter,
+            code,
+            words,
+        } if super::splines::is_spline(*letter, *code) => {
+            it.begin_block(block);
+            super::splines::exec(it, *code, words, block, exprs)
+        }
+        Aux {
+            letter,
+            code,
+            words,
+        } if super::threading::is_threading(*letter, *code) => {
+            it.begin_block(block);
+            super::threading::exec(it, words, block, exprs)
+        }
         Comment { .. }
         | Message(_)
         | FeedMode(_)

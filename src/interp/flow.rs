@@ -147,7 +147,9 @@ impl<'l> Walker<'l> {
                 (prog, pc) = at;
                 continue;
             }
-            let next = self.block(it, prog, pc, entered)?;
+            it.hold();
+            let next = self.block(it, prog, pc, entered);
+            let next = it.settle(next)?;
             entered = false;
             match next {
                 Next::Step => pc += 1,
@@ -240,6 +242,7 @@ impl<'l> Walker<'l> {
                 None => Next::Step,
             });
         }
+        it.line = pc as u32 + 1;
         it.block(block, exprs)?;
         self.assignments(it, &block.stmts, exprs)?;
         for s in &block.stmts {

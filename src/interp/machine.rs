@@ -173,7 +173,7 @@ impl Interp<'_, '_> {
     pub fn out(&mut self, call: Canon) {
         let span = self.span;
         let sink = &mut self.sink;
-        self.comp.other(call, &mut |c| sink(c, span));
+        self.comp.other(call, &mut |c| sink.call(c, span));
     }
 
     /// A straight move to `to` (program frame, program units).
@@ -187,7 +187,9 @@ impl Interp<'_, '_> {
         self.set_position(&to);
         let span = self.span;
         let sink = &mut self.sink;
-        let r = self.comp.straight(kind, from, to, &mut |c| sink(c, span));
+        let r = self
+            .comp
+            .straight(kind, from, to, &mut |c| sink.call(c, span));
         self.note_compensated();
         r.map_err(|e| self.comp_error(e))
     }
@@ -208,16 +210,16 @@ impl Interp<'_, '_> {
         self.set_position(&to);
         let span = self.span;
         let sink = &mut self.sink;
-        if self.state.plane == CanonPlane::XY {
+        if self.state.plane == CanonPlane::XY || self.comp.is_on() {
             let r = self
                 .comp
-                .arc(from, to, center, rotation, &mut |c| sink(c, span));
+                .arc(from, to, center, rotation, &mut |c| sink.call(c, span));
             self.note_compensated();
             return r.map_err(|e| self.comp_error(e));
         }
-        self.comp.flush(&mut |c| sink(c, span));
+        self.comp.flush(&mut |c| sink.call(c, span));
         let (a, b, n) = super::host::plane_axes(self.state.plane);
-        sink(
+        sink.call(
             Canon::ArcFeed {
                 first_end: to[a],
                 second_end: to[b],
@@ -293,13 +295,13 @@ pub fn program_end(it: &mut Interp<'_, '_>, rewind: bool) -> Result<(), Stop> {
         ));
         let span = it.span;
         let sink = &mut it.sink;
-        let r = it.comp.stop(&mut |c| sink(c, span));
+        let r = it.comp.stop(&mut |c| sink.call(c, span));
         r.map_err(|e| it.comp_error(e))?;
     }
     {
         let span = it.span;
         let sink = &mut it.sink;
-        it.comp.flush(&mut |c| sink(c, span));
+        it.comp.flush(&mut |c| sink.call(c, span));
     }
     let old = it.state.origin();
     it.state.g5x_index = 1;
@@ -334,6 +336,7 @@ pub fn program_end(it: &mut Interp<'_, '_>, rewind: bool) -> Result<(), Stop> {
     }
     it.state.mist = false;
     it.state.flood = false;
+    super::splines::leaving_nurbs(it);
     it.state.motion = super::state::ModalMotion::Move(crate::ir::MotionKind::Linear);
     it.cycles.cancel();
     if rewind {

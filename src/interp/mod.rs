@@ -25,13 +25,19 @@ pub mod motion;
 pub mod offsets;
 pub mod options;
 pub mod params;
+pub mod polar;
 pub mod predefined;
 pub mod siemens;
+pub mod splines;
 pub mod state;
 pub mod stream;
 pub mod target;
+pub mod threading;
 pub mod tools;
 pub mod tooltable;
+
+#[cfg(test)]
+mod hold_tests;
 
 pub use options::{Limits, Options};
 
@@ -59,7 +65,7 @@ pub struct Interp<'a, 's> {
     pub spec: &'s DialectSpec,
     pub opts: &'s Options,
     pub state: State,
-    pub sink: &'a mut Sink<'a>,
+    pub sink: Output<'a>,
     /// Non-fatal findings (warnings) collected while running.
     pub diags: Vec<Diagnostic>,
     /// The span of the statement being executed (calls are tagged with it).
@@ -80,9 +86,15 @@ pub struct Interp<'a, 's> {
     pub tool_table: tooltable::ToolTable,
     /// The span of the block being run.
     pub block_span: Span,
+    /// The block's line in its file, from 1 (`#<_line>`): the readers keep
+    /// one block per source line, blank lines included, so it is the
+    /// block's index plus one. Set by the walker and the streamed run.
+    pub line: u32,
     /// M70's saved modal state; M73's, with the call level that restores it.
     pub saved_modal: Option<Box<State>>,
     pub auto_restore: Vec<(usize, Box<State>)>,
+    /// G5.2's gathered NURBS points and G5's default I J.
+    pub splines: splines::Splines,
 }
 
 impl<'a, 's> Interp<'a, 's> {
@@ -91,7 +103,12 @@ impl<'a, 's> Interp<'a, 's> {
             spec,
             opts,
             state: State::new(),
-            sink,
+            sink: Output {
+                sink,
+                held: Vec::new(),
+                holding: false,
+                unread: false,
+            },
             diags: Vec::new(),
             span: Span::default(),
             ended: false,
@@ -101,8 +118,10 @@ impl<'a, 's> Interp<'a, 's> {
             comp_tags: std::collections::VecDeque::new(),
             tool_table: opts.tool_table.clone(),
             block_span: Span::default(),
+            line: 0,
             saved_modal: None,
             auto_restore: Vec::new(),
+            splines: splines::Splines::default(),
             siemens: siemens::SiemensState::default(),
             fanuc: fanuc_xform::FanucXform::default(),
         }
@@ -110,7 +129,41 @@ impl<'a, 's> Interp<'a, 's> {
 
     /// Emits one call, tagged with the current statement's span.
     pub fn emit(&mut self, call: Canon) {
-        (self.sink)(call, self.span);
+        self.sink.call(call, self.span);
+    }
+
+    /// Holds the calls that follow until [`Self::settle`]: a block whose
+    /// words rs274 cannot even read (an expression that fails) prints
+    /// nothing of its own, while one that fails when it runs keeps the
+    /// calls it made before the failure.
+    pub fn hold(&mut self) {
+        self.sink.holding = true;
+    }
+
+    /// An error rs274 reports while reading the block (its word checks),
+    /// before it runs any of it: the block's own calls are dropped.
+    pub fn read_error(
+        &mut self,
+        span: Span,
+        code: crate::diag::Code,
+        msg: impl Into<String>,
+    ) -> Stop {
+        self.sink.unread = true;
+        self.error_at(span, code, msg)
+    }
+
+    /// Ends [`Self::hold`]: the held calls go out, unless `result` is an
+    /// error rs274 finds while reading the block.
+    pub fn settle<T>(&mut self, result: Result<T, Stop>) -> Result<T, Stop> {
+        self.sink.holding = false;
+        let flagged = std::mem::take(&mut self.sink.unread);
+        let unread = matches!(&result, Err(Stop::Error(d)) if flagged || read_time_error(d));
+        if unread {
+            self.sink.held.clear();
+        } else {
+            self.sink.release();
+        }
+        result
     }
 
     /// The calls every run starts with.
@@ -124,6 +177,43 @@ impl<'a, 's> Interp<'a, 's> {
             return Ok(());
         }
         exec::exec_block(self, block, exprs)
+    }
+}
+
+/// Errors rs274 meets while reading a block, before it runs any of it:
+/// the block's words are evaluated as they are read.
+fn read_time_error(d: &Diagnostic) -> bool {
+    use crate::diag::Code;
+    matches!(
+        d.code,
+        Code::DivisionByZero | Code::UndefinedVariable | Code::DomainError
+    )
+}
+
+/// Where calls go: to the sink, or held while a block may still turn out
+/// unreadable (see [`Interp::hold`]).
+pub struct Output<'a> {
+    sink: &'a mut Sink<'a>,
+    held: Vec<(Canon, Span)>,
+    holding: bool,
+    /// The block failed a check rs274 makes while reading it.
+    unread: bool,
+}
+
+impl Output<'_> {
+    /// One call, tagged with the span of its statement.
+    pub fn call(&mut self, call: Canon, span: Span) {
+        if self.holding {
+            self.held.push((call, span));
+        } else {
+            (self.sink)(call, span);
+        }
+    }
+
+    fn release(&mut self) {
+        for (c, s) in self.held.drain(..) {
+            (self.sink)(c, s);
+        }
     }
 }
 

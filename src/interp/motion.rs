@@ -24,6 +24,10 @@ pub fn exec(
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
     it.begin_block(block);
+    let keeps_nurbs = matches!(&s.kind, StmtKind::Motion(m) if m.kind == MotionKind::Implicit);
+    if !keeps_nurbs {
+        super::splines::leaving_nurbs(it);
+    }
     match &s.kind {
         StmtKind::Motion(m) => motion(it, m, block, exprs),
         StmtKind::Cycle(c) => {
@@ -35,7 +39,7 @@ pub fn exec(
                 .find(|k| matches!(k, StmtKind::Motion(_)))
             {
                 if m.polar_radius.is_some() || m.polar_angle.is_some() {
-                    return polar_cycle(it, cb, m, block, exprs);
+                    return super::polar::polar_cycle(it, cb, m, block, exprs);
                 }
             }
             run_cycle(it, cb, block)
@@ -43,6 +47,7 @@ pub fn exec(
         StmtKind::CycleCancel => {
             it.cycles.cancel();
             it.state.motion = ModalMotion::None;
+            it.splines.no_motion_code = false;
             it.out(Canon::Comment(
                 "interpreter: motion mode set to none".into(),
             ));
@@ -95,6 +100,28 @@ fn motion_inner(
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
+    // Polar words beside a cycle's G code belong to that cycle, which the
+    // cycle statement of the block runs.
+    if m.kind == MotionKind::Implicit && has(block, |k| matches!(k, StmtKind::Cycle(_))) {
+        return Ok(());
+    }
+    // So do the words of a spline block (G5 .. G5.3), and a G5.2
+    // continuation block gives a control point.
+    if m.kind == MotionKind::Implicit
+        && has(
+            block,
+            |k| matches!(k, StmtKind::Aux { letter, code, .. } if super::aux::is_motion_aux(*letter, *code)),
+        )
+    {
+        return Ok(());
+    }
+    if m.kind == MotionKind::Implicit && super::splines::in_nurbs_mode(it) {
+        return super::splines::continuation(it, m, block, exprs);
+    }
+    if m.kind == MotionKind::Implicit && super::threading::is_modal(it) && !m.target.is_empty() {
+        it.comp_block(block.span);
+        return super::threading::exec(it, &[], block, exprs);
+    }
     let kind = match m.kind {
         MotionKind::Implicit => match it.state.motion {
             _ if m.target.is_empty()
@@ -175,7 +202,7 @@ fn straight(
             Frame::Program
         },
     )?;
-    let polar = polar(it, m, exprs)?;
+    let polar = super::polar::polar(it, m, exprs)?;
     if let Some((x, y)) = polar {
         to[0] = it.state.to_mm(x);
         to[1] = it.state.to_mm(y);
@@ -241,7 +268,7 @@ fn probe(
     {
         let span = it.span;
         let sink = &mut it.sink;
-        it.comp.flush(&mut |c| sink(c, span));
+        it.comp.flush(&mut |c| sink.call(c, span));
     }
     let from = super::host::MotionHost::position(it);
     if it.state.feed == 0.0 {
@@ -280,7 +307,7 @@ fn probe(
     Ok(())
 }
 
-fn num(
+pub(super) fn num(
     it: &mut Interp<'_, '_>,
     v: &Option<Value>,
     exprs: &Arena<Expr>,
@@ -324,6 +351,7 @@ fn base_block(
         incremental: !it.state.absolute,
         return_initial: it.state.retract_initial,
         code_in_block: false,
+        polar_step: None,
         span: it.span,
     })
 }
@@ -369,12 +397,16 @@ fn implicit_cycle(
     cb.j = aux::block_word(it, block, 'J', exprs)?;
     cb.k = aux::block_word(it, block, 'K', exprs)?;
     if m.polar_radius.is_some() || m.polar_angle.is_some() {
-        return polar_cycle(it, cb, m, block, exprs);
+        return super::polar::polar_cycle(it, cb, m, block, exprs);
     }
     run_cycle(it, cb, block)
 }
 
-fn run_cycle(it: &mut Interp<'_, '_>, cb: CycleBlock, block: &Block) -> Result<(), Stop> {
+pub(super) fn run_cycle(
+    it: &mut Interp<'_, '_>,
+    cb: CycleBlock,
+    block: &Block,
+) -> Result<(), Stop> {
     it.comp_block(block.span);
     it.state.motion = ModalMotion::Cycle(cb.kind);
     let mark = it.diags.len();
@@ -412,64 +444,5 @@ fn spindle_sync(
         it.straight_move(MoveKind::Feed, to)?;
     }
     it.out(Canon::StopSpeedFeedSync);
-    Ok(())
-}
-
-/// LinuxCNC polar words `@` (distance) and `^` (angle, degrees): the
-/// absolute X Y (program units) they give. Under G90 a missing word keeps
-/// the current point's distance or angle from the origin; under G91 both
-/// are increments to the current point's distance and angle.
-fn polar(
-    it: &mut Interp<'_, '_>,
-    m: &Motion,
-    exprs: &Arena<Expr>,
-) -> Result<Option<(f64, f64)>, Stop> {
-    if m.polar_radius.is_none() && m.polar_angle.is_none() {
-        return Ok(None);
-    }
-    let (cx, cy) = (
-        it.state.to_prog(it.state.pos[0]),
-        it.state.to_prog(it.state.pos[1]),
-    );
-    let (cr, ca) = (cx.hypot(cy), cy.atan2(cx));
-    let r = num(it, &m.polar_radius, exprs)?;
-    let a = num(it, &m.polar_angle, exprs)?.map(f64::to_radians);
-    let (r, a) = if it.state.absolute {
-        (r.unwrap_or(cr), a.unwrap_or(ca))
-    } else {
-        (cr + r.unwrap_or(0.0), ca + a.unwrap_or(0.0))
-    };
-    Ok(Some((r * a.cos(), r * a.sin())))
-}
-
-/// A cycle block with polar words: each repeat steps in polar terms, so
-/// the holes are run one by one.
-fn polar_cycle(
-    it: &mut Interp<'_, '_>,
-    mut cb: CycleBlock,
-    m: &Motion,
-    block: &Block,
-    exprs: &Arena<Expr>,
-) -> Result<(), Stop> {
-    let n = cb.repeat.unwrap_or(1.0).max(1.0) as u64;
-    for k in 0..n.min(100_000) {
-        let Some((x, y)) = polar(it, m, exprs)? else {
-            break;
-        };
-        let (cx, cy) = (
-            it.state.to_prog(it.state.pos[0]),
-            it.state.to_prog(it.state.pos[1]),
-        );
-        let (x, y) = if cb.incremental {
-            (x - cx, y - cy)
-        } else {
-            (x, y)
-        };
-        cb.axes[0] = Some(x);
-        cb.axes[1] = Some(y);
-        cb.repeat = Some(1.0);
-        cb.code_in_block = cb.code_in_block && k == 0;
-        run_cycle(it, cb.clone(), block)?;
-    }
     Ok(())
 }

@@ -222,7 +222,7 @@ fn set_data(
             let p = match p {
                 Some(p) if (0.0..=9.0).contains(&p) && p.fract() == 0.0 => p as u32,
                 _ => {
-                    return Err(it.error_at(
+                    return Err(it.read_error(
                         it.span,
                         Code::BadWordValue,
                         format!("P value out of range (0-9) with G10 L{l}"),

@@ -42,6 +42,8 @@ pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
             0 => 541.0, // Fanuc G54.1 P (extended)
             i => 590.0 + (i - 6) as f64,
         }),
+        // rs274's sequence number: the line being run, counted from 1.
+        "_line" => Some(it.line as f64),
         "_call_level" => Some((it.params.depth() - 1) as f64),
         "_plane" => Some(match s.plane {
             crate::canon::CanonPlane::XY => 170.0,
@@ -50,9 +52,10 @@ pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
         }),
         "_flood" => Some(s.flood as i64 as f64),
         "_mist" => Some(s.mist as i64 as f64),
-        // The standalone interpreter: no task, no remapping, overrides on.
-        "_task" | "_remap_level" | "_feed_hold" | "_adaptive_feed" => Some(0.0),
-        "_speed_override" | "_feed_override" => Some(1.0),
+        // The standalone interpreter: no task, no remapping, no adaptive
+        // feed; the overrides and feed hold are enabled (rs274 prints 1).
+        "_task" | "_remap_level" | "_adaptive_feed" => Some(0.0),
+        "_speed_override" | "_feed_override" | "_feed_hold" => Some(1.0),
         // LinuxCNC 2.9 reports `_vmajor` 2.9 and `_vminor` 0 (rs274 2.9.x).
         "_vmajor" => Some(2.9),
         "_vminor" => Some(0.0),
@@ -76,6 +79,8 @@ fn modal(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
         });
     }
     match lower.as_str() {
+        // G5.3 leaves rs274's motion mode at -1 (no G code).
+        "_motion_mode" if s.motion == ModalMotion::None && it.splines.no_motion_code => Some(-1.0),
         "_motion_mode" => Some(motion_code(s.motion)),
         "_ccomp" => Some(match s.comp_side {
             CompSide::Off => 400.0,

@@ -57,7 +57,10 @@ impl StreamRun {
                 return;
             }
         }
+        it.line = index as u32 + 1;
+        it.hold();
         let r = it.block(b, exprs);
+        let r = it.settle(r);
         self.stop(it, r);
     }
 

@@ -146,7 +146,7 @@ fn radius_comp(
                 ));
             }
             let sink = &mut it.sink;
-            let r = it.comp.stop(&mut |c| sink(c, span));
+            let r = it.comp.stop(&mut |c| sink.call(c, span));
             it.state.comp_side = CompSide::Off;
             return r.map_err(|e| it.comp_error(e));
         }

@@ -12,6 +12,7 @@
 //! Every move keeps the span of the statement it came from.
 
 mod arc;
+mod nurbs;
 pub mod stock;
 mod track;
 

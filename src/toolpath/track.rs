@@ -81,6 +81,13 @@ impl Tracker {
         ]
     }
 
+    /// A program-frame XY point (program units) at work height `z` (mm).
+    fn to_work_at(&self, xy: [f64; 2], z: f64) -> P3 {
+        let mut p = self.to_work([xy[0], xy[1], 0.0]);
+        p[2] = z;
+        p
+    }
+
     fn offsets(&self, pose: &Pose) -> P3 {
         [
             pose[0] * self.scale,
@@ -188,6 +195,22 @@ impl Tracker {
                     *axis_end,
                     span,
                 ))
+            }
+            NurbsFeed { points, order } => {
+                // Straight segments along the curve, fine enough to plot
+                // and compare; the height stays where it is.
+                let z = self.pos[2];
+                let n = (points.len() * 16).clamp(16, 4096);
+                let samples = super::nurbs::sample(points, *order, n);
+                let last = samples.len().saturating_sub(1);
+                for (i, q) in samples.into_iter().enumerate() {
+                    let to = self.to_work_at([q[0], q[1]], z);
+                    let m = self.make(MoveKind::Line, to, span);
+                    if i == last {
+                        return Some(m);
+                    }
+                    emit(m);
+                }
             }
             StartSpeedFeedSync { pitch, .. } => self.sync_pitch = Some(pitch * self.scale),
             StopSpeedFeedSync => self.sync_pitch = None,

@@ -17,7 +17,10 @@
 //! current point to the programmed one on G40). The tool's actual,
 //! compensated position is kept here: [`RadiusComp::compensated`].
 //!
-//! Only the XY plane is supported (LinuxCNC also allows XZ for lathes).
+//! **Planes.** XY, and XZ as LinuxCNC allows it (lathes): in XZ the engine
+//! works on (Z, X) as its (x, y), with Y as the axis, exactly as
+//! `ARC_FEED` orders the XZ plane, and straight moves are turned back to
+//! X Y Z order when they leave the queue. YZ is refused, as in LinuxCNC.
 
 mod angle;
 mod arc;
@@ -106,9 +109,10 @@ impl RadiusComp {
         if self.side.is_some() {
             return Err(self.error(CompErrorKind::AlreadyOn, None));
         }
-        if plane != CanonPlane::XY {
+        if plane == CanonPlane::YZ {
             return Err(self.error(CompErrorKind::NotXyPlane, None));
         }
+        self.queue.xz = plane == CanonPlane::XZ;
         let swap = radius < 0.0;
         self.side = Some(match (side, swap) {
             (CompSide::Left, false) | (CompSide::Right, true) => CompSide::Left,
@@ -154,7 +158,18 @@ impl RadiusComp {
     /// Where the tool really is (x, y, z) once the entry move has been
     /// made; `None` while off or before the entry move.
     pub fn compensated(&self) -> Option<[f64; 3]> {
-        (self.is_on() && !self.first_move).then_some(self.current)
+        let c = self.current;
+        let real = if self.queue.xz { [c[1], c[2], c[0]] } else { c };
+        (self.is_on() && !self.first_move).then_some(real)
+    }
+
+    /// A pose in the engine's plane order (XZ: Z X Y).
+    fn to_plane(&self, p: Pose) -> Pose {
+        if self.queue.xz {
+            [p[2], p[0], p[1], p[3], p[4], p[5]]
+        } else {
+            p
+        }
     }
 
     /// Errors when the plane is changed while compensation is on.
@@ -202,6 +217,7 @@ impl RadiusComp {
             });
             return Ok(());
         }
+        let (from, to) = (self.to_plane(from), self.to_plane(to));
         if self.first_move {
             self.straight_entry(kind, from, to)
         } else {
@@ -209,8 +225,8 @@ impl RadiusComp {
         }
     }
 
-    /// An XY arc from the programmed `from` to the programmed `to` round
-    /// `centre` (x, y), `rotation` turns with sign (+ CCW, as in
+    /// An arc in the compensation plane from the programmed `from` to the
+    /// programmed `to` round `centre` (the plane's first and second axes), `rotation` turns with sign (+ CCW, as in
     /// `ARC_FEED`); the Z end is `to[2]`. For the entry arc the centre must
     /// be the one LinuxCNC finds from I/J (start + offset).
     pub fn arc(
@@ -237,6 +253,7 @@ impl RadiusComp {
             });
             return Ok(());
         }
+        let (from, to) = (self.to_plane(from), self.to_plane(to));
         if self.first_move {
             self.arc_entry(from, to, centre, rotation)
         } else {

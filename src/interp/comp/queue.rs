@@ -37,6 +37,8 @@ pub(super) struct Queue {
     pub items: Vec<Queued>,
     /// Where the held-back path starts, when known (LinuxCNC's endpoint).
     pub start: Option<(f64, f64)>,
+    /// Compensation in the XZ plane: held moves are in Z X Y order.
+    pub xz: bool,
 }
 
 impl Queue {
@@ -57,7 +59,7 @@ impl Queue {
     pub fn flush(&mut self, out: &mut dyn FnMut(Canon)) {
         self.start = None;
         for q in self.items.drain(..) {
-            out(to_canon(q));
+            out(to_canon(q, self.xz));
         }
     }
 
@@ -136,18 +138,27 @@ fn gouge_kind(kind: MoveKind) -> CompErrorKind {
     }
 }
 
-fn to_canon(q: Queued) -> Canon {
+/// A held-back call as it goes out; `xz`: straight moves are held in
+/// Z X Y order (arcs are already in `ARC_FEED`'s plane order).
+fn to_canon(q: Queued, xz: bool) -> Canon {
+    let real = |p: Pose| {
+        if xz {
+            [p[1], p[2], p[0], p[3], p[4], p[5]]
+        } else {
+            p
+        }
+    };
     match q {
         Queued::Line {
             kind: MoveKind::Rapid,
             to,
             ..
-        } => Canon::StraightTraverse(to),
+        } => Canon::StraightTraverse(real(to)),
         Queued::Line {
             kind: MoveKind::Feed,
             to,
             ..
-        } => Canon::StraightFeed(to),
+        } => Canon::StraightFeed(real(to)),
         Queued::Arc {
             end,
             centre,

@@ -31,6 +31,8 @@ fn err(code: Code, block: &CycleBlock, msg: &str, label: &str, help: &str) -> Di
 struct Plan {
     start: (f64, f64),
     step: (f64, f64),
+    /// G91 polar words: distance and angle (degrees) added per repeat.
+    polar_step: Option<(f64, f64)>,
     r: f64,
     bottom: f64,
     bottom_word: f64,
@@ -196,6 +198,7 @@ fn plan(
     Ok(Plan {
         start,
         step,
+        polar_step: block.polar_step,
         r,
         bottom,
         bottom_word,
@@ -375,7 +378,10 @@ fn positions_and_bodies(
 ) -> Result<(), Diagnostic> {
     let mut at = plan.start;
     for n in 0..plan.repeats {
-        at = (at.0 + plan.step.0, at.1 + plan.step.1);
+        at = match plan.polar_step {
+            Some(step) => polar_step(at, step, block)?,
+            None => (at.0 + plan.step.0, at.1 + plan.step.1),
+        };
         let (_, cur) = f.here(host);
         if n == 0 && cur > plan.r {
             f.rapid(host, at, cur);
@@ -395,4 +401,25 @@ fn positions_and_bodies(
         run_body(host, f, &levels, params, block)?;
     }
     Ok(())
+}
+
+/// The next hole of a G91 polar repeat: `at` turned by the angle step and
+/// moved out by the distance step, about the program origin.
+fn polar_step(
+    at: (f64, f64),
+    (dr, da): (f64, f64),
+    block: &CycleBlock,
+) -> Result<(f64, f64), Diagnostic> {
+    if at == (0.0, 0.0) {
+        return Err(err(
+            Code::PolarAtOrigin,
+            block,
+            "Incremental motion with polar coordinates is indeterminate when at the origin",
+            "G91 polar words at the origin",
+            "move off the program origin before an incremental polar cycle",
+        ));
+    }
+    let r = at.0.hypot(at.1) + dr;
+    let a = at.1.atan2(at.0) + da.to_radians();
+    Ok((r * a.cos(), r * a.sin()))
 }

@@ -66,14 +66,16 @@ fn at(d: Diagnostic, span: Span) -> Diagnostic {
 }
 
 fn not_expanded(it: &mut Interp<'_, '_>, name: &str, span: Span) {
-    it.diags.push(
-        Diagnostic::new(
-            Code::CannotExpandCycle,
-            format!("{name} is not expanded into moves: its calls are left out"),
-        )
-        .primary(span, "not expanded")
-        .help("the run goes on after the call as if the cycle did nothing"),
-    );
+    it.diags.push(not_expanded_diag(name, span));
+}
+
+fn not_expanded_diag(name: &str, span: Span) -> Diagnostic {
+    Diagnostic::new(
+        Code::CannotExpandCycle,
+        format!("{name} is not expanded into moves: its calls are left out"),
+    )
+    .primary(span, "not expanded")
+    .help("the run goes on after the call as if the cycle did nothing")
 }
 
 /// Runs a `CycleCall` statement.
@@ -132,7 +134,14 @@ fn run(
         Kind::Drill => run_named_drill_cycle(&mut FramedHost::new(it, frame, scale), name, args),
         Kind::Milling => {
             let radius = it.state.to_prog(it.state.comp_radius);
-            milling::run(&mut FramedHost::new(it, frame, scale), name, args, radius)
+            let host = &mut FramedHost::new(it, frame, scale);
+            match milling::run(host, name, args, radius) {
+                Ok(milling::Outcome::NotExpanded(why)) => {
+                    it.diags.push(not_expanded_diag(name, span).note(why));
+                    Ok(())
+                }
+                r => r.map(|_| ()),
+            }
         }
         Kind::Pattern => return run_pattern(it, name, args, span),
         Kind::Tolerance => {

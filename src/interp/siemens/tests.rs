@@ -4,6 +4,7 @@
 //! by hand from the semantics documented in the modules (no Siemens oracle).
 
 mod drive;
+mod milling_more;
 mod rec;
 
 use super::frame::ProgFrame;
@@ -94,7 +95,8 @@ fn mill(name: &str, args: &[f64], radius: f64) -> String {
         .map(|x| if x.is_nan() { None } else { Some(*x) })
         .collect();
     match milling::run(&mut rec, name, &a, radius) {
-        Ok(()) => rec.text(),
+        Ok(milling::Outcome::Done) => rec.text(),
+        Ok(milling::Outcome::NotExpanded(why)) => format!("{}\nnot expanded: {why}", rec.text()),
         Err(d) => format!("{}\nerror {}: {}", rec.text(), d.code.code(), d.message),
     }
 }

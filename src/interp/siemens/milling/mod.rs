@@ -1,5 +1,9 @@
-//! Siemens milling cycles expanded into moves: POCKET1 (rectangular
-//! pocket), POCKET2 (circular pocket), CYCLE71 (face milling).
+//! Siemens milling cycles expanded into moves: POCKET1 and POCKET3
+//! (rectangular pockets), POCKET2 and POCKET4 (circular pockets), SLOT1,
+//! SLOT2 and LONGHOLE (slots on a circle), CYCLE71 (face milling).
+//! CYCLE72 (contour milling) is not expanded: its contour is another
+//! program and its approach and departure paths are not documented well
+//! enough [?]; it keeps the W0510 warning.
 //!
 //! Sources: parameter lists and meanings from `reference/dialects.md` §1.7
 //! (classic SINUMERIK cycle documentation [S]/[K]). The tool paths are not
@@ -14,13 +18,27 @@
 mod face;
 mod pen;
 mod pocket;
+mod pocket34;
+mod slots;
 
 use crate::diag::{Code, Diagnostic};
 use crate::interp::host::MotionHost;
 
 /// Does this module expand the cycle?
 pub fn expands(name: &str) -> bool {
-    matches!(name, "POCKET1" | "POCKET2" | "CYCLE71")
+    matches!(
+        name,
+        "POCKET1" | "POCKET2" | "POCKET3" | "POCKET4" | "SLOT1" | "SLOT2" | "LONGHOLE" | "CYCLE71"
+    )
+}
+
+/// What became of a call.
+#[derive(Debug, PartialEq)]
+pub enum Outcome {
+    Done,
+    /// The arguments ask for a variant whose path is not defined well
+    /// enough: the call is left out (W0510), for this reason.
+    NotExpanded(String),
 }
 
 /// The argument list read by position; empty slots are 0.
@@ -78,14 +96,20 @@ pub fn run(
     name: &str,
     args: &[Option<f64>],
     radius: f64,
-) -> Result<(), Diagnostic> {
+) -> Result<Outcome, Diagnostic> {
     let a = Args(args);
-    match name {
+    let done = match name {
         "POCKET1" => pocket::pocket1(host, &a, radius),
         "POCKET2" => pocket::pocket2(host, &a, radius),
+        "POCKET3" => return pocket34::pocket3(host, &a, radius),
+        "POCKET4" => return pocket34::pocket4(host, &a, radius),
+        "SLOT1" => slots::slot1(host, &a, radius),
+        "SLOT2" => slots::slot2(host, &a, radius),
+        "LONGHOLE" => slots::longhole(host, &a, radius),
         "CYCLE71" => face::cycle71(host, &a, radius),
         _ => Err(bad(format!(
             "{name} is not a milling cycle this interpreter expands"
         ))),
-    }
+    };
+    done.map(|()| Outcome::Done)
 }

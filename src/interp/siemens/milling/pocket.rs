@@ -30,33 +30,40 @@ use crate::canon::Canon;
 use crate::diag::Diagnostic;
 use crate::interp::host::MotionHost;
 
-/// The common part of both pockets.
-struct Pocket {
-    name: &'static str,
-    rtp: f64,
-    rfp: f64,
-    sdis: f64,
-    depth: f64,
-    ffd: f64,
-    ffp1: f64,
-    mid: f64,
-    ccw: bool,
-    fal: f64,
-    vari: i64,
-    ffp2: f64,
-    ssf: f64,
+/// The common part of the pockets (POCKET3/4 fill it in `pocket34`).
+pub(super) struct Pocket {
+    pub name: &'static str,
+    pub rtp: f64,
+    pub rfp: f64,
+    pub sdis: f64,
+    pub depth: f64,
+    pub ffd: f64,
+    pub ffp1: f64,
+    pub mid: f64,
+    pub ccw: bool,
+    pub fal: f64,
+    pub vari: i64,
+    pub ffp2: f64,
+    pub ssf: f64,
+    /// Width infeed between rings (0: the tool radius).
+    pub step: f64,
+    /// Base allowance: roughing stops this far above the depth, and
+    /// finishing then clears the base at the depth before the wall.
+    pub fald: f64,
 }
 
 /// A ring: half sizes (hu, hv) and corner radius; a circle when `circle`.
 #[derive(Clone, Copy, Debug)]
-struct Ring {
-    hu: f64,
-    hv: f64,
-    rc: f64,
-    circle: bool,
+pub(super) struct Ring {
+    pub hu: f64,
+    pub hv: f64,
+    pub rc: f64,
+    pub circle: bool,
 }
 
-fn common(name: &'static str, a: &Args, i_ffd: usize) -> Result<Pocket, Diagnostic> {
+/// The words POCKET1, POCKET2, SLOT1, SLOT2 and LONGHOLE share: RTP RFP
+/// SDIS DP DPR first, FFD FFP1 MID CDIR FAL VARI MIDF FFP2 SSF from `i_ffd`.
+pub(super) fn common(name: &'static str, a: &Args, i_ffd: usize) -> Result<Pocket, Diagnostic> {
     let rfp = a.get(1);
     let depth = match (a.opt(3), a.opt(4)) {
         (_, Some(dpr)) if dpr != 0.0 => rfp - dpr.abs(),
@@ -80,6 +87,8 @@ fn common(name: &'static str, a: &Args, i_ffd: usize) -> Result<Pocket, Diagnost
         vari: (k(5).abs() as i64) % 10,
         ffp2: k(7),
         ssf: k(8),
+        step: 0.0,
+        fald: 0.0,
     })
 }
 
@@ -136,7 +145,7 @@ fn rings(name: &str, last: Ring, step: f64) -> Result<Vec<Ring>, Diagnostic> {
         .collect())
 }
 
-fn run(
+pub(super) fn run(
     host: &mut dyn MotionHost,
     mut pen: Pen,
     p: &Pocket,
@@ -163,7 +172,8 @@ fn run(
         rc,
         circle: last.circle,
     };
-    let lv = levels(p.name, p.rfp, p.depth, p.mid)?;
+    let step = if p.step > 0.0 { p.step.min(2.0 * r) } else { r };
+    let lv = levels(p.name, p.rfp, p.depth + p.fald, p.mid)?;
     let h = pen.depth(host);
     pen.rapid(host, 0.0, 0.0, h);
     pen.rapid_w(host, p.rfp + p.sdis);
@@ -174,7 +184,7 @@ fn run(
                 p.name
             )));
         }
-        let rs = rings(p.name, rough, r)?;
+        let rs = rings(p.name, rough, step)?;
         for w in &lv {
             plunge(host, &mut pen, p.ffd, *w);
             pen.set_feed(host, p.ffp1);
@@ -192,6 +202,11 @@ fn run(
         }
         plunge(host, &mut pen, p.ffd, p.depth);
         pen.set_feed(host, if p.ffp2 > 0.0 { p.ffp2 } else { p.ffp1 });
+        if p.fald > 0.0 {
+            for ring in &rings(p.name, rough, step)? {
+                cut_ring(host, &pen, ring, p.ccw);
+            }
+        }
         cut_ring(host, &pen, &last, p.ccw);
         if p.ssf > 0.0 && p.ssf != speed {
             host.emit(Canon::SetSpindleSpeed(speed));
