@@ -7,6 +7,7 @@
 
 mod expr;
 mod flow;
+mod klartext;
 mod motion;
 pub mod number;
 mod sinumerik;

@@ -11,12 +11,13 @@ use crate::ir::{Arena, Block, Expr, Stmt, StmtKind};
 pub fn phase(kind: &StmtKind) -> u8 {
     use StmtKind::*;
     match kind {
-        Comment { .. } | Message(_) => 1,
+        Comment { .. } | Message(_) | Stock { .. } => 1,
         FeedMode(_) => 2,
         Feed(_) => 3,
         SpindleSpeed(_) | SpindleCss { .. } => 4,
         ToolSelect(_) => 5,
-        ToolChange => 6,
+        ToolChange | ToolDef { .. } => 6,
+        ToolOversize { .. } => 7,
         Spindle(_) => 7,
         Coolant(_) => 8,
         Aux { .. } | DynamicCode { .. } => 9,
@@ -31,7 +32,9 @@ pub fn phase(kind: &StmtKind) -> u8 {
         ReturnToInitial(_) => 18,
         SetData { .. } | RefReturn { .. } | CoordShift { .. } | MachineCoords | Transform(_) => 19,
         Motion(_) | Cycle(_) | CycleCancel | CycleCall(_) | ModalCallCancel => 20,
-        Stop(_) => 21,
+        Pole(_) | Corner { .. } | Approach(_) | CycleDef(_) | CycleLine(_) | PatternDef(_) => 20,
+        CycleRun(_) => 20,
+        Stop(_) | ProgramEnd { .. } => 21,
         // Program content and control flow: the program walker runs these.
         Tape | ProgramStart { .. } | Raw { .. } | Word(_) | Command { .. } => 0,
         Assign { .. }
@@ -155,6 +158,17 @@ fn exec_stmt(
             motion::exec(it, s, block, exprs)?;
             siemens::after_motion(it, s, block, exprs)
         }
+        ProgramEnd { .. }
+        | Stock { .. }
+        | ToolDef { .. }
+        | ToolOversize { .. }
+        | Pole(_)
+        | Corner { .. }
+        | Approach(_)
+        | CycleDef(_)
+        | CycleLine(_)
+        | CycleRun(_)
+        | PatternDef(_) => super::heidenhain::exec(it, s, block, exprs),
         // Run by the program walker (phase 0), never here.
         _ => Ok(()),
     }

@@ -1006,6 +1006,7 @@ pub fn assign(
         }
         Var::Named(name) => it.params.set_named(name, v.unwrap_or(0.0)),
         Var::R(n) => it.params.set_r(*n, v.unwrap_or(0.0)),
+        Var::Q(bank, n) => it.params.set_q(*bank, *n, v.unwrap_or(0.0)),
         Var::RIndirect(e) => {
             let n = it.eval(*e, exprs)?.unwrap_or(0.0).round().max(0.0) as u32;
             it.params.set_r(n, v.unwrap_or(0.0));

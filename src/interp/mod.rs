@@ -15,6 +15,7 @@ pub mod eval;
 pub mod exec;
 pub mod fanuc_xform;
 pub mod flow;
+pub mod heidenhain;
 pub mod host;
 pub mod index;
 pub mod machine;
