@@ -1,0 +1,524 @@
+//! Path, tool and blank blocks to items: `L`, `C`, `CC`, `CR`, `CT`, `LP`,
+//! `CP`, `CTP`, `RND`, `CHF`, `APPR`/`DEP`, `TOOL CALL`, `TOOL DEF`,
+//! `BLK FORM`, `STOP` and blocks of M functions alone.
+//!
+//! `L` is a linear move, or a rapid with `FMAX`; `C` an arc round the pole
+//! (no centre words: the interpreter takes the pole); `CR` an arc by
+//! radius; `CT`/`CTP` tangent arcs; `LP`/`CP` polar (`PR`/`PA`, with `I`:
+//! incremental, kept as `IC(..)` around the value). `RL`/`RR`/`R0` become
+//! radius compensation, `F` a feed, `M` words go to the shared lowering
+//! (the spec's code table); `M99`/`M89` are cycle calls.
+
+use super::build::{Ctx, Signed, WordNode};
+use super::token::Kw;
+use crate::diag::Code;
+use crate::ir::{
+    Approach, ApproachKind, ArcDir, Axes, CompSide, Coord, CornerKind, CycleRunKind, DimMode,
+    ExprKind, LengthUnit, Motion, MotionKind, Plane, StmtKind, StockCorner, ToolRef, Value,
+};
+use crate::syntax::Item;
+
+const AXES: [&str; 9] = ["X", "Y", "Z", "A", "B", "C", "U", "V", "W"];
+
+/// What the words of a path block said besides axes.
+#[derive(Default)]
+struct Said {
+    axes: Axes,
+    rapid: bool,
+    dir: Option<ArcDir>,
+    radius: Option<Value>,
+    polar_r: Option<Value>,
+    polar_a: Option<Value>,
+    len: Option<Value>,
+    cca: Option<Value>,
+    kind: Option<ApproachKind>,
+    pos: bool,
+    pat: bool,
+    items: Vec<Item>,
+}
+
+/// Reads a block's words; `allowed` lists the non-axis words it takes.
+fn read_words(ctx: &mut Ctx<'_>, words: &[WordNode], allowed: &[&str], axes_ok: bool) -> Said {
+    let mut s = Said::default();
+    for w in words {
+        let n = w.name.as_str();
+        let incr = n.len() == 2 && n.starts_with('I') && AXES.contains(&&n[1..]);
+        if axes_ok && (AXES.contains(&n) || incr) {
+            let Some(v) = ctx.word_value(w) else {
+                ctx.error(
+                    Code::KlartextAxisWithoutValue,
+                    w.l,
+                    w.r,
+                    format!("the axis word `{n}` has no coordinate"),
+                    "write the coordinate after the axis letter: `X+10`, `IZ-2`",
+                );
+                continue;
+            };
+            let letter = n.chars().last().unwrap_or('X');
+            let c = Coord {
+                value: v,
+                dim: incr.then_some(DimMode::Incremental),
+                span: ctx.span(w.l, w.r),
+            };
+            if let Some(slot) = s.axes.slot_mut(letter) {
+                *slot = Some(c);
+            }
+            continue;
+        }
+        if !allowed.contains(&n) && !(n == "R" && allowed.contains(&"R0")) {
+            ctx.error(
+                Code::KlartextWordNotAllowed,
+                w.l,
+                w.r,
+                format!("`{n}` is not a word this block takes"),
+                "remove the word or move it to a block that takes it",
+            );
+            continue;
+        }
+        word(ctx, w, n, &mut s);
+    }
+    s
+}
+
+fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said) {
+    let v = ctx.word_value(w);
+    let (l, r) = (w.l, w.r);
+    let comp = |side| StmtKind::RadiusComp {
+        side,
+        register: None,
+        diameter: false,
+    };
+    match (n, v) {
+        ("R", Some(Value::Number(d)))
+            if d.is_integer()
+                && d.as_int() == Some(0)
+                && w.sign.is_none()
+                && s.radius.is_none()
+                && !matches!(s.kind, Some(_)) =>
+        {
+            s.items.push(ctx.stmt(comp(CompSide::Off), l, r))
+        }
+        ("R", Some(v)) => s.radius = Some(v),
+        ("RL", None) => s.items.push(ctx.stmt(comp(CompSide::Left), l, r)),
+        ("RR", None) => s.items.push(ctx.stmt(comp(CompSide::Right), l, r)),
+        ("R0", _) => s.items.push(ctx.stmt(comp(CompSide::Off), l, r)),
+        ("F", Some(v)) => s.items.push(ctx.stmt(StmtKind::Feed(v), l, r)),
+        ("FMAX", None) => s.rapid = true,
+        ("FAUTO", None) => s.items.push(ctx.stmt(
+            StmtKind::Raw {
+                dialect: "heidenhain".into(),
+                text: "FAUTO".into(),
+            },
+            l,
+            r,
+        )),
+        ("M", Some(v)) => match v.number().and_then(|d| d.as_int()) {
+            Some(99) => s
+                .items
+                .push(ctx.stmt(StmtKind::CycleRun(CycleRunKind::Block), l, r)),
+            Some(89) => s
+                .items
+                .push(ctx.stmt(StmtKind::CycleRun(CycleRunKind::Modal), l, r)),
+            _ => s.items.push(ctx.m_word(w, v)),
+        },
+        ("DR", None) => {
+            s.dir = Some(if w.sign == Some('-') {
+                ArcDir::Cw
+            } else {
+                ArcDir::Ccw
+            })
+        }
+        ("PR", Some(v)) => s.polar_r = Some(v),
+        ("IPR", Some(v)) => s.polar_r = Some(incremental(ctx, v, l, r)),
+        ("PA", Some(v)) => s.polar_a = Some(v),
+        ("IPA", Some(v)) => s.polar_a = Some(incremental(ctx, v, l, r)),
+        ("LEN", Some(v)) => s.len = Some(v),
+        ("CCA", Some(v)) => s.cca = Some(v),
+        ("LT", None) => s.kind = Some(ApproachKind::LineTangent),
+        ("LN", None) => s.kind = Some(ApproachKind::LineNormal),
+        ("CT", None) => s.kind = Some(ApproachKind::ArcTangent),
+        ("LCT", None) => s.kind = Some(ApproachKind::LineArcTangent),
+        ("POS", None) => s.pos = true,
+        ("PAT", None) => s.pat = true,
+        (n, v) => {
+            let what = if v.is_some() {
+                format!("`{n}` takes no value here")
+            } else {
+                format!("`{n}` needs a value")
+            };
+            ctx.error(
+                Code::KlartextWordNotAllowed,
+                l,
+                r,
+                what,
+                "check the word against the block's function",
+            );
+        }
+    }
+}
+
+/// `IPA+45`: an incremental value, as `IC(45)`.
+fn incremental(ctx: &mut Ctx<'_>, v: Value, l: usize, r: usize) -> Value {
+    let e = ctx.expr_of(&v, l, r);
+    let span = ctx.span(l, r);
+    Value::Expr(ctx.exprs.alloc(crate::ir::Expr {
+        kind: ExprKind::Dimension(DimMode::Incremental, e),
+        span,
+    }))
+}
+
+const MOVE_WORDS: &[&str] = &["R0", "RL", "RR", "F", "FMAX", "FAUTO", "M"];
+
+/// `L`, `C`, `CC`, `CR`, `CT`, `LP`, `CP`, `CTP`, `RND`, `CHF` (without value).
+pub fn path(ctx: &mut Ctx<'_>, kw: Kw, words: &[WordNode], l: usize, r: usize) -> Vec<Item> {
+    let (allowed, axes_ok): (&[&str], bool) = match kw {
+        Kw::L | Kw::Ct => (MOVE_WORDS, true),
+        Kw::C => (&["R0", "RL", "RR", "F", "FMAX", "FAUTO", "M", "DR"], true),
+        Kw::Cr => (
+            &["R", "R0", "RL", "RR", "F", "FMAX", "FAUTO", "M", "DR"],
+            true,
+        ),
+        Kw::Cc => (&[], true),
+        Kw::Lp | Kw::Ctp => (
+            &[
+                "PR", "IPR", "PA", "IPA", "R0", "RL", "RR", "F", "FMAX", "FAUTO", "M",
+            ],
+            true,
+        ),
+        Kw::Cp => (
+            &[
+                "PA", "IPA", "R0", "RL", "RR", "F", "FMAX", "FAUTO", "M", "DR",
+            ],
+            true,
+        ),
+        Kw::Rnd => (&["R", "F"], false),
+        _ => (&["F"], false),
+    };
+    let mut s = read_words(ctx, words, allowed, axes_ok);
+    let mut out = std::mem::take(&mut s.items);
+    let need = |ctx: &mut Ctx<'_>, what: &str, help: &str| {
+        ctx.error(Code::KlartextMissingWord, l, r, what.to_string(), help)
+    };
+    let kind = match kw {
+        Kw::Cc => {
+            out.insert(0, ctx.stmt(StmtKind::Pole(Box::new(s.axes)), l, r));
+            return out;
+        }
+        Kw::Rnd | Kw::Chf => {
+            let Some(size) = s.radius.take() else {
+                need(ctx, "RND needs its radius `R`", "write `RND R5`");
+                return out;
+            };
+            let corner = StmtKind::Corner {
+                kind: CornerKind::Round,
+                size,
+            };
+            out.insert(0, ctx.stmt(corner, l, r));
+            return out;
+        }
+        Kw::L | Kw::Lp if s.rapid => MotionKind::Rapid,
+        Kw::L | Kw::Lp => MotionKind::Linear,
+        Kw::Ct | Kw::Ctp => MotionKind::ArcTangent,
+        _ => match s.dir {
+            Some(d) => MotionKind::Arc(d),
+            None => {
+                need(
+                    ctx,
+                    "a circle needs its direction `DR+` or `DR-`",
+                    "add DR+ (counter-clockwise) or DR- (clockwise)",
+                );
+                MotionKind::Arc(ArcDir::Ccw)
+            }
+        },
+    };
+    if kw == Kw::Cr && s.radius.is_none() {
+        need(
+            ctx,
+            "CR needs its radius `R`",
+            "write `CR X.. Y.. R+20 DR-`",
+        );
+    }
+    if matches!(kw, Kw::Lp | Kw::Ctp) && s.polar_r.is_none() && s.polar_a.is_none() {
+        need(
+            ctx,
+            "a polar block needs PR or PA",
+            "write `LP PR+40 PA+30`",
+        );
+    }
+    let mut m = Motion::new(kind);
+    m.target = s.axes;
+    m.arc.radius = s.radius;
+    m.polar_radius = s.polar_r;
+    m.polar_angle = s.polar_a;
+    out.insert(0, ctx.stmt(StmtKind::Motion(Box::new(m)), l, r));
+    out
+}
+
+/// `CHF 2` (with optional `F`).
+pub fn chamfer(
+    ctx: &mut Ctx<'_>,
+    size: &Signed,
+    words: &[WordNode],
+    l: usize,
+    r: usize,
+) -> Vec<Item> {
+    let size = ctx.value(size);
+    let mut s = read_words(ctx, words, &["F"], false);
+    let mut out = std::mem::take(&mut s.items);
+    let kind = StmtKind::Corner {
+        kind: CornerKind::Chamfer,
+        size,
+    };
+    out.insert(0, ctx.stmt(kind, l, r));
+    out
+}
+
+/// `APPR LT X.. Y.. LEN10 RR F300`, `DEP CT CCA90 R+5 F..`.
+pub fn approach(
+    ctx: &mut Ctx<'_>,
+    depart: bool,
+    words: &[WordNode],
+    l: usize,
+    r: usize,
+) -> Vec<Item> {
+    let allowed = [
+        "LT", "LN", "CT", "LCT", "LEN", "CCA", "R", "R0", "RL", "RR", "F", "FMAX", "M",
+    ];
+    let mut s = read_words(ctx, words, &allowed, true);
+    let mut out = std::mem::take(&mut s.items);
+    let Some(kind) = s.kind else {
+        ctx.error(
+            Code::KlartextMissingWord,
+            l,
+            r,
+            "APPR/DEP needs its kind: LT, LN, CT or LCT",
+            "write e.g. `APPR LT X+0 Y+0 LEN10 RL`",
+        );
+        return out;
+    };
+    let a = Approach {
+        depart,
+        kind,
+        target: s.axes,
+        len: s.len,
+        radius: s.radius,
+        angle: s.cca,
+    };
+    out.insert(0, ctx.stmt(StmtKind::Approach(Box::new(a)), l, r));
+    out
+}
+
+/// `TOOL CALL 1 Z S3000 F500 DL+0.1 DR-0.05`: tool select and change, the
+/// plane from the tool axis, speed, feed and oversizes.
+pub fn tool_call(
+    ctx: &mut Ctx<'_>,
+    tool: Option<ToolRef>,
+    words: &[WordNode],
+    l: usize,
+    r: usize,
+) -> Vec<Item> {
+    let mut out = Vec::new();
+    if let Some(t) = tool {
+        out.push(ctx.stmt(StmtKind::ToolSelect(t), l, r));
+        out.push(ctx.stmt(StmtKind::ToolChange, l, r));
+    }
+    let (mut dl, mut dr) = (None, None);
+    for w in words {
+        let v = ctx.word_value(w);
+        let plane = match w.name.as_str() {
+            "Z" => Some(Plane::XY),
+            "Y" => Some(Plane::ZX),
+            "X" => Some(Plane::YZ),
+            _ => None,
+        };
+        match (w.name.as_str(), v, plane) {
+            (_, None, Some(p)) => out.push(ctx.stmt(StmtKind::Plane(p), w.l, w.r)),
+            ("S", Some(v), _) => out.push(ctx.stmt(StmtKind::SpindleSpeed(v), w.l, w.r)),
+            ("F", Some(v), _) => out.push(ctx.stmt(StmtKind::Feed(v), w.l, w.r)),
+            ("DL", Some(v), _) => dl = Some(v),
+            ("DR", Some(v), _) => dr = Some(v),
+            (n, _, _) => ctx.error(
+                Code::KlartextWordNotAllowed,
+                w.l,
+                w.r,
+                format!("TOOL CALL does not take `{n}` here"),
+                "TOOL CALL takes the tool, its axis (Z), S, F, DL and DR",
+            ),
+        }
+    }
+    if dl.is_some() || dr.is_some() {
+        let k = StmtKind::ToolOversize {
+            length: dl,
+            radius: dr,
+        };
+        out.push(ctx.stmt(k, l, r));
+    }
+    out
+}
+
+/// `TOOL DEF 1 L+0 R+5`.
+pub fn tool_def(
+    ctx: &mut Ctx<'_>,
+    tool: Option<ToolRef>,
+    words: &[WordNode],
+    l: usize,
+    r: usize,
+) -> Vec<Item> {
+    let Some(tool) = tool else {
+        ctx.error(
+            Code::KlartextMissingWord,
+            l,
+            r,
+            "TOOL DEF needs the tool number or name",
+            "write `TOOL DEF 1 L+0 R+5`",
+        );
+        return Vec::new();
+    };
+    let (mut length, mut radius) = (None, None);
+    for w in words {
+        match (w.name.as_str(), ctx.word_value(w)) {
+            ("L", Some(v)) => length = Some(v),
+            ("R", Some(v)) => radius = Some(v),
+            (n, _) => ctx.error(
+                Code::KlartextWordNotAllowed,
+                w.l,
+                w.r,
+                format!("TOOL DEF does not take `{n}`"),
+                "TOOL DEF takes L (length) and R (radius)",
+            ),
+        }
+    }
+    vec![ctx.stmt(
+        StmtKind::ToolDef {
+            tool,
+            length,
+            radius,
+        },
+        l,
+        r,
+    )]
+}
+
+/// `BLK FORM 0.1 Z X.. Y.. Z..` / `BLK FORM 0.2 X.. Y.. Z..`.
+pub fn blk_form(
+    ctx: &mut Ctx<'_>,
+    which: crate::ir::Decimal,
+    words: &[WordNode],
+    l: usize,
+    r: usize,
+) -> Vec<Item> {
+    let corner = match which.format(1, true).as_str() {
+        "0.1" => StockCorner::Min,
+        "0.2" => StockCorner::Max,
+        _ => {
+            ctx.error(
+                Code::KlartextWordNotAllowed,
+                l,
+                r,
+                "only BLK FORM 0.1 and 0.2 are read",
+                "give the blank as BLK FORM 0.1 (minimum point) and 0.2 (maximum point)",
+            );
+            return Vec::new();
+        }
+    };
+    let mut axis = None;
+    let mut rest = Vec::new();
+    for (i, w) in words.iter().enumerate() {
+        if i == 0
+            && corner == StockCorner::Min
+            && w.value.is_none()
+            && w.sign.is_none()
+            && AXES[..3].contains(&w.name.as_str())
+        {
+            axis = w.name.chars().next();
+        } else {
+            rest.push(w.clone());
+        }
+    }
+    let s = read_words(ctx, &rest, &[], true);
+    let k = StmtKind::Stock {
+        corner,
+        axis,
+        axes: Box::new(s.axes),
+    };
+    vec![ctx.stmt(k, l, r)]
+}
+
+/// `STOP` (with M functions).
+pub fn stop(ctx: &mut Ctx<'_>, words: &[WordNode], l: usize, r: usize) -> Vec<Item> {
+    let mut s = read_words(ctx, words, &["M"], false);
+    let mut out = vec![ctx.stmt(StmtKind::Stop(crate::ir::StopKind::Program), l, r)];
+    out.append(&mut s.items);
+    out
+}
+
+/// A block of M functions alone (`M3 M8`); anything else there is an
+/// unknown block.
+pub fn bare(ctx: &mut Ctx<'_>, words: &[WordNode]) -> Vec<Item> {
+    if let Some(w) = words.first().filter(|w| w.name != "M") {
+        let hint = suggestion(&w.name);
+        ctx.error(
+            Code::KlartextUnknownBlock,
+            w.l,
+            w.r,
+            format!("`{}` does not start a Klartext block", w.name),
+            &hint,
+        );
+        return Vec::new();
+    }
+    let mut s = read_words(ctx, words, &["M"], false);
+    std::mem::take(&mut s.items)
+}
+
+fn suggestion(name: &str) -> String {
+    const KNOWN: &[&str] = &[
+        "CYCL", "TOOL", "CALL", "LBL", "BLK", "PATTERN", "APPR", "DEP", "STOP", "RND", "CHF",
+    ];
+    match KNOWN.iter().find(|k| name.starts_with(*k) || k.starts_with(name)) {
+        Some(k) => format!("did you mean `{k}`?"),
+        None => "a block starts with L, C, CC, CR, CT, LP, CP, CTP, RND, CHF, APPR, DEP, LBL, CALL, FN, CYCL, TOOL, BLK FORM, PATTERN DEF, STOP, Qn = or M".into(),
+    }
+}
+
+/// `BEGIN PGM name MM` / `END PGM name MM`: the name and the unit.
+pub fn pgm_line(ctx: &mut Ctx<'_>, end: bool, from: usize, l: usize, r: usize) -> Vec<Item> {
+    let text = ctx.slice(from, ctx.end()).trim().to_string();
+    let (name, unit) = match text.rsplit_once(char::is_whitespace) {
+        Some((n, u)) => (n.trim().to_string(), u.trim().to_ascii_uppercase()),
+        None => (String::new(), text.to_ascii_uppercase()),
+    };
+    let unit = match unit.as_str() {
+        "MM" => Some(LengthUnit::Mm),
+        "INCH" => Some(LengthUnit::Inch),
+        _ => None,
+    };
+    let (name, unit) = match unit {
+        Some(u) => (name, Some(u)),
+        None => (text.clone(), None),
+    };
+    let name = (!name.is_empty()).then_some(name);
+    let mut out = Vec::new();
+    if end {
+        out.push(ctx.stmt(StmtKind::ProgramEnd { name }, l, r));
+        return out;
+    }
+    out.push(ctx.stmt(StmtKind::ProgramStart { number: None, name }, l, r));
+    match unit {
+        Some(unit) => out.push(ctx.stmt(
+            StmtKind::Units {
+                unit,
+                with_feeds: true,
+            },
+            l,
+            r,
+        )),
+        None => ctx.error(
+            Code::KlartextMissingWord,
+            l,
+            r,
+            "BEGIN PGM needs the unit MM or INCH",
+            "write `BEGIN PGM NAME MM`",
+        ),
+    }
+    out
+}
