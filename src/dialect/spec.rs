@@ -93,6 +93,9 @@ pub enum Capability {
     /// interpreter does; otherwise to the initial level (G98), as Fanuc,
     /// Haas and Siemens controls do at power-on.
     CycleRetractRPlaneAtStart,
+    /// Heidenhain paths: circles round the pole `CC`, polar `LP`/`CP`/`CTP`,
+    /// `RND`/`CHF` blocks between elements, cycles by `CYCL DEF` + call.
+    PolePaths,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -126,6 +129,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
         "cycle-retract-r-plane-at-start",
         Capability::CycleRetractRPlaneAtStart,
     ),
+    ("pole-paths", Capability::PolePaths),
 ];
 
 impl Capability {

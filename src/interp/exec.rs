@@ -74,6 +74,9 @@ pub fn phase(kind: &StmtKind) -> u8 {
 pub fn exec_block(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     // The phases present, as bits; each is run in turn, its statements in
     // written order (no allocation, as a stable sort would give).
+    if it.spec.has(crate::dialect::Capability::PolePaths) {
+        super::heidenhain::flush_before(it, block)?;
+    }
     let mut present = 0u32;
     for s in &block.stmts {
         present |= 1 << phase(&s.kind);
@@ -154,6 +157,9 @@ fn exec_stmt(
             _ => offsets::exec(it, s, block, exprs),
         },
         CuttingEdge(_) | CycleCall(_) | ModalCallCancel => siemens::exec(it, s, block, exprs),
+        Motion(m) if it.spec.has(crate::dialect::Capability::PolePaths) => {
+            super::heidenhain::motion(it, s, m, block, exprs)
+        }
         Motion(_) | Cycle(_) | CycleCancel => {
             motion::exec(it, s, block, exprs)?;
             siemens::after_motion(it, s, block, exprs)

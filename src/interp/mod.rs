@@ -70,6 +70,8 @@ pub struct Interp<'a, 's> {
     pub siemens: siemens::SiemensState,
     /// Fanuc G68/G51/G51.1 transforms (mapped through `siemens.frame`).
     pub fanuc: fanuc_xform::FanucXform,
+    /// Heidenhain pole, cycle definitions, held line for corners.
+    pub heidenhain: heidenhain::HeidenhainState,
     /// Canned-cycle values that carry over between blocks.
     pub cycles: cycles::CycleMemory,
     /// Cutter radius compensation (every move goes through it).
@@ -105,6 +107,7 @@ impl<'a, 's> Interp<'a, 's> {
             auto_restore: Vec::new(),
             siemens: siemens::SiemensState::default(),
             fanuc: fanuc_xform::FanucXform::default(),
+            heidenhain: heidenhain::HeidenhainState::default(),
         }
     }
 

@@ -1,8 +1,54 @@
-//! Heidenhain Klartext semantics in the interpreter (filled in below).
+//! Heidenhain Klartext semantics in the interpreter: the pole (`CC`), arcs
+//! round it (`C`, `CP`), polar lines (`LP`), `RND`/`CHF` corners, cycle
+//! definitions and calls, old-style cycles (1 pecking, 7 datum shift,
+//! 8 mirror, 9 dwell, 10 rotation, 11 scaling), `END PGM`.
+//!
+//! Arcs, `CT` and the coordinate transformations go through the Siemens
+//! machinery (capability `frame-arcs`): a `C` block becomes an arc with an
+//! absolute centre at the pole, polar blocks become cartesian end points,
+//! datum shift/rotation/mirror/scaling become the programmable frame.
+//! Sources: `reference/dialects.md` §2; assumptions are marked `[?]`.
+
+mod cycles;
+mod paths;
 
 use super::{Interp, Stop};
 use crate::diag::Code;
-use crate::ir::{Arena, Block, Expr, Stmt};
+use crate::ir::{Arena, Block, Expr, Stmt, StmtKind};
+
+pub use paths::{flush_before, motion};
+
+/// The Heidenhain part of the machine state.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct HeidenhainState {
+    /// The pole / circle centre (programmed system, mm, plane axes).
+    pub pole: Option<[f64; 3]>,
+    /// The last cycle definition (numbered cycles), values evaluated.
+    pub cycle: Option<Defined>,
+    /// Old-style cycle values by (cycle, sub-number): the first value.
+    pub old: Vec<((u32, u32), f64)>,
+    /// The old-style cycle defined last (1..5, 17) for M99 / CYCL CALL.
+    pub old_cycle: Option<u32>,
+    /// M89: call the cycle after every positioning block.
+    pub modal_call: bool,
+    /// The points of the last PATTERN DEF (programmed, program units).
+    pub pattern: Vec<[Option<f64>; 3]>,
+    /// Datum shift, rotation, mirror and scale (cycles 7, 10, 8, 11).
+    pub shift: [f64; 3],
+    pub rotation: f64,
+    pub mirror: [bool; 3],
+    pub scale: f64,
+    /// A straight feed move held back until the next block says whether a
+    /// corner (`RND`/`CHF`) follows it.
+    pub held: Option<paths::Held>,
+}
+
+/// A cycle definition with its parameter values.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Defined {
+    pub number: u32,
+    pub params: Vec<(u32, f64)>,
+}
 
 /// Runs one Heidenhain-only statement.
 pub fn exec(
@@ -11,10 +57,24 @@ pub fn exec(
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    let _ = (block, exprs);
-    Err(it.error_at(
-        s.span,
-        Code::UnsupportedHere,
-        "this statement is not run by the interpreter yet",
-    ))
+    match &s.kind {
+        StmtKind::Pole(axes) => paths::pole(it, axes, exprs),
+        StmtKind::Corner { kind, size } => paths::corner(it, *kind, size, s.span, exprs),
+        StmtKind::CycleDef(c) => cycles::define(it, c, exprs),
+        StmtKind::CycleLine(l) => cycles::line(it, l, s.span, exprs),
+        StmtKind::CycleRun(kind) => cycles::run(it, kind, s.span, block, exprs),
+        StmtKind::PatternDef(items) => cycles::pattern(it, items, exprs),
+        // The blank and tool definitions say nothing the run uses [?: TOOL
+        // DEF radius is not yet taken into the tool table].
+        StmtKind::Stock { .. } | StmtKind::ToolDef { .. } | StmtKind::ToolOversize { .. } => Ok(()),
+        StmtKind::ProgramEnd { .. } => {
+            paths::flush(it)?;
+            super::machine::program_end(it, true)
+        }
+        _ => Err(it.error_at(
+            s.span,
+            Code::UnsupportedHere,
+            "this statement is not run by the interpreter yet",
+        )),
+    }
 }
