@@ -349,6 +349,8 @@ impl<'a> FsLoader<'a> {
         let stems: Vec<String> = match target {
             CallTarget::Name(n) => {
                 let n = n.trim_matches(|c| c == '<' || c == '>');
+                // Heidenhain `CALL PGM TNC:\DIR\NAME.H`: the file name.
+                let n = n.rsplit(['\\', '/', ':']).next().unwrap_or(n);
                 vec![
                     n.to_string(),
                     n.to_ascii_lowercase(),

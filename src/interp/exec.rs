@@ -142,6 +142,11 @@ fn exec_stmt(
         | ArcDistance(_)
         | ReturnToInitial(_)
         | Stop(_) => modes::exec(it, s, block, exprs),
+        // Heidenhain TOOL CALL: the new tool's length (and radius) are active.
+        ToolChange if it.spec.has(crate::dialect::Capability::PolePaths) => {
+            tools::exec(it, s, block, exprs)?;
+            siemens::activate_edge(it, 1)
+        }
         ToolSelect(_)
         | ToolChange
         | RadiusComp { .. }

@@ -681,6 +681,10 @@ impl<'l> Walker<'l> {
         to: Option<&Value>,
         exprs: &Arena<Expr>,
     ) -> Result<Next, Stop> {
+        if self.frames.is_empty() && it.spec.has(crate::dialect::Capability::PolePaths) {
+            // Heidenhain `LBL 0` met in the main program: it goes on.
+            return Ok(Next::Step);
+        }
         if self.frames.is_empty() {
             // M99 in a main program: start again from the top (bounded).
             self.count_loop(it, 0, 0)?;
@@ -881,6 +885,19 @@ impl<'l> Walker<'l> {
                 .get(n)
                 .and_then(|l| l.first())
                 .map(|&i| (prog, i));
+        }
+        if kind == CallKind::Label {
+            // Heidenhain `CALL LBL n`: from the label in this program to `LBL 0`.
+            let name = match target {
+                CallTarget::Number(n) => n.to_string(),
+                CallTarget::Name(n) => n.clone(),
+                CallTarget::Computed(_) => return None,
+            };
+            let ix = &self.progs[prog].index;
+            return ix
+                .labels
+                .get(&name.to_ascii_uppercase())
+                .map(|&i| (prog, i + 1));
         }
         for p in std::iter::once(prog).chain(0..self.progs.len()) {
             if let Some(i) = self.progs[p].index.call_target(target) {

@@ -146,3 +146,18 @@ fn operand(w: &mut Writer<'_>, e: ExprId, parent: u8, right: bool) -> Option<Str
         _ => s,
     })
 }
+
+/// `Q = ATAN2(b, a)`: written as `FN 13: Q = +a ANG +b`.
+pub fn is_angle(w: &Writer<'_>, e: ExprId) -> bool {
+    matches!(&w.prog.exprs[e].kind, ExprKind::Call(Func::Atan2, args) if args.len() == 2)
+}
+
+pub fn fn13(w: &mut Writer<'_>, v: &Var, e: ExprId, span: Span) -> Option<String> {
+    let ExprKind::Call(_, args) = w.prog.exprs[e].kind.clone() else {
+        return None;
+    };
+    let q = var(w, v, span)?;
+    let a = signed(w, &Value::Expr(args[1]), NumKind::Plain, span)?;
+    let b = signed(w, &Value::Expr(args[0]), NumKind::Plain, span)?;
+    Some(format!("FN 13: {q} = {a} ANG {b}"))
+}

@@ -229,7 +229,10 @@ fn main_line(w: &mut Writer<'_>, out: &mut Out, s: &Stmt, parts: &Parts<'_>) -> 
         K::Corner {
             kind: CornerKind::Round,
             size,
-        } => format!("RND R{}", signed(w, size, NumKind::Length, s.span)?),
+        } => format!(
+            "RND R{}",
+            signed(w, size, NumKind::Length, s.span)?.trim_start_matches('+')
+        ),
         K::Corner {
             kind: CornerKind::Chamfer,
             size,
@@ -364,7 +367,8 @@ fn corner_after(w: &mut Writer<'_>, out: &mut Out, s: &Stmt) {
     let K::Motion(m) = &s.kind else { return };
     let Some((kind, v)) = &m.corner else { return };
     let line = match kind {
-        CornerKind::Round => signed(w, v, NumKind::Length, s.span).map(|t| format!("RND R{t}")),
+        CornerKind::Round => signed(w, v, NumKind::Length, s.span)
+            .map(|t| format!("RND R{}", t.trim_start_matches('+'))),
         CornerKind::Chamfer => signed(w, v, NumKind::Length, s.span)
             .map(|t| format!("CHF {}", t.trim_start_matches('+'))),
         CornerKind::ChamferLeg | CornerKind::RoundModal => {
@@ -382,6 +386,7 @@ fn corner_after(w: &mut Writer<'_>, out: &mut Out, s: &Stmt) {
 fn tool_call(w: &mut Writer<'_>, stmts: &[&Stmt], feed: Option<String>) -> String {
     let mut line = "TOOL CALL".to_string();
     let mut rest = String::new();
+    let mut deltas = String::new();
     for s in stmts {
         match &s.kind {
             K::ToolSelect(ToolRef::Number(v)) => match v {
@@ -420,7 +425,7 @@ fn tool_call(w: &mut Writer<'_>, stmts: &[&Stmt], feed: Option<String>) -> Strin
                         .as_ref()
                         .and_then(|v| signed(w, v, NumKind::Length, s.span))
                     {
-                        rest.push_str(&format!(" {a}{t}"));
+                        deltas.push_str(&format!(" {a}{t}"));
                     }
                 }
             }
@@ -430,7 +435,7 @@ fn tool_call(w: &mut Writer<'_>, stmts: &[&Stmt], feed: Option<String>) -> Strin
     if let Some(f) = feed {
         rest.push_str(&format!(" {f}"));
     }
-    line + &rest
+    line + &rest + &deltas
 }
 
 fn other(w: &mut Writer<'_>, out: &mut Out, s: &Stmt) {
@@ -485,6 +490,9 @@ fn other(w: &mut Writer<'_>, out: &mut Out, s: &Stmt) {
             Some(l)
         }
         K::Raw { dialect, text } if dialect == "heidenhain" => Some(text.clone()),
+        K::Assign { var: v, value } if super::expr::is_angle(w, *value) => {
+            super::expr::fn13(w, v, *value, span)
+        }
         K::Assign { var: v, value } => match (var(w, v, span), formula(w, *value)) {
             (Some(a), Some(b)) => Some(format!("{a} = {b}")),
             _ => None,

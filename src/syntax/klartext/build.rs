@@ -88,6 +88,7 @@ pub struct LineComment {
 }
 
 pub struct Ctx<'a> {
+    pub spec: &'a crate::dialect::DialectSpec,
     pub file: FileId,
     pub exprs: &'a mut Arena<Expr>,
     /// The block's tokens (for the parts read token by token).
@@ -148,6 +149,11 @@ impl Ctx<'_> {
         };
         match (f, arg) {
             (Some(f), Some(a)) => self.alloc(ExprKind::Call(f, vec![a]), l, r),
+            // FRAC x = x - INT x.
+            (None, Some(a)) if name == "FRAC" => {
+                let int = self.alloc(ExprKind::Call(Func::Trunc, vec![a]), l, r);
+                self.binary(BinaryOp::Sub, a, int, l, r)
+            }
             (None, None) if name == "PI" => self.number(
                 Decimal::parse("3.14159265358979").unwrap_or(Decimal::from_int(3)),
                 l,

@@ -52,12 +52,17 @@ pub fn cycl_def(ctx: &mut Ctx<'_>, from: usize, l: usize, r: usize) -> Vec<Item>
         };
     }
     let number = num.as_int().unwrap_or(0).clamp(0, 99_999) as u32;
+    // The name runs up to the first parameter (`TAPPING W/ CHIP BRKG`).
     let mut i = 1;
-    let mut name = Vec::new();
-    while let Some((_, Tok::Name(n), _)) = toks.get(i) {
-        name.push(n.clone());
+    while i < toks.len() && !matches!(toks[i].1, Tok::Q(..)) {
         i += 1;
     }
+    let name_end = toks.get(i).map(|t| t.0).unwrap_or(ctx.end());
+    let name: Vec<String> = ctx
+        .slice(nr, name_end)
+        .split_whitespace()
+        .map(String::from)
+        .collect();
     let mut params = Vec::new();
     while i < toks.len() {
         let Some(p) = q_param(ctx, &toks, &mut i) else {
@@ -73,12 +78,54 @@ pub fn cycl_def(ctx: &mut Ctx<'_>, from: usize, l: usize, r: usize) -> Vec<Item>
         };
         params.push(p);
     }
+    missing_params(ctx, number, &params, l, r);
     let def = CycleDef {
         number,
         name: name.join(" "),
         params,
     };
     vec![ctx.stmt(StmtKind::CycleDef(Box::new(def)), l, r)]
+}
+
+/// E0320: the parameters the spec lists for the cycle that are not given.
+fn missing_params(ctx: &mut Ctx<'_>, number: u32, params: &[QParam], l: usize, r: usize) {
+    let Some(sig) = ctx.spec.cycle(&number.to_string()) else {
+        ctx.diags.push(
+            Diagnostic::new(Code::CannotExpandCycle, format!("cycle {number} is not in the dialect's cycle table"))
+                .primary(ctx.span(l, r), "kept with its parameters, not checked")
+                .help("its Q parameters are kept as written; it cannot be run or mapped to another control"),
+        );
+        return;
+    };
+    let missing: Vec<String> = sig
+        .params
+        .iter()
+        .filter(|p| !params.iter().any(|q| format!("Q{}", q.q) == p.name))
+        .map(|p| format!("{} ({})", p.name, p.doc))
+        .collect();
+    if !missing.is_empty() {
+        let d = Diagnostic::new(
+            Code::KlartextCycleMissingParameter,
+            format!(
+                "CYCL DEF {number} lacks {}",
+                if missing.len() == 1 {
+                    "a parameter"
+                } else {
+                    "parameters"
+                }
+            ),
+        )
+        .primary(ctx.span(l, r), format!("missing: {}", missing.join(", ")))
+        .help(format!(
+            "cycle {number} takes {}; add one `Qnnn=value` line for each",
+            sig.params
+                .iter()
+                .map(|p| p.name.as_str())
+                .collect::<Vec<_>>()
+                .join(" ")
+        ));
+        ctx.diags.push(d);
+    }
 }
 
 /// `Q200=+2 ;SET-UP CLEARANCE`, `Q206=Q2`.
@@ -153,7 +200,7 @@ pub fn cycl_call(ctx: &mut Ctx<'_>, words: &[WordNode], l: usize, r: usize) -> V
             ("POS", None) => pos = true,
             ("PAT", None) => how = CycleRunKind::Pattern,
             ("F", Some(v)) => out.push(ctx.stmt(StmtKind::Feed(v), w.l, w.r)),
-            ("M", Some(v)) => out.push(ctx.m_word(w, v)),
+            ("M", Some(v)) => out.extend(super::path::m_function(ctx, w, v)),
             (n, Some(v)) if pos && n.len() == 1 && "XYZABCUVW".contains(n) => {
                 let c = crate::ir::Coord {
                     value: v,

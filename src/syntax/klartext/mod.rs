@@ -93,7 +93,7 @@ impl FrontEnd for KlartextFrontEnd {
         }
         let lines = std::mem::take(&mut self.pending);
         self.pending_len = 0;
-        read_block(&lines, input.file, exprs, diags)
+        read_block(&lines, input, exprs, diags)
     }
 
     fn finish(&mut self, file: crate::span::FileId, diags: &mut Vec<Diagnostic>) {
@@ -129,7 +129,7 @@ fn join(lines: &[(String, u32)]) -> (String, usize, Vec<LineComment>) {
             text.push(' ');
         }
         let line = line.trim_end();
-        let line = line.strip_suffix('~').unwrap_or(line);
+        let line = line.strip_suffix('~').map(str::trim_end).unwrap_or(line);
         let start = if comment_block && k > 0 {
             Some(usize::MAX)
         } else {
@@ -175,10 +175,11 @@ fn comment_start(line: &str) -> Option<usize> {
 
 fn read_block(
     lines: &[(String, u32)],
-    file: crate::span::FileId,
+    input: &LineInput<'_>,
     exprs: &mut Arena<Expr>,
     diags: &mut Vec<Diagnostic>,
 ) -> Option<LineSyntax> {
+    let file = input.file;
     let (mut text, base, comments) = join(lines);
     let full = Span::new(
         file,
@@ -235,7 +236,7 @@ fn read_block(
     }
     let mut used = Vec::new();
     if !code.is_empty() {
-        used = body(&text, base, file, &comments, exprs, diags, &mut line);
+        used = body(&text, base, input, &comments, exprs, diags, &mut line);
     }
     let rest: Vec<&LineComment> = comments
         .iter()
@@ -259,12 +260,13 @@ fn read_block(
 fn body(
     text: &str,
     base: usize,
-    file: crate::span::FileId,
+    input: &LineInput<'_>,
     comments: &[LineComment],
     exprs: &mut Arena<Expr>,
     diags: &mut Vec<Diagnostic>,
     line: &mut LineSyntax,
 ) -> Vec<usize> {
+    let file = input.file;
     let mut raw = Vec::new();
     if let Err(e) = lexer::lex(text, base, &mut raw) {
         let code = match e.what {
@@ -285,6 +287,7 @@ fn body(
         toks.last().map(|t| t.2).unwrap_or(base),
     );
     let mut ctx = Ctx {
+        spec: input.spec,
         file,
         exprs,
         toks: &toks,

@@ -14,7 +14,8 @@ use super::token::Kw;
 use crate::diag::Code;
 use crate::ir::{
     Approach, ApproachKind, ArcDir, Axes, CompSide, Coord, CornerKind, CycleRunKind, DimMode,
-    ExprKind, LengthUnit, Motion, MotionKind, Plane, StmtKind, StockCorner, ToolRef, Value,
+    ExprKind, LengthUnit, Motion, MotionKind, Plane, SpindleState, StmtKind, StockCorner, ToolRef,
+    Value,
 };
 use crate::syntax::Item;
 
@@ -75,12 +76,12 @@ fn read_words(ctx: &mut Ctx<'_>, words: &[WordNode], allowed: &[&str], axes_ok: 
             );
             continue;
         }
-        word(ctx, w, n, &mut s);
+        word(ctx, w, n, &mut s, allowed.contains(&"R"));
     }
     s
 }
 
-fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said) {
+fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said, radius_ok: bool) {
     let v = ctx.word_value(w);
     let (l, r) = (w.l, w.r);
     let comp = |side| StmtKind::RadiusComp {
@@ -89,16 +90,18 @@ fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said) {
         diameter: false,
     };
     match (n, v) {
-        ("R", Some(Value::Number(d)))
-            if d.is_integer()
-                && d.as_int() == Some(0)
-                && w.sign.is_none()
-                && s.radius.is_none()
-                && !matches!(s.kind, Some(_)) =>
-        {
+        // `R0`: compensation off (a radius is never 0 and unsigned).
+        ("R", Some(Value::Number(d))) if d.as_int() == Some(0) && w.sign.is_none() => {
             s.items.push(ctx.stmt(comp(CompSide::Off), l, r))
         }
-        ("R", Some(v)) => s.radius = Some(v),
+        ("R", Some(v)) if radius_ok => s.radius = Some(v),
+        ("R", Some(_)) => ctx.error(
+            Code::KlartextWordNotAllowed,
+            l,
+            r,
+            "`R` with a value is not a word this block takes",
+            "radius compensation is R0, RL or RR; paraxial R+/R- blocks are not supported",
+        ),
         ("RL", None) => s.items.push(ctx.stmt(comp(CompSide::Left), l, r)),
         ("RR", None) => s.items.push(ctx.stmt(comp(CompSide::Right), l, r)),
         ("R0", _) => s.items.push(ctx.stmt(comp(CompSide::Off), l, r)),
@@ -119,7 +122,7 @@ fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said) {
             Some(89) => s
                 .items
                 .push(ctx.stmt(StmtKind::CycleRun(CycleRunKind::Modal), l, r)),
-            _ => s.items.push(ctx.m_word(w, v)),
+            _ => s.items.extend(m_function(ctx, w, v)),
         },
         ("DR", None) => {
             s.dir = Some(if w.sign == Some('-') {
@@ -154,6 +157,26 @@ fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said) {
                 "check the word against the block's function",
             );
         }
+    }
+}
+
+/// An M function: `M13`/`M14` are spindle on with coolant (two
+/// statements); the others go to the shared lowering.
+pub fn m_function(ctx: &mut Ctx<'_>, w: &WordNode, v: Value) -> Vec<Item> {
+    let (l, r) = (w.l, w.r);
+    match v.number().and_then(|d| d.as_int()) {
+        Some(c @ (13 | 14)) => {
+            let dir = if c == 13 {
+                SpindleState::Cw
+            } else {
+                SpindleState::Ccw
+            };
+            vec![
+                ctx.stmt(StmtKind::Spindle(dir), l, r),
+                ctx.stmt(StmtKind::Coolant(crate::ir::Coolant::Flood), l, r),
+            ]
+        }
+        _ => vec![ctx.m_word(w, v)],
     }
 }
 
