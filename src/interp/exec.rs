@@ -74,30 +74,43 @@ pub fn phase(kind: &StmtKind) -> u8 {
 pub fn exec_block(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     // The phases present, as bits; each is run in turn, its statements in
     // written order (no allocation, as a stable sort would give).
-    if it.spec.has(crate::dialect::Capability::PolePaths) {
+    let late = it.spec.has(crate::dialect::Capability::PolePaths);
+    if late {
         super::heidenhain::flush_before(it, block)?;
     }
+    let phase = |k: &StmtKind| phase_of(k, late);
     let mut present = 0u32;
     for s in &block.stmts {
         present |= 1 << phase(&s.kind);
     }
     present &= !1;
-    if present.count_ones() <= 1 || in_phase_order(&block.stmts) {
-        return run_phase(it, block, exprs, |p| p > 0);
+    if present.count_ones() <= 1 || in_phase_order(&block.stmts, late) {
+        return run_phase(it, block, exprs, late, |p| p > 0);
     }
     while present != 0 {
         let p = present.trailing_zeros() as u8;
         present &= present - 1;
-        run_phase(it, block, exprs, |q| q == p)?;
+        run_phase(it, block, exprs, late, |q| q == p)?;
     }
     Ok(())
 }
 
+/// The phase of a statement; with `late` (Heidenhain), the M functions
+/// that act at the end of their block (M5, M9, and with them M0/M2/M30)
+/// run after the block's move.
+fn phase_of(kind: &StmtKind, late: bool) -> u8 {
+    use crate::ir::{Coolant, SpindleState};
+    match kind {
+        StmtKind::Spindle(SpindleState::Stop) | StmtKind::Coolant(Coolant::Off) if late => 20,
+        k => phase(k),
+    }
+}
+
 /// Are the statements already in phase order?
-fn in_phase_order(stmts: &[Stmt]) -> bool {
+fn in_phase_order(stmts: &[Stmt], late: bool) -> bool {
     stmts
         .windows(2)
-        .all(|w| phase(&w[0].kind) <= phase(&w[1].kind))
+        .all(|w| phase_of(&w[0].kind, late) <= phase_of(&w[1].kind, late))
 }
 
 /// Runs, in written order, the statements whose phase `keep` accepts.
@@ -105,10 +118,11 @@ fn run_phase(
     it: &mut Interp<'_, '_>,
     block: &Block,
     exprs: &Arena<Expr>,
+    late: bool,
     keep: impl Fn(u8) -> bool,
 ) -> Result<(), Stop> {
     for s in &block.stmts {
-        if keep(phase(&s.kind)) {
+        if keep(phase_of(&s.kind, late)) {
             it.span = s.span;
             exec_stmt(it, s, block, exprs)?;
         }

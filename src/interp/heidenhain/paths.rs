@@ -223,6 +223,17 @@ fn rewrite(it: &mut Interp<'_, '_>, m: &Motion, exprs: &Arena<Expr>) -> Result<M
     Ok(m2)
 }
 
+/// Statements that act after the block's move (a held line must go first).
+fn after_move(k: &StmtKind) -> bool {
+    use crate::ir::{Coolant, SpindleState};
+    matches!(
+        k,
+        StmtKind::CycleRun(_)
+            | StmtKind::Spindle(SpindleState::Stop)
+            | StmtKind::Coolant(Coolant::Off)
+    )
+}
+
 /// Runs a Klartext move (the block's `Motion`).
 pub fn motion(
     it: &mut Interp<'_, '_>,
@@ -254,7 +265,7 @@ pub fn motion(
         let holdable = block
             .stmts
             .iter()
-            .all(|x| phase(&x.kind) <= 20 && !matches!(x.kind, StmtKind::CycleRun(_)));
+            .all(|x| phase(&x.kind) <= 20 && !after_move(&x.kind));
         if holdable && !it.heidenhain.modal_call {
             core_motion::check_feed(
                 it,
