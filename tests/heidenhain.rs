@@ -16,6 +16,7 @@ const PROGRAMS: &[&str] = &[
     "tests/programs/heidenhain/params.h",
     "tests/programs/heidenhain/cycles.h",
     "tests/programs/heidenhain/run.h",
+    "tests/programs/heidenhain/apprrun.h",
     "tests/programs/samepart/part.h",
 ];
 
@@ -98,6 +99,7 @@ fn canonical_calls_of_running_programs() {
     for f in [
         "tests/programs/heidenhain/paths.h",
         "tests/programs/heidenhain/run.h",
+        "tests/programs/heidenhain/apprrun.h",
     ] {
         let o = cncc(&["canon", "--dialect", "heidenhain", f]);
         assert_eq!(o.status.code(), Some(0), "{f}: {}", stderr(&o));

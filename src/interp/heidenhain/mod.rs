@@ -9,6 +9,7 @@
 //! datum shift/rotation/mirror/scaling become the programmable frame.
 //! Sources: `reference/dialects.md` §2; assumptions are marked `[?]`.
 
+mod approach;
 mod cycles;
 mod paths;
 
@@ -41,6 +42,11 @@ pub struct HeidenhainState {
     /// A straight feed move held back until the next block says whether a
     /// corner (`RND`/`CHF`) follows it.
     pub held: Option<paths::Held>,
+    /// An `APPR` waiting for its first contour element.
+    pub approach: Option<approach::PendingApproach>,
+    /// The compensation side of the last APPR (DEP leaves on that side
+    /// even when its own R0 has already switched compensation off).
+    pub side: Option<crate::ir::CompSide>,
 }
 
 /// A cycle definition with its parameter values.
@@ -60,6 +66,7 @@ pub fn exec(
     match &s.kind {
         StmtKind::Pole(axes) => paths::pole(it, axes, exprs),
         StmtKind::Corner { kind, size } => paths::corner(it, *kind, size, s.span, exprs),
+        StmtKind::Approach(a) => approach::exec(it, a, s.span, exprs),
         StmtKind::CycleDef(c) => cycles::define(it, c, exprs),
         StmtKind::CycleLine(l) => cycles::line(it, l, s.span, exprs),
         StmtKind::CycleRun(kind) => cycles::run(it, kind, s.span, block, exprs),

@@ -32,6 +32,19 @@ pub struct Held {
 /// Before a block runs: a held line is sent unless the block is a corner
 /// or only control flow.
 pub fn flush_before(it: &mut Interp<'_, '_>, block: &Block) -> Result<(), Stop> {
+    if let Some(ap) = &it.heidenhain.approach {
+        let machine = block.stmts.iter().any(|s| phase(&s.kind) > 1);
+        let moves = block
+            .stmts
+            .iter()
+            .any(|s| matches!(s.kind, StmtKind::Motion(_)));
+        if machine && !moves {
+            return Err(super::approach::no_direction(
+                ap.span,
+                "APPR needs a contour element right after it",
+            ));
+        }
+    }
     if it.heidenhain.held.is_none() {
         return Ok(());
     }
@@ -254,6 +267,16 @@ pub fn motion(
     }
     let m2 = rewrite(it, m, exprs)?;
     let line = m2.kind == MotionKind::Linear;
+    if let Some(ap) = it.heidenhain.approach.take() {
+        if !line {
+            return Err(super::approach::no_direction(
+                ap.span,
+                "APPR LT/LN needs a straight feed line after it [?]",
+            ));
+        }
+        let to = target(it, &m2.target, exprs, Frame::Program)?;
+        super::approach::before_line(it, ap, &to)?;
+    }
     if line {
         let to = target(it, &m2.target, exprs, Frame::Program)?;
         let from = it.state.pos;
