@@ -159,7 +159,9 @@ fn exec_stmt(
         // Heidenhain TOOL CALL: the new tool's length (and radius) are active.
         ToolChange if it.spec.has(crate::dialect::Capability::PolePaths) => {
             tools::exec(it, s, block, exprs)?;
-            siemens::activate_edge(it, 1)
+            siemens::activate_edge(it, 1)?;
+            super::heidenhain::tool_called(it);
+            Ok(())
         }
         ToolSelect(_)
         | ToolChange

@@ -240,6 +240,13 @@ impl<'l> Walker<'l> {
                 None => Next::Step,
             });
         }
+        let ends = |s: &Stmt| matches!(s.kind, StmtKind::ProgramEnd { .. });
+        if !self.frames.is_empty() && block.stmts.iter().any(ends) {
+            // Heidenhain `END PGM` of a program called by `CALL PGM`: back
+            // to the caller.
+            super::heidenhain::flush(it)?;
+            return Ok(Next::Return);
+        }
         it.block(block, exprs)?;
         self.assignments(it, &block.stmts, exprs)?;
         for s in &block.stmts {

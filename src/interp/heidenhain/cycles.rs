@@ -298,7 +298,7 @@ fn call_at(it: &mut Interp<'_, '_>, span: Span, surface: Option<f64>) -> Result<
 }
 
 /// The radius of the tool in the spindle (program units), from the tool table.
-fn tool_radius(it: &Interp<'_, '_>) -> f64 {
+pub(super) fn tool_radius(it: &Interp<'_, '_>) -> f64 {
     let t = it.state.tool_in_spindle;
     let scale = match it.opts.machine_units {
         crate::ir::LengthUnit::Inch => 25.4,

@@ -17,7 +17,7 @@ use super::{Interp, Stop};
 use crate::diag::Code;
 use crate::ir::{Arena, Block, Expr, Stmt, StmtKind};
 
-pub use paths::{flush_before, motion};
+pub use paths::{flush, flush_before, motion};
 
 /// The Heidenhain part of the machine state.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -47,6 +47,13 @@ pub struct HeidenhainState {
     /// The compensation side of the last APPR (DEP leaves on that side
     /// even when its own R0 has already switched compensation off).
     pub side: Option<crate::ir::CompSide>,
+}
+
+/// After `TOOL CALL`: Q108 holds the active tool radius [K: TNC system
+/// parameter], as programs such as corpus `Plan.h` expect.
+pub fn tool_called(it: &mut Interp<'_, '_>) {
+    let r = cycles::tool_radius(it);
+    it.params.set_q(crate::ir::QBank::Q, 108, r);
 }
 
 /// A cycle definition with its parameter values.

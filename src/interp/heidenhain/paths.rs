@@ -388,7 +388,11 @@ fn corner_join(it: &mut Interp<'_, '_>, h: Held, to: &[f64; 9]) -> Result<[f64; 
     let mut t2 = h.to;
     t2[0] = p1.0 + v.0 * d;
     t2[1] = p1.1 + v.1 * d;
-    send_line(it, &h.from, &t1, h.span)?;
+    if t1[..3] != h.from[..3] {
+        send_line(it, &h.from, &t1, h.span)?;
+    } else {
+        it.state.pos = t1;
+    }
     let saved = it.span;
     it.span = cspan;
     it.comp_block(cspan);
