@@ -17,6 +17,7 @@ const PROGRAMS: &[&str] = &[
     "tests/programs/heidenhain/cycles.h",
     "tests/programs/heidenhain/run.h",
     "tests/programs/heidenhain/apprrun.h",
+    "tests/programs/heidenhain/millrun.h",
     "tests/programs/samepart/part.h",
 ];
 
@@ -100,6 +101,7 @@ fn canonical_calls_of_running_programs() {
         "tests/programs/heidenhain/paths.h",
         "tests/programs/heidenhain/run.h",
         "tests/programs/heidenhain/apprrun.h",
+        "tests/programs/heidenhain/millrun.h",
     ] {
         let o = cncc(&["canon", "--dialect", "heidenhain", f]);
         assert_eq!(o.status.code(), Some(0), "{f}: {}", stderr(&o));

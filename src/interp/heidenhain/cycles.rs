@@ -11,7 +11,10 @@
 //!   (Q256) when Q213 > 0 [?: the number of breaks before a full retract
 //!   is not modelled]. 201 → CYCLE85, 202 → CYCLE86, 207 → CYCLE84.
 //! * 251 → POCKET1, 252 → POCKET2 about the current position (Q367 = 0);
-//!   stepover and finishing as the Siemens expansion does them [?].
+//!   stepover and finishing as the Siemens expansion does them [?]; 253
+//!   (slot) → POCKET1 with full-round ends [?]; 232 (face) → CYCLE71.
+//! * Not expanded (W0510, the call is left out): 204, 208, 209, 241,
+//!   254, 256, 262.
 //! * Old cycle 1 (pecking): 1.1 set-up clearance, 1.2 depth, 1.3
 //!   plunging depth, 1.4 dwell, 1.5 feed, from the current height, which
 //!   is the set-up clearance above the surface.
@@ -274,7 +277,7 @@ fn call_at(it: &mut Interp<'_, '_>, span: Span, surface: Option<f64>) -> Result<
     let frame = it.siemens.frame;
     let scale = it.state.scale();
     let mark = it.diags.len();
-    let result = if name.starts_with("POCKET") {
+    let result = if name.starts_with("POCKET") || name == "CYCLE71" {
         let radius = tool_radius(it);
         milling::run(&mut FramedHost::new(it, frame, scale), &name, &args, radius)
     } else {
@@ -437,6 +440,52 @@ fn numbered(it: &mut Interp<'_, '_>, def: &super::Defined, surface: Option<f64>)
             a.extend([q(223).map(|d| d / 2.0), Some(cx), Some(cy)]);
             a.extend(tail);
             return (Some("POCKET2".into()), a, None);
+        }
+        // [?] A slot is run as a rectangular pocket with full-round ends.
+        253 => {
+            let p = super::super::siemens::from_base(
+                it,
+                [it.state.pos[0], it.state.pos[1], it.state.pos[2]],
+            );
+            let (cx, cy) = (it.state.to_prog(p[0]), it.state.to_prog(p[1]));
+            let cdir = if g(351) >= 0.0 { 2.0 } else { 3.0 };
+            a.extend([
+                q(218),
+                q(219),
+                q(219).map(|w| w / 2.0),
+                Some(cx),
+                Some(cy),
+                q(374),
+            ]);
+            a.extend([q(206), q(207), q(202), Some(cdir), q(368), Some(0.0)]);
+            return (Some("POCKET1".into()), a, None);
+        }
+        // 232 as CYCLE71: Q227 surface, Q386 bottom (absolute), the face
+        // from (Q225, Q226), Q218 x Q219; Q389 0/1 meander, 2 one way;
+        // stepover Q370 x tool radius [?].
+        232 => {
+            let top = g(227);
+            let tens = if g(389) as i64 == 2 { 1.0 } else { 3.0 };
+            let mida = g(370).abs() * tool_radius(it);
+            let a = vec![
+                Some(top + g(204).abs()),
+                Some(top),
+                Some(g(200).abs()),
+                q(386),
+                q(225),
+                q(226),
+                q(218),
+                q(219),
+                Some(0.0),
+                q(202),
+                Some(mida),
+                q(357),
+                q(369),
+                q(207),
+                Some(tens * 10.0 + 1.0),
+                None,
+            ];
+            return (Some("CYCLE71".into()), a, None);
         }
         _ => return (None, Vec::new(), None),
     };
