@@ -31,6 +31,8 @@ pub(super) struct Out {
     pub unit: Option<LengthUnit>,
     /// The motion line being written is a rapid (`FMAX`).
     pub rapid: bool,
+    /// G90.1: arc centres I J K are absolute.
+    pub arc_absolute: bool,
 }
 
 /// Writes `p` as Klartext: the whole text, or all the diagnostics.
@@ -80,12 +82,31 @@ pub(super) fn first_name(p: &Program) -> Option<String> {
         .iter()
         .flat_map(|b| b.stmts.iter())
         .find_map(|s| match &s.kind {
-            K::ProgramStart { name: Some(n), .. } => Some(n.clone()),
-            K::ProgramStart {
-                number: Some(n), ..
-            } => Some(n.to_string()),
+            K::ProgramStart { number, name } => program_name(*number, name.as_deref()),
             _ => None,
         })
+}
+
+/// A name Klartext takes after `BEGIN PGM`: the program's name if it is
+/// one word of letters, digits, `_` `-` `.`, else its number.
+pub(super) fn program_name(number: Option<u32>, name: Option<&str>) -> Option<String> {
+    let word = |n: &str| {
+        !n.is_empty()
+            && n.chars()
+                .all(|c| c.is_ascii_alphanumeric() || "_-.".contains(c))
+    };
+    match (name, number) {
+        (Some(n), _) if word(n) => Some(n.to_string()),
+        (_, Some(n)) => Some(n.to_string()),
+        (Some(n), None) => Some(
+            n.split(|c: char| !c.is_ascii_alphanumeric())
+                .filter(|s| !s.is_empty())
+                .collect::<Vec<_>>()
+                .join("_"),
+        )
+        .filter(|s| !s.is_empty()),
+        (None, None) => None,
+    }
 }
 
 /// A Heidenhain-only statement in a word-address or Sinumerik program:

@@ -137,7 +137,27 @@ fn sort<'p>(w: &mut Writer<'_>, out: &mut Out, s: &'p Stmt, parts: &mut Parts<'p
             text,
             style: CommentStyle::Semicolon | CommentStyle::Paren,
         } => parts.comments.push(text.clone()),
+        // Siemens D1: TOOL CALL activates the tool's (one) edge [?].
+        K::CuttingEdge(Value::Number(d)) if d.as_int() == Some(1) => {}
         K::Distance(d) => out.incremental = *d == crate::ir::DimMode::Incremental,
+        K::ArcDistance(d) => out.arc_absolute = *d == crate::ir::DimMode::Absolute,
+        // What Klartext does by itself: `%` is the BEGIN/END PGM frame;
+        // feeds are per minute; cycles are called, never modal in motion
+        // (G80, G98/G99 only shape word-address cycles, which `port`
+        // maps); G54 is the active preset; TOOL CALL applies the tool
+        // length (G43/G49) [?].
+        K::Tape
+        | K::FeedMode(crate::ir::FeedMode::PerMinute)
+        | K::CycleCancel
+        | K::ReturnToInitial(_)
+        | K::WorkOffset {
+            index: 1,
+            extended: None,
+        }
+        | K::LengthComp {
+            mode: crate::ir::LengthComp::Positive | crate::ir::LengthComp::Cancel,
+            ..
+        } => {}
         K::Units { unit, .. } if Some(*unit) == out.unit || out.unit.is_none() => {}
         _ => parts.others.push(s),
     }
@@ -323,13 +343,28 @@ fn motion(w: &mut Writer<'_>, out: &mut Out, m: &crate::ir::Motion, span: Span) 
     }
     let arc_centre = m.arc.i.is_some() || m.arc.j.is_some() || m.arc.k.is_some();
     let extra = m.arc.angle.is_some() || m.arc.turns.is_some() || m.arc.mid.is_some();
-    if arc_centre || extra {
+    if extra || (arc_centre && (m.arc.radius.is_some() || !matches!(kind, MotionKind::Arc(_)))) {
         w.cannot(
             span,
-            "an arc given by centre offsets, opening angle, turns or an intermediate point",
+            "an arc given by an opening angle, turns or an intermediate point",
             "give the centre with CC and write C, or write CR with the radius",
         );
         return None;
+    }
+    if arc_centre {
+        // I J K: the centre, as a CC block before the C block (`CC IX..`
+        // is relative to the arc's start, as I J K are by default).
+        let mut cc = "CC".to_string();
+        for (letter, c) in [('X', &m.arc.i), ('Y', &m.arc.j), ('Z', &m.arc.k)] {
+            let Some(c) = c else { continue };
+            let inc = match c.dim {
+                Some(d) => d == crate::ir::DimMode::Incremental,
+                None => !out.arc_absolute,
+            };
+            let v = signed(w, &c.value, NumKind::Length, c.span)?;
+            cc.push_str(&format!(" {}{letter}{v}", if inc { "I" } else { "" }));
+        }
+        out.lines.push(cc);
     }
     let line = match kind {
         MotionKind::Rapid | MotionKind::Linear => {
@@ -442,10 +477,7 @@ fn other(w: &mut Writer<'_>, out: &mut Out, s: &Stmt) {
     let span = s.span;
     let line = match &s.kind {
         K::ProgramStart { number, name } => {
-            let n = name
-                .clone()
-                .or(number.map(|n| n.to_string()))
-                .unwrap_or_else(|| "PGM".into());
+            let n = super::program_name(*number, name.as_deref()).unwrap_or_else(|| "PGM".into());
             Some(format!("BEGIN PGM {n} {}", unit_word(out.unit)))
         }
         K::ProgramEnd { name } => Some(format!(
