@@ -12,6 +12,8 @@
 
 mod expr;
 mod lines;
+mod moves;
+mod others;
 
 use super::number::NumKind;
 use super::writer::{Style, Writer};

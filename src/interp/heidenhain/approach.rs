@@ -54,7 +54,7 @@ pub fn exec(
     span: Span,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    super::paths::flush(it)?;
+    super::corner::flush(it)?;
     let len = match &a.len {
         Some(v) => {
             let x = it.value(v, exprs)?;

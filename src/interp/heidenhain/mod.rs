@@ -10,14 +10,17 @@
 //! Sources: `reference/dialects.md` §2; assumptions are marked `[?]`.
 
 mod approach;
+mod corner;
 mod cycles;
+mod mapping;
 mod paths;
 
 use super::{Interp, Stop};
 use crate::diag::Code;
 use crate::ir::{Arena, Block, Expr, Stmt, StmtKind};
 
-pub use paths::{flush, flush_before, motion};
+pub use corner::{flush, flush_before};
+pub use paths::motion;
 
 /// The Heidenhain part of the machine state.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -41,7 +44,7 @@ pub struct HeidenhainState {
     pub scale: f64,
     /// A straight feed move held back until the next block says whether a
     /// corner (`RND`/`CHF`) follows it.
-    pub held: Option<paths::Held>,
+    pub held: Option<corner::Held>,
     /// An `APPR` waiting for its first contour element.
     pub approach: Option<approach::PendingApproach>,
     /// The compensation side of the last APPR (DEP leaves on that side
@@ -52,7 +55,7 @@ pub struct HeidenhainState {
 /// After `TOOL CALL`: Q108 holds the active tool radius [K: TNC system
 /// parameter], as programs such as corpus `Plan.h` expect.
 pub fn tool_called(it: &mut Interp<'_, '_>) {
-    let r = cycles::tool_radius(it);
+    let r = mapping::tool_radius(it);
     it.params.set_q(crate::ir::QBank::Q, 108, r);
 }
 
@@ -72,9 +75,9 @@ pub fn exec(
 ) -> Result<(), Stop> {
     match &s.kind {
         StmtKind::Pole(axes) => paths::pole(it, axes, exprs),
-        StmtKind::Corner { kind, size } => paths::corner(it, *kind, size, s.span, exprs),
+        StmtKind::Corner { kind, size } => corner::corner(it, *kind, size, s.span, exprs),
         StmtKind::Approach(a) => approach::exec(it, a, s.span, exprs),
-        StmtKind::CycleDef(c) => cycles::define(it, c, exprs),
+        StmtKind::CycleDef(c) => mapping::define(it, c, exprs),
         StmtKind::CycleLine(l) => cycles::line(it, l, s.span, exprs),
         StmtKind::CycleRun(kind) => cycles::run(it, kind, s.span, block, exprs),
         StmtKind::PatternDef(items) => cycles::pattern(it, items, exprs),
@@ -82,7 +85,7 @@ pub fn exec(
         // DEF radius is not yet taken into the tool table].
         StmtKind::Stock { .. } | StmtKind::ToolDef { .. } | StmtKind::ToolOversize { .. } => Ok(()),
         StmtKind::ProgramEnd { .. } => {
-            paths::flush(it)?;
+            corner::flush(it)?;
             super::machine::program_end(it, true)
         }
         _ => Err(it.error_at(

@@ -38,8 +38,11 @@
 
 mod build;
 mod cycles;
+mod flow;
 mod lexer;
+mod nodes;
 mod path;
+mod program;
 mod token;
 
 #[cfg(test)]
@@ -49,8 +52,7 @@ use crate::diag::{Code, Diagnostic};
 use crate::ir::{Arena, CommentStyle, Expr, Stmt, StmtKind};
 use crate::span::{Span, Spanned};
 use crate::syntax::{FrontEnd, Item, LineInput, LineSyntax};
-use build::{Ctx, LineComment, Node};
-use lalrpop_util::ParseError;
+use build::{Ctx, LineComment};
 use token::Tok;
 
 lalrpop_util::lalrpop_mod!(
@@ -301,92 +303,19 @@ fn body(
     if let Some((a, Tok::Name(n), b)) = toks.first() {
         if n != "M" {
             let w = build::WordNode::new(n.clone(), None, None, *a, *b);
-            path::bare(&mut ctx, &[w]);
+            program::bare(&mut ctx, &[w]);
             diags.append(&mut ctx.diags);
             return Vec::new();
         }
     }
     let parsed = grammar::BlockParser::new().parse(&mut ctx, toks.iter().cloned());
     match parsed {
-        Ok(node) => line.items = items(&mut ctx, node, l, r),
-        Err(e) => ctx.diags.push(syntax_error(e, file, r)),
+        Ok(node) => line.items = nodes::items(&mut ctx, node, l, r),
+        Err(e) => ctx.diags.push(nodes::syntax_error(e, file, r)),
     }
     if let Some((name, span)) = ctx.label.take() {
         line.label = Some(Spanned::new(name, span));
     }
     diags.append(&mut ctx.diags);
     ctx.used_comments
-}
-
-fn items(ctx: &mut Ctx<'_>, node: Node, l: usize, r: usize) -> Vec<Item> {
-    match node {
-        Node::Begin(at) => path::pgm_line(ctx, false, at, l, r),
-        Node::End(at) => path::pgm_line(ctx, true, at, l, r),
-        Node::BlkForm(n, w) => path::blk_form(ctx, n, &w, l, r),
-        Node::ToolDef(t, w) => path::tool_def(ctx, t, &w, l, r),
-        Node::ToolCall(t, w) => path::tool_call(ctx, t, &w, l, r),
-        Node::Path(k, w) => path::path(ctx, k, &w, l, r),
-        Node::Chamfer(s, w) => path::chamfer(ctx, &s, &w, l, r),
-        Node::Approach(dep, w) => path::approach(ctx, dep, &w, l, r),
-        Node::Label(id, il, ir) => cycles::label(ctx, id, il, ir, l, r),
-        Node::CallLabel(at) => cycles::call_label(ctx, at, l, r),
-        Node::CallPgm(at) => cycles::call_pgm(ctx, at, l, r),
-        Node::FnAssign(n, (var, ..), rhs) => cycles::fn_assign(ctx, n, var, &rhs, l, r),
-        Node::FnIf(n, a, op, b, id, ..) => cycles::fn_if(ctx, n, &a, &op, &b, id, l, r),
-        Node::FnOther(_, _) => cycles::fn_other(ctx, l, r),
-        Node::Formula((var, ..), e) => cycles::formula(ctx, var, e, l, r),
-        Node::CyclDef(at) => cycles::cycl_def(ctx, at, l, r),
-        Node::CyclCall(w) => cycles::cycl_call(ctx, &w, l, r),
-        Node::PatternDef(at) => cycles::pattern_def(ctx, at, l, r),
-        Node::Stop(w) => path::stop(ctx, &w, l, r),
-        Node::Words(w) => path::bare(ctx, &w),
-    }
-}
-
-fn syntax_error(
-    e: ParseError<usize, Tok, String>,
-    file: crate::span::FileId,
-    end: usize,
-) -> Diagnostic {
-    let (l, r, msg) = match e {
-        ParseError::UnrecognizedToken {
-            token: (l, t, r),
-            expected,
-        } => (
-            l,
-            r,
-            format!("unexpected {}{}", describe(&t), expecting(&expected)),
-        ),
-        ParseError::UnrecognizedEof { location, expected } => (
-            location,
-            location.max(end),
-            format!("the block ends too early{}", expecting(&expected)),
-        ),
-        ParseError::ExtraToken { token: (l, t, r) } => {
-            (l, r, format!("unexpected {}", describe(&t)))
-        }
-        ParseError::InvalidToken { location } => (location, location + 1, "invalid token".into()),
-        ParseError::User { error } => (end, end, error),
-    };
-    Diagnostic::new(Code::SyntaxError, msg)
-        .primary(Span::new(file, l, r), "not expected here")
-        .help("check the block against the Klartext form of its function")
-}
-
-fn describe(t: &Tok) -> String {
-    match t {
-        Tok::Kw(k) => format!("`{}`", format!("{k:?}").to_ascii_uppercase()),
-        Tok::Name(n) => format!("`{n}`"),
-        Tok::Num(d) => format!("number `{}`", d.format(0, false)),
-        Tok::Q(b, n) => format!("`{}{n}`", b.prefix()),
-        Tok::Str(s) => format!("string \"{s}\""),
-        other => format!("`{other:?}`"),
-    }
-}
-
-fn expecting(expected: &[String]) -> String {
-    if expected.is_empty() || expected.len() > 6 {
-        return String::new();
-    }
-    format!("; expected {}", expected.join(", "))
 }
