@@ -38,6 +38,7 @@
 
 mod build;
 mod cycles;
+mod fast;
 mod flow;
 mod lexer;
 mod nodes;
@@ -86,6 +87,11 @@ impl FrontEnd for KlartextFrontEnd {
         diags: &mut Vec<Diagnostic>,
     ) -> Option<LineSyntax> {
         let continued = input.text.trim_end().ends_with('~');
+        if self.pending.is_empty() && !continued {
+            if let Some(line) = fast::line(input.text, input.offset as usize, input.file) {
+                return Some(line);
+            }
+        }
         if self.pending_len + input.text.len() <= MAX_BLOCK {
             self.pending.push((input.text.to_string(), input.offset));
             self.pending_len += input.text.len();

@@ -95,3 +95,41 @@ fn m13_is_spindle_and_coolant() {
     let (ir, _) = read("L X+1 FMAX M13\n");
     assert!(ir.contains("spindle cw | coolant flood"), "{ir}");
 }
+
+#[test]
+fn fast_path_gives_what_the_grammar_gives() {
+    let spec = builtin("heidenhain").unwrap();
+    for line in [
+        "12 L X+10.5 Y-3 Z-1 R0 F500",
+        "L Z+50 R0 FMAX M3 M8",
+        "7   L IX-5 IY+10 RL F200.0",
+        "L M30",
+        "L",
+        "100 L X-0 Y+0.000 FMAX M91",
+        "L A+90 B-45 C+0 RR",
+    ] {
+        let fast = super::fast::line(line, 0, FileId(0)).expect(line);
+        let input = crate::syntax::LineInput {
+            text: line,
+            file: FileId(0),
+            offset: 0,
+            spec: &spec,
+        };
+        let mut exprs = crate::ir::Arena::new();
+        let mut diags = Vec::new();
+        let slow = super::read_block(&[(line.to_string(), 0)], &input, &mut exprs, &mut diags);
+        assert!(diags.is_empty(), "{line}: {diags:?}");
+        assert_eq!(Some(fast), slow, "{line}");
+    }
+    for line in [
+        "L X+Q1",
+        "L X+1 ;c",
+        "L X + 1",
+        "L X+1 M99",
+        "L X+1 X+2",
+        "L R+5",
+        "LP PR+5",
+    ] {
+        assert!(super::fast::line(line, 0, FileId(0)).is_none(), "{line}");
+    }
+}
