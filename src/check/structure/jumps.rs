@@ -243,24 +243,6 @@ fn missing_target(p: &Pending, exists: bool) -> Diagnostic {
         .help(help)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::NumberSet;
-
-    #[test]
-    fn number_runs() {
-        let mut s = NumberSet::default();
-        for n in (10..=100_000).step_by(10) {
-            s.insert(n);
-        }
-        s.insert(5);
-        s.insert(7);
-        assert_eq!(s.runs.len(), 2, "{:?}", s.runs);
-        assert!(s.contains(99_990) && s.contains(5) && s.contains(7));
-        assert!(!s.contains(15) && !s.contains(6) && !s.contains(100_010));
-    }
-}
-
 /// E0321 in Heidenhain's terms: `CALL LBL 5` / `GOTO LBL 5` / `REP` to a
 /// label the program lacks (or, for a section repeat, has only after it).
 fn missing_label(p: &Pending, exists: bool) -> Diagnostic {
@@ -287,4 +269,22 @@ fn missing_label(p: &Pending, exists: bool) -> Diagnostic {
     Diagnostic::new(Code::KlartextLabelMissing, msg)
         .primary(p.span, "no such label")
         .help(help)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::NumberSet;
+
+    #[test]
+    fn number_runs() {
+        let mut s = NumberSet::default();
+        for n in (10..=100_000).step_by(10) {
+            s.insert(n);
+        }
+        s.insert(5);
+        s.insert(7);
+        assert_eq!(s.runs.len(), 2, "{:?}", s.runs);
+        assert!(s.contains(99_990) && s.contains(5) && s.contains(7));
+        assert!(!s.contains(15) && !s.contains(6) && !s.contains(100_010));
+    }
 }

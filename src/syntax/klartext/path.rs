@@ -69,7 +69,8 @@ pub(super) fn read_words(
             }
             continue;
         }
-        if !allowed.contains(&n) && !(n == "R" && allowed.contains(&"R0")) {
+        let r_word = n == "R" && allowed.contains(&"R0");
+        if !allowed.contains(&n) && !r_word {
             ctx.error(
                 Code::KlartextWordNotAllowed,
                 w.l,
