@@ -116,6 +116,7 @@ fn mistakes_are_reported_in_heidenhain_terms() {
         "tests/programs/heidenhain/mistakes.h",
         "tests/programs/heidenhain/nocentre.h",
         "tests/programs/heidenhain/badcorner.h",
+        "tests/programs/heidenhain/notangent.h",
     ] {
         let o = cncc(&["check", "--dialect", "heidenhain", f]);
         assert_eq!(o.status.code(), Some(1), "{f}: {}", stderr(&o));

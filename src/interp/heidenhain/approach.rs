@@ -43,7 +43,7 @@ pub fn no_direction(span: Span, why: &str) -> Stop {
     Stop::Error(
         Diagnostic::new(Code::KlartextTangentUndefined, why.to_string())
             .primary(span, "here")
-            .help("APPR needs a straight line after it; DEP needs a path element before it"),
+            .help("program a straight line or an arc first: CT and DEP continue the element before them, APPR the line after it"),
     )
 }
 

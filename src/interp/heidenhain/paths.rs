@@ -190,6 +190,12 @@ pub fn motion(
         }
         send_line(it, &h.from, &h.to, h.span)?;
     }
+    if m2.kind == MotionKind::ArcTangent && it.siemens.tangent.is_none() {
+        return Err(super::approach::no_direction(
+            it.span,
+            "CT/CTP has no path element before it to be tangent to",
+        ));
+    }
     let s2 = Stmt::new(StmtKind::Motion(Box::new(m2)), s.span);
     core_motion::exec(it, &s2, block, exprs)?;
     siemens::after_motion(it, &s2, block, exprs)?;
