@@ -102,6 +102,7 @@ fn canonical_calls_of_running_programs() {
         "tests/programs/heidenhain/run.h",
         "tests/programs/heidenhain/apprrun.h",
         "tests/programs/heidenhain/millrun.h",
+        "tests/programs/heidenhain/tooldef.h",
     ] {
         let o = cncc(&["canon", "--dialect", "heidenhain", f]);
         assert_eq!(o.status.code(), Some(0), "{f}: {}", stderr(&o));

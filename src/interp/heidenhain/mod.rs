@@ -52,6 +52,68 @@ pub struct HeidenhainState {
     pub side: Option<crate::ir::CompSide>,
 }
 
+/// `TOOL DEF 5 L+50 R+3`: the tool's radius (and length) in the run's
+/// tool table, used by radius compensation, Q108 and the milling cycles
+/// [?: the length is taken from the table given with --tool-table when
+/// the tool is called].
+fn tool_def(
+    it: &mut Interp<'_, '_>,
+    tool: &crate::ir::ToolRef,
+    length: &Option<crate::ir::Value>,
+    radius: &Option<crate::ir::Value>,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    let crate::ir::ToolRef::Number(n) = tool else {
+        return Ok(());
+    };
+    let n = it.value(n, exprs)?.round() as i64;
+    let to_machine = |it: &Interp<'_, '_>, v: f64| {
+        let mm = it.state.to_mm(v);
+        match it.opts.machine_units {
+            crate::ir::LengthUnit::Inch => mm / crate::interp::state::MM_PER_INCH,
+            crate::ir::LengthUnit::Mm => mm,
+        }
+    };
+    let l = match length {
+        Some(v) => {
+            let x = it.value(v, exprs)?;
+            Some(to_machine(it, x))
+        }
+        None => None,
+    };
+    let r = match radius {
+        Some(v) => {
+            let x = it.value(v, exprs)?;
+            Some(to_machine(it, x))
+        }
+        None => None,
+    };
+    let table = &mut it.tool_table.tools;
+    let i = match table.iter().position(|t| t.number == n) {
+        Some(i) => i,
+        None => {
+            table.push(crate::interp::tooltable::Tool {
+                number: n,
+                pocket: n,
+                offset: [0.0; 9],
+                diameter: 0.0,
+                front_angle: 0.0,
+                back_angle: 0.0,
+                orientation: 0,
+                comment: String::new(),
+            });
+            table.len() - 1
+        }
+    };
+    if let Some(l) = l {
+        table[i].offset[2] = l;
+    }
+    if let Some(r) = r {
+        table[i].diameter = 2.0 * r.abs();
+    }
+    Ok(())
+}
+
 /// After `TOOL CALL`: Q108 holds the active tool radius [K: TNC system
 /// parameter], as programs such as corpus `Plan.h` expect.
 pub fn tool_called(it: &mut Interp<'_, '_>) {
@@ -81,9 +143,14 @@ pub fn exec(
         StmtKind::CycleLine(l) => cycles::line(it, l, s.span, exprs),
         StmtKind::CycleRun(kind) => cycles::run(it, kind, s.span, block, exprs),
         StmtKind::PatternDef(items) => cycles::pattern(it, items, exprs),
-        // The blank and tool definitions say nothing the run uses [?: TOOL
-        // DEF radius is not yet taken into the tool table].
-        StmtKind::Stock { .. } | StmtKind::ToolDef { .. } | StmtKind::ToolOversize { .. } => Ok(()),
+        StmtKind::ToolDef {
+            tool,
+            length,
+            radius,
+        } => tool_def(it, tool, length, radius, exprs),
+        // The blank says nothing the run uses; oversizes DL/DR are not
+        // applied [?].
+        StmtKind::Stock { .. } | StmtKind::ToolOversize { .. } => Ok(()),
         StmtKind::ProgramEnd { .. } => {
             corner::flush(it)?;
             super::machine::program_end(it, true)
