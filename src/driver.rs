@@ -12,6 +12,7 @@ use crate::lower::Lowering;
 use crate::source::KeptLine;
 use crate::span::FileId;
 use crate::span::Span;
+use crate::syntax::klartext::KlartextFrontEnd;
 use crate::syntax::sinumerik::SinumerikFrontEnd;
 use crate::syntax::word::WordFrontEnd;
 use crate::syntax::{FrontEnd, LineInput};
@@ -22,8 +23,7 @@ pub fn front_end_for(spec: &DialectSpec) -> Box<dyn FrontEnd> {
     match spec.family {
         Family::WordAddress => Box::new(WordFrontEnd::new()),
         Family::Sinumerik => Box::new(SinumerikFrontEnd::new()),
-        // Klartext has no front end yet; the registry refuses the dialect.
-        Family::Klartext => Box::new(WordFrontEnd::new()),
+        Family::Klartext => Box::new(KlartextFrontEnd::new()),
     }
 }
 
@@ -95,8 +95,11 @@ impl<'s> Reader<'s> {
     }
 
     /// Ends the program: the checks that need all of it.
-    pub fn finish(self) -> Vec<Diagnostic> {
-        self.structure.finish()
+    pub fn finish(mut self) -> Vec<Diagnostic> {
+        let mut diags = Vec::new();
+        self.front.finish(self.file, &mut diags);
+        diags.extend(self.structure.finish());
+        diags
     }
 }
 
@@ -346,6 +349,8 @@ impl<'a> FsLoader<'a> {
         let stems: Vec<String> = match target {
             CallTarget::Name(n) => {
                 let n = n.trim_matches(|c| c == '<' || c == '>');
+                // Heidenhain `CALL PGM TNC:\DIR\NAME.H`: the file name.
+                let n = n.rsplit(['\\', '/', ':']).next().unwrap_or(n);
                 vec![
                     n.to_string(),
                     n.to_ascii_lowercase(),

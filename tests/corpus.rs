@@ -39,13 +39,33 @@ const REJECTED: &[(&str, &str)] = &[
         "siemens840d/123.mpf",
         "labels METKA_START, LAST and END are each defined twice; Sinumerik labels must be unique",
     ),
+    // Four outputs of one home-made post (aamorim1913/AptPostProcessor):
+    // the dwell cycle is written `CYCLE DEF 9.0 DWELL TIME` / `CYCLE DEF
+    // 9.1 5`; Klartext spells it `CYCL DEF` (the same files spell their
+    // other cycles right), and a TNC rejects the block.
+    (
+        "heidenhain/Dem-target2__11.h",
+        "`CYCLE DEF 9.0 DWELL TIME`: the keyword is CYCL, not CYCLE",
+    ),
+    (
+        "heidenhain/Teflon-gasket__11.h",
+        "`CYCLE DEF 9.0 DWELL TIME`: the keyword is CYCL, not CYCLE",
+    ),
+    (
+        "heidenhain/Teste-Metrologia__11.h",
+        "`CYCLE DEF 9.0 DWELL TIME`: the keyword is CYCL, not CYCLE",
+    ),
+    (
+        "heidenhain/shimemcunha__12.h",
+        "`CYCLE DEF 9.0 DWELL TIME`: the keyword is CYCL, not CYCLE",
+    ),
     (
         "siemens840d/holes2_test.mpf",
         "`IF HHGT GOTOF END` jumps to a label END that the program does not have",
     ),
 ];
 
-const DIALECTS: &[&str] = &["fanuc", "haas", "linuxcnc", "siemens840d"];
+const DIALECTS: &[&str] = &["fanuc", "haas", "linuxcnc", "siemens840d", "heidenhain"];
 
 fn corpus_files() -> Vec<(String, std::path::PathBuf)> {
     let Some(shared) = shared() else {
@@ -129,6 +149,11 @@ fn round_trip(dialect: &str, path: &std::path::Path) -> Result<(), String> {
         f1 = f1.replace("comment semicolon ", "comment paren ");
         f2 = f2.replace("comment semicolon ", "comment paren ");
     }
+    if dialect == "heidenhain" {
+        // The Klartext writer renumbers the blocks 0, 1, 2 ... as the
+        // control does on saving; the numbers are not compared.
+        (f1, f2) = (without_block_numbers(&f1), without_block_numbers(&f2));
+    }
     if let Some(d) = first_difference(&f1, &f2) {
         return Err(format!("meta-model changed at {d}"));
     }
@@ -147,4 +172,17 @@ fn round_trip(dialect: &str, path: &std::path::Path) -> Result<(), String> {
         ));
     }
     Ok(())
+}
+
+/// A fingerprint without the `N12 ` block numbers at the start of lines.
+fn without_block_numbers(f: &str) -> String {
+    f.lines()
+        .map(|l| match l.strip_prefix('N') {
+            Some(rest) if rest.starts_with(|c: char| c.is_ascii_digit()) => rest
+                .trim_start_matches(|c: char| c.is_ascii_digit())
+                .trim_start(),
+            _ => l,
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
 }

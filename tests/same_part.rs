@@ -1,4 +1,4 @@
-//! One part programmed in four dialects (`tests/programs/samepart/`) must
+//! One part programmed in five dialects (`tests/programs/samepart/`) must
 //! cut the same: `cncc check` accepts each silently, and `cncc canon` gives
 //! the same cutting moves for each, in order, within 1e-4.
 //!
@@ -141,6 +141,7 @@ const PROGRAMS: &[(&str, &str)] = &[
     ("part-haas.nc", "haas"),
     ("part.ngc", "linuxcnc"),
     ("part.mpf", "siemens840d"),
+    ("part.h", "heidenhain"),
 ];
 
 fn run(file: &str, dialect: &str) -> Vec<Cut> {

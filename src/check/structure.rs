@@ -82,7 +82,7 @@ impl StructureChecker {
             end_required: spec.has(Capability::ProgramEndRequired),
             stack: Vec::new(),
             diags: Vec::new(),
-            labels: Labels::default(),
+            labels: Labels::new(spec.has(Capability::PolePaths)),
             subs: HashMap::new(),
             programs: HashMap::new(),
             in_proc: false,

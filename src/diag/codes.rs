@@ -301,6 +301,39 @@ codes! {
     CompStateChange = "E0554", "comp-state-change", Error,
         "a change that is not allowed while cutter radius compensation is on",
         "Turning compensation on while it is on, or changing plane, needs G40 first.";
+    KlartextUnknownBlock = "E0120", "klartext-unknown-block", Error,
+        "a Klartext block that does not start with a known function",
+        "A Heidenhain block starts with its path or program function: L, C, CC, CR, CT, LP, CP, CTP, RND, CHF, APPR, DEP, LBL, CALL, FN, CYCL DEF, CYCL CALL, TOOL DEF, TOOL CALL, BLK FORM, PATTERN DEF, STOP, a Q parameter formula, or M functions alone. Check the spelling (`CYCL`, not `CYCLE`).";
+    KlartextAxisWithoutValue = "E0121", "klartext-axis-without-value", Error,
+        "an axis word without a coordinate",
+        "In a path block every axis word needs its coordinate: `X+10`, `IY-5`, `Z+Q3`. Give the value, or remove the letter.";
+    KlartextWordNotAllowed = "E0122", "klartext-word-not-allowed", Error,
+        "a word this Klartext block does not take",
+        "Each Klartext function takes its own words (L: axes, R0/RL/RR, F/FMAX/FAUTO, M; C: axes, DR+/DR-; RND: R, F; ...). Remove the word or move it to a block that takes it.";
+    KlartextMissingWord = "E0123", "klartext-missing-word", Error,
+        "a Klartext block without a word it needs",
+        "C, CR and CP need the direction DR+ or DR-; CR needs its radius R; RND needs R; APPR/DEP need their kind (LT, LN, CT, LCT). Add the word.";
+    KlartextBadCycle = "E0124", "klartext-bad-cycle", Error,
+        "a cycle definition that cannot be read",
+        "`CYCL DEF` is followed by the cycle number (200, 251 ... or old-style 7.0, 7.1 ...) and, for the numbered cycles, one `Qnnn=value` per parameter. Check the number and the parameter lines.";
+    KlartextContinuationAtEnd = "E0125", "klartext-continuation-at-end", Error,
+        "a block continued with `~` at the end of the file",
+        "A trailing `~` says the block goes on in the next line, but the file ends. Complete the block or remove the `~`.";
+    KlartextCycleMissingParameter = "E0320", "cycle-missing-parameter", Error,
+        "a Heidenhain cycle without a Q parameter it needs",
+        "Each numbered cycle needs its parameters (for 200 DRILLING: Q200 set-up clearance, Q201 depth, Q206 feed, Q202 plunging depth, Q203 surface, Q204 2nd set-up clearance ...). Add the missing `Qnnn=value` line to the CYCL DEF.";
+    KlartextLabelMissing = "E0321", "label-missing", Error,
+        "a CALL LBL or GOTO LBL to a label the program does not have",
+        "`CALL LBL n`, `CALL LBL n REP m` and `FN 9..12: ... GOTO LBL n` need a block `LBL n` (or `LBL \"name\"`) in the same program. Add the label or correct the number.";
+    KlartextNoCentre = "E0560", "circle-without-centre", Error,
+        "a circular block with no circle centre (CC) before it",
+        "C and CP blocks turn around the pole set by CC; polar LP/CTP blocks measure from it. Program `CC X.. Y..` before the first such block.";
+    KlartextCornerCannotFit = "E0561", "corner-cannot-fit", Error,
+        "RND or CHF between elements that cannot take it",
+        "A rounding (RND) or chamfer (CHF) joins two path elements in the working plane. It needs a path element before and after it, and must be small enough to fit on both; a chamfer joins two straight lines. Reduce the size or move the block.";
+    KlartextTangentUndefined = "E0562", "tangent-undefined", Error,
+        "a tangential element with no direction to be tangent to",
+        "CT, CTP and APPR/DEP need a path element before them (in the working plane) whose direction they continue. Program a straight line or an arc first.";
     CompExitArc = "E0555", "comp-exit-arc", Error,
         "an arc as the first move after G40",
         "The move after cancelling compensation with G40 takes the tool off the compensated path and must be a straight line.";

@@ -36,15 +36,15 @@ pub const BUILTIN_SOURCES: &[(&str, &str, &str)] = &[
         "dialects/siemens840d.xml",
         include_str!("../../dialects/siemens840d.xml"),
     ),
+    (
+        "heidenhain",
+        "dialects/heidenhain.xml",
+        include_str!("../../dialects/heidenhain.xml"),
+    ),
 ];
 
 /// Names of dialects cncc knows of but cannot read yet.
-const PLANNED: &[(&str, &str)] = &[
-    ("heidenhain", "heidenhain"),
-    ("tnc", "heidenhain"),
-    ("klartext", "heidenhain"),
-    ("itnc", "heidenhain"),
-];
+const PLANNED: &[(&str, &str)] = &[];
 
 /// Known dialects: the built-ins and specs loaded with `--dialect-file`.
 #[derive(Clone, Debug, Default)]
@@ -186,11 +186,13 @@ mod tests {
     }
 
     #[test]
-    fn heidenhain_is_not_available_yet() {
+    fn heidenhain_resolves() {
         let reg = Registry::with_builtins();
         for name in ["tnc", "klartext", "heidenhain"] {
-            let e = reg.resolve(name).unwrap_err();
-            assert!(e.message.contains("not available yet"), "{}", e.message);
+            assert_eq!(
+                reg.resolve(name).map(|s| s.id.clone()).ok().as_deref(),
+                Some("heidenhain")
+            );
         }
         assert!(reg
             .resolve("gibberish")

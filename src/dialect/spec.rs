@@ -96,6 +96,9 @@ pub enum Capability {
     /// `;` is the end-of-block character (Fanuc, Haas): read as the start
     /// of a comment, never written as one (comments are written `( )`).
     SemicolonEndOfBlock,
+    /// Heidenhain paths: circles round the pole `CC`, polar `LP`/`CP`/`CTP`,
+    /// `RND`/`CHF` blocks between elements, cycles by `CYCL DEF` + call.
+    PolePaths,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -130,6 +133,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
         Capability::CycleRetractRPlaneAtStart,
     ),
     ("semicolon-end-of-block", Capability::SemicolonEndOfBlock),
+    ("pole-paths", Capability::PolePaths),
 ];
 
 impl Capability {

@@ -88,6 +88,9 @@ pub fn write_var(w: &mut Writer<'_>, v: &Var, span: crate::span::Span) -> Option
         (Var::R(_) | Var::RIndirect(_), Style::Bracket) => cannot(w, span, "an R parameter"),
         (Var::User(..), Style::Bracket) => cannot(w, span, "a DEF user variable"),
         (Var::System(..), Style::Bracket) => cannot(w, span, "a named system variable"),
+        (Var::Q(..), Style::Bracket | Style::Sinumerik) => {
+            cannot(w, span, "a Heidenhain Q parameter")
+        }
     }
 }
 

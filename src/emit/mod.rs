@@ -7,6 +7,7 @@
 
 mod expr;
 mod flow;
+mod klartext;
 mod motion;
 pub mod number;
 mod sinumerik;
@@ -17,7 +18,7 @@ mod writer;
 #[cfg(test)]
 pub(crate) mod tests;
 
-use crate::diag::{Code, Diagnostic};
+use crate::diag::Diagnostic;
 use crate::dialect::{DialectSpec, Family};
 use crate::ir::{Block, Program};
 use writer::{Style, Writer};
@@ -27,7 +28,7 @@ pub fn write_program(p: &Program, spec: &DialectSpec) -> Result<String, Vec<Diag
     let style = match spec.family {
         Family::WordAddress => Style::Bracket,
         Family::Sinumerik => Style::Sinumerik,
-        Family::Klartext => return Err(vec![no_writer(p, spec)]),
+        Family::Klartext => return klartext::write_klartext(p, spec),
     };
     let mut w = Writer::new(p, spec, style);
     let mut out = String::new();
@@ -40,19 +41,6 @@ pub fn write_program(p: &Program, spec: &DialectSpec) -> Result<String, Vec<Diag
         return Err(w.diags);
     }
     Ok(out)
-}
-
-fn no_writer(p: &Program, spec: &DialectSpec) -> Diagnostic {
-    let span = p.blocks.first().map(|b| b.span).unwrap_or_default();
-    Diagnostic::new(
-        Code::CannotExpress,
-        format!(
-            "there is no writer for the {} family yet",
-            spec.family.name()
-        ),
-    )
-    .primary(span, "the program starts here")
-    .help("choose a word-address or Sinumerik target")
 }
 
 /// One block: `/1 N10 LABEL: words...`.

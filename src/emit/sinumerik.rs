@@ -159,7 +159,7 @@ pub fn call(
 ) {
     match kind {
         CallKind::Subprogram | CallKind::Named | CallKind::OWord => {}
-        CallKind::Local | CallKind::Macro | CallKind::ModalMacro => {
+        CallKind::Local | CallKind::Macro | CallKind::ModalMacro | CallKind::Label => {
             let what = format!("a {kind:?} call");
             return w.cannot(span, &what, "call a subprogram by name (PROC) instead");
         }

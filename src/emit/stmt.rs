@@ -29,6 +29,17 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
             sin::program_start(w, *number, name.as_deref(), span, words)
         }
         K::Raw { dialect, text } => raw(w, dialect, text, span, words),
+        K::ProgramEnd { .. }
+        | K::Stock { .. }
+        | K::ToolDef { .. }
+        | K::ToolOversize { .. }
+        | K::Pole(_)
+        | K::Corner { .. }
+        | K::Approach(_)
+        | K::CycleDef(_)
+        | K::CycleLine(_)
+        | K::CycleRun(_)
+        | K::PatternDef(_) => super::klartext::foreign(w, s, words),
         K::Word(word) => w.push_words(words, std::slice::from_ref(word)),
         K::Units { unit, with_feeds } => {
             w.push_code(

@@ -157,6 +157,13 @@ pub fn call(
         CallKind::Local => Meaning::LocalCall,
         CallKind::Macro => Meaning::MacroCall,
         CallKind::ModalMacro => Meaning::ModalMacroCall,
+        CallKind::Label => {
+            return w.cannot(
+                span,
+                "a Heidenhain label call (`CALL LBL`)",
+                "make the labelled section a numbered subprogram",
+            )
+        }
     };
     let p = match target {
         CallTarget::Number(n) => Value::Number(crate::ir::Decimal::from_int(*n as i64)),

@@ -200,6 +200,7 @@ impl Interp<'_, '_> {
                 }
             },
             Var::R(n) => Some(self.params.r(*n)),
+            Var::Q(bank, n) => Some(self.params.q(*bank, *n)),
             Var::RIndirect(e) => {
                 let n = self.eval(*e, exprs)?.unwrap_or(0.0);
                 Some(self.params.r(n.round().max(0.0) as u32))

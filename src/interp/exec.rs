@@ -11,12 +11,13 @@ use crate::ir::{Arena, Block, Expr, Stmt, StmtKind};
 pub fn phase(kind: &StmtKind) -> u8 {
     use StmtKind::*;
     match kind {
-        Comment { .. } | Message(_) => 1,
+        Comment { .. } | Message(_) | Stock { .. } => 1,
         FeedMode(_) => 2,
         Feed(_) => 3,
         SpindleSpeed(_) | SpindleCss { .. } => 4,
         ToolSelect(_) => 5,
-        ToolChange => 6,
+        ToolChange | ToolDef { .. } => 6,
+        ToolOversize { .. } => 7,
         Spindle(_) => 7,
         Coolant(_) => 8,
         Aux { letter, code, .. } if super::aux::is_motion_aux(*letter, *code) => 20,
@@ -32,7 +33,9 @@ pub fn phase(kind: &StmtKind) -> u8 {
         ReturnToInitial(_) => 18,
         SetData { .. } | RefReturn { .. } | CoordShift { .. } | MachineCoords | Transform(_) => 19,
         Motion(_) | Cycle(_) | CycleCancel | CycleCall(_) | ModalCallCancel => 20,
-        Stop(_) => 21,
+        Pole(_) | Corner { .. } | Approach(_) | CycleDef(_) | CycleLine(_) | PatternDef(_) => 20,
+        CycleRun(_) => 20,
+        Stop(_) | ProgramEnd { .. } => 21,
         // Program content and control flow: the program walker runs these.
         Tape | ProgramStart { .. } | Raw { .. } | Word(_) | Command { .. } => 0,
         Assign { .. }
@@ -72,27 +75,43 @@ pub fn phase(kind: &StmtKind) -> u8 {
 pub fn exec_block(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     // The phases present, as bits; each is run in turn, its statements in
     // written order (no allocation, as a stable sort would give).
+    let late = it.spec.has(crate::dialect::Capability::PolePaths);
+    if late {
+        super::heidenhain::flush_before(it, block)?;
+    }
+    let phase = |k: &StmtKind| phase_of(k, late);
     let mut present = 0u32;
     for s in &block.stmts {
         present |= 1 << phase(&s.kind);
     }
     present &= !1;
-    if present.count_ones() <= 1 || in_phase_order(&block.stmts) {
-        return run_phase(it, block, exprs, |p| p > 0);
+    if present.count_ones() <= 1 || in_phase_order(&block.stmts, late) {
+        return run_phase(it, block, exprs, late, |p| p > 0);
     }
     while present != 0 {
         let p = present.trailing_zeros() as u8;
         present &= present - 1;
-        run_phase(it, block, exprs, |q| q == p)?;
+        run_phase(it, block, exprs, late, |q| q == p)?;
     }
     Ok(())
 }
 
+/// The phase of a statement; with `late` (Heidenhain), the M functions
+/// that act at the end of their block (M5, M9, and with them M0/M2/M30)
+/// run after the block's move.
+fn phase_of(kind: &StmtKind, late: bool) -> u8 {
+    use crate::ir::{Coolant, SpindleState};
+    match kind {
+        StmtKind::Spindle(SpindleState::Stop) | StmtKind::Coolant(Coolant::Off) if late => 20,
+        k => phase(k),
+    }
+}
+
 /// Are the statements already in phase order?
-fn in_phase_order(stmts: &[Stmt]) -> bool {
+fn in_phase_order(stmts: &[Stmt], late: bool) -> bool {
     stmts
         .windows(2)
-        .all(|w| phase(&w[0].kind) <= phase(&w[1].kind))
+        .all(|w| phase_of(&w[0].kind, late) <= phase_of(&w[1].kind, late))
 }
 
 /// Runs, in written order, the statements whose phase `keep` accepts.
@@ -100,10 +119,11 @@ fn run_phase(
     it: &mut Interp<'_, '_>,
     block: &Block,
     exprs: &Arena<Expr>,
+    late: bool,
     keep: impl Fn(u8) -> bool,
 ) -> Result<(), Stop> {
     for s in &block.stmts {
-        if keep(phase(&s.kind)) {
+        if keep(phase_of(&s.kind, late)) {
             it.span = s.span;
             exec_stmt(it, s, block, exprs)?;
         }
@@ -153,6 +173,13 @@ fn exec_stmt(
         | ArcDistance(_)
         | ReturnToInitial(_)
         | Stop(_) => modes::exec(it, s, block, exprs),
+        // Heidenhain TOOL CALL: the new tool's length (and radius) are active.
+        ToolChange if it.spec.has(crate::dialect::Capability::PolePaths) => {
+            tools::exec(it, s, block, exprs)?;
+            siemens::activate_edge(it, 1)?;
+            super::heidenhain::tool_called(it);
+            Ok(())
+        }
         ToolSelect(_)
         | ToolChange
         | RadiusComp { .. }
@@ -168,10 +195,24 @@ fn exec_stmt(
             _ => offsets::exec(it, s, block, exprs),
         },
         CuttingEdge(_) | CycleCall(_) | ModalCallCancel => siemens::exec(it, s, block, exprs),
+        Motion(m) if it.spec.has(crate::dialect::Capability::PolePaths) => {
+            super::heidenhain::motion(it, s, m, block, exprs)
+        }
         Motion(_) | Cycle(_) | CycleCancel => {
             motion::exec(it, s, block, exprs)?;
             siemens::after_motion(it, s, block, exprs)
         }
+        ProgramEnd { .. }
+        | Stock { .. }
+        | ToolDef { .. }
+        | ToolOversize { .. }
+        | Pole(_)
+        | Corner { .. }
+        | Approach(_)
+        | CycleDef(_)
+        | CycleLine(_)
+        | CycleRun(_)
+        | PatternDef(_) => super::heidenhain::exec(it, s, block, exprs),
         // Run by the program walker (phase 0), never here.
         _ => Ok(()),
     }

@@ -243,6 +243,13 @@ impl<'l> Walker<'l> {
             });
         }
         it.line = pc as u32 + 1;
+        let ends = |s: &Stmt| matches!(s.kind, StmtKind::ProgramEnd { .. });
+        if !self.frames.is_empty() && block.stmts.iter().any(ends) {
+            // Heidenhain `END PGM` of a program called by `CALL PGM`: back
+            // to the caller.
+            super::heidenhain::flush(it)?;
+            return Ok(Next::Return);
+        }
         it.block(block, exprs)?;
         self.assignments(it, &block.stmts, exprs)?;
         for s in &block.stmts {
@@ -684,6 +691,10 @@ impl<'l> Walker<'l> {
         to: Option<&Value>,
         exprs: &Arena<Expr>,
     ) -> Result<Next, Stop> {
+        if self.frames.is_empty() && it.spec.has(crate::dialect::Capability::PolePaths) {
+            // Heidenhain `LBL 0` met in the main program: it goes on.
+            return Ok(Next::Step);
+        }
         if self.frames.is_empty() {
             // M99 in a main program: start again from the top (bounded).
             self.count_loop(it, 0, 0)?;
@@ -885,6 +896,19 @@ impl<'l> Walker<'l> {
                 .and_then(|l| l.first())
                 .map(|&i| (prog, i));
         }
+        if kind == CallKind::Label {
+            // Heidenhain `CALL LBL n`: from the label in this program to `LBL 0`.
+            let name = match target {
+                CallTarget::Number(n) => n.to_string(),
+                CallTarget::Name(n) => n.clone(),
+                CallTarget::Computed(_) => return None,
+            };
+            let ix = &self.progs[prog].index;
+            return ix
+                .labels
+                .get(&name.to_ascii_uppercase())
+                .map(|&i| (prog, i + 1));
+        }
         for p in std::iter::once(prog).chain(0..self.progs.len()) {
             if let Some(i) = self.progs[p].index.call_target(target) {
                 return Some((p, i + 1));
@@ -1009,6 +1033,7 @@ pub fn assign(
         }
         Var::Named(name) => it.params.set_named(name, v.unwrap_or(0.0)),
         Var::R(n) => it.params.set_r(*n, v.unwrap_or(0.0)),
+        Var::Q(bank, n) => it.params.set_q(*bank, *n, v.unwrap_or(0.0)),
         Var::RIndirect(e) => {
             let n = it.eval(*e, exprs)?.unwrap_or(0.0).round().max(0.0) as u32;
             it.params.set_r(n, v.unwrap_or(0.0));

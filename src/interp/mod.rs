@@ -16,6 +16,7 @@ pub mod exec;
 pub mod fanuc_xform;
 pub mod file;
 pub mod flow;
+pub mod heidenhain;
 pub mod host;
 pub mod index;
 pub mod machine;
@@ -76,6 +77,8 @@ pub struct Interp<'a, 's> {
     pub siemens: siemens::SiemensState,
     /// Fanuc G68/G51/G51.1 transforms (mapped through `siemens.frame`).
     pub fanuc: fanuc_xform::FanucXform,
+    /// Heidenhain pole, cycle definitions, held line for corners.
+    pub heidenhain: heidenhain::HeidenhainState,
     /// Canned-cycle values that carry over between blocks.
     pub cycles: cycles::CycleMemory,
     /// Cutter radius compensation (every move goes through it).
@@ -124,6 +127,7 @@ impl<'a, 's> Interp<'a, 's> {
             splines: splines::Splines::default(),
             siemens: siemens::SiemensState::default(),
             fanuc: fanuc_xform::FanucXform::default(),
+            heidenhain: heidenhain::HeidenhainState::default(),
         }
     }
 

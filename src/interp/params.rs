@@ -9,6 +9,8 @@ use std::collections::HashMap;
 pub struct Params {
     numbered: HashMap<u32, f64>,
     r: HashMap<u32, f64>,
+    /// Heidenhain Q / QL / QR parameters (unset ones read 0).
+    q: HashMap<(crate::ir::QBank, u32), f64>,
     global_named: HashMap<String, f64>,
     /// One scope per call level; the last is the current one.
     local_named: Vec<HashMap<String, f64>>,
@@ -46,6 +48,15 @@ impl Params {
 
     pub fn set_r(&mut self, n: u32, v: f64) {
         self.r.insert(n, v);
+    }
+
+    /// Heidenhain `Qn`, `QLn`, `QRn` (0 when never set).
+    pub fn q(&self, bank: crate::ir::QBank, n: u32) -> f64 {
+        self.q.get(&(bank, n)).copied().unwrap_or(0.0)
+    }
+
+    pub fn set_q(&mut self, bank: crate::ir::QBank, n: u32, v: f64) {
+        self.q.insert((bank, n), v);
     }
 
     /// `#<name>` (names are case-insensitive; `_` prefix: global).

@@ -56,6 +56,30 @@ pub enum Var {
     User(String, Vec<ExprId>),
     /// A system variable `$P_UIFR[1]`, `$AA_IW[X]`, kept by name.
     System(String, Vec<ExprId>),
+    /// Heidenhain `Q12`, `QL3`, `QR7`.
+    Q(QBank, u32),
+}
+
+/// The banks of Heidenhain Q parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum QBank {
+    /// `Q`: global.
+    Q,
+    /// `QL`: local to the program.
+    Local,
+    /// `QR`: kept across power-off.
+    Remanent,
+}
+
+impl QBank {
+    /// The prefix as written: `Q`, `QL`, `QR`.
+    pub fn prefix(self) -> &'static str {
+        match self {
+            QBank::Q => "Q",
+            QBank::Local => "QL",
+            QBank::Remanent => "QR",
+        }
+    }
 }
 
 impl Var {

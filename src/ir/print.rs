@@ -152,6 +152,7 @@ impl Printer<'_> {
             Var::Indirect(e) => format!("#[{}]", self.expr(*e)),
             Var::Named(n) => format!("#<{n}>"),
             Var::R(n) => format!("R{n}"),
+            Var::Q(bank, n) => format!("{}{n}", bank.prefix()),
             Var::RIndirect(e) => format!("R[{}]", self.expr(*e)),
             Var::User(n, idx) | Var::System(n, idx) => {
                 if idx.is_empty() {

@@ -267,6 +267,119 @@ pub struct Arg {
     pub span: Span,
 }
 
+/// Which corner of the blank a Heidenhain `BLK FORM` gives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum StockCorner {
+    /// `BLK FORM 0.1`: the minimum point, with the tool axis.
+    Min,
+    /// `BLK FORM 0.2`: the maximum point.
+    Max,
+}
+
+/// Heidenhain approach and departure contours (`APPR`/`DEP`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum ApproachKind {
+    /// `LT`: on a straight line tangent to the contour.
+    LineTangent,
+    /// `LN`: on a straight line normal to the contour.
+    LineNormal,
+    /// `CT`: on a tangent arc.
+    ArcTangent,
+    /// `LCT`: a straight line, then a tangent arc.
+    LineArcTangent,
+}
+
+/// `APPR LT X.. Y.. LEN10 RR F300`, `DEP CT CCA90 R+5`: `target` is the
+/// first contour point (APPR) or the end point (DEP, LN/LCT only).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Approach {
+    pub depart: bool,
+    pub kind: ApproachKind,
+    pub target: Axes,
+    /// `LEN`: length of the straight part.
+    pub len: Option<Value>,
+    /// `R`: radius of the arc part (sign: side, as written).
+    pub radius: Option<Value>,
+    /// `CCA`: opening angle of the arc part.
+    pub angle: Option<Value>,
+}
+
+/// One `Qnnn=value ;LABEL` line of a Heidenhain cycle definition.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct QParam {
+    pub q: u32,
+    pub value: Value,
+    /// The language-dependent label after `;` (no meaning, kept).
+    pub label: Option<String>,
+    pub span: Span,
+}
+
+/// A Heidenhain cycle definition `CYCL DEF 200 DRILLING ~ Q200=2 ;.. ~ ...`.
+///
+/// `number` selects the cycle (200 drilling, 203 universal drilling, 251
+/// rectangular pocket, 252 circular pocket, ...); `params` keep every Q
+/// parameter in the order written, by number, with its value as written and
+/// its label, unknown ones included. The definition is modal and runs only
+/// when called ([`CycleRunKind`]).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct CycleDef {
+    pub number: u32,
+    /// The name written after the number (`DRILLING`), language-dependent.
+    pub name: String,
+    pub params: Vec<QParam>,
+}
+
+impl CycleDef {
+    /// The value given to `Qn`.
+    pub fn param(&self, q: u32) -> Option<&Value> {
+        self.params.iter().find(|p| p.q == q).map(|p| &p.value)
+    }
+}
+
+/// One word of an old-style Heidenhain cycle line: `DIST25.000`, `X+0`,
+/// `ROT+30`, a bare keyword (`DATUM`, value `None`) or a bare value (empty name).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct CycleWord {
+    pub name: String,
+    pub value: Option<Value>,
+    pub span: Span,
+}
+
+/// One block of an old-style (sub-numbered) cycle: `CYCL DEF 7.1 X+10`,
+/// `CYCL DEF 1.2 DEPTH-20`: cycle 7, sub-number 1. The keywords vary by
+/// control version and language, so the sub-number carries the meaning.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct CycleLine {
+    pub cycle: u32,
+    pub sub: u32,
+    pub words: Vec<CycleWord>,
+}
+
+/// How a Heidenhain cycle defined by `CYCL DEF` is run.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub enum CycleRunKind {
+    /// `CYCL CALL`: once, at the current position.
+    Call,
+    /// `CYCL CALL POS X.. Y.. Z..`: once, at the given point.
+    Pos(Box<Axes>),
+    /// `CYCL CALL PAT`: at every point of the last `PATTERN DEF`.
+    Pattern,
+    /// `M99` in a positioning block: once, at the block's end point.
+    Block,
+    /// `M89`: after every following positioning block (older controls).
+    Modal,
+}
+
+/// One item of a `PATTERN DEF`: `POS1 (X+25 Y+33.5 Z+0)`, `ROW1 (...)`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PatternItem {
+    /// `POS1`, `ROW1`, `PAT1`, `FRAME1`, `CIRC1`, `CIRC2`.
+    pub name: String,
+    /// Words inside the parentheses, in order (`X+25`, `NUMX5`, `ROT+0`).
+    pub words: Vec<CycleWord>,
+    pub span: Span,
+}
+
 /// A named cycle call `CYCLE81(10,0,2,-5)`, `MCALL CYCLE83(...)`.
 /// Arguments are kept positionally, empty slots and unknown tails included;
 /// the dialect spec's signature names them.
@@ -428,8 +541,10 @@ pub enum CallKind {
     ModalMacro,
     /// LinuxCNC `o.. call`.
     OWord,
-    /// Siemens `L123`, `NAME(...)`, `CALL "NAME"`.
+    /// Siemens `L123`, `NAME(...)`, `CALL "NAME"`; Heidenhain `CALL PGM`.
     Named,
+    /// Heidenhain `CALL LBL n`: runs from the block labelled n to `LBL 0`.
+    Label,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -527,6 +642,8 @@ pub enum CommentStyle {
     Paren,
     /// `; ...` to the end of the line.
     Semicolon,
+    /// Heidenhain structure item `* - heading`.
+    Heading,
 }
 
 /// A letter-value word kept as written where no statement takes it.
@@ -577,6 +694,28 @@ pub enum StmtKind {
     ProgramStart {
         number: Option<u32>,
         name: Option<String>,
+    },
+    /// Heidenhain `END PGM name MM`: the end of the program text.
+    ProgramEnd {
+        name: Option<String>,
+    },
+    /// Heidenhain `BLK FORM 0.1 Z X.. Y.. Z..` / `0.2 ...`: a corner of
+    /// the blank (raw stock); `axis` is the tool axis given with 0.1.
+    Stock {
+        corner: StockCorner,
+        axis: Option<char>,
+        axes: Box<Axes>,
+    },
+    /// Heidenhain `TOOL DEF 1 L+0 R+5`: a tool's length and radius.
+    ToolDef {
+        tool: ToolRef,
+        length: Option<Value>,
+        radius: Option<Value>,
+    },
+    /// Heidenhain `DL`/`DR` in `TOOL CALL`: length/radius oversizes.
+    ToolOversize {
+        length: Option<Value>,
+        radius: Option<Value>,
     },
     /// Text understood only as text, writable back only into its dialect.
     Raw {
@@ -686,6 +825,25 @@ pub enum StmtKind {
 
     // ---- motion and cycles
     Motion(Box<Motion>),
+    /// Heidenhain `CC X.. Y..`: circle centre and pole (modal); no axes:
+    /// the current position.
+    Pole(Box<Axes>),
+    /// Heidenhain `RND R5` / `CHF 2`: a corner between the neighbouring
+    /// path elements (before and after this statement).
+    Corner {
+        kind: CornerKind,
+        size: Value,
+    },
+    /// Heidenhain `APPR ..` / `DEP ..`.
+    Approach(Box<Approach>),
+    /// Heidenhain `CYCL DEF 200 ...` (see [`CycleDef`]).
+    CycleDef(Box<CycleDef>),
+    /// Heidenhain old-style cycle block `CYCL DEF 7.1 X+10`.
+    CycleLine(Box<CycleLine>),
+    /// Heidenhain `CYCL CALL`, `M99`, `M89`, `CYCL CALL PAT`, `CYCL CALL POS`.
+    CycleRun(CycleRunKind),
+    /// Heidenhain `PATTERN DEF`.
+    PatternDef(Vec<PatternItem>),
     Cycle(Box<CannedCycle>),
     /// G80.
     CycleCancel,

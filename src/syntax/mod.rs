@@ -10,6 +10,7 @@
 //! arc) are emitted as words with address `CIP`/`CT` and the value 0; the
 //! lowering turns them into `MotionKind::ArcThrough` / `ArcTangent`.
 
+pub mod klartext;
 pub mod sinumerik;
 pub mod word;
 
@@ -77,6 +78,10 @@ pub trait FrontEnd {
     /// Takes back a line's item vector once its items are used, so that
     /// the next line may reuse its memory (a no-op by default).
     fn recycle(&mut self, _items: Vec<Item>) {}
+
+    /// The file ends: reports what a front end still holds (a block
+    /// continued past the last line), a no-op by default.
+    fn finish(&mut self, _file: FileId, _diags: &mut Vec<Diagnostic>) {}
 }
 
 /// A word's address, kept inline (addresses are short ASCII: `X`, `CR`,

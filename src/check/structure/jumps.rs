@@ -32,6 +32,8 @@ struct Pending {
     target: Target,
     dir: JumpDir,
     span: Span,
+    /// A Heidenhain `CALL LBL` (not a jump).
+    call: bool,
 }
 
 /// A set of numbers stored as arithmetic runs `first, first+step, ..=last`.
@@ -75,9 +77,18 @@ pub(super) struct Labels {
     numbers: NumberSet,
     names: HashMap<String, Span>,
     pending: Vec<Pending>,
+    /// Heidenhain labels (`LBL n`): missing ones are told in its terms.
+    klartext: bool,
 }
 
 impl Labels {
+    pub fn new(klartext: bool) -> Self {
+        Labels {
+            klartext,
+            ..Labels::default()
+        }
+    }
+
     fn seen(&self, t: &Target) -> bool {
         match t {
             Target::Number(n) => self.numbers.contains(*n),
@@ -139,6 +150,18 @@ impl Labels {
                 target: CallTarget::Number(n),
                 ..
             } => self.jump(Target::Number(*n), JumpDir::Either, s.span),
+            StmtKind::Call {
+                kind: CallKind::Label,
+                target,
+                ..
+            } => {
+                let name = match target {
+                    CallTarget::Number(n) => n.to_string(),
+                    CallTarget::Name(n) => n.clone(),
+                    CallTarget::Computed(_) => return,
+                };
+                self.pending_call(Target::Label(name), s.span);
+            }
             StmtKind::SubReturn { to: Some(v) } => {
                 self.jump_target(&JumpTarget::Sequence(v.clone()), JumpDir::Either, s.span)
             }
@@ -165,14 +188,36 @@ impl Labels {
         match dir {
             JumpDir::EitherNoAlarm => {}
             JumpDir::Either | JumpDir::Backward if known => {}
-            _ => self.pending.push(Pending { target, dir, span }),
+            _ => self.pending.push(Pending {
+                target,
+                dir,
+                span,
+                call: false,
+            }),
+        }
+    }
+
+    /// `CALL LBL`: the label may come anywhere in the program.
+    fn pending_call(&mut self, target: Target, span: Span) {
+        if !self.seen(&target) {
+            self.pending.push(Pending {
+                target,
+                dir: JumpDir::Either,
+                span,
+                call: true,
+            });
         }
     }
 
     /// Reports the jumps of the program just ended and forgets its labels.
     pub fn close_scope(&mut self, diags: &mut Vec<Diagnostic>) {
         for p in std::mem::take(&mut self.pending) {
-            diags.push(missing_target(&p, self.seen(&p.target)));
+            let seen = self.seen(&p.target);
+            diags.push(if self.klartext {
+                missing_label(&p, seen)
+            } else {
+                missing_target(&p, seen)
+            });
         }
         self.numbers.clear();
         self.names.clear();
@@ -195,6 +240,34 @@ fn missing_target(p: &Pending, exists: bool) -> Diagnostic {
     };
     Diagnostic::new(Code::JumpTargetMissing, msg)
         .primary(p.span, "jumps to a missing target")
+        .help(help)
+}
+
+/// E0321 in Heidenhain's terms: `CALL LBL 5` / `GOTO LBL 5` / `REP` to a
+/// label the program lacks (or, for a section repeat, has only after it).
+fn missing_label(p: &Pending, exists: bool) -> Diagnostic {
+    let name = p.target.show();
+    let lbl = if name.bytes().all(|b| b.is_ascii_digit()) {
+        format!("LBL {name}")
+    } else {
+        format!("LBL \"{name}\"")
+    };
+    let (msg, help) = match (p.call, p.dir, exists) {
+        (false, JumpDir::Backward, true) => (
+            format!("`CALL {lbl} REP` repeats from a label that comes after it"),
+            format!("a program-section repeat runs from `{lbl}` down to the CALL: put `{lbl}` before it"),
+        ),
+        (true, ..) => (
+            format!("`CALL {lbl}` calls a label this program does not have"),
+            format!("add the subprogram `{lbl}` ... `LBL 0` (after M30) or correct the label"),
+        ),
+        _ => (
+            format!("`{lbl}` does not exist in this program"),
+            format!("add `{lbl}` or correct the label the jump goes to"),
+        ),
+    };
+    Diagnostic::new(Code::KlartextLabelMissing, msg)
+        .primary(p.span, "no such label")
         .help(help)
 }
 

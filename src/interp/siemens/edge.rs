@@ -36,7 +36,7 @@ pub fn activate_edge(it: &mut Interp<'_, '_>, d: i64) -> Result<(), Stop> {
     let (offset, radius) = if d == 0 || tool == 0 {
         ([0.0; 9], 0.0)
     } else {
-        let Some(t) = it.opts.tool_table.get(tool) else {
+        let Some(t) = it.tool_table.get(tool) else {
             return Err(it.error_at(
                 it.span,
                 Code::ToolNotInTable,

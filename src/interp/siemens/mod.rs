@@ -23,7 +23,7 @@ mod calls;
 mod edge;
 pub(crate) mod frame;
 mod host;
-mod milling;
+pub(crate) mod milling;
 mod transform;
 
 #[cfg(test)]

@@ -23,6 +23,33 @@ impl Printer<'_> {
                 s
             }
             K::Raw { dialect, text } => format!("raw {dialect} {text:?}"),
+            K::ProgramEnd { name: n } => match n {
+                Some(n) => format!("program-end name={n:?}"),
+                None => "program-end".into(),
+            },
+            K::Stock { corner, axis, axes } => {
+                let a = axis.map(|a| format!(" axis={a}")).unwrap_or_default();
+                format!("stock {}{a}{}", name(corner), self.axes(axes))
+            }
+            K::ToolDef {
+                tool,
+                length,
+                radius,
+            } => {
+                let mut s = match tool {
+                    ToolRef::Number(v) => format!("tool-def {}", self.value(v)),
+                    ToolRef::Name(n) => format!("tool-def {n:?}"),
+                };
+                self.kv(&mut s, "L", length);
+                self.kv(&mut s, "R", radius);
+                s
+            }
+            K::ToolOversize { length, radius } => {
+                let mut s = "tool-oversize".to_string();
+                self.kv(&mut s, "DL", length);
+                self.kv(&mut s, "DR", radius);
+                s
+            }
             K::Word(w) => format!("word {}={}", w.address(), self.value(&w.value)),
             K::Units { unit, with_feeds } => {
                 format!(
@@ -119,6 +146,47 @@ impl Printer<'_> {
                 Some(a) => format!("command {n}({})", self.args(a.iter().map(|a| a.value))),
             },
             K::Motion(m) => self.motion(m),
+            K::Pole(axes) => format!("pole{}", self.axes(axes)),
+            K::Corner { kind, size } => format!("corner {} {}", name(kind), self.value(size)),
+            K::Approach(a) => {
+                let mut s = format!(
+                    "{} {}{}",
+                    if a.depart { "depart" } else { "approach" },
+                    name(a.kind),
+                    self.axes(&a.target)
+                );
+                self.kv(&mut s, "LEN", &a.len);
+                self.kv(&mut s, "R", &a.radius);
+                self.kv(&mut s, "CCA", &a.angle);
+                s
+            }
+            K::CycleDef(c) => {
+                let mut s = format!("cycle-def {} {:?}", c.number, c.name);
+                for p in &c.params {
+                    s.push_str(&format!(" Q{}={}", p.q, self.value(&p.value)));
+                    if let Some(l) = &p.label {
+                        s.push_str(&format!(" ;{l:?}"));
+                    }
+                }
+                s
+            }
+            K::CycleLine(l) => format!(
+                "cycle-line {}.{}{}",
+                l.cycle,
+                l.sub,
+                self.cycle_words(&l.words)
+            ),
+            K::CycleRun(r) => match r {
+                CycleRunKind::Pos(axes) => format!("cycle-run pos{}", self.axes(axes)),
+                other => format!("cycle-run {}", name(other)),
+            },
+            K::PatternDef(items) => {
+                let mut s = "pattern-def".to_string();
+                for i in items {
+                    s.push_str(&format!(" {}({} )", i.name, self.cycle_words(&i.words)));
+                }
+                s
+            }
             K::Cycle(c) => self.cycle(c),
             K::CycleCancel => "cycle-cancel".into(),
             K::CycleCall(c) => {
@@ -382,5 +450,14 @@ impl Printer<'_> {
         }
         self.kv(&mut s, "repeat", repeat);
         s
+    }
+
+    fn cycle_words(&self, ws: &[CycleWord]) -> String {
+        ws.iter()
+            .map(|w| match &w.value {
+                Some(v) => format!(" {}={}", w.name, self.value(v)),
+                None => format!(" {}", w.name),
+            })
+            .collect()
     }
 }
