@@ -97,6 +97,39 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
+    /// Re-write a STEP-NC (ISO 14649 Part 21) file normalised; a program
+    /// would be raised into STEP-NC.
+    Stepnc {
+        file: PathBuf,
+        /// Write here (whole or not at all) instead of stdout.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// Raise a program as explicit toolpaths (CC1).
+        #[arg(long, conflicts_with = "cc2")]
+        cc1: bool,
+        /// Raise a program as features and operations (CC2).
+        #[arg(long)]
+        cc2: bool,
+        /// The stock (workpiece block) for raising a program.
+        #[arg(long)]
+        stock: Option<String>,
+        /// The program's dialect when raising; detected when absent.
+        #[arg(long)]
+        dialect: Option<String>,
+        /// A tool table in LinuxCNC's .tbl format, for raising.
+        #[arg(long = "tool-table", value_name = "T.tbl")]
+        tool_table: Option<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Format::Human)]
+        format: Format,
+    },
+    /// Print the values an attribute path reaches in a STEP-NC file, such
+    /// as /project/main_workplan/its_elements[*]/its_feature/its_id.
+    Query {
+        file: PathBuf,
+        path: String,
+        #[arg(long, value_enum, default_value_t = Format::Human)]
+        format: Format,
+    },
     /// List the known dialects and their capabilities.
     Dialects,
     /// Explain a diagnostic code (`E0201`) or name (`two-motion-codes`);

@@ -8,6 +8,8 @@ pub mod info;
 pub mod ir;
 pub mod output;
 pub mod port;
+pub mod query;
+pub mod stepnc;
 
 use args::{Cli, Command, Format};
 use context::{Context, Failure, EXIT_USAGE};
@@ -18,7 +20,9 @@ pub fn run(cli: Cli) -> i32 {
         Command::Check { format, .. }
         | Command::Ir { format, .. }
         | Command::Port { format, .. }
-        | Command::Canon { format, .. } => *format,
+        | Command::Canon { format, .. }
+        | Command::Stepnc { format, .. }
+        | Command::Query { format, .. } => *format,
         _ => Format::Human,
     };
     let mut ctx = match Context::new(&cli, format) {
@@ -83,6 +87,20 @@ pub fn run(cli: Cli) -> i32 {
                 options: run.options(),
             },
         ),
+        Command::Stepnc {
+            file,
+            output,
+            format,
+            ..
+        } => stepnc::run(
+            &mut ctx,
+            stepnc::StepncArgs {
+                file,
+                output: output.as_deref(),
+                format: *format,
+            },
+        ),
+        Command::Query { file, path, format } => query::run(&mut ctx, file, path, *format),
         Command::Dialects => info::dialects(&ctx),
         Command::Explain { code } => info::explain(code.as_deref()),
     };
