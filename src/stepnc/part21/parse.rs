@@ -25,6 +25,18 @@ enum Section {
     After,
 }
 
+impl Section {
+    fn place(self) -> &'static str {
+        match self {
+            Section::Before => "before its HEADER section",
+            Section::Header => "inside its HEADER section",
+            Section::Between => "after a section's ENDSEC",
+            Section::Data => "inside its DATA section",
+            Section::After => "after END-ISO-10303-21",
+        }
+    }
+}
+
 /// Reads a Part 21 text; diagnostics for every statement that cannot be
 /// read (it is skipped) and for a broken file structure.
 pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
@@ -33,15 +45,18 @@ pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
     let mut stmt: Vec<Spanned> = Vec::new();
     let mut section = Section::Before;
     let parser = grammar::StatementParser::new();
+    let mut open_string = false;
     for t in tokens(src) {
         match t {
             Err((a, b)) => diags.push(unreadable(file, a, b, "a character that starts no token")),
             Ok((a, Tok::OpenComment, _)) => {
                 diags.push(unreadable(file, a, a + 2, "this comment is never closed"))
             }
-            Ok((a, Tok::OpenString, b)) => {
-                diags.push(unreadable(file, a, b, "this string is never closed"));
+            Ok((a, Tok::OpenString, _)) => {
+                // It runs to the end of the file.
+                diags.push(unreadable(file, a, a + 1, "this string is never closed"));
                 stmt.clear();
+                open_string = true;
             }
             Ok((_, Tok::Semi, b)) => {
                 let s = std::mem::take(&mut stmt);
@@ -58,7 +73,7 @@ pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
             "the file ends inside a statement (a `;` is missing)",
         ));
     }
-    if section != Section::After {
+    if section != Section::After && !open_string {
         let at = src.len();
         diags.push(
             Diagnostic::new(
@@ -67,7 +82,8 @@ pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
             )
             .primary(Span::new(file, at, at), "file ends here")
             .help(format!(
-                "the file stops in the {section:?} part; a truncated file?"
+                "the file stops {}; a truncated file?",
+                section.place()
             )),
         );
     }

@@ -31,6 +31,9 @@ const MAX_RAW_NODES: usize = 2_000_000;
 pub(crate) struct Fail {
     pub msg: String,
     pub span: Span,
+    /// The file breaks the schema (an attribute refers to an entity of a
+    /// kind its type does not allow): an error, never kept as raw.
+    pub invalid: bool,
 }
 
 pub(crate) type R<T> = Result<T, Fail>;
@@ -126,6 +129,7 @@ impl<'f> Rd<'f> {
         let kept = self.diags.len();
         match typed(self, i) {
             Ok(v) => Ok(v),
+            Err(f) if f.invalid => Err(f),
             Err(f) => {
                 self.diags.truncate(kept);
                 let raw = self.raw(i)?;
@@ -287,6 +291,16 @@ pub(crate) fn fail(span: Span, msg: impl Into<String>) -> Fail {
     Fail {
         msg: msg.into(),
         span,
+        invalid: false,
+    }
+}
+
+/// A failure where the file breaks the schema.
+pub(crate) fn invalid(span: Span, msg: impl Into<String>) -> Fail {
+    Fail {
+        msg: msg.into(),
+        span,
+        invalid: true,
     }
 }
 
@@ -385,7 +399,7 @@ pub(crate) fn expect<'i>(i: &'i Instance, names: &[&str], what: &str) -> R<&'i s
     if names.contains(&e) {
         Ok(e)
     } else {
-        Err(fail(
+        Err(invalid(
             i.entity_span,
             format!("expected {what}, found {} (#{})", i.entity, i.id),
         ))

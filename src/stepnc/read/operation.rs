@@ -17,7 +17,7 @@ impl<'f> Rd<'f> {
             return Ok(id);
         }
         if schema::entity(&i.entity).and_then(|d| d.attr_index("its_tool")) != Some(5) {
-            return Err(fail(
+            return Err(invalid(
                 i.entity_span,
                 format!(
                     "expected a machining operation, found {} (#{})",
@@ -49,6 +49,7 @@ impl<'f> Rd<'f> {
         let kept = self.diags.len();
         let kind = match self.operation_kind(i) {
             Ok(k) => k,
+            Err(f) if f.invalid => return Err(f),
             Err(f) => {
                 self.diags.truncate(kept);
                 let mut params = Vec::new();

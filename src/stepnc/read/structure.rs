@@ -234,8 +234,14 @@ impl<'f> Rd<'f> {
         })
     }
 
+    /// A BLOCK; other bounding geometry is kept as written.
     fn block(&mut self, i: &'f Instance) -> R<Bounding> {
-        expect(i, &["BLOCK"], "a BLOCK")?;
+        if ent(i) != "BLOCK" {
+            return Err(fail(
+                i.entity_span,
+                "only BLOCK bounding geometry is modelled",
+            ));
+        }
         let pos = self.inst(arg(i, 1)?)?;
         Ok(Bounding::Block {
             name: string(arg(i, 0)?)?,
