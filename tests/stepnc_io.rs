@@ -70,3 +70,250 @@ fn aim_sample_is_refused_as_unsupported_schema() {
     let codes: Vec<Code> = r.diagnostics.iter().map(|d| d.code).collect();
     assert_eq!(codes, vec![Code::UnsupportedSchema]);
 }
+
+fn ex1() -> Option<Project> {
+    let dir = samples_dir()?;
+    let (_, r) = read(&dir.join("ex1.stp"));
+    Some(r.project.expect("ex1 reads"))
+}
+
+fn tol(t: &Toleranced) -> f64 {
+    t.nominal
+}
+
+#[test]
+fn ex1_features_read_as_the_file_states_them() {
+    let Some(p) = ex1() else { return };
+    assert_eq!(p.id, "EXECUTE EXAMPLE1");
+    let steps: Vec<&MachiningWorkingstep> = p
+        .main_workplan
+        .elements
+        .iter()
+        .filter_map(|e| match e {
+            Executable::Workingstep(w) => Some(w),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(steps.len(), 5);
+    assert_eq!(p.main_workplan.elements.len(), 5);
+    let ids: Vec<&str> = steps.iter().map(|w| w.id.as_str()).collect();
+    assert_eq!(
+        ids,
+        [
+            "WS FINISH PLANAR FACE1",
+            "WS DRILL HOLE1",
+            "WS REAM HOLE1",
+            "WS ROUGH POCKET1",
+            "WS FINISH POCKET1"
+        ]
+    );
+    assert_eq!(steps[0].secplane.position.location.xyz, [0.0, 0.0, 30.0]);
+    assert_eq!(p.features.len(), 3);
+    // PLANAR_FACE: 120 mm along +Y, 100 mm wide, 5 mm down from z=5.
+    let face = p.feature(steps[0].feature);
+    assert_eq!(face.id, "PLANAR FACE1");
+    assert_eq!(face.placement.location.xyz, [0.0, 0.0, 5.0]);
+    assert_eq!(face.depth.position.location.xyz, [0.0, 0.0, -5.0]);
+    match &face.kind {
+        FeatureKind::PlanarFace {
+            course_of_travel:
+                TravelPath::Linear {
+                    distance,
+                    direction,
+                    ..
+                },
+            removal_boundary: OpenProfile::Linear { length, .. },
+            face_boundary: None,
+            ..
+        } => {
+            assert_eq!(tol(distance), 120.0);
+            assert_eq!(direction.ratios, [0.0, 1.0, 0.0]);
+            assert_eq!((length.value, length.unit.as_str()), (100.0, "MM"));
+        }
+        k => panic!("planar face read as {k:?}"),
+    }
+    // ROUND_HOLE: 22 mm through hole at (20, 60), 30 deep.
+    let hole = p.feature(steps[1].feature);
+    assert_eq!(
+        steps[2].feature, steps[1].feature,
+        "both hole steps share the feature"
+    );
+    assert_eq!(hole.id, "HOLE1 D=22MM");
+    assert_eq!(hole.placement.location.xyz, [20.0, 60.0, 0.0]);
+    assert_eq!(hole.depth.position.location.xyz, [0.0, 0.0, -30.0]);
+    match &hole.kind {
+        FeatureKind::RoundHole {
+            diameter, bottom, ..
+        } => {
+            assert_eq!(tol(diameter), 22.0);
+            assert_eq!(
+                diameter.tolerance,
+                Tolerance::PlusMinus {
+                    upper: 0.3,
+                    lower: 0.3,
+                    significant_digits: 3
+                }
+            );
+            assert_eq!(*bottom, HoleBottom::Through);
+        }
+        k => panic!("round hole read as {k:?}"),
+    }
+    assert_eq!(hole.operations.len(), 2);
+    // CLOSED_POCKET: 50 x 80 rectangle, corner radius 10, 30 deep, planar bottom.
+    let pocket = p.feature(steps[3].feature);
+    assert_eq!(pocket.id, "POCKET1");
+    assert_eq!(pocket.placement.location.xyz, [70.0, 70.0, 0.0]);
+    assert_eq!(
+        pocket.placement.ref_direction.as_ref().unwrap().ratios,
+        [0.0, 1.0, 0.0]
+    );
+    match &pocket.kind {
+        FeatureKind::ClosedPocket {
+            pocket: pc,
+            boundary:
+                ClosedProfile::Rectangular {
+                    width,
+                    length,
+                    placement: None,
+                },
+        } => {
+            assert_eq!((tol(width), tol(length)), (50.0, 80.0));
+            assert_eq!(pc.bottom, PocketBottom::Planar);
+            assert_eq!(pc.planar_radius, None);
+            assert_eq!(pc.orthogonal_radius.as_ref().map(tol), Some(10.0));
+            assert!(pc.bosses.is_empty());
+        }
+        k => panic!("pocket read as {k:?}"),
+    }
+}
+
+#[test]
+fn ex1_operations_tools_and_technology() {
+    let Some(p) = ex1() else { return };
+    let steps: Vec<&MachiningWorkingstep> = p
+        .main_workplan
+        .elements
+        .iter()
+        .filter_map(|e| match e {
+            Executable::Workingstep(w) => Some(w),
+            _ => None,
+        })
+        .collect();
+    let op = |k: usize| p.operation(steps[k].operation);
+    // Plane finish milling: feed 0.04 m/s = 2400 mm/min, spindle -12 rev/s
+    // (clockwise by ISO's sign) = +720 rpm (M3).
+    let face = op(0);
+    assert_eq!(face.id, "FINISH PLANAR FACE1");
+    assert_eq!(face.retract_plane, Some(10.0));
+    assert_eq!(face.technology.feed, Some(2400.0));
+    assert_eq!(face.technology.spindle, Some(720.0));
+    assert!(face.technology.feed_at_tcp);
+    assert!(face.machine_functions.coolant && face.machine_functions.chip_removal);
+    match &face.kind {
+        OperationKind::PlaneMilling {
+            finish: true,
+            milling,
+            axial_cutting_depth,
+            allowance_bottom,
+        } => {
+            assert_eq!(*axial_cutting_depth, Some(2.5));
+            assert_eq!(*allowance_bottom, None);
+            assert_eq!(
+                milling.approach,
+                Some(ApproachRetract::PlungeToolaxis { orientation: None })
+            );
+            match &milling.strategy {
+                Some(Strategy::Bidirectional {
+                    base,
+                    feed_direction,
+                    stepover_direction,
+                    stroke_connection,
+                }) => {
+                    assert_eq!(base.overlap, Some(0.05));
+                    assert_eq!(base.allow_multiple_passes, Some(true));
+                    assert_eq!(feed_direction.as_ref().unwrap().ratios, [0.0, 1.0, 0.0]);
+                    assert_eq!(*stepover_direction, Some(LeftOrRight::Left));
+                    assert_eq!(*stroke_connection, None);
+                }
+                s => panic!("strategy {s:?}"),
+            }
+        }
+        k => panic!("face operation read as {k:?}"),
+    }
+    let tool = p.tool(face.tool);
+    assert_eq!(tool.id, "MILL 18MM");
+    assert_eq!(tool.body.kind, ToolBodyKind::TaperedEndmill);
+    assert_eq!(tool.body.dimension.diameter, 18.0);
+    assert_eq!(tool.body.number_of_teeth, Some(4));
+    assert_eq!(tool.body.hand_of_cut, Some(Hand::Right));
+    assert_eq!(tool.overall_assembly_length, Some(80.0));
+    assert_eq!(tool.cutting_edges[0].tool_offset_length, 80.0);
+
+    let drill = op(1);
+    assert_eq!(drill.technology.feed, Some(1800.0));
+    assert_eq!(drill.technology.spindle, Some(960.0));
+    match &drill.kind {
+        OperationKind::Drilling(d) => {
+            let st = d.strategy.as_ref().unwrap();
+            assert_eq!(st.reduced_cut_at_start, Some(0.75));
+            assert_eq!(st.depth_of_end, Some(8.0));
+        }
+        k => panic!("drilling read as {k:?}"),
+    }
+    let dt = p.tool(drill.tool);
+    assert_eq!(
+        (dt.id.as_str(), &dt.body.kind),
+        ("SPIRAL_DRILL_20MM", &ToolBodyKind::TwistDrill)
+    );
+    assert_eq!(dt.body.dimension.tip_half_angle, Some(31.0));
+    assert_eq!(dt.body.pilot_length, Some(0.84));
+
+    let ream = op(2);
+    assert_eq!(ream.technology.spindle, Some(1080.0));
+    assert!(matches!(
+        ream.kind,
+        OperationKind::Boring {
+            reaming: true,
+            spindle_stop_at_bottom: true,
+            ..
+        }
+    ));
+    assert_eq!(p.tool(ream.tool).body.kind, ToolBodyKind::TaperedReamer);
+
+    match &op(3).kind {
+        OperationKind::BottomAndSideMilling {
+            finish: false,
+            milling,
+            axial_cutting_depth,
+            radial_cutting_depth,
+            allowance_side,
+            allowance_bottom,
+        } => {
+            assert_eq!(
+                (
+                    *axial_cutting_depth,
+                    *radial_cutting_depth,
+                    *allowance_side,
+                    *allowance_bottom
+                ),
+                (Some(6.5), Some(5.0), Some(1.0), Some(0.5))
+            );
+            assert_eq!(
+                milling.strategy,
+                Some(Strategy::ContourParallel {
+                    base: StrategyBase::default(),
+                    rotation: Some(RotDirection::Cw),
+                    cutmode: Some(CutMode::Conventional),
+                })
+            );
+        }
+        k => panic!("rough pocket read as {k:?}"),
+    }
+    assert_eq!(op(3).technology.spindle, Some(1200.0));
+    assert!(matches!(
+        op(4).kind,
+        OperationKind::BottomAndSideMilling { finish: true, .. }
+    ));
+    assert_eq!(p.tools.len(), 3);
+    assert_eq!(p.operations.len(), 5);
+}
