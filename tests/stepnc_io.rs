@@ -317,3 +317,218 @@ fn ex1_operations_tools_and_technology() {
     assert_eq!(p.tools.len(), 3);
     assert_eq!(p.operations.len(), 5);
 }
+
+/// Each bad file gives these codes at these places (line:col).
+const BAD: &[(&str, &[(&str, &str)])] = &[
+    ("syntax", &[("E0800", "9:18"), ("E0800", "10:28")]),
+    ("unterminated", &[("E0801", "8:20")]),
+    ("dangling", &[("E0802", "9:30")]),
+    ("arity", &[("E0803", "8:4")]),
+    ("type", &[("E0804", "9:14"), ("E0804", "10:27")]),
+    ("unknown", &[("E0805", "9:4")]),
+    ("aim", &[("E0806", "5:1")]),
+    ("model", &[("E0807", "14:4")]),
+    ("duplicate", &[("E0808", "9:1")]),
+    ("truncated", &[("E0811", "9:1")]),
+];
+
+#[test]
+fn bad_files_give_their_codes_at_line_and_column() {
+    for (name, want) in BAD {
+        let path = PathBuf::from(format!("tests/stepnc/bad/{name}.stp"));
+        let (files, r) = read(&path);
+        assert!(r.project.is_none(), "{name} gave a model");
+        let got: Vec<(String, String)> = r
+            .diagnostics
+            .iter()
+            .map(|d| {
+                let span = d.span().expect("a place");
+                let (l, c) = files.line_col(span.file, span.start as usize);
+                (d.code.code().to_string(), format!("{l}:{c}"))
+            })
+            .collect();
+        let want: Vec<(String, String)> = want
+            .iter()
+            .map(|(c, p)| (c.to_string(), p.to_string()))
+            .collect();
+        assert_eq!(got, want, "{name}");
+        let rendered = render::human(&r.diagnostics, &files, false);
+        insta::assert_snapshot!(format!("stepnc_bad_{name}"), rendered);
+    }
+}
+
+#[test]
+fn no_project_is_a_model_error() {
+    let (_, r) = read(Path::new("tests/stepnc/bad/noproject.stp"));
+    let codes: Vec<&str> = r.diagnostics.iter().map(|d| d.code.code()).collect();
+    assert_eq!(codes, ["E0807"]);
+}
+
+#[test]
+fn queries_answer_attribute_paths() {
+    let Some(dir) = samples_dir() else { return };
+    let (_, r) = read(&dir.join("ex1.stp"));
+    let q = |path: &str| stepnc::query::query(&r.graph, path);
+    assert_eq!(
+        q("/project/its_workpieces[0]/its_id").unwrap(),
+        ["SIMPLE WORKPIECE"]
+    );
+    assert_eq!(
+        q("/project/main_workplan/its_elements[*]/its_feature/its_id").unwrap(),
+        [
+            "PLANAR FACE1",
+            "HOLE1 D=22MM",
+            "HOLE1 D=22MM",
+            "POCKET1",
+            "POCKET1"
+        ]
+    );
+    assert_eq!(
+        q("/#18").unwrap(),
+        ["#18=CLOSED_POCKET('POCKET1',#4,(#22,#23),#84,#65,(),$,#27,$,#37,#28)"]
+    );
+    assert_eq!(
+        q("/closed_pocket/feature_boundary/profile_length/theoretical_size").unwrap(),
+        ["80."]
+    );
+    assert_eq!(q("/MILLING_TECHNOLOGY/spindle").unwrap().len(), 5);
+    // The spelling variant reads under the schema's name.
+    assert_eq!(q("/bidirectional/stepover_direction").unwrap(), [".LEFT."]);
+    assert_eq!(q("/#1/its_workpieces").unwrap(), ["(#4)"]);
+    let e = q("/project/its_workpieces/its_id").unwrap_err();
+    assert!(e.contains("[*]"), "{e}");
+    let e = q("/project/its_nothing").unwrap_err();
+    assert!(e.contains("its_id, main_workplan"), "{e}");
+    assert!(q("/project/its_workpieces[3]")
+        .unwrap_err()
+        .contains("past the end"));
+    assert!(q("project").is_err());
+}
+
+fn temp_copy(name: &str, text: &str) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(name);
+    std::fs::write(&path, text).unwrap();
+    (dir, path)
+}
+
+#[test]
+fn diff_ignores_numbering_and_finds_changes() {
+    let Some(dir) = samples_dir() else { return };
+    let a = dir.join("ex1.stp");
+    let same = stepnc::diff::diff_files(&a, &a).ok().unwrap();
+    assert!(same.same && same.lines.is_empty());
+    // The normalised file has other numbers, order and spellings.
+    let (_, r) = read(&a);
+    let normal = stepnc::write_project(&r.project.unwrap());
+    let (_t1, b) = temp_copy("normal.stp", &normal);
+    let d = stepnc::diff::diff_files(&a, &b).ok().unwrap();
+    assert!(d.same, "{:#?}", d.lines);
+    // A changed feed, pocket width and tool diameter.
+    let orig = std::fs::read_to_string(&a).unwrap();
+    let changed = orig
+        .replace(
+            "#50= MILLING_TECHNOLOGY(0.040,",
+            "#50= MILLING_TECHNOLOGY(0.050,",
+        )
+        .replace(
+            "#122= TOLERANCED_LENGTH_MEASURE(50.000,#124);",
+            "#122= TOLERANCED_LENGTH_MEASURE(55.000,#124);",
+        )
+        .replace(
+            "#32= MILLING_TOOL_DIMENSION(20.000,",
+            "#32= MILLING_TOOL_DIMENSION(21.000,",
+        );
+    let (_t2, c) = temp_copy("changed.stp", &changed);
+    let d = stepnc::diff::diff_files(&a, &c).ok().unwrap();
+    assert!(!d.same);
+    let text = d.lines.join("\n");
+    insta::assert_snapshot!("stepnc_diff_ex1_changed", text);
+    assert!(
+        text.contains(
+            "feature 'POCKET1' / feature_boundary / profile_width / theoretical_size: 50. → 55."
+        ),
+        "{text}"
+    );
+    assert!(text.contains("2400 mm/min"), "{text}");
+    assert!(text.contains("tool 'SPIRAL_DRILL_20MM'"), "{text}");
+}
+
+fn cncc(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_cncc"))
+        .args(args)
+        .output()
+        .expect("cncc runs")
+}
+
+#[test]
+fn cli_stepnc_output_reads_back_with_check_and_an_independent_reader() {
+    let Some(dir) = samples_dir() else { return };
+    let out_dir = tempfile::tempdir().unwrap();
+    for name in ARM_SAMPLES {
+        let src = dir.join(name);
+        let out = out_dir.path().join(format!("{name}.stp"));
+        let o = cncc(&["stepnc", src.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{name}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let o = cncc(&["check", out.to_str().unwrap()]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{name} normalised: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let py = std::process::Command::new("python3")
+            .arg("tests/part21_check.py")
+            .arg(&out)
+            .args([
+                "PROJECT=6",
+                "WORKPLAN=5",
+                "MILLING_TECHNOLOGY=9",
+                "CLOSED_POCKET=11",
+                "ROUND_HOLE=8",
+            ])
+            .output();
+        match py {
+            Ok(py) => assert!(
+                py.status.success(),
+                "{name}: python reader: {}",
+                String::from_utf8_lossy(&py.stdout)
+            ),
+            Err(_) => eprintln!("note: python3 not available; independent reader skipped"),
+        }
+    }
+    let o = cncc(&["check", dir.join("test_program.stpnc").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("E0806"));
+}
+
+#[test]
+fn cli_query_prints_one_value_per_line() {
+    let Some(dir) = samples_dir() else { return };
+    let f = dir.join("ex1.stp");
+    let o = cncc(&[
+        "query",
+        f.to_str().unwrap(),
+        "/project/main_workplan/its_elements[*]/its_id",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(
+        String::from_utf8_lossy(&o.stdout),
+        "WS FINISH PLANAR FACE1\nWS DRILL HOLE1\nWS REAM HOLE1\nWS ROUGH POCKET1\nWS FINISH POCKET1\n"
+    );
+    let o = cncc(&["query", f.to_str().unwrap(), "/project/nope"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("E0810"));
+}
+
+#[test]
+fn cli_stepnc_refuses_programs_until_raising_is_wired() {
+    let o = cncc(&["stepnc", "tests/programs/linuxcnc/subs.ngc"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("not built in this tree"));
+}
