@@ -89,6 +89,9 @@ pub(crate) struct Rd<'f> {
     pub raw_nodes: usize,
     /// its_id → (what, span) of features, operations, executables.
     pub ids: Vec<(String, &'static str, Span)>,
+    /// The span of the reference followed last (for errors about the
+    /// instance it leads to).
+    pub last_ref: Option<Span>,
 }
 
 impl<'f> Rd<'f> {
@@ -106,16 +109,19 @@ impl<'f> Rd<'f> {
             depth: 0,
             raw_nodes: 0,
             ids: Vec::new(),
+            last_ref: None,
         }
     }
 
     /// A failure that stops a part of the model being read.
     pub fn hard(&mut self, f: Fail) {
-        self.diags.push(
-            Diagnostic::new(Code::StepncModel, f.msg)
-                .primary(f.span, "here")
-                .help("ISO 14649-10/11 give each attribute the entity kinds it may refer to"),
-        );
+        let mut d = Diagnostic::new(Code::StepncModel, f.msg)
+            .primary(f.span, "here")
+            .help("ISO 14649-10/11 give each attribute the entity kinds it may refer to");
+        if let Some(r) = self.last_ref.filter(|r| *r != f.span && f.invalid) {
+            d = d.secondary(r, "referred to here");
+        }
+        self.diags.push(d);
     }
 
     /// Reads with `typed`; when that fails, keeps the instance as written
@@ -155,6 +161,7 @@ impl<'f> Rd<'f> {
             Value::Ref(n) => match self.file.get(*n) {
                 Some(i) => {
                     self.used.insert(*n);
+                    self.last_ref = Some(p.span);
                     Ok(i)
                 }
                 None => Err(fail(p.span, format!("#{n} is not defined"))),
