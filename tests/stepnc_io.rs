@@ -330,6 +330,9 @@ const BAD: &[(&str, &[(&str, &str)])] = &[
     ("model", &[("E0807", "14:4")]),
     ("duplicate", &[("E0808", "9:1")]),
     ("truncated", &[("E0811", "9:1")]),
+    ("complex", &[("E0809", "8:1")]),
+    ("cycle", &[("E0812", "9:1")]),
+    ("deep", &[("E0812", "8:87")]),
 ];
 
 #[test]
@@ -531,4 +534,26 @@ fn cli_stepnc_refuses_programs_until_raising_is_wired() {
     let o = cncc(&["stepnc", "tests/programs/linuxcnc/subs.ngc"]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("not built in this tree"));
+}
+
+#[test]
+fn mangled_files_never_panic() {
+    let Some(dir) = samples_dir() else { return };
+    let text = std::fs::read_to_string(dir.join("ex1.stp")).unwrap();
+    let bytes = text.as_bytes();
+    // Every prefix at a coarse step, and single-character damage.
+    for cut in (0..bytes.len()).step_by(97) {
+        let r = read_str(&String::from_utf8_lossy(&bytes[..cut]));
+        assert!(r.project.is_none() || cut == bytes.len());
+    }
+    let marks = ["'", "(", ")", ",", "#", ";", "$", "=", ".", "*", "9"];
+    for (k, at) in (0..bytes.len()).step_by(61).enumerate() {
+        let mut m = bytes.to_vec();
+        m[at] = marks[k % marks.len()].as_bytes()[0];
+        let r = read_str(&String::from_utf8_lossy(&m));
+        if let Some(p) = r.project {
+            let _ = stepnc::write_project(&p);
+        }
+        let _ = stepnc::query::query(&r.graph, "/project/main_workplan/its_elements[*]/its_id");
+    }
 }

@@ -16,6 +16,28 @@ lalrpop_util::lalrpop_mod!(
 
 type Spanned = (usize, Tok, usize);
 
+/// Deepest parenthesis nesting read (values are freed and written
+/// recursively).
+const MAX_NESTING: usize = 64;
+
+/// The `(` that nests too deep, if any.
+fn too_deep(toks: &[Spanned]) -> Option<&Spanned> {
+    let mut depth = 0usize;
+    for t in toks {
+        match t.1 {
+            Tok::LParen => {
+                depth += 1;
+                if depth > MAX_NESTING {
+                    return Some(t);
+                }
+            }
+            Tok::RParen => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    None
+}
+
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 enum Section {
     Before,
@@ -101,6 +123,17 @@ fn statement(
     out: &mut P21File,
     diags: &mut Vec<Diagnostic>,
 ) -> Section {
+    if let Some(&(a, _, b)) = too_deep(toks) {
+        diags.push(
+            Diagnostic::new(
+                Code::P21TooDeep,
+                format!("parentheses nest more than {MAX_NESTING} deep"),
+            )
+            .primary(Span::new(file, a, b), "too deep")
+            .help("ISO 14649 data nests lists a few levels at most; this statement is skipped"),
+        );
+        return section;
+    }
     let Some(&(a, first, b)) = toks.first() else {
         diags.push(syntax(file, end - 1, end, "an empty statement"));
         return section;

@@ -32,8 +32,10 @@ pub(crate) struct Fail {
     pub msg: String,
     pub span: Span,
     /// The file breaks the schema (an attribute refers to an entity of a
-    /// kind its type does not allow): an error, never kept as raw.
+    /// kind its type does not allow), or nests too deep: an error, never
+    /// kept as raw.
     pub invalid: bool,
+    pub too_deep: bool,
 }
 
 pub(crate) type R<T> = Result<T, Fail>;
@@ -115,9 +117,18 @@ impl<'f> Rd<'f> {
 
     /// A failure that stops a part of the model being read.
     pub fn hard(&mut self, f: Fail) {
-        let mut d = Diagnostic::new(Code::StepncModel, f.msg)
+        let code = if f.too_deep {
+            Code::P21TooDeep
+        } else {
+            Code::StepncModel
+        };
+        let mut d = Diagnostic::new(code, f.msg)
             .primary(f.span, "here")
-            .help("ISO 14649-10/11 give each attribute the entity kinds it may refer to");
+            .help(if f.too_deep {
+                "ISO 14649 data is a shallow tree; check the references for a cycle"
+            } else {
+                "ISO 14649-10/11 give each attribute the entity kinds it may refer to"
+            });
         if let Some(r) = self.last_ref.filter(|r| *r != f.span && f.invalid) {
             d = d.secondary(r, "referred to here");
         }
@@ -185,8 +196,15 @@ impl<'f> Rd<'f> {
 
     pub fn enter(&mut self, span: Span) -> R<()> {
         self.depth += 1;
+        self.raw_nodes += 1;
         if self.depth > MAX_DEPTH {
-            return Err(fail(span, "references nest too deeply (a cycle?)"));
+            return Err(too_deep(span, "references nest too deeply (a cycle?)"));
+        }
+        if self.raw_nodes > MAX_RAW_NODES {
+            return Err(too_deep(
+                span,
+                "the file expands to too many values (shared instances referred to over and over?)",
+            ));
         }
         Ok(())
     }
@@ -227,7 +245,7 @@ impl<'f> Rd<'f> {
     pub fn raw_value(&mut self, p: &'f Param) -> R<RawValue> {
         self.raw_nodes += 1;
         if self.raw_nodes > MAX_RAW_NODES {
-            return Err(fail(p.span, "the file expands to too many values"));
+            return Err(too_deep(p.span, "the file expands to too many values"));
         }
         Ok(match &p.value {
             Value::Null => RawValue::Null,
@@ -299,6 +317,17 @@ pub(crate) fn fail(span: Span, msg: impl Into<String>) -> Fail {
         msg: msg.into(),
         span,
         invalid: false,
+        too_deep: false,
+    }
+}
+
+/// A failure from nesting or expanding too far (E0812).
+pub(crate) fn too_deep(span: Span, msg: impl Into<String>) -> Fail {
+    Fail {
+        msg: msg.into(),
+        span,
+        invalid: true,
+        too_deep: true,
     }
 }
 
@@ -308,6 +337,7 @@ pub(crate) fn invalid(span: Span, msg: impl Into<String>) -> Fail {
         msg: msg.into(),
         span,
         invalid: true,
+        too_deep: false,
     }
 }
 
