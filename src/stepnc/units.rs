@@ -81,7 +81,16 @@ mod tests {
 
     #[test]
     fn values_read_from_files_write_back_exactly() {
-        for v in [0.04, 0.0166666, 0.03, 0.175, -12.0, 133.33, -5.83568124670283, 11.0] {
+        for v in [
+            0.04,
+            0.0166666,
+            0.03,
+            0.175,
+            -12.0,
+            133.33,
+            -5.83568124670283,
+            11.0,
+        ] {
             let m = feed_from_file(v);
             assert_eq!(feed_from_file(feed_to_file(m)), m, "{v}");
             let m = spindle_from_file(v);
@@ -96,7 +105,10 @@ mod tests {
         // Not every f64 is a product f * 60: 1000 rpm is not.
         for m in [1000.0, 2400.0, 333.3, 8000.0, 1234.5678] {
             let back = spindle_from_file(spindle_to_file(m));
-            assert!((back - m).abs() <= m.abs() * 2.0 * f64::EPSILON, "{m} {back}");
+            assert!(
+                (back - m).abs() <= m.abs() * 2.0 * f64::EPSILON,
+                "{m} {back}"
+            );
         }
     }
 }

@@ -54,9 +54,12 @@ pub enum Tok {
     OpenString,
 }
 
+/// A token with its range, or the range of text that starts none.
+pub type Lexed = Result<(usize, Tok, usize), (usize, usize)>;
+
 /// Tokens of a whole text, with ranges; `Err(range)` for characters that
 /// start no token.
-pub fn tokens(src: &str) -> Vec<Result<(usize, Tok, usize), (usize, usize)>> {
+pub fn tokens(src: &str) -> Vec<Lexed> {
     let mut lex = Tok::lexer(src);
     let mut out = Vec::new();
     while let Some(t) = lex.next() {

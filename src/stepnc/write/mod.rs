@@ -8,6 +8,8 @@ mod feature;
 mod geom;
 mod operation;
 mod structure;
+mod tool;
+mod toolpath;
 
 use super::model::*;
 use super::part21::text::write_file;
