@@ -91,13 +91,27 @@ pub fn run(cli: Cli) -> i32 {
             file,
             output,
             format,
-            ..
+            cc1,
+            cc2,
+            stock,
+            dialect,
+            tool_table,
         } => stepnc::run(
             &mut ctx,
             stepnc::StepncArgs {
                 file,
                 output: output.as_deref(),
                 format: *format,
+                raising_options: [
+                    (*cc1, "--cc1"),
+                    (*cc2, "--cc2"),
+                    (stock.is_some(), "--stock"),
+                    (dialect.is_some(), "--dialect"),
+                    (tool_table.is_some(), "--tool-table"),
+                ]
+                .into_iter()
+                .filter_map(|(given, name)| given.then_some(name))
+                .collect(),
             },
         ),
         Command::Query { file, path, format } => query::run(&mut ctx, file, path, *format),

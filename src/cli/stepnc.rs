@@ -14,6 +14,9 @@ pub struct StepncArgs<'a> {
     pub file: &'a Path,
     pub output: Option<&'a Path>,
     pub format: Format,
+    /// Options given that only apply to raising a program (named, for a
+    /// note when the file is Part 21).
+    pub raising_options: Vec<&'static str>,
 }
 
 pub fn run(ctx: &mut Context, a: StepncArgs<'_>) -> Result<i32, Failure> {
@@ -27,6 +30,12 @@ pub fn run(ctx: &mut Context, a: StepncArgs<'_>) -> Result<i32, Failure> {
         );
         return Ok(EXIT_USAGE);
     }
+    if !a.raising_options.is_empty() {
+        eprintln!(
+            "note: ignored for a Part 21 file (they apply when raising a program): {}",
+            a.raising_options.join(", ")
+        );
+    }
     let r = stepnc::read_file(a.file, &mut ctx.files)
         .map_err(|e| Failure(format!("{}: {e}", a.file.display())))?;
     ctx.print(&r.diagnostics, a.format);
@@ -34,7 +43,7 @@ pub fn run(ctx: &mut Context, a: StepncArgs<'_>) -> Result<i32, Failure> {
         summary(&r.diagnostics, a.format);
         return Ok(EXIT_INPUT_ERRORS);
     };
-    let text = stepnc::write_project(&project);
+    let text = stepnc::write_project_with_header(&project, &r.graph.header);
     emit_output(a.output, &text).map_err(|e| Failure(format!("cannot write: {e}")))?;
     Ok(EXIT_OK)
 }

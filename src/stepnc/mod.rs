@@ -24,7 +24,7 @@ use crate::span::{FileId, Span};
 use part21::P21File;
 use std::path::Path;
 
-pub use write::write_project;
+pub use write::{write_project, write_project_with_header};
 
 /// FILE_SCHEMA names of ISO 14649 ARM files (read).
 const ARM_SCHEMAS: &[&str] = &["MACHINING_SCHEMA", "MILLING_SCHEMA", "COMBINED_SCHEMA"];
@@ -124,4 +124,20 @@ fn unsupported_schema(graph: &P21File, file: FileId) -> Option<Diagnostic> {
         )
     };
     Some(d)
+}
+
+/// For fuzz targets: whatever the bytes, reading (and writing what reads,
+/// and reading that again, and querying) must not panic, hang or blow up.
+pub fn fuzz_read_write(data: &[u8]) {
+    let text = crate::driver::decode(data);
+    let r = read_text(&text, FileId(0));
+    let _ = query::query(&r.graph, "/project/main_workplan/its_elements[*]/its_id");
+    if let Some(p) = r.project {
+        let out = write_project(&p);
+        let again = read_text(&out, FileId(1));
+        assert!(
+            !again.diagnostics.iter().any(Diagnostic::is_error),
+            "cncc's own output does not read back"
+        );
+    }
 }

@@ -28,8 +28,11 @@ use std::collections::{HashMap, HashSet};
 
 /// Deepest nesting of references followed.
 const MAX_DEPTH: usize = 200;
-/// Most values a file may expand to when kept as raw subtrees.
-const MAX_RAW_NODES: usize = 2_000_000;
+/// Most values a file may expand to (following shared references over
+/// and over), beyond a multiple of what it holds.
+const MAX_EXPANSION: usize = 1_000_000;
+/// How many times over a file's values may be visited.
+const EXPANSION_FACTOR: usize = 8;
 
 /// Why a value could not be read as the typed model expects.
 #[derive(Debug)]
@@ -94,6 +97,9 @@ pub(crate) struct Rd<'f> {
     pub used: HashSet<u64>,
     pub depth: usize,
     pub raw_nodes: usize,
+    /// The budget for `raw_nodes` (bounds work on files whose shared
+    /// instances expand exponentially).
+    pub max_nodes: usize,
     /// its_id → (what, span) of features, operations, executables.
     pub ids: Vec<(String, &'static str, Span)>,
     /// The span of the reference followed last (for errors about the
@@ -115,6 +121,13 @@ impl<'f> Rd<'f> {
             used: HashSet::new(),
             depth: 0,
             raw_nodes: 0,
+            max_nodes: MAX_EXPANSION
+                + EXPANSION_FACTOR
+                    * file
+                        .instances
+                        .iter()
+                        .map(|i| i.params.len() + 1)
+                        .sum::<usize>(),
             ids: Vec::new(),
             last_ref: None,
         }
@@ -205,7 +218,7 @@ impl<'f> Rd<'f> {
         if self.depth > MAX_DEPTH {
             return Err(too_deep(span, "references nest too deeply (a cycle?)"));
         }
-        if self.raw_nodes > MAX_RAW_NODES {
+        if self.raw_nodes > self.max_nodes {
             return Err(too_deep(
                 span,
                 "the file expands to too many values (shared instances referred to over and over?)",
@@ -249,7 +262,7 @@ impl<'f> Rd<'f> {
 
     pub fn raw_value(&mut self, p: &'f Param) -> R<RawValue> {
         self.raw_nodes += 1;
-        if self.raw_nodes > MAX_RAW_NODES {
+        if self.raw_nodes > self.max_nodes {
             return Err(too_deep(p.span, "the file expands to too many values"));
         }
         Ok(match &p.value {

@@ -19,10 +19,25 @@ use std::collections::HashMap;
 
 /// The Part 21 text of a project.
 pub fn write_project(p: &Project) -> String {
+    write_project_with_header(p, &[])
+}
+
+/// The Part 21 text of a project, keeping the FILE_DESCRIPTION and
+/// FILE_NAME of the file it was read from (FILE_SCHEMA is always cncc's).
+pub fn write_project_with_header(p: &Project, original: &[Record]) -> String {
     let mut w = W::new(p);
     let root = w.project();
     let instances = w.numbered(root);
-    write_file(&header(&p.id), &instances)
+    let mut head = header(&p.id);
+    for r in head.iter_mut() {
+        if r.entity == "FILE_SCHEMA" {
+            continue;
+        }
+        if let Some(o) = original.iter().find(|o| o.entity == r.entity) {
+            r.params = o.params.clone();
+        }
+    }
+    write_file(&head, &instances)
 }
 
 fn header(name: &str) -> Vec<Record> {
