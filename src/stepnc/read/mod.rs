@@ -94,7 +94,8 @@ pub(crate) struct Rd<'f> {
     pub tools: HashMap<u64, ToolId>,
     /// Shared objects being read (a cycle guard).
     pub open: HashSet<u64>,
-    pub used: HashSet<u64>,
+    /// By position in the file's instances.
+    pub used: Vec<bool>,
     pub depth: usize,
     pub raw_nodes: usize,
     /// The budget for `raw_nodes` (bounds work on files whose shared
@@ -118,7 +119,7 @@ impl<'f> Rd<'f> {
             operations: HashMap::new(),
             tools: HashMap::new(),
             open: HashSet::new(),
-            used: HashSet::new(),
+            used: vec![false; file.instances.len()],
             depth: 0,
             raw_nodes: 0,
             max_nodes: MAX_EXPANSION
@@ -187,9 +188,10 @@ impl<'f> Rd<'f> {
     /// The instance a parameter refers to.
     pub fn inst(&mut self, p: &'f Param) -> R<&'f Instance> {
         match &p.value {
-            Value::Ref(n) => match self.file.get(*n) {
-                Some(i) => {
-                    self.used.insert(*n);
+            Value::Ref(n) => match self.file.position(*n) {
+                Some(k) => {
+                    let i = &self.file.instances[k];
+                    self.used[k] = true;
                     self.last_ref = Some(p.span);
                     Ok(i)
                 }
@@ -291,8 +293,8 @@ impl<'f> Rd<'f> {
     // ------------------------------------------------------------ reports
 
     fn report_unused(&mut self) {
-        for i in &self.file.instances {
-            if !self.used.contains(&i.id) && schema::canonical(&i.entity) != "PROJECT" {
+        for (k, i) in self.file.instances.iter().enumerate() {
+            if !self.used[k] && schema::canonical(&i.entity) != "PROJECT" {
                 self.diags.push(
                     Diagnostic::new(
                         Code::UnusedInstance,
