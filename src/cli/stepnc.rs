@@ -36,14 +36,17 @@ pub fn run(ctx: &mut Context, a: StepncArgs<'_>) -> Result<i32, Failure> {
             a.raising_options.join(", ")
         );
     }
-    let r = stepnc::read_file(a.file, &mut ctx.files)
+    let mut r = stepnc::read_file(a.file, &mut ctx.files)
         .map_err(|e| Failure(format!("{}: {e}", a.file.display())))?;
     ctx.print(&r.diagnostics, a.format);
+    // Only the header is needed from here on.
+    let header = std::mem::take(&mut r.graph.header);
+    drop(r.graph);
     let Some(project) = r.project else {
         summary(&r.diagnostics, a.format);
         return Ok(EXIT_INPUT_ERRORS);
     };
-    let text = stepnc::write_project_with_header(&project, &r.graph.header);
+    let text = stepnc::write_project_with_header(&project, &header);
     emit_output(a.output, &text).map_err(|e| Failure(format!("cannot write: {e}")))?;
     Ok(EXIT_OK)
 }
