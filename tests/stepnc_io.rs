@@ -562,3 +562,35 @@ fn normalised_ex1_snapshot() {
     let text = stepnc::write_project_with_header(&r.project.unwrap(), &r.graph.header);
     insta::assert_snapshot!("stepnc_ex1_normalised", text);
 }
+
+#[test]
+fn a_feature_kept_raw_still_round_trips() {
+    let Some(dir) = samples_dir() else { return };
+    // GRIMA-style: a mandatory name left `$` in the pocket's placement.
+    let text = std::fs::read_to_string(dir.join("ex1.stp"))
+        .unwrap()
+        .replace(
+            "#84= AXIS2_PLACEMENT_3D('POCKET1',",
+            "#84= AXIS2_PLACEMENT_3D($,",
+        );
+    let r = read_str(&text);
+    let codes: Vec<&str> = r.diagnostics.iter().map(|d| d.code.code()).collect();
+    assert!(
+        codes.contains(&"W0803") && codes.contains(&"W0802"),
+        "{codes:?}"
+    );
+    let p1 = r.project.expect("reads with warnings");
+    // The pocket's workingsteps are kept as written; the rest is typed.
+    let raw = p1
+        .main_workplan
+        .elements
+        .iter()
+        .filter(|e| matches!(e, Executable::Other(_)))
+        .count();
+    assert_eq!(raw, 2);
+    assert_eq!(p1.features.len(), 2);
+    assert_eq!(p1.operations.len(), 3);
+    let out = stepnc::write_project(&p1);
+    let p2 = read_str(&out).project.expect("output reads");
+    assert_eq!(p1, p2);
+}

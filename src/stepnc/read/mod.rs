@@ -163,11 +163,13 @@ impl<'f> Rd<'f> {
         other: impl FnOnce(Raw) -> T,
     ) -> R<T> {
         let kept = self.diags.len();
+        let mark = self.mark();
         match typed(self, i) {
             Ok(v) => Ok(v),
             Err(f) if f.invalid => Err(f),
             Err(f) => {
                 self.diags.truncate(kept);
+                self.roll_back(mark);
                 let raw = self.raw(i)?;
                 self.diags.push(
                     Diagnostic::new(
@@ -181,6 +183,31 @@ impl<'f> Rd<'f> {
                 Ok(other(raw))
             }
         }
+    }
+
+    /// The arena sizes, to undo a typed attempt that failed part way.
+    fn mark(&self) -> [usize; 5] {
+        [
+            self.p.workpieces.len(),
+            self.p.features.len(),
+            self.p.operations.len(),
+            self.p.tools.len(),
+            self.ids.len(),
+        ]
+    }
+
+    /// Forgets the shared objects read since `mark` (they belong to the
+    /// instance now kept as written).
+    fn roll_back(&mut self, m: [usize; 5]) {
+        self.p.workpieces.truncate(m[0]);
+        self.p.features.truncate(m[1]);
+        self.p.operations.truncate(m[2]);
+        self.p.tools.truncate(m[3]);
+        self.ids.truncate(m[4]);
+        self.workpieces.retain(|_, v| v.index() < m[0]);
+        self.features.retain(|_, v| v.index() < m[1]);
+        self.operations.retain(|_, v| v.index() < m[2]);
+        self.tools.retain(|_, v| v.index() < m[3]);
     }
 
     // ------------------------------------------------------------ access
