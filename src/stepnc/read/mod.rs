@@ -77,8 +77,12 @@ pub fn read_project(file: &P21File) -> (Option<Project>, Vec<Diagnostic>) {
             None
         }
     };
-    rd.report_unused();
-    rd.report_duplicate_ids();
+    // Unused instances and repeated ids mean something only in a project
+    // that was read through.
+    if !rd.diags.iter().any(Diagnostic::is_error) {
+        rd.report_unused();
+        rd.report_duplicate_ids();
+    }
     let ok = !rd.diags.iter().any(Diagnostic::is_error);
     (if ok { project } else { None }, rd.diags)
 }
@@ -148,7 +152,13 @@ impl<'f> Rd<'f> {
             } else {
                 "ISO 14649-10/11 give each attribute the entity kinds it may refer to"
             });
-        if let Some(r) = self.last_ref.filter(|r| *r != f.span && f.invalid) {
+        if f.too_deep && self.diags.iter().any(|d| d.code == Code::P21TooDeep) {
+            return;
+        }
+        if let Some(r) = self
+            .last_ref
+            .filter(|r| *r != f.span && f.invalid && !f.too_deep)
+        {
             d = d.secondary(r, "referred to here");
         }
         self.diags.push(d);
@@ -216,7 +226,12 @@ impl<'f> Rd<'f> {
     pub fn inst(&mut self, p: &'f Param) -> R<&'f Instance> {
         match &p.value {
             Value::Ref(n) => match self.file.position(*n) {
+                Some(_) if self.raw_nodes >= self.max_nodes => Err(too_deep(
+                    p.span,
+                    "the file expands to too many values (shared instances referred to over and over?)",
+                )),
                 Some(k) => {
+                    self.raw_nodes += 1;
                     let i = &self.file.instances[k];
                     self.used[k] = true;
                     self.last_ref = Some(p.span);
