@@ -82,8 +82,9 @@ pub fn read_text(text: &str, file: FileId) -> ReadResult {
 pub fn read_file(path: &Path, files: &mut SourceMap) -> std::io::Result<ReadResult> {
     let bytes = std::fs::read(path)?;
     let text = crate::driver::decode(&bytes);
-    let id = files.add(path.display().to_string(), text.clone());
-    Ok(read_text(&text, id))
+    drop(bytes);
+    let id = files.add(path.display().to_string(), text);
+    Ok(read_text(files.text(id), id))
 }
 
 /// E0806 for a FILE_SCHEMA that is not ISO 14649 ARM.
