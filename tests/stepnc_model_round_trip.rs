@@ -77,6 +77,49 @@ fn polyline() -> Curve {
     }
 }
 
+/// A line along +Z walked downwards (sense_agreement .F. in the file).
+fn line_down() -> Curve {
+    let raw_point = Raw {
+        entity: "CARTESIAN_POINT".into(),
+        params: vec![
+            RawValue::String("P".into()),
+            RawValue::List(vec![RawValue::Real(0.0); 3]),
+        ],
+    };
+    let raw_dir = Raw {
+        entity: "DIRECTION".into(),
+        params: vec![
+            RawValue::String("UP".into()),
+            RawValue::List(vec![
+                RawValue::Real(0.0),
+                RawValue::Real(0.0),
+                RawValue::Real(1.0),
+            ]),
+        ],
+    };
+    let vector = Raw {
+        entity: "VECTOR".into(),
+        params: vec![
+            RawValue::String("V".into()),
+            RawValue::Instance(Box::new(raw_dir)),
+            RawValue::Real(10.0),
+        ],
+    };
+    Curve::Line {
+        name: "PLUNGE".into(),
+        start: pt(0.0, 0.0, 5.0),
+        end: pt(0.0, 0.0, -5.0),
+        basis: Raw {
+            entity: "LINE".into(),
+            params: vec![
+                RawValue::String("AXIS".into()),
+                RawValue::Instance(Box::new(raw_point)),
+                RawValue::Instance(Box::new(vector)),
+            ],
+        },
+    }
+}
+
 fn base(kind: ToolpathType) -> ToolpathBase {
     ToolpathBase {
         priority: true,
@@ -317,6 +360,11 @@ fn project() -> Project {
                         transition: "DISCONTINUOUS".into(),
                         same_sense: false,
                         curve: polyline(),
+                    },
+                    CompositeSegment {
+                        transition: "CONTINUOUS".into(),
+                        same_sense: true,
+                        curve: line_down(),
                     },
                 ],
                 self_intersect: None,
@@ -565,4 +613,10 @@ fn every_variant_writes_and_reads_back() {
         );
     }
     assert_eq!(stepnc::write_project(&p2), text);
+    assert!(text.contains("TRIMMED_CURVE('PLUNGE',"), "{text}");
+    let plunge = text
+        .lines()
+        .find(|l| l.contains("TRIMMED_CURVE('PLUNGE',"))
+        .unwrap();
+    assert!(plunge.ends_with(",.F.,.CARTESIAN.);"), "{plunge}");
 }

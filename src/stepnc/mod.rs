@@ -11,6 +11,7 @@
 
 pub mod diff;
 pub mod model;
+pub mod model_geom;
 pub mod part21;
 pub mod query;
 pub mod read;
