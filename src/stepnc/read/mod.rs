@@ -354,6 +354,8 @@ impl<'f> Rd<'f> {
         let mut out = Vec::new();
         for (id, what, span) in &self.ids {
             match seen.get(&(id.as_str(), *what)) {
+                // The same instance met twice (a workingstep listed twice).
+                Some(first) if first == span => {}
                 Some(first) => out.push(
                     Diagnostic::new(
                         Code::DuplicateItsId,
