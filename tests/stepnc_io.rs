@@ -595,3 +595,26 @@ fn a_feature_kept_raw_still_round_trips() {
     let p2 = read_str(&out).project.expect("output reads");
     assert_eq!(p1, p2);
 }
+
+#[test]
+fn fast_path_reads_exactly_what_the_grammar_reads() {
+    use stepnc::part21::parse::parse_with;
+    let mut paths: Vec<PathBuf> = std::fs::read_dir("tests/stepnc/bad")
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    if let Some(dir) = samples_dir() {
+        for s in ARM_SAMPLES.iter().chain(["test_program.stpnc"].iter()) {
+            paths.push(dir.join(s));
+        }
+    }
+    paths.sort();
+    for p in paths {
+        let text = String::from_utf8_lossy(&std::fs::read(&p).unwrap()).into_owned();
+        let id = cncc::span::FileId(0);
+        let (fast, fd) = parse_with(&text, id, true);
+        let (slow, sd) = parse_with(&text, id, false);
+        assert_eq!(fast, slow, "{}", p.display());
+        assert_eq!(fd, sd, "{}", p.display());
+    }
+}

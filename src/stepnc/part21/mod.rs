@@ -2,6 +2,7 @@
 //! with spans, its reader ([`parse`], LALRPOP grammar `grammar/part21.lalrpop`
 //! over the logos [`lexer`]) and its writer ([`text`]).
 
+mod fast;
 pub mod lexer;
 pub mod parse;
 pub mod text;

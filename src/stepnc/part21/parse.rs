@@ -62,6 +62,12 @@ impl Section {
 /// Reads a Part 21 text; diagnostics for every statement that cannot be
 /// read (it is skipped) and for a broken file structure.
 pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
+    parse_with(src, file, true)
+}
+
+/// [`parse`], with or without the fast path for well-formed statements
+/// (off only in the test comparing the two).
+pub fn parse_with(src: &str, file: FileId, fast_path: bool) -> (P21File, Vec<Diagnostic>) {
     let mut diags = Vec::new();
     let mut out = P21File::default();
     let mut stmt: Vec<Spanned> = Vec::new();
@@ -82,7 +88,13 @@ pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
             }
             Ok((_, Tok::Semi, b)) => {
                 let s = std::mem::take(&mut stmt);
-                section = statement(src, file, &parser, &s, b, section, &mut out, &mut diags);
+                let cx = Cx {
+                    src,
+                    file,
+                    parser: &parser,
+                    fast_path,
+                };
+                section = statement(&cx, &s, b, section, &mut out, &mut diags);
             }
             Ok(t) => stmt.push(t),
         }
@@ -112,17 +124,23 @@ pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
     (out, diags)
 }
 
-#[allow(clippy::too_many_arguments)]
-fn statement(
-    src: &str,
+/// What every statement is read with.
+struct Cx<'a> {
+    src: &'a str,
     file: FileId,
-    parser: &grammar::StatementParser,
+    parser: &'a grammar::StatementParser,
+    fast_path: bool,
+}
+
+fn statement(
+    cx: &Cx<'_>,
     toks: &[Spanned],
     end: usize,
     section: Section,
     out: &mut P21File,
     diags: &mut Vec<Diagnostic>,
 ) -> Section {
+    let (src, file) = (cx.src, cx.file);
     if let Some(&(a, _, b)) = too_deep(toks) {
         diags.push(
             Diagnostic::new(
@@ -166,8 +184,19 @@ fn statement(
             return section;
         }
     }
-    let feed = toks.iter().map(|&t| Ok::<_, (usize, usize, String)>(t));
-    match parser.parse(src, file, feed) {
+    let fast = if cx.fast_path {
+        super::fast::statement(src, file, toks)
+    } else {
+        None
+    };
+    let parsed = match fast {
+        Some(stmt) => Ok(stmt),
+        None => {
+            let feed = toks.iter().map(|&t| Ok::<_, (usize, usize, String)>(t));
+            cx.parser.parse(src, file, feed)
+        }
+    };
+    match parsed {
         Ok(Stmt::Header(r)) if section == Section::Header => out.header.push(r),
         Ok(Stmt::Instance { id, id_span, parts }) if section == Section::Data => {
             add_instance(out, id, id_span, parts, diags)
