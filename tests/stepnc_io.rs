@@ -553,6 +553,13 @@ fn mangled_files_never_panic() {
         let mut m = bytes.to_vec();
         m[at] = marks[k % marks.len()].as_bytes()[0];
         stepnc::fuzz_read_write(&m);
+        let text = String::from_utf8_lossy(&m);
+        let id = cncc::span::FileId(0);
+        assert_eq!(
+            stepnc::part21::parse::parse_with(&text, id, true),
+            stepnc::part21::parse::parse_with(&text, id, false),
+            "fast path and grammar differ after damage at {at}"
+        );
     }
 }
 
