@@ -222,6 +222,14 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
+    /// Print the values an attribute path reaches in a STEP-NC file, such
+    /// as /project/main_workplan/its_elements[*]/its_feature/its_id.
+    Query {
+        file: PathBuf,
+        path: String,
+        #[arg(long, value_enum, default_value_t = Format::Human)]
+        format: Format,
+    },
     /// List the known dialects and their capabilities.
     Dialects,
     /// Explain a diagnostic code (`E0201`) or name (`two-motion-codes`);

@@ -39,6 +39,10 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
         a.options.tool_table = table;
     }
     for path in a.files {
+        if crate::stepnc::is_part21(path, &read_head(path)?) {
+            all.extend(crate::cli::stepnc::check_file(ctx, path)?);
+            continue;
+        }
         all.extend(check_file(ctx, path, &a)?);
     }
     ctx.print(&all, a.format);

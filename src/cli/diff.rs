@@ -49,10 +49,7 @@ pub fn is_stepnc(path: &Path) -> bool {
 
 pub fn run(ctx: &mut Context, mut a: DiffArgs<'_>) -> Result<i32, Failure> {
     match (is_stepnc(a.a), is_stepnc(a.b)) {
-        // TODO(stepnc merge): call `crate::stepnc::diff_files(a.a, a.b)`
-        // here, written in parallel by the STEP-NC engineer; the lead wires
-        // it at merge.
-        (true, true) => return Err(Failure("STEP-NC diff not built yet".into())),
+        (true, true) => return stepnc_diff(ctx, a.a, a.b, a.format),
         (true, false) | (false, true) => return Err(Failure(
             "cannot compare a STEP-NC file with a program: give two programs or two STEP-NC files"
                 .into(),
@@ -224,4 +221,36 @@ fn json(files: &SourceMap, c: &Comparison) -> String {
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
     s.push('\n');
     s
+}
+
+/// Two STEP-NC files: the semantic difference of their models
+/// ([`crate::stepnc::diff`]), one line a difference; exit 0 same, 1 not.
+fn stepnc_diff(
+    ctx: &mut Context,
+    a: &std::path::Path,
+    b: &std::path::Path,
+    format: Format,
+) -> Result<i32, Failure> {
+    match crate::stepnc::diff::diff_files(a, b) {
+        Ok(report) => {
+            for l in &report.lines {
+                println!("{l}");
+            }
+            if report.same {
+                println!("same: {} and {} say the same", a.display(), b.display());
+                Ok(EXIT_OK)
+            } else {
+                println!("{} difference(s)", report.lines.len());
+                Ok(EXIT_INPUT_ERRORS)
+            }
+        }
+        Err(e) => {
+            if let Some(io) = e.io {
+                return Err(Failure(io));
+            }
+            ctx.files = e.files;
+            ctx.print(&e.diagnostics, format);
+            Ok(EXIT_INPUT_ERRORS)
+        }
+    }
 }

@@ -11,8 +11,10 @@ pub mod output;
 pub mod plot;
 pub mod port;
 pub mod post;
+pub mod query;
 pub mod raise;
 pub mod stats;
+pub mod stepnc;
 
 use args::{Cli, Command, Format};
 use context::{Context, Failure, EXIT_USAGE};
@@ -26,6 +28,7 @@ pub fn run(cli: Cli) -> i32 {
         | Command::Post { format, .. }
         | Command::Canon { format, .. }
         | Command::Stepnc { format, .. }
+        | Command::Query { format, .. }
         | Command::Stats { format, .. }
         | Command::Diff { format, .. }
         | Command::Plot { format, .. } => *format,
@@ -116,7 +119,7 @@ pub fn run(cli: Cli) -> i32 {
             output,
             format,
             run,
-        } => raise::run(
+        } if !is_step_file(file) => raise::run(
             &mut ctx,
             raise::RaiseArgs {
                 file,
@@ -200,6 +203,35 @@ pub fn run(cli: Cli) -> i32 {
                 options: run.options(),
             },
         ),
+        Command::Stepnc {
+            file,
+            output,
+            format,
+            cc1,
+            cc2,
+            stock,
+            dialect,
+            tool_table,
+            ..
+        } => stepnc::run(
+            &mut ctx,
+            stepnc::StepncArgs {
+                file,
+                output: output.as_deref(),
+                format: *format,
+                raising_options: [
+                    (*cc1, "--cc1"),
+                    (*cc2, "--cc2"),
+                    (stock.is_some(), "--stock"),
+                    (dialect.is_some(), "--dialect"),
+                    (tool_table.is_some(), "--tool-table"),
+                ]
+                .into_iter()
+                .filter_map(|(given, name)| given.then_some(name))
+                .collect(),
+            },
+        ),
+        Command::Query { file, path, format } => query::run(&mut ctx, file, path, *format),
         Command::Dialects => info::dialects(&ctx),
         Command::Explain { code } => info::explain(code.as_deref()),
     };
@@ -210,4 +242,11 @@ pub fn run(cli: Cli) -> i32 {
             EXIT_USAGE
         }
     }
+}
+
+/// Is this file STEP-NC Part 21 (by extension or its first line), rather
+/// than a program?
+fn is_step_file(path: &std::path::Path) -> bool {
+    let head = check::read_head(path).unwrap_or_default();
+    crate::stepnc::is_part21(path, &head)
 }

@@ -11,6 +11,7 @@
 
 pub mod diff;
 pub mod model;
+pub mod model_geom;
 pub mod part21;
 pub mod query;
 pub mod read;
@@ -24,7 +25,7 @@ use crate::span::{FileId, Span};
 use part21::P21File;
 use std::path::Path;
 
-pub use write::write_project;
+pub use write::{write_project, write_project_with_header};
 
 /// FILE_SCHEMA names of ISO 14649 ARM files (read).
 const ARM_SCHEMAS: &[&str] = &["MACHINING_SCHEMA", "MILLING_SCHEMA", "COMBINED_SCHEMA"];
@@ -82,8 +83,9 @@ pub fn read_text(text: &str, file: FileId) -> ReadResult {
 pub fn read_file(path: &Path, files: &mut SourceMap) -> std::io::Result<ReadResult> {
     let bytes = std::fs::read(path)?;
     let text = crate::driver::decode(&bytes);
-    let id = files.add(path.display().to_string(), text.clone());
-    Ok(read_text(&text, id))
+    drop(bytes);
+    let id = files.add(path.display().to_string(), text);
+    Ok(read_text(files.text(id), id))
 }
 
 /// E0806 for a FILE_SCHEMA that is not ISO 14649 ARM.
@@ -124,4 +126,20 @@ fn unsupported_schema(graph: &P21File, file: FileId) -> Option<Diagnostic> {
         )
     };
     Some(d)
+}
+
+/// For fuzz targets: whatever the bytes, reading (and writing what reads,
+/// and reading that again, and querying) must not panic, hang or blow up.
+pub fn fuzz_read_write(data: &[u8]) {
+    let text = crate::driver::decode(data);
+    let r = read_text(&text, FileId(0));
+    let _ = query::query(&r.graph, "/project/main_workplan/its_elements[*]/its_id");
+    if let Some(p) = r.project {
+        let out = write_project(&p);
+        let again = read_text(&out, FileId(1));
+        assert!(
+            !again.diagnostics.iter().any(Diagnostic::is_error),
+            "cncc's own output does not read back"
+        );
+    }
 }

@@ -54,19 +54,21 @@ pub enum Tok {
     OpenString,
 }
 
-/// Tokens of a whole text, with ranges; `Err(range)` for characters that
-/// start no token.
-pub fn tokens(src: &str) -> Vec<Result<(usize, Tok, usize), (usize, usize)>> {
+/// A token with its range, or the range of text that starts none.
+pub type Lexed = Result<(usize, Tok, usize), (usize, usize)>;
+
+/// Tokens of a whole text, lazily, with ranges; `Err(range)` for
+/// characters that start no token.
+pub fn tokens(src: &str) -> impl Iterator<Item = Lexed> + '_ {
     let mut lex = Tok::lexer(src);
-    let mut out = Vec::new();
-    while let Some(t) = lex.next() {
+    std::iter::from_fn(move || {
+        let t = lex.next()?;
         let r = lex.span();
-        out.push(match t {
+        Some(match t {
             Ok(t) => Ok((r.start, t, r.end)),
             Err(()) => Err((r.start, r.end)),
-        });
-    }
-    out
+        })
+    })
 }
 
 /// An INTEGER or REAL token's value.
@@ -171,7 +173,6 @@ mod tests {
     #[test]
     fn tokens_of_an_instance() {
         let t: Vec<Tok> = tokens("#1=A('x',1.,.T.,$,(#2)); /* c */")
-            .into_iter()
             .map(|r| r.unwrap().1)
             .collect();
         assert_eq!(t.len(), 17);

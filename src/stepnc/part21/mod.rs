@@ -2,6 +2,7 @@
 //! with spans, its reader ([`parse`], LALRPOP grammar `grammar/part21.lalrpop`
 //! over the logos [`lexer`]) and its writer ([`text`]).
 
+mod fast;
 pub mod lexer;
 pub mod parse;
 pub mod text;
@@ -94,15 +95,17 @@ pub enum Stmt {
 pub struct P21File {
     pub header: Vec<Record>,
     pub instances: Vec<Instance>,
-    index: HashMap<u64, usize>,
+    /// Position + 1 by instance number, for the usual dense numbering.
+    dense: Vec<u32>,
+    /// Positions of numbers too large for `dense`.
+    sparse: HashMap<u64, usize>,
 }
 
 impl P21File {
     pub fn new(header: Vec<Record>, instances: Vec<Instance>) -> P21File {
         let mut f = P21File {
             header,
-            instances: Vec::new(),
-            index: HashMap::new(),
+            ..P21File::default()
         };
         for i in instances {
             f.push(i);
@@ -113,12 +116,34 @@ impl P21File {
     /// Adds an instance; a second one with the same number is kept in the
     /// list but the index keeps the first (the reader reports it).
     pub fn push(&mut self, inst: Instance) {
-        self.index.entry(inst.id).or_insert(self.instances.len());
+        if self.position(inst.id).is_none() {
+            let pos = self.instances.len();
+            let id = inst.id;
+            // Numbers up to a few times the count (plus slack) go in the
+            // vector; a file numbering far apart uses the map.
+            if id < 4 * (pos as u64 + 1024) && pos < u32::MAX as usize {
+                let k = id as usize;
+                if self.dense.len() <= k {
+                    self.dense.resize(k + 1, 0);
+                }
+                self.dense[k] = pos as u32 + 1;
+            } else {
+                self.sparse.insert(id, pos);
+            }
+        }
         self.instances.push(inst);
     }
 
+    /// Where instance `#id` is in `instances`.
+    pub fn position(&self, id: u64) -> Option<usize> {
+        match self.dense.get(id as usize) {
+            Some(&p) if p > 0 => Some(p as usize - 1),
+            _ => self.sparse.get(&id).copied(),
+        }
+    }
+
     pub fn get(&self, id: u64) -> Option<&Instance> {
-        self.index.get(&id).map(|&i| &self.instances[i])
+        self.position(id).map(|i| &self.instances[i])
     }
 
     /// The FILE_SCHEMA names, upper case.

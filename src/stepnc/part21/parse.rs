@@ -16,6 +16,28 @@ lalrpop_util::lalrpop_mod!(
 
 type Spanned = (usize, Tok, usize);
 
+/// Deepest parenthesis nesting read (values are freed and written
+/// recursively).
+const MAX_NESTING: usize = 64;
+
+/// The `(` that nests too deep, if any.
+fn too_deep(toks: &[Spanned]) -> Option<&Spanned> {
+    let mut depth = 0usize;
+    for t in toks {
+        match t.1 {
+            Tok::LParen => {
+                depth += 1;
+                if depth > MAX_NESTING {
+                    return Some(t);
+                }
+            }
+            Tok::RParen => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    None
+}
+
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 enum Section {
     Before,
@@ -25,27 +47,54 @@ enum Section {
     After,
 }
 
+impl Section {
+    fn place(self) -> &'static str {
+        match self {
+            Section::Before => "before its HEADER section",
+            Section::Header => "inside its HEADER section",
+            Section::Between => "after a section's ENDSEC",
+            Section::Data => "inside its DATA section",
+            Section::After => "after END-ISO-10303-21",
+        }
+    }
+}
+
 /// Reads a Part 21 text; diagnostics for every statement that cannot be
 /// read (it is skipped) and for a broken file structure.
 pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
+    parse_with(src, file, true)
+}
+
+/// [`parse`], with or without the fast path for well-formed statements
+/// (off only in the test comparing the two).
+pub fn parse_with(src: &str, file: FileId, fast_path: bool) -> (P21File, Vec<Diagnostic>) {
     let mut diags = Vec::new();
     let mut out = P21File::default();
     let mut stmt: Vec<Spanned> = Vec::new();
     let mut section = Section::Before;
     let parser = grammar::StatementParser::new();
+    let mut open_string = false;
     for t in tokens(src) {
         match t {
             Err((a, b)) => diags.push(unreadable(file, a, b, "a character that starts no token")),
             Ok((a, Tok::OpenComment, _)) => {
                 diags.push(unreadable(file, a, a + 2, "this comment is never closed"))
             }
-            Ok((a, Tok::OpenString, b)) => {
-                diags.push(unreadable(file, a, b, "this string is never closed"));
+            Ok((a, Tok::OpenString, _)) => {
+                // It runs to the end of the file.
+                diags.push(unreadable(file, a, a + 1, "this string is never closed"));
                 stmt.clear();
+                open_string = true;
             }
             Ok((_, Tok::Semi, b)) => {
                 let s = std::mem::take(&mut stmt);
-                section = statement(src, file, &parser, &s, b, section, &mut out, &mut diags);
+                let cx = Cx {
+                    src,
+                    file,
+                    parser: &parser,
+                    fast_path,
+                };
+                section = statement(&cx, &s, b, section, &mut out, &mut diags);
             }
             Ok(t) => stmt.push(t),
         }
@@ -58,7 +107,7 @@ pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
             "the file ends inside a statement (a `;` is missing)",
         ));
     }
-    if section != Section::After {
+    if section != Section::After && !open_string {
         let at = src.len();
         diags.push(
             Diagnostic::new(
@@ -67,24 +116,42 @@ pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
             )
             .primary(Span::new(file, at, at), "file ends here")
             .help(format!(
-                "the file stops in the {section:?} part; a truncated file?"
+                "the file stops {}; a truncated file?",
+                section.place()
             )),
         );
     }
     (out, diags)
 }
 
-#[allow(clippy::too_many_arguments)]
-fn statement(
-    src: &str,
+/// What every statement is read with.
+struct Cx<'a> {
+    src: &'a str,
     file: FileId,
-    parser: &grammar::StatementParser,
+    parser: &'a grammar::StatementParser,
+    fast_path: bool,
+}
+
+fn statement(
+    cx: &Cx<'_>,
     toks: &[Spanned],
     end: usize,
     section: Section,
     out: &mut P21File,
     diags: &mut Vec<Diagnostic>,
 ) -> Section {
+    let (src, file) = (cx.src, cx.file);
+    if let Some(&(a, _, b)) = too_deep(toks) {
+        diags.push(
+            Diagnostic::new(
+                Code::P21TooDeep,
+                format!("parentheses nest more than {MAX_NESTING} deep"),
+            )
+            .primary(Span::new(file, a, b), "too deep")
+            .help("ISO 14649 data nests lists a few levels at most; this statement is skipped"),
+        );
+        return section;
+    }
     let Some(&(a, first, b)) = toks.first() else {
         diags.push(syntax(file, end - 1, end, "an empty statement"));
         return section;
@@ -117,8 +184,19 @@ fn statement(
             return section;
         }
     }
-    let feed = toks.iter().map(|&t| Ok::<_, (usize, usize, String)>(t));
-    match parser.parse(src, file, feed) {
+    let fast = if cx.fast_path {
+        super::fast::statement(src, file, toks)
+    } else {
+        None
+    };
+    let parsed = match fast {
+        Some(stmt) => Ok(stmt),
+        None => {
+            let feed = toks.iter().map(|&t| Ok::<_, (usize, usize, String)>(t));
+            cx.parser.parse(src, file, feed)
+        }
+    };
+    match parsed {
         Ok(Stmt::Header(r)) if section == Section::Header => out.header.push(r),
         Ok(Stmt::Instance { id, id_span, parts }) if section == Section::Data => {
             add_instance(out, id, id_span, parts, diags)

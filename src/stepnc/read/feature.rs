@@ -68,6 +68,7 @@ impl<'f> Rd<'f> {
         let kept = self.diags.len();
         match self.typed_feature_kind(i) {
             Ok(k) => Ok(k),
+            Err(f) if f.invalid => Err(f),
             Err(f) => {
                 self.diags.truncate(kept);
                 let mut params = Vec::new();

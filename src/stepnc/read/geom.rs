@@ -194,12 +194,26 @@ impl<'f> Rd<'f> {
                     sense,
                 })
             }
-            "LINE" if sense => Ok(Curve::Line {
-                name,
-                start,
-                end,
-                basis: self.raw(basis)?,
-            }),
+            "LINE" => {
+                // The model keeps no sense flag for a line: it is the one
+                // the geometry gives (start → end along the line's vector
+                // or against it), and the writer derives it again.
+                let basis = self.raw(basis)?;
+                if crate::stepnc::model_geom::line_sense(&basis, &start, &end).unwrap_or(true)
+                    != sense
+                {
+                    return Err(fail(
+                        arg(i, 4)?.span,
+                        "sense_agreement disagrees with the line's direction",
+                    ));
+                }
+                Ok(Curve::Line {
+                    name,
+                    start,
+                    end,
+                    basis,
+                })
+            }
             _ => Err(fail(
                 basis.entity_span,
                 "a trimmed curve of this basis is not modelled",

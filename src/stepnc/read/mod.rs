@@ -11,8 +11,13 @@
 mod feature;
 mod geom;
 mod operation;
+mod strategy;
 mod structure;
 mod tool;
+mod toolpath;
+mod values;
+
+pub(crate) use values::*;
 
 use super::model::*;
 use super::part21::{Instance, P21File, Param, Value};
@@ -23,14 +28,22 @@ use std::collections::{HashMap, HashSet};
 
 /// Deepest nesting of references followed.
 const MAX_DEPTH: usize = 200;
-/// Most values a file may expand to when kept as raw subtrees.
-const MAX_RAW_NODES: usize = 2_000_000;
+/// Most values a file may expand to (following shared references over
+/// and over), beyond a multiple of what it holds.
+const MAX_EXPANSION: usize = 1_000_000;
+/// How many times over a file's values may be visited.
+const EXPANSION_FACTOR: usize = 8;
 
 /// Why a value could not be read as the typed model expects.
 #[derive(Debug)]
 pub(crate) struct Fail {
     pub msg: String,
     pub span: Span,
+    /// The file breaks the schema (an attribute refers to an entity of a
+    /// kind its type does not allow), or nests too deep: an error, never
+    /// kept as raw.
+    pub invalid: bool,
+    pub too_deep: bool,
 }
 
 pub(crate) type R<T> = Result<T, Fail>;
@@ -64,8 +77,12 @@ pub fn read_project(file: &P21File) -> (Option<Project>, Vec<Diagnostic>) {
             None
         }
     };
-    rd.report_unused();
-    rd.report_duplicate_ids();
+    // Unused instances and repeated ids mean something only in a project
+    // that was read through.
+    if !rd.diags.iter().any(Diagnostic::is_error) {
+        rd.report_unused();
+        rd.report_duplicate_ids();
+    }
     let ok = !rd.diags.iter().any(Diagnostic::is_error);
     (if ok { project } else { None }, rd.diags)
 }
@@ -81,11 +98,18 @@ pub(crate) struct Rd<'f> {
     pub tools: HashMap<u64, ToolId>,
     /// Shared objects being read (a cycle guard).
     pub open: HashSet<u64>,
-    pub used: HashSet<u64>,
+    /// By position in the file's instances.
+    pub used: Vec<bool>,
     pub depth: usize,
     pub raw_nodes: usize,
+    /// The budget for `raw_nodes` (bounds work on files whose shared
+    /// instances expand exponentially).
+    pub max_nodes: usize,
     /// its_id → (what, span) of features, operations, executables.
     pub ids: Vec<(String, &'static str, Span)>,
+    /// The span of the reference followed last (for errors about the
+    /// instance it leads to).
+    pub last_ref: Option<Span>,
 }
 
 impl<'f> Rd<'f> {
@@ -99,20 +123,45 @@ impl<'f> Rd<'f> {
             operations: HashMap::new(),
             tools: HashMap::new(),
             open: HashSet::new(),
-            used: HashSet::new(),
+            used: vec![false; file.instances.len()],
             depth: 0,
             raw_nodes: 0,
+            max_nodes: MAX_EXPANSION
+                + EXPANSION_FACTOR
+                    * file
+                        .instances
+                        .iter()
+                        .map(|i| i.params.len() + 1)
+                        .sum::<usize>(),
             ids: Vec::new(),
+            last_ref: None,
         }
     }
 
     /// A failure that stops a part of the model being read.
     pub fn hard(&mut self, f: Fail) {
-        self.diags.push(
-            Diagnostic::new(Code::StepncModel, f.msg)
-                .primary(f.span, "here")
-                .help("ISO 14649-10/11 give each attribute the entity kinds it may refer to"),
-        );
+        let code = if f.too_deep {
+            Code::P21TooDeep
+        } else {
+            Code::StepncModel
+        };
+        let mut d = Diagnostic::new(code, f.msg)
+            .primary(f.span, "here")
+            .help(if f.too_deep {
+                "ISO 14649 data is a shallow tree; check the references for a cycle"
+            } else {
+                "ISO 14649-10/11 give each attribute the entity kinds it may refer to"
+            });
+        if f.too_deep && self.diags.iter().any(|d| d.code == Code::P21TooDeep) {
+            return;
+        }
+        if let Some(r) = self
+            .last_ref
+            .filter(|r| *r != f.span && f.invalid && !f.too_deep)
+        {
+            d = d.secondary(r, "referred to here");
+        }
+        self.diags.push(d);
     }
 
     /// Reads with `typed`; when that fails, keeps the instance as written
@@ -124,10 +173,13 @@ impl<'f> Rd<'f> {
         other: impl FnOnce(Raw) -> T,
     ) -> R<T> {
         let kept = self.diags.len();
+        let mark = self.mark();
         match typed(self, i) {
             Ok(v) => Ok(v),
+            Err(f) if f.invalid => Err(f),
             Err(f) => {
                 self.diags.truncate(kept);
+                self.roll_back(mark);
                 let raw = self.raw(i)?;
                 self.diags.push(
                     Diagnostic::new(
@@ -143,14 +195,46 @@ impl<'f> Rd<'f> {
         }
     }
 
+    /// The arena sizes, to undo a typed attempt that failed part way.
+    fn mark(&self) -> [usize; 5] {
+        [
+            self.p.workpieces.len(),
+            self.p.features.len(),
+            self.p.operations.len(),
+            self.p.tools.len(),
+            self.ids.len(),
+        ]
+    }
+
+    /// Forgets the shared objects read since `mark` (they belong to the
+    /// instance now kept as written).
+    fn roll_back(&mut self, m: [usize; 5]) {
+        self.p.workpieces.truncate(m[0]);
+        self.p.features.truncate(m[1]);
+        self.p.operations.truncate(m[2]);
+        self.p.tools.truncate(m[3]);
+        self.ids.truncate(m[4]);
+        self.workpieces.retain(|_, v| v.index() < m[0]);
+        self.features.retain(|_, v| v.index() < m[1]);
+        self.operations.retain(|_, v| v.index() < m[2]);
+        self.tools.retain(|_, v| v.index() < m[3]);
+    }
+
     // ------------------------------------------------------------ access
 
     /// The instance a parameter refers to.
     pub fn inst(&mut self, p: &'f Param) -> R<&'f Instance> {
         match &p.value {
-            Value::Ref(n) => match self.file.get(*n) {
-                Some(i) => {
-                    self.used.insert(*n);
+            Value::Ref(n) => match self.file.position(*n) {
+                Some(_) if self.raw_nodes >= self.max_nodes => Err(too_deep(
+                    p.span,
+                    "the file expands to too many values (shared instances referred to over and over?)",
+                )),
+                Some(k) => {
+                    self.raw_nodes += 1;
+                    let i = &self.file.instances[k];
+                    self.used[k] = true;
+                    self.last_ref = Some(p.span);
                     Ok(i)
                 }
                 None => Err(fail(p.span, format!("#{n} is not defined"))),
@@ -174,8 +258,15 @@ impl<'f> Rd<'f> {
 
     pub fn enter(&mut self, span: Span) -> R<()> {
         self.depth += 1;
+        self.raw_nodes += 1;
         if self.depth > MAX_DEPTH {
-            return Err(fail(span, "references nest too deeply (a cycle?)"));
+            return Err(too_deep(span, "references nest too deeply (a cycle?)"));
+        }
+        if self.raw_nodes > self.max_nodes {
+            return Err(too_deep(
+                span,
+                "the file expands to too many values (shared instances referred to over and over?)",
+            ));
         }
         Ok(())
     }
@@ -215,8 +306,8 @@ impl<'f> Rd<'f> {
 
     pub fn raw_value(&mut self, p: &'f Param) -> R<RawValue> {
         self.raw_nodes += 1;
-        if self.raw_nodes > MAX_RAW_NODES {
-            return Err(fail(p.span, "the file expands to too many values"));
+        if self.raw_nodes > self.max_nodes {
+            return Err(too_deep(p.span, "the file expands to too many values"));
         }
         Ok(match &p.value {
             Value::Null => RawValue::Null,
@@ -244,8 +335,8 @@ impl<'f> Rd<'f> {
     // ------------------------------------------------------------ reports
 
     fn report_unused(&mut self) {
-        for i in &self.file.instances {
-            if !self.used.contains(&i.id) && schema::canonical(&i.entity) != "PROJECT" {
+        for (k, i) in self.file.instances.iter().enumerate() {
+            if !self.used[k] && schema::canonical(&i.entity) != "PROJECT" {
                 self.diags.push(
                     Diagnostic::new(
                         Code::UnusedInstance,
@@ -263,6 +354,8 @@ impl<'f> Rd<'f> {
         let mut out = Vec::new();
         for (id, what, span) in &self.ids {
             match seen.get(&(id.as_str(), *what)) {
+                // The same instance met twice (a workingstep listed twice).
+                Some(first) if first == span => {}
                 Some(first) => out.push(
                     Diagnostic::new(
                         Code::DuplicateItsId,
@@ -278,116 +371,5 @@ impl<'f> Rd<'f> {
             }
         }
         self.diags.extend(out);
-    }
-}
-
-// ---------------------------------------------------------------- values
-
-pub(crate) fn fail(span: Span, msg: impl Into<String>) -> Fail {
-    Fail {
-        msg: msg.into(),
-        span,
-    }
-}
-
-/// The canonical entity name of an instance.
-pub(crate) fn ent(i: &Instance) -> &str {
-    schema::canonical(&i.entity)
-}
-
-/// Parameter `k` of an instance (validation has checked the count, but a
-/// shorter instance still fails cleanly).
-pub(crate) fn arg(i: &Instance, k: usize) -> R<&Param> {
-    i.params
-        .get(k)
-        .ok_or_else(|| fail(i.span, format!("{} has no parameter {}", i.entity, k + 1)))
-}
-
-pub(crate) fn real(p: &Param) -> R<f64> {
-    match p.value {
-        Value::Real(v) => Ok(v),
-        Value::Int(v) => Ok(v as f64),
-        Value::Null => Err(fail(p.span, "a mandatory number is `$`")),
-        _ => Err(fail(p.span, "expected a number")),
-    }
-}
-
-pub(crate) fn opt_real(p: &Param) -> R<Option<f64>> {
-    match p.value {
-        Value::Null => Ok(None),
-        _ => real(p).map(Some),
-    }
-}
-
-pub(crate) fn int(p: &Param) -> R<i64> {
-    match p.value {
-        Value::Int(v) => Ok(v),
-        _ => Err(fail(p.span, "expected an integer")),
-    }
-}
-
-pub(crate) fn opt_int(p: &Param) -> R<Option<i64>> {
-    match p.value {
-        Value::Null => Ok(None),
-        _ => int(p).map(Some),
-    }
-}
-
-pub(crate) fn string(p: &Param) -> R<String> {
-    match &p.value {
-        Value::Str(s) => Ok(s.clone()),
-        Value::Null => Err(fail(p.span, "a mandatory string is `$`")),
-        _ => Err(fail(p.span, "expected a string")),
-    }
-}
-
-pub(crate) fn boolean(p: &Param) -> R<bool> {
-    match &p.value {
-        Value::Enum(e) if e == "T" => Ok(true),
-        Value::Enum(e) if e == "F" => Ok(false),
-        Value::Null => Err(fail(p.span, "a mandatory boolean is `$`")),
-        _ => Err(fail(p.span, "expected .T. or .F.")),
-    }
-}
-
-pub(crate) fn opt_bool(p: &Param) -> R<Option<bool>> {
-    match p.value {
-        Value::Null => Ok(None),
-        _ => boolean(p).map(Some),
-    }
-}
-
-pub(crate) fn enumeration(p: &Param) -> R<&str> {
-    match &p.value {
-        Value::Enum(e) => Ok(e),
-        Value::Null => Err(fail(p.span, "a mandatory enumeration is `$`")),
-        _ => Err(fail(p.span, "expected an enumeration")),
-    }
-}
-
-pub(crate) fn opt_enum(p: &Param) -> R<Option<&str>> {
-    match p.value {
-        Value::Null => Ok(None),
-        _ => enumeration(p).map(Some),
-    }
-}
-
-pub(crate) fn list(p: &Param) -> R<&[Param]> {
-    match &p.value {
-        Value::List(l) => Ok(l),
-        _ => Err(fail(p.span, "expected a list")),
-    }
-}
-
-/// Checks an instance's entity against the accepted names.
-pub(crate) fn expect<'i>(i: &'i Instance, names: &[&str], what: &str) -> R<&'i str> {
-    let e = ent(i);
-    if names.contains(&e) {
-        Ok(e)
-    } else {
-        Err(fail(
-            i.entity_span,
-            format!("expected {what}, found {} (#{})", i.entity, i.id),
-        ))
     }
 }

@@ -17,7 +17,7 @@ impl<'f> Rd<'f> {
             return Ok(id);
         }
         if schema::entity(&i.entity).and_then(|d| d.attr_index("its_tool")) != Some(5) {
-            return Err(fail(
+            return Err(invalid(
                 i.entity_span,
                 format!(
                     "expected a machining operation, found {} (#{})",
@@ -49,6 +49,7 @@ impl<'f> Rd<'f> {
         let kept = self.diags.len();
         let kind = match self.operation_kind(i) {
             Ok(k) => k,
+            Err(f) if f.invalid => return Err(f),
             Err(f) => {
                 self.diags.truncate(kept);
                 let mut params = Vec::new();
@@ -228,214 +229,10 @@ impl<'f> Rd<'f> {
         })
     }
 
-    fn opt_machine_functions(&mut self, p: &'f Param) -> R<Option<MachineFunctions>> {
+    pub fn opt_machine_functions(&mut self, p: &'f Param) -> R<Option<MachineFunctions>> {
         match self.opt_inst(p)? {
             Some(i) => self.machine_functions(i).map(Some),
             None => Ok(None),
         }
     }
-
-    // ------------------------------------------------------------ strategies
-
-    fn strategy(&mut self, i: &'f Instance) -> R<Strategy> {
-        let e = ent(i);
-        let base = StrategyBase {
-            overlap: opt_real(arg(i, 0)?)?,
-            allow_multiple_passes: opt_bool(arg(i, 1)?)?,
-        };
-        let a = |k: usize| arg(i, 2 + k);
-        Ok(match e {
-            "UNIDIRECTIONAL" => Strategy::Unidirectional {
-                base,
-                feed_direction: self.opt_direction(a(0)?)?,
-                cutmode: cutmode(a(1)?)?,
-            },
-            "BIDIRECTIONAL" => Strategy::Bidirectional {
-                base,
-                feed_direction: self.opt_direction(a(0)?)?,
-                stepover_direction: left_right(a(1)?)?,
-                stroke_connection: opt_enum(a(2)?)?.map(str::to_string),
-            },
-            "CONTOUR_PARALLEL" => Strategy::ContourParallel {
-                base,
-                rotation: rotation(a(0)?)?,
-                cutmode: cutmode(a(1)?)?,
-            },
-            "BIDIRECTIONAL_CONTOUR" | "CONTOUR_BIDIRECTIONAL" => Strategy::BidirectionalContour {
-                contour_first: e == "CONTOUR_BIDIRECTIONAL",
-                base,
-                feed_direction: self.opt_direction(a(0)?)?,
-                stepover_direction: left_right(a(1)?)?,
-                rotation: rotation(a(2)?)?,
-                cutmode: cutmode(a(3)?)?,
-            },
-            "CONTOUR_SPIRAL" => Strategy::ContourSpiral {
-                base,
-                rotation: rotation(a(0)?)?,
-                cutmode: cutmode(a(1)?)?,
-            },
-            "CENTER_MILLING" => Strategy::CenterMilling { base },
-            "EXPLICIT_STRATEGY" => Strategy::Explicit { base },
-            _ => {
-                return Err(fail(
-                    i.entity_span,
-                    "not a two5D milling strategy cncc models",
-                ))
-            }
-        })
-    }
-
-    fn opt_approach(&mut self, p: &'f Param) -> R<Option<ApproachRetract>> {
-        match self.opt_inst(p)? {
-            Some(i) => self
-                .or_raw(i, |rd, i| rd.approach(i), ApproachRetract::Other)
-                .map(Some),
-            None => Ok(None),
-        }
-    }
-
-    fn approach(&mut self, i: &'f Instance) -> R<ApproachRetract> {
-        let orientation = self.opt_direction(arg(i, 0)?)?;
-        let r = |k| real(arg(i, k)?);
-        Ok(match ent(i) {
-            "PLUNGE_TOOLAXIS" => ApproachRetract::PlungeToolaxis { orientation },
-            "PLUNGE_RAMP" => ApproachRetract::PlungeRamp {
-                orientation,
-                angle: r(1)?,
-            },
-            "PLUNGE_HELIX" => ApproachRetract::PlungeHelix {
-                orientation,
-                radius: r(1)?,
-                angle: r(2)?,
-            },
-            "PLUNGE_ZIGZAG" => ApproachRetract::PlungeZigzag {
-                orientation,
-                angle: r(1)?,
-                width: r(2)?,
-            },
-            "AP_RETRACT_ANGLE" => ApproachRetract::RetractAngle {
-                orientation,
-                angle: r(1)?,
-                travel_length: r(2)?,
-            },
-            "AP_RETRACT_TANGENT" => ApproachRetract::RetractTangent {
-                orientation,
-                radius: r(1)?,
-            },
-            "ALONG_PATH" => ApproachRetract::AlongPath {
-                orientation,
-                path: self.toolpath_list_at(arg(i, 1)?)?,
-            },
-            _ => return Err(fail(i.entity_span, "not an approach/retract strategy")),
-        })
-    }
-
-    // ------------------------------------------------------------ toolpaths
-
-    pub fn opt_toolpath_list(&mut self, p: &'f Param) -> R<Option<Vec<Toolpath>>> {
-        match p.value {
-            Value::Null => Ok(None),
-            _ => self.toolpath_list_at(p).map(Some),
-        }
-    }
-
-    fn toolpath_list_at(&mut self, p: &'f Param) -> R<Vec<Toolpath>> {
-        let l = self.inst(p)?;
-        expect(l, &["TOOLPATH_LIST"], "a TOOLPATH_LIST")?;
-        let mut out = Vec::new();
-        for t in self.insts(arg(l, 0)?)? {
-            out.push(self.or_raw(t, |rd, t| rd.toolpath(t), Toolpath::Other)?);
-        }
-        Ok(out)
-    }
-
-    fn toolpath(&mut self, i: &'f Instance) -> R<Toolpath> {
-        let e = ent(i);
-        if e != "CUTTER_LOCATION_TRAJECTORY" && e != "FEEDSTOP" {
-            return Err(fail(i.entity_span, "not a toolpath cncc models"));
-        }
-        let base = ToolpathBase {
-            priority: boolean(arg(i, 0)?)?,
-            kind: toolpath_type(enumeration(arg(i, 1)?)?),
-            speed: self.speed(arg(i, 2)?)?,
-            technology: self.opt_technology(arg(i, 3)?)?,
-            machine_functions: self.opt_machine_functions(arg(i, 4)?)?,
-        };
-        Ok(if e == "FEEDSTOP" {
-            Toolpath::Feedstop {
-                base,
-                dwell: real(arg(i, 5)?)?,
-            }
-        } else {
-            let c = self.inst(arg(i, 6)?)?;
-            Toolpath::CutterLocation {
-                base,
-                direction: opt_bool(arg(i, 5)?)?,
-                basic_curve: self.curve(c)?,
-                tool_axis: self.opt_curve(arg(i, 7)?)?,
-                surface_normal: self.opt_curve(arg(i, 8)?)?,
-            }
-        })
-    }
-
-    fn speed(&mut self, p: &'f Param) -> R<Option<ToolpathSpeed>> {
-        Ok(Some(match &p.value {
-            Value::Null => return Ok(None),
-            Value::Typed(t, inner) if t == "POSITIVE_RATIO_MEASURE" => {
-                ToolpathSpeed::Ratio(real(inner)?)
-            }
-            Value::Typed(t, inner) if t == "SPEED_NAME" => {
-                ToolpathSpeed::Named(enumeration(inner)?.to_string())
-            }
-            Value::Ref(_) => {
-                let i = self.inst(p)?;
-                ToolpathSpeed::Other(self.raw(i)?)
-            }
-            _ => {
-                return Err(fail(
-                    p.span,
-                    "its_speed is TOOLPATH_SPEED, POSITIVE_RATIO_MEASURE(..) or SPEED_NAME(..)",
-                ))
-            }
-        }))
-    }
-}
-
-fn toolpath_type(e: &str) -> ToolpathType {
-    match e {
-        "APPROACH" => ToolpathType::Approach,
-        "LIFT" => ToolpathType::Lift,
-        "CONNECT" => ToolpathType::Connect,
-        "NON_CONTACT" => ToolpathType::NonContact,
-        "CONTACT" => ToolpathType::Contact,
-        "TRAJECTORY_PATH" => ToolpathType::TrajectoryPath,
-        other => ToolpathType::Other(other.to_string()),
-    }
-}
-
-fn cutmode(p: &Param) -> R<Option<CutMode>> {
-    Ok(match opt_enum(p)? {
-        None => None,
-        Some("CLIMB") => Some(CutMode::Climb),
-        Some("CONVENTIONAL") => Some(CutMode::Conventional),
-        Some(_) => return Err(fail(p.span, "cutmode is .CLIMB. or .CONVENTIONAL.")),
-    })
-}
-
-fn rotation(p: &Param) -> R<Option<RotDirection>> {
-    Ok(match opt_enum(p)? {
-        None => None,
-        Some("CW") => Some(RotDirection::Cw),
-        Some("CCW") => Some(RotDirection::Ccw),
-        Some(_) => return Err(fail(p.span, "rotation_direction is .CW. or .CCW.")),
-    })
-}
-
-fn left_right(p: &Param) -> R<Option<LeftOrRight>> {
-    Ok(match opt_enum(p)? {
-        None => None,
-        Some("LEFT") => Some(LeftOrRight::Left),
-        Some("RIGHT") => Some(LeftOrRight::Right),
-        Some(_) => return Err(fail(p.span, "stepover_direction is .LEFT. or .RIGHT.")),
-    })
 }

@@ -28,15 +28,20 @@ impl<'f> Rd<'f> {
 
     pub fn workplan(&mut self, i: &'f Instance) -> R<Workplan> {
         expect(i, &["WORKPLAN"], "a WORKPLAN")?;
+        if !self.open.insert(i.id) {
+            return Err(too_deep(i.span, "a workplan contains itself"));
+        }
         self.enter(i.span)?;
         let r = self.workplan_body(i);
         self.leave();
-        r
+        self.open.remove(&i.id);
+        let w = r?;
+        self.ids.push((w.id.clone(), "executable", i.span));
+        Ok(w)
     }
 
     fn workplan_body(&mut self, i: &'f Instance) -> R<Workplan> {
         let id = string(arg(i, 0)?)?;
-        self.ids.push((id.clone(), "executable", i.span));
         let mut elements = Vec::new();
         for e in self.insts(arg(i, 1)?)? {
             match self.executable(e) {
@@ -234,8 +239,14 @@ impl<'f> Rd<'f> {
         })
     }
 
+    /// A BLOCK; other bounding geometry is kept as written.
     fn block(&mut self, i: &'f Instance) -> R<Bounding> {
-        expect(i, &["BLOCK"], "a BLOCK")?;
+        if ent(i) != "BLOCK" {
+            return Err(fail(
+                i.entity_span,
+                "only BLOCK bounding geometry is modelled",
+            ));
+        }
         let pos = self.inst(arg(i, 1)?)?;
         Ok(Bounding::Block {
             name: string(arg(i, 0)?)?,

@@ -112,6 +112,8 @@ pub(crate) fn body_kind(e: &str) -> ToolBodyKind {
         "COUNTERBORE" => ToolBodyKind::Counterbore,
         "REAMER" => ToolBodyKind::Reamer,
         "TAPERED_REAMER" => ToolBodyKind::TaperedReamer,
+        "TAP" => ToolBodyKind::Tap,
+        "THREAD_MILL" => ToolBodyKind::ThreadMill,
         other => ToolBodyKind::Other(other.to_string()),
     }
 }

@@ -93,8 +93,10 @@ impl<'p> W<'p> {
                 end,
                 basis,
             } => {
+                let sense =
+                    crate::stepnc::model_geom::line_sense(basis, start, end).unwrap_or(true);
                 let basis = self.raw(basis);
-                self.trimmed(name, basis, start, end, true)
+                self.trimmed(name, basis, start, end, sense)
             }
             Curve::Composite {
                 name,

@@ -8,6 +8,8 @@ mod feature;
 mod geom;
 mod operation;
 mod structure;
+mod tool;
+mod toolpath;
 
 use super::model::*;
 use super::part21::text::write_file;
@@ -17,10 +19,25 @@ use std::collections::HashMap;
 
 /// The Part 21 text of a project.
 pub fn write_project(p: &Project) -> String {
+    write_project_with_header(p, &[])
+}
+
+/// The Part 21 text of a project, keeping the FILE_DESCRIPTION and
+/// FILE_NAME of the file it was read from (FILE_SCHEMA is always cncc's).
+pub fn write_project_with_header(p: &Project, original: &[Record]) -> String {
     let mut w = W::new(p);
     let root = w.project();
     let instances = w.numbered(root);
-    write_file(&header(&p.id), &instances)
+    let mut head = header(&p.id);
+    for r in head.iter_mut() {
+        if r.entity == "FILE_SCHEMA" {
+            continue;
+        }
+        if let Some(o) = original.iter().find(|o| o.entity == r.entity) {
+            r.params = o.params.clone();
+        }
+    }
+    write_file(&head, &instances)
 }
 
 fn header(name: &str) -> Vec<Record> {
@@ -60,7 +77,8 @@ fn header(name: &str) -> Vec<Record> {
 pub(crate) struct W<'p> {
     pub p: &'p Project,
     nodes: Vec<(String, Vec<Value>)>,
-    shared: HashMap<(String, String), u64>,
+    /// Value instances by the hash of their entity and parameters.
+    shared: HashMap<u64, Vec<u64>>,
     pub workpieces: HashMap<WorkpieceId, u64>,
     pub features: HashMap<FeatureId, u64>,
     pub operations: HashMap<OperationId, u64>,
@@ -82,18 +100,24 @@ impl<'p> W<'p> {
 
     /// A value instance, shared with an equal one already written.
     pub fn add(&mut self, entity: &str, params: Vec<Value>) -> Value {
-        let mut key = String::new();
+        use std::hash::{Hash, Hasher};
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        entity.hash(&mut h);
         for v in &params {
-            crate::stepnc::part21::text::write_value(&mut key, v);
-            key.push(',');
+            hash_value(v, &mut h);
         }
-        let k = (entity.to_string(), key);
-        if let Some(&id) = self.shared.get(&k) {
-            return Value::Ref(id);
+        let key = h.finish();
+        if let Some(ids) = self.shared.get(&key) {
+            for &id in ids {
+                let (e, p) = &self.nodes[id as usize - 1];
+                if e == entity && *p == params {
+                    return Value::Ref(id);
+                }
+            }
         }
         let id = self.add_unique(entity, params);
         if let Value::Ref(n) = id {
-            self.shared.insert(k, n);
+            self.shared.entry(key).or_default().push(n);
         }
         id
     }
@@ -169,13 +193,14 @@ impl<'p> W<'p> {
             }
             stack.extend(refs.into_iter().rev());
         }
+        let mut nodes = self.nodes;
         order
             .iter()
             .map(|&n| {
-                let (entity, params) = &self.nodes[n as usize - 1];
+                let (entity, params) = std::mem::take(&mut nodes[n as usize - 1]);
                 Instance {
                     id: new_id[n as usize],
-                    entity: entity.clone(),
+                    entity,
                     params: params
                         .iter()
                         .map(|v| Param::new(renumber(v, &new_id)))
@@ -186,6 +211,27 @@ impl<'p> W<'p> {
                 }
             })
             .collect()
+    }
+}
+
+/// Hashes a value as written (reals by their bits).
+fn hash_value(v: &Value, h: &mut impl std::hash::Hasher) {
+    use std::hash::Hash;
+    std::mem::discriminant(v).hash(h);
+    match v {
+        Value::Null | Value::Derived => {}
+        Value::Int(i) => i.hash(h),
+        Value::Real(r) => r.to_bits().hash(h),
+        Value::Str(s) | Value::Enum(s) | Value::Binary(s) => s.hash(h),
+        Value::Ref(n) => n.hash(h),
+        Value::List(l) => {
+            l.len().hash(h);
+            l.iter().for_each(|p| hash_value(&p.value, h));
+        }
+        Value::Typed(t, p) => {
+            t.hash(h);
+            hash_value(&p.value, h);
+        }
     }
 }
 
