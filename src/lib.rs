@@ -17,6 +17,7 @@ pub mod fuzzing;
 pub mod interp;
 pub mod ir;
 pub mod lower;
+pub mod raise;
 pub mod source;
 pub mod span;
 pub mod stepnc;

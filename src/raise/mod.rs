@@ -1,0 +1,3 @@
+//! Raising programs into STEP-NC: CC2 feature recognition ([`cc2`]).
+
+pub mod cc2;
