@@ -47,11 +47,12 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
     let cuts: Vec<&Move> = m.levels.iter().flat_map(|l| l.moves.iter()).collect();
     let steps = layer_steps(m, r.top.max(m.levels[0].z));
     let name = r.project.features[feature.index()].id.clone();
+    let face_top = r.project.features[feature.index()].placement.location.xyz[2];
     let op = Operation {
         id: format!("FACE {name}"),
         toolpath: None,
         tool_direction: None,
-        retract_plane: m.moves.first().map(|mv| r6(mv.from[2] - z)),
+        retract_plane: super::strategy::retract_plane(&m.moves, face_top),
         start_point: None,
         tool: (r.tool)(m.tool),
         technology: technology(&cuts),

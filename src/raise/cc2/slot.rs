@@ -94,7 +94,7 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
         id: format!("MILL {name}"),
         toolpath: None,
         tool_direction: None,
-        retract_plane: m.moves.first().map(|mv| r6(mv.from[2] - top)),
+        retract_plane: super::strategy::retract_plane(&m.moves, top),
         start_point: None,
         tool: (r.tool)(m.tool),
         technology: technology(&moves),

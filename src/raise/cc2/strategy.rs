@@ -185,6 +185,15 @@ pub fn loop_stepover(level: &Level) -> Option<f64> {
     loop_shape(inner).even_growth_to(&loop_shape(outer)).map(r6)
 }
 
+/// The retract plane: where the first feed move starts, above `top`
+/// (the feature's placement).
+pub fn retract_plane(moves: &[Move], top: f64) -> Option<f64> {
+    moves
+        .iter()
+        .find(|m| m.is_feed())
+        .map(|m| r6(m.from[2] - top))
+}
+
 /// How the tool first enters the material: the first feed move that is
 /// not horizontal, if it comes before the first horizontal cut.
 pub fn approach(moves: &[Move]) -> Option<ApproachRetract> {

@@ -1,0 +1,335 @@
+//! CC2 feature recognition on one part programmed twice
+//! (`tests/programs/raise2/`): a Fanuc program and the same process plan
+//! posted for a Siemens 840D (drilling cycles instead of G81/G83, other
+//! approach points). Both must give the same features and operations,
+//! and exactly the ones the part has: a faced top, three through holes, a
+//! rectangular pocket roughed in three layers and finished (0.2 mm side,
+//! 0.1 mm floor allowance), a peck-drilled blind hole, a straight slot.
+
+use cncc::raise::cc2::{listing::listing, recognise_report, Cc2Context};
+use cncc::stepnc::model::*;
+use std::path::Path;
+
+fn raise(file: &str, dialect: &str) -> Project {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/programs/raise2")
+        .join(file);
+    let spec = cncc::dialect::builtin::builtin(dialect).expect("builtin dialect");
+    let mut files = cncc::source::SourceMap::new();
+    let id = files.add_sparse(path.display().to_string(), Vec::new());
+    let opts = cncc::interp::Options::default();
+    let (events, diags) =
+        cncc::toolpath::events_of_file(&path, id, &spec, &opts, &mut files).expect("readable");
+    assert!(diags.iter().all(|d| !d.is_error()), "{file}: {diags:?}");
+    let ctx = Cc2Context {
+        tool_diameter: Box::new(|t| match t {
+            1 => Some(20.0),
+            2 => Some(8.0),
+            3 => Some(10.0),
+            4 => Some(6.0),
+            5 => Some(8.0),
+            _ => None,
+        }),
+        stock: Some(([0.0, 0.0, -20.0], [120.0, 80.0, 1.0])),
+        secplane_z: 30.0,
+    };
+    let mut project = Project::default();
+    let notes = recognise_report(&events, &mut project, &|t| ToolId(t as u32), &ctx);
+    assert!(
+        notes.is_empty(),
+        "{file}: moves left unrecognised: {notes:?}"
+    );
+    project
+}
+
+fn kinds(p: &Project) -> Vec<String> {
+    p.features
+        .iter()
+        .map(|f| {
+            format!("{:?}", f.kind)
+                .split([' ', '{', '('])
+                .next()
+                .unwrap()
+                .to_string()
+        })
+        .collect()
+}
+
+#[test]
+fn fanuc_and_siemens_programs_give_the_same_features_and_operations() {
+    let fanuc = raise("cc2part.nc", "fanuc");
+    let siemens = raise("cc2part.mpf", "siemens840d");
+    assert_eq!(listing(&fanuc), listing(&siemens));
+    assert_eq!(fanuc.features, siemens.features);
+    assert_eq!(fanuc.operations, siemens.operations);
+    assert_eq!(fanuc.main_workplan, siemens.main_workplan);
+}
+
+#[test]
+fn the_part_gives_exactly_its_features() {
+    let p = raise("cc2part.nc", "fanuc");
+    assert_eq!(
+        kinds(&p),
+        [
+            "PlanarFace",
+            "RoundHole",
+            "RoundHole",
+            "RoundHole",
+            "ClosedPocket",
+            "RoundHole",
+            "Slot"
+        ]
+    );
+    // Workplan: program order, one workingstep per operation.
+    let ws: Vec<String> = p
+        .main_workplan
+        .elements
+        .iter()
+        .map(|e| match e {
+            Executable::Workingstep(w) => w.id.clone(),
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    assert_eq!(
+        ws,
+        [
+            "WS FACE PLANAR FACE1",
+            "WS DRILL HOLE1",
+            "WS DRILL HOLE2",
+            "WS DRILL HOLE3",
+            "WS MILL POCKET1",
+            "WS MILL POCKET1",
+            "WS PECK DRILL HOLE4",
+            "WS MILL SLOT1"
+        ]
+    );
+    face(&p.features[0], &p);
+    through_holes(&p);
+    pocket(&p.features[4], &p);
+    peck_hole(&p.features[5], &p);
+    slot(&p.features[6], &p);
+}
+
+fn depth(f: &Feature) -> f64 {
+    -f.depth.position.location.xyz[2]
+}
+
+fn face(f: &Feature, p: &Project) {
+    assert_eq!(f.placement.location.xyz, [0.0, 0.0, 1.0]);
+    assert_eq!(depth(f), 1.0);
+    let FeatureKind::PlanarFace {
+        course_of_travel:
+            TravelPath::Linear {
+                distance,
+                direction,
+                ..
+            },
+        removal_boundary: OpenProfile::Linear { length, .. },
+        ..
+    } = &f.kind
+    else {
+        panic!("{:?}", f.kind)
+    };
+    assert_eq!(
+        (distance.nominal, direction.ratios, length.value),
+        (120.0, [1.0, 0.0, 0.0], 80.0)
+    );
+    assert_eq!(f.operations.len(), 1);
+    let op = p.operation(f.operations[0]);
+    let OperationKind::PlaneMilling {
+        finish: true,
+        milling,
+        axial_cutting_depth: Some(ap),
+        ..
+    } = &op.kind
+    else {
+        panic!("{:?}", op.kind)
+    };
+    assert_eq!(*ap, 1.0);
+    let Some(Strategy::Bidirectional {
+        feed_direction: Some(d),
+        stepover_direction,
+        base,
+        ..
+    }) = &milling.strategy
+    else {
+        panic!("{:?}", milling.strategy)
+    };
+    assert_eq!(d.ratios, [1.0, 0.0, 0.0]);
+    assert_eq!(*stepover_direction, Some(LeftOrRight::Left));
+    assert_eq!(base.overlap, Some(0.25));
+    assert_eq!(
+        (op.technology.feed, op.technology.spindle),
+        (Some(800.0), Some(3000.0))
+    );
+    assert!(!op.machine_functions.coolant);
+    assert_eq!(op.tool, ToolId(1));
+}
+
+fn through_holes(p: &Project) {
+    for (f, xy) in p.features[1..4]
+        .iter()
+        .zip([[10.0, 10.0], [110.0, 10.0], [10.0, 70.0]])
+    {
+        assert_eq!(f.placement.location.xyz, [xy[0], xy[1], 0.0]);
+        assert_eq!(depth(f), 20.0, "{}", f.id);
+        let FeatureKind::RoundHole {
+            diameter,
+            bottom: HoleBottom::Through,
+            ..
+        } = &f.kind
+        else {
+            panic!("{:?}", f.kind)
+        };
+        assert_eq!(diameter.nominal, 8.0);
+        let op = p.operation(f.operations[0]);
+        assert!(
+            matches!(op.kind, OperationKind::Drilling(_)),
+            "{:?}",
+            op.kind
+        );
+        assert_eq!(op.retract_plane, Some(2.0));
+        assert!(op.machine_functions.coolant);
+        assert_eq!(
+            (op.technology.feed, op.technology.spindle),
+            (Some(150.0), Some(2000.0))
+        );
+    }
+}
+
+fn pocket(f: &Feature, p: &Project) {
+    assert_eq!(f.placement.location.xyz, [60.0, 40.0, 0.0]);
+    assert_eq!(depth(f), 6.0);
+    let FeatureKind::ClosedPocket {
+        pocket,
+        boundary: ClosedProfile::Rectangular { width, length, .. },
+    } = &f.kind
+    else {
+        panic!("{:?}", f.kind)
+    };
+    assert_eq!((length.nominal, width.nominal), (40.0, 30.0));
+    assert_eq!(
+        pocket.orthogonal_radius.as_ref().map(|r| r.nominal),
+        Some(5.0)
+    );
+    assert_eq!(f.operations.len(), 2);
+    let rough = &p.operation(f.operations[0]).kind;
+    let OperationKind::BottomAndSideMilling {
+        finish: false,
+        milling,
+        axial_cutting_depth,
+        radial_cutting_depth,
+        allowance_side,
+        allowance_bottom,
+    } = rough
+    else {
+        panic!("{rough:?}")
+    };
+    assert_eq!((*allowance_side, *allowance_bottom), (Some(0.2), Some(0.1)));
+    assert_eq!(
+        (*axial_cutting_depth, *radial_cutting_depth),
+        (Some(2.0), Some(8.0))
+    );
+    assert_eq!(
+        milling.strategy,
+        Some(Strategy::ContourParallel {
+            base: StrategyBase::default(),
+            rotation: Some(RotDirection::Ccw),
+            cutmode: Some(CutMode::Climb)
+        })
+    );
+    assert_eq!(
+        milling.approach,
+        Some(ApproachRetract::PlungeToolaxis { orientation: None })
+    );
+    let fin = p.operation(f.operations[1]);
+    let OperationKind::BottomAndSideMilling {
+        finish: true,
+        allowance_side: None,
+        allowance_bottom: None,
+        ..
+    } = &fin.kind
+    else {
+        panic!("{:?}", fin.kind)
+    };
+    assert_eq!(
+        (fin.technology.feed, fin.technology.spindle),
+        (Some(300.0), Some(4500.0))
+    );
+}
+
+fn peck_hole(f: &Feature, p: &Project) {
+    assert_eq!(f.placement.location.xyz, [110.0, 70.0, 0.0]);
+    let FeatureKind::RoundHole {
+        diameter,
+        bottom: HoleBottom::Conical { tip_angle, .. },
+        ..
+    } = &f.kind
+    else {
+        panic!("{:?}", f.kind)
+    };
+    assert_eq!((diameter.nominal, *tip_angle), (6.0, 118.0));
+    // The tip at Z-15; the cone of a 118° point on a 6 mm drill is
+    // 3 / tan 59° = 1.802569 mm high; the depth ends where it starts.
+    assert!(
+        (depth(f) - (15.0 - 3.0 / 59f64.to_radians().tan())).abs() < 1e-6,
+        "{}",
+        depth(f)
+    );
+    let op = p.operation(f.operations[0]);
+    let OperationKind::MultistepDrilling {
+        first_depth,
+        depth_of_step,
+        retract_distance,
+        ..
+    } = &op.kind
+    else {
+        panic!("{:?}", op.kind)
+    };
+    assert_eq!(
+        (*first_depth, *depth_of_step, *retract_distance),
+        (4.0, 4.0, 4.0)
+    );
+}
+
+fn slot(f: &Feature, p: &Project) {
+    assert_eq!(f.placement.location.xyz, [30.0, 10.0, 0.0]);
+    assert_eq!(depth(f), 4.0);
+    let FeatureKind::Slot {
+        course_of_travel:
+            TravelPath::Linear {
+                distance,
+                direction,
+                ..
+            },
+        swept_shape: OpenProfile::SquareU { width, .. },
+        end_conditions,
+    } = &f.kind
+    else {
+        panic!("{:?}", f.kind)
+    };
+    assert_eq!(
+        (distance.nominal, direction.ratios, width.nominal),
+        (60.0, [1.0, 0.0, 0.0], 8.0)
+    );
+    assert_eq!(end_conditions, &[SlotEnd::Radiused, SlotEnd::Radiused]);
+    let op = p.operation(f.operations[0]);
+    let OperationKind::BottomAndSideMilling {
+        milling,
+        axial_cutting_depth,
+        ..
+    } = &op.kind
+    else {
+        panic!("{:?}", op.kind)
+    };
+    assert_eq!(*axial_cutting_depth, Some(2.0));
+    assert!(matches!(
+        milling.strategy,
+        Some(Strategy::CenterMilling { .. })
+    ));
+}
+
+#[test]
+fn listing_snapshot() {
+    insta::assert_snapshot!("cc2part_features", listing(&raise("cc2part.nc", "fanuc")));
+}
