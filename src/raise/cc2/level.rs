@@ -1,7 +1,7 @@
 //! Milling chunks seen as layers: the horizontal feed moves grouped by
 //! their Z level, each level split into closed loops and the other moves
 //! (strokes, links); consecutive chunks of one tool that are layers of
-//! one cut (same footprint, deeper) or strokes of one face (same Z,
+//! one cut (same footprint, deeper, same feed and spindle) or strokes of one face (same Z,
 //! touching) are merged into one [`MillCut`].
 
 use super::segment::{Chunk, EPS};
@@ -130,13 +130,21 @@ impl MillCut {
         }
         let (a, b) = (self.footprint(), next.footprint());
         let below = next.levels.iter().all(|l| l.z < self.deepest().z - EPS);
-        let layers = below && same_box(a, b, 1e-3);
+        let layers = below && same_box(a, b, 1e-3) && self.speeds() == next.speeds();
         let one_level = |c: &MillCut| c.levels.len() == 1;
         let strokes = one_level(self)
             && one_level(next)
             && (self.levels[0].z - next.levels[0].z).abs() < EPS
             && overlap(grow(a, radius), grow(b, radius));
         layers || strokes
+    }
+
+    /// The highest cutting feed and the spindle speed: a pass cut with
+    /// other speeds is another operation (a finishing pass), not a layer.
+    fn speeds(&self) -> (f64, f64) {
+        let cuts = self.levels.iter().flat_map(|l| l.moves.iter());
+        let feed = cuts.clone().map(|m| m.feed).fold(0.0, f64::max);
+        (feed, cuts.map(|m| m.spindle).next().unwrap_or(0.0))
     }
 
     pub fn absorb(&mut self, next: MillCut) {

@@ -31,6 +31,8 @@ mod segment;
 mod shape;
 mod slot;
 mod strategy;
+#[cfg(test)]
+mod tests;
 
 use crate::diag::Diagnostic;
 use crate::stepnc::model::{

@@ -1,0 +1,336 @@
+//! Recognisers on synthetic move lists: what each one makes of the moves
+//! it is meant for (and that nothing is dropped when none applies).
+
+use super::segment::tests::{circle, path};
+use super::{recognise_report, Cc2Context};
+use crate::stepnc::model::*;
+use crate::toolpath::Event;
+
+fn run(ev: &[Event], diameter: f64, stock: Option<([f64; 3], [f64; 3])>) -> (Project, usize) {
+    let ctx = Cc2Context {
+        tool_diameter: Box::new(move |_| Some(diameter)),
+        stock,
+        secplane_z: 20.0,
+    };
+    let mut p = Project::default();
+    let notes = recognise_report(ev, &mut p, &|t| ToolId(t as u32), &ctx);
+    (p, notes.len())
+}
+
+fn z(x: f64, y: f64, z: f64) -> [f64; 3] {
+    [x, y, z]
+}
+
+/// A closed rectangle loop at `zz` from (a, b) to (c, d), counter-clockwise.
+fn rect(a: f64, b: f64, c: f64, d: f64, zz: f64) -> Vec<[f64; 3]> {
+    vec![
+        z(a, b, zz),
+        z(c, b, zz),
+        z(c, d, zz),
+        z(a, d, zz),
+        z(a, b, zz),
+    ]
+}
+
+fn op(p: &Project, f: usize, i: usize) -> &Operation {
+    p.operation(p.features[f].operations[i])
+}
+
+#[test]
+fn one_way_strokes_over_the_stock_are_a_unidirectional_face() {
+    let mut ev = Vec::new();
+    for y in [0.0, 8.0, 16.0] {
+        ev.extend(path(
+            &[
+                z(-6.0, y, 5.0),
+                z(-6.0, y, 0.0),
+                z(56.0, y, 0.0),
+                z(56.0, y, 5.0),
+                z(-6.0, y + 8.0, 5.0),
+            ],
+            &[true, false, false, true, true],
+            1,
+        ));
+    }
+    let (p, notes) = run(&ev, 10.0, Some(([0.0, 0.0, -10.0], [50.0, 16.0, 0.5])));
+    assert_eq!(notes, 0);
+    assert_eq!(p.features.len(), 1);
+    assert!(matches!(p.features[0].kind, FeatureKind::PlanarFace { .. }));
+    let OperationKind::PlaneMilling { milling, .. } = &op(&p, 0, 0).kind else {
+        panic!()
+    };
+    let Some(Strategy::Unidirectional {
+        feed_direction: Some(d),
+        ..
+    }) = &milling.strategy
+    else {
+        panic!("{:?}", milling.strategy)
+    };
+    assert_eq!(d.ratios, [1.0, 0.0, 0.0]);
+}
+
+#[test]
+fn a_second_face_pass_finishes_and_the_first_leaves_its_allowance() {
+    let face = |zz: f64, feed: f64| {
+        let mut pts = vec![z(-6.0, 0.0, 5.0)];
+        for (i, y) in [0.0, 8.0, 16.0].iter().enumerate() {
+            let (x0, x1) = if i % 2 == 0 {
+                (-6.0, 56.0)
+            } else {
+                (56.0, -6.0)
+            };
+            pts.push(z(x0, *y, zz));
+            pts.push(z(x1, *y, zz));
+        }
+        let n = pts.len() - 1;
+        let mut ev = path(&pts, &vec![false; n], 1);
+        for e in ev.iter_mut() {
+            if let Event::Move(m) = e {
+                m.feed = feed;
+            }
+        }
+        ev.extend(path(
+            &[z(-6.0, 16.0, zz), z(-6.0, 16.0, 5.0), z(-6.0, 0.0, 5.0)],
+            &[true, true],
+            1,
+        ));
+        ev
+    };
+    let mut ev = face(0.5, 1000.0);
+    ev.extend(face(0.0, 600.0));
+    let (p, _) = run(&ev, 10.0, Some(([0.0, 0.0, -10.0], [50.0, 16.0, 1.0])));
+    assert_eq!(p.features.len(), 1);
+    assert_eq!(p.features[0].depth.position.location.xyz[2], -1.0);
+    let OperationKind::PlaneMilling {
+        finish: false,
+        allowance_bottom: Some(a),
+        ..
+    } = op(&p, 0, 0).kind
+    else {
+        panic!()
+    };
+    assert_eq!(a, 0.5);
+    assert!(matches!(
+        op(&p, 0, 1).kind,
+        OperationKind::PlaneMilling { finish: true, .. }
+    ));
+}
+
+#[test]
+fn concentric_circles_are_a_circular_pocket_cut_clockwise() {
+    let mut ev = path(&[z(52.0, 50.0, 2.0), z(52.0, 50.0, -3.0)], &[false], 3);
+    ev.push(circle([50.0, 50.0], z(52.0, 50.0, -3.0), false, 3));
+    ev.extend(path(
+        &[z(52.0, 50.0, -3.0), z(56.0, 50.0, -3.0)],
+        &[false],
+        3,
+    ));
+    ev.push(circle([50.0, 50.0], z(56.0, 50.0, -3.0), false, 3));
+    let (p, _) = run(&ev, 6.0, None);
+    let FeatureKind::ClosedPocket {
+        boundary: ClosedProfile::Circular { diameter, .. },
+        ..
+    } = &p.features[0].kind
+    else {
+        panic!("{:?}", p.features[0].kind)
+    };
+    assert_eq!(diameter.nominal, 18.0);
+    assert_eq!(p.features[0].placement.location.xyz, [50.0, 50.0, 0.0]);
+    let OperationKind::BottomAndSideMilling {
+        milling,
+        radial_cutting_depth,
+        ..
+    } = &op(&p, 0, 0).kind
+    else {
+        panic!()
+    };
+    assert_eq!(*radial_cutting_depth, Some(4.0));
+    assert_eq!(
+        milling.strategy,
+        Some(Strategy::ContourParallel {
+            base: StrategyBase::default(),
+            rotation: Some(RotDirection::Cw),
+            cutmode: Some(CutMode::Conventional)
+        })
+    );
+}
+
+#[test]
+fn strokes_inside_a_contour_are_bidirectional_contour() {
+    let zz = -2.0;
+    let mut pts = vec![
+        z(12.0, 12.0, 2.0),
+        z(12.0, 12.0, zz),
+        z(28.0, 12.0, zz),
+        z(28.0, 16.0, zz),
+        z(12.0, 16.0, zz),
+    ];
+    pts.extend(rect(10.0, 10.0, 30.0, 20.0, zz));
+    let n = pts.len() - 1;
+    let (p, _) = run(&path(&pts, &vec![false; n], 3), 4.0, None);
+    let OperationKind::BottomAndSideMilling { milling, .. } = &op(&p, 0, 0).kind else {
+        panic!()
+    };
+    assert!(
+        matches!(
+            milling.strategy,
+            Some(Strategy::BidirectionalContour {
+                contour_first: false,
+                ..
+            })
+        ),
+        "{:?}",
+        milling.strategy
+    );
+    let FeatureKind::ClosedPocket {
+        boundary: ClosedProfile::Rectangular { length, width, .. },
+        ..
+    } = &p.features[0].kind
+    else {
+        panic!()
+    };
+    assert_eq!((length.nominal, width.nominal), (24.0, 14.0));
+}
+
+#[test]
+fn a_triangle_loop_is_a_general_pocket() {
+    let zz = -1.0;
+    let pts = [
+        z(0.0, 0.0, 2.0),
+        z(0.0, 0.0, zz),
+        z(30.0, 0.0, zz),
+        z(0.0, 30.0, zz),
+        z(0.0, 0.0, zz),
+    ];
+    let (p, _) = run(&path(&pts, &[false; 4], 3), 2.0, None);
+    let FeatureKind::ClosedPocket {
+        boundary:
+            ClosedProfile::General {
+                shape: Curve::Polyline { points, .. },
+                ..
+            },
+        ..
+    } = &p.features[0].kind
+    else {
+        panic!("{:?}", p.features[0].kind)
+    };
+    assert_eq!(points.len(), 4);
+}
+
+#[test]
+fn a_loop_around_the_other_cuts_is_an_outside_profile() {
+    let mut ev = path(
+        &[
+            z(50.0, 30.0, 5.0),
+            z(50.0, 30.0, 2.0),
+            z(50.0, 30.0, -8.0),
+            z(50.0, 30.0, 5.0),
+        ],
+        &[true, false, true],
+        2,
+    );
+    // Clockwise round a 100 x 60 outline with a 10 mm tool.
+    let mut pts = vec![z(-5.0, -5.0, 5.0), z(-5.0, -5.0, -10.0)];
+    pts.extend([
+        z(-5.0, 65.0, -10.0),
+        z(105.0, 65.0, -10.0),
+        z(105.0, -5.0, -10.0),
+        z(-5.0, -5.0, -10.0),
+    ]);
+    ev.extend(path(&[z(50.0, 30.0, 5.0), z(-5.0, -5.0, 5.0)], &[true], 3));
+    ev.extend(path(&pts, &[false; 5], 3));
+    let (p, _) = run(&ev, 10.0, None);
+    assert!(matches!(
+        p.features[0].kind,
+        FeatureKind::RoundHole {
+            bottom: HoleBottom::Conical { .. },
+            ..
+        }
+    ));
+    let FeatureKind::GeneralOutsideProfile {
+        boundary: Profile::Closed(ClosedProfile::Rectangular { length, width, .. }),
+        ..
+    } = &p.features[1].kind
+    else {
+        panic!("{:?}", p.features[1].kind)
+    };
+    assert_eq!((length.nominal, width.nominal), (100.0, 60.0));
+    let OperationKind::SideMilling { milling, .. } = &op(&p, 1, 0).kind else {
+        panic!()
+    };
+    let Some(Strategy::ContourParallel { cutmode, .. }) = &milling.strategy else {
+        panic!()
+    };
+    assert_eq!(*cutmode, Some(CutMode::Climb));
+}
+
+#[test]
+fn a_slot_through_the_stock_edge_has_an_open_end() {
+    let pts = [z(-5.0, 10.0, 2.0), z(-5.0, 10.0, -3.0), z(30.0, 10.0, -3.0)];
+    let (p, _) = run(
+        &path(&pts, &[false; 2], 5),
+        6.0,
+        Some(([0.0, 0.0, -10.0], [50.0, 20.0, 0.0])),
+    );
+    let FeatureKind::Slot { end_conditions, .. } = &p.features[0].kind else {
+        panic!("{:?}", p.features[0].kind)
+    };
+    assert_eq!(end_conditions, &[SlotEnd::Open, SlotEnd::Radiused]);
+}
+
+#[test]
+fn reaming_after_drilling_is_a_second_operation_of_the_hole() {
+    let drill = path(
+        &[z(5.0, 5.0, 2.0), z(5.0, 5.0, -12.0), z(5.0, 5.0, 2.0)],
+        &[false, true],
+        2,
+    );
+    let ream = path(
+        &[z(5.0, 5.0, 2.0), z(5.0, 5.0, -10.0), z(5.0, 5.0, 2.0)],
+        &[false, false],
+        2,
+    );
+    let mut ev = drill;
+    ev.push(Event::ToolChange {
+        tool: 2,
+        span: Default::default(),
+    });
+    ev.extend(ream);
+    let (p, _) = run(&ev, 8.0, None);
+    assert_eq!(p.features.len(), 1);
+    assert_eq!(p.features[0].operations.len(), 2);
+    assert!(matches!(
+        op(&p, 0, 1).kind,
+        OperationKind::Boring { reaming: true, .. }
+    ));
+}
+
+#[test]
+fn unrecognised_moves_stay_as_a_toolpath_feature() {
+    let pts = [z(0.0, 0.0, 2.0), z(10.0, 5.0, -1.0), z(20.0, 0.0, 2.0)];
+    let (p, notes) = run(&path(&pts, &[false; 2], 4), 6.0, None);
+    assert_eq!(notes, 1);
+    assert_eq!(p.features[0].kind, FeatureKind::ToolpathFeature);
+    let o = op(&p, 0, 0);
+    assert!(matches!(o.kind, OperationKind::Freeform { .. }));
+    let Some(tps) = &o.toolpath else { panic!() };
+    let Toolpath::CutterLocation {
+        basic_curve: Curve::Polyline { points, .. },
+        ..
+    } = &tps[0]
+    else {
+        panic!()
+    };
+    assert_eq!(points.len(), 3);
+    assert_eq!(p.main_workplan.elements.len(), 1);
+}
+
+#[test]
+fn unknown_tool_diameter_keeps_the_moves() {
+    let ctx = Cc2Context::default();
+    let mut p = Project::default();
+    let pts = [z(0.0, 0.0, 2.0), z(0.0, 0.0, -1.0), z(10.0, 0.0, -1.0)];
+    let notes = recognise_report(&path(&pts, &[false; 2], 7), &mut p, &|_| ToolId(0), &ctx);
+    assert_eq!(notes.len(), 1);
+    assert_eq!(p.features[0].kind, FeatureKind::ToolpathFeature);
+}
