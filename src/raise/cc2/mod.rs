@@ -4,8 +4,8 @@
 //! chunks (one tool at one place, [`segment`]), chunks are recognised as
 //! drilling ([`hole`], [`drill`]) or milling cuts made of layers and
 //! loops ([`level`], [`shape`]); milling cuts become planar faces
-//! ([`face`]), closed pockets ([`pocket`]), slots ([`slot`]), outside
-//! profiles and steps ([`profile`]); an operation over a feature already
+//! ([`face`]), closed pockets ([`pocket`]), open pockets and steps
+//! ([`open`]), slots ([`slot`]), outside profiles ([`profile`]); an operation over a feature already
 //! found is a further (finishing) operation of it, and the allowances of
 //! the earlier ones are read from the offset between them. Whatever is
 //! not recognised stays a TOOLPATH_FEATURE with its explicit toolpath
@@ -25,6 +25,7 @@ mod freeform;
 mod hole;
 mod level;
 pub mod listing;
+mod open;
 mod pocket;
 mod profile;
 mod segment;

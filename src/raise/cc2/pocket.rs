@@ -17,8 +17,8 @@
 //! final wall lies outside the wall it left and `allowance_bottom` = how
 //! far the final bottom lies below its bottom. A feature cut by one
 //! operation gets the finishing one (its last operation is the one that
-//! leaves the final size). A pocket whose wall leaves the stock is open:
-//! not recognised yet (kept as a toolpath feature).
+//! leaves the final size). A pocket whose wall leaves the stock is an
+//! open pocket or a step ([`super::open`]).
 
 use super::build::{machine_functions, placement, plane, point, r6, technology, tol};
 use super::face::layer_steps;
@@ -66,7 +66,7 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
     let wall = path.offset(rad);
     if let Some((b, _, _)) = r.stock_box() {
         if !contains(b, wall.bbox(), 1e-6) {
-            return false;
+            return super::open::raise(r, m, rad, &wall, b);
         }
     }
     let bottom = m.deepest().z;
@@ -74,34 +74,7 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
         Some(i) => finish(r, i, &wall, bottom, m.tool),
         None => new_pocket(r, m, &wall, bottom),
     };
-    let top = r.top;
-    let name = r.project.features[feature.index()].id.clone();
-    let cuts: Vec<&Move> = m.levels.iter().flat_map(|l| l.moves.iter()).collect();
-    let spindle = cuts.first().map_or(0.0, |c| c.spindle);
-    let op = Operation {
-        id: format!("MILL {name}"),
-        toolpath: None,
-        tool_direction: None,
-        retract_plane: super::strategy::retract_plane(&m.moves, top),
-        start_point: None,
-        tool: (r.tool)(m.tool),
-        technology: technology(&cuts),
-        machine_functions: machine_functions(&cuts),
-        overcut_length: None,
-        kind: OperationKind::BottomAndSideMilling {
-            finish: true,
-            milling: MillingCommon {
-                approach: approach(&m.moves),
-                retract: None,
-                strategy: Some(pocket_strategy(m.deepest(), spindle, rad)),
-            },
-            axial_cutting_depth: layer_steps(m, top),
-            radial_cutting_depth: loop_stepover(m.deepest()),
-            allowance_side: None,
-            allowance_bottom: None,
-        },
-    };
-    let id = r.add_operation(feature, op);
+    let id = pocket_op(r, m, rad, feature);
     for k in r.known.iter_mut() {
         if let Known::Pocket { feature: f, ops } = k {
             if *f == feature {
@@ -226,4 +199,37 @@ fn pocket_feature(name: &str, wall: &Shape, bottom: f64, top: f64, edge: f64) ->
             boundary,
         },
     }
+}
+
+/// A BOTTOM_AND_SIDE milling operation of `feature` (finishing until a
+/// later operation finishes the feature) and its workingstep.
+pub fn pocket_op(r: &mut Raiser, m: &MillCut, rad: f64, feature: FeatureId) -> OperationId {
+    let top = r.top;
+    let name = r.project.features[feature.index()].id.clone();
+    let cuts: Vec<&Move> = m.levels.iter().flat_map(|l| l.moves.iter()).collect();
+    let spindle = cuts.first().map_or(0.0, |c| c.spindle);
+    let op = Operation {
+        id: format!("MILL {name}"),
+        toolpath: None,
+        tool_direction: None,
+        retract_plane: super::strategy::retract_plane(&m.moves, top),
+        start_point: None,
+        tool: (r.tool)(m.tool),
+        technology: technology(&cuts),
+        machine_functions: machine_functions(&cuts),
+        overcut_length: None,
+        kind: OperationKind::BottomAndSideMilling {
+            finish: true,
+            milling: MillingCommon {
+                approach: approach(&m.moves),
+                retract: None,
+                strategy: Some(pocket_strategy(m.deepest(), spindle, rad)),
+            },
+            axial_cutting_depth: layer_steps(m, top),
+            radial_cutting_depth: loop_stepover(m.deepest()),
+            allowance_side: None,
+            allowance_bottom: None,
+        },
+    };
+    r.add_operation(feature, op)
 }

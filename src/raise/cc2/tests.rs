@@ -334,3 +334,74 @@ fn unknown_tool_diameter_keeps_the_moves() {
     assert_eq!(notes.len(), 1);
     assert_eq!(p.features[0].kind, FeatureKind::ToolpathFeature);
 }
+
+#[test]
+fn strokes_along_one_stock_edge_are_a_step() {
+    // Stock 50 x 40; a 10 mm tool cuts zig-zag along X at y = 2 and 8:
+    // the wall is at y = 13, the step 13 wide, 3 deep.
+    let pts = [
+        z(-6.0, 2.0, 2.0),
+        z(-6.0, 2.0, -3.0),
+        z(56.0, 2.0, -3.0),
+        z(56.0, 8.0, -3.0),
+        z(-6.0, 8.0, -3.0),
+    ];
+    let (p, notes) = run(
+        &path(&pts, &[false; 4], 3),
+        10.0,
+        Some(([0.0, 0.0, -10.0], [50.0, 40.0, 0.0])),
+    );
+    assert_eq!(notes, 0);
+    let f = &p.features[0];
+    let FeatureKind::Step {
+        open_boundary:
+            TravelPath::Linear {
+                distance,
+                direction,
+                ..
+            },
+        ..
+    } = &f.kind
+    else {
+        panic!("{:?}", f.kind)
+    };
+    assert_eq!(
+        (distance.nominal, direction.ratios),
+        (50.0, [1.0, 0.0, 0.0])
+    );
+    assert_eq!(f.placement.location.xyz, [0.0, 13.0, 0.0]);
+    assert_eq!(f.depth.position.location.xyz[2], -3.0);
+}
+
+#[test]
+fn a_pocket_through_a_stock_edge_is_an_open_pocket() {
+    // Stock 50 x 40; loop (20..30, -2..10) with a 4 mm tool: wall box
+    // 18..32 x -4..12, open at the bottom edge y = 0.
+    let mut pts = vec![z(20.0, -2.0, 2.0)];
+    pts.extend(rect(20.0, -2.0, 30.0, 10.0, -2.0));
+    let (p, _) = run(
+        &path(&pts, &[false; 5], 3),
+        4.0,
+        Some(([0.0, 0.0, -10.0], [50.0, 40.0, 0.0])),
+    );
+    let f = &p.features[0];
+    let FeatureKind::OpenPocket {
+        open_boundary:
+            OpenProfile::General {
+                shape: Curve::Polyline { points, .. },
+                ..
+            },
+        pocket,
+        ..
+    } = &f.kind
+    else {
+        panic!("{:?}", f.kind)
+    };
+    assert_eq!(f.placement.location.xyz, [25.0, 6.0, 0.0]);
+    let xy: Vec<[f64; 2]> = points.iter().map(|p| [p.xyz[0], p.xyz[1]]).collect();
+    assert_eq!(xy, [[7.0, -6.0], [7.0, 6.0], [-7.0, 6.0], [-7.0, -6.0]]);
+    assert_eq!(
+        pocket.orthogonal_radius.as_ref().map(|r| r.nominal),
+        Some(2.0)
+    );
+}
