@@ -5,9 +5,10 @@
 //! drilling ([`hole`], [`drill`]) or milling cuts made of layers and
 //! loops ([`level`], [`shape`]); milling cuts become planar faces
 //! ([`face`]), closed pockets ([`pocket`]), open pockets and steps
-//! ([`open`]), slots ([`slot`]), outside profiles ([`profile`]); an operation over a feature already
-//! found is a further (finishing) operation of it, and the allowances of
-//! the earlier ones are read from the offset between them. Whatever is
+//! ([`open`]), slots ([`slot`]), outside profiles ([`profile`]); an
+//! operation over a feature already found is a further (finishing)
+//! operation of it, and the allowances of the earlier ones are read from
+//! the offset between them. Whatever is
 //! not recognised stays a TOOLPATH_FEATURE with its explicit toolpath
 //! ([`freeform`]), reported with W0870: nothing is dropped.
 //!
