@@ -265,6 +265,58 @@ codes! {
     ArcBadWords = "E0512", "arc-bad-words", Error,
         "an arc without a centre or radius, or with both",
         "G2/G3 need either the centre words (I J K for the active plane) or R, not both and not neither. A full circle needs the centre words.";
+    // ---- E08xx / W08xx: STEP-NC Part 21 files (src/stepnc)
+    P21Syntax = "E0800", "p21-syntax-error", Error,
+        "a Part 21 statement that does not follow ISO 10303-21",
+        "A STEP file is made of `#n=ENTITY(parameters);` instances between `DATA;` and `ENDSEC;`. Parameters are separated by commas: strings in single quotes, reals with a decimal point, enumerations between dots, `$` for an unset value, `#n` for a reference and lists in parentheses. The message names what was found and what could come instead; the instance is skipped.";
+    P21UnreadableText = "E0801", "p21-unreadable-text", Error,
+        "text in a Part 21 file that starts no token (or a string or comment that never closes)",
+        "A Part 21 file contains only names, numbers, strings in single quotes, enumerations like `.T.`, `#n` references, the punctuation `( ) , = ; $ *` and comments `/* ... */`. Close the string with `'` (write `''` for a quote inside it) or the comment with `*/`, or remove the character.";
+    DanglingReference = "E0802", "dangling-reference", Error,
+        "a `#n` reference to an instance the file does not contain",
+        "Every `#n` used as a parameter must be defined somewhere in the DATA section as `#n=...;`. Define the instance or correct the number.";
+    WrongArgumentCount = "E0803", "wrong-argument-count", Error,
+        "an instance with more or fewer parameters than its entity has attributes",
+        "A Part 21 instance lists every attribute of its entity, supertype attributes first, in the order of the EXPRESS schema; unset optional attributes are written `$`. `cncc explain` cannot show the schema, but `cncc query FILE.stp /#n` prints the attribute names cncc expects.";
+    WrongArgumentType = "E0804", "wrong-argument-type", Error,
+        "a parameter of the wrong kind (a string where a number belongs, `$` for a mandatory attribute...)",
+        "Each attribute has a type in the ISO 14649 schema: measures are reals, identifiers strings, booleans `.T.`/`.F.`, aggregates lists `(...)` (an empty one is `()`, never `$`) and entities `#n` references to an instance of a fitting entity. Only OPTIONAL attributes may be `$`.";
+    UnknownEntity = "E0805", "unknown-entity", Error,
+        "an entity name that is not in the ISO 14649 schema cncc knows",
+        "cncc reads the ISO 14649-10, -11 and -111 entities (and the ISO 10303-42 geometry they use), with the spelling variants real files use (`BIDIRECTIONAL_MILLING`, `TOOL_DIMENSION`, `CENTER_DRILL`, `ELEMENTARY_SURFACE`). Check the spelling; an entity of another schema cannot be read.";
+    UnsupportedSchema = "E0806", "unsupported-schema", Error,
+        "a STEP file of a schema cncc does not read (such as the AP238 AIM)",
+        "cncc reads ISO 14649 ARM files, whose FILE_SCHEMA is ('MACHINING_SCHEMA','MILLING_SCHEMA') or ('COMBINED_SCHEMA'). AP238 AIM files (INTEGRATED_CNC_SCHEMA, MODEL_BASED_INTEGRATED_MANUFACTURING_SCHEMA) map the same concepts onto generic STEP resources and are not read. Export the ARM form from the CAM system.";
+    StepncModel = "E0807", "stepnc-model-error", Error,
+        "a STEP-NC file whose instances do not make an ISO 14649 project",
+        "The file parses, but an attribute refers to an instance of the wrong kind (an operation where a feature belongs...), or there is no PROJECT. The message names the attribute and what it expected.";
+    DuplicateInstance = "E0808", "duplicate-instance-number", Error,
+        "two instances with the same `#n`",
+        "Instance numbers are unique within a file; references to the number would be ambiguous. The first instance is kept; renumber the second.";
+    ComplexInstance = "E0809", "complex-instance", Error,
+        "a complex instance `#n=(A(..)B(..))` where ISO 14649 expects a simple one",
+        "ISO 14649 ARM files use only simple instances; complex ones belong to AIM files (units). The instance is read but cannot become part of the model.";
+    BadQueryPath = "E0810", "bad-query-path", Error,
+        "a `cncc query` path that names no attribute or index of the file",
+        "A path starts at an entity (`/project`) or an instance (`/#18`) and goes on through attribute names (`/its_id`), indexes (`[0]`) and `[*]` for every element of a list. The message names the step that failed and the attributes there.";
+    P21Structure = "E0811", "p21-file-structure", Error,
+        "a Part 21 file without its ISO-10303-21 / HEADER / DATA / ENDSEC structure",
+        "A Part 21 file starts with `ISO-10303-21;`, has a `HEADER;` section (FILE_DESCRIPTION, FILE_NAME, FILE_SCHEMA) and a `DATA;` section each closed by `ENDSEC;`, and ends with `END-ISO-10303-21;`.";
+    P21TooDeep = "E0812", "p21-too-deep", Error,
+        "instances that refer to each other too deeply (or in a cycle) to be read",
+        "Following references from the project reached more than 200 levels, or came back to an instance it was still reading. ISO 14649 data is a tree of shallow depth; check the references named.";
+    DuplicateItsId = "W0800", "duplicate-its-id", Warning,
+        "two features, operations or executables with the same its_id",
+        "ISO 14649 asks the its_id of the project, executables, features and operations to be unique within the programme; real files break this. Both are kept, but queries and differences by id may be ambiguous.";
+    UnusedInstance = "W0801", "unused-instance", Warning,
+        "an instance the project never refers to",
+        "The instance is not reachable from the PROJECT, so it is not part of the programme and a normalised file leaves it out. Remove it, or refer to it.";
+    MandatoryUnset = "W0803", "mandatory-unset", Warning,
+        "a mandatory attribute written `$`",
+        "The schema does not make this attribute OPTIONAL, yet the file leaves it unset, as some generators do. cncc reads on and keeps the instance as written; other readers may refuse the file.";
+    KeptRaw = "W0802", "kept-raw", Warning,
+        "a value cncc could not read into its model, kept as written",
+        "The instance does not have the form ISO 14649 gives it (a mandatory attribute unset, an unexpected entity), so the typed model keeps it as written and carries it to the output unchanged, but it takes no part in checks, differences or posting.";
 }
 
 impl Code {

@@ -1,5 +1,127 @@
 //! STEP-NC (ISO 14649 ARM, Part 21): the typed model ([`model`]) that
 //! programs are raised into, Part 21 files are read into and written
 //! from, and post-processors read.
+//!
+//! Reading: text → [`part21`] generic instance graph (with spans) →
+//! [`schema`] validation (entities, argument counts and kinds, references)
+//! → [`read`] typed model in internal units. Writing: model → [`write`]
+//! generic graph (shared value objects, depth-first numbering) → text.
+//! [`query`] answers attribute paths over the generic graph; [`diff`]
+//! compares two files' models.
 
+pub mod diff;
 pub mod model;
+pub mod part21;
+pub mod query;
+pub mod read;
+pub mod schema;
+pub mod units;
+pub mod write;
+
+use crate::diag::{Code, Diagnostic};
+use crate::source::SourceMap;
+use crate::span::{FileId, Span};
+use part21::P21File;
+use std::path::Path;
+
+pub use write::write_project;
+
+/// FILE_SCHEMA names of ISO 14649 ARM files (read).
+const ARM_SCHEMAS: &[&str] = &["MACHINING_SCHEMA", "MILLING_SCHEMA", "COMBINED_SCHEMA"];
+
+/// What reading a Part 21 text gives: the generic graph, the model when
+/// the file makes one without errors, and every diagnostic.
+pub struct ReadResult {
+    pub graph: P21File,
+    pub project: Option<model::Project>,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Whether a file is Part 21: by its extension (.stp, .step, .p21,
+/// .stpnc) or its first word `ISO-10303-21;`.
+pub fn is_part21(path: &Path, head: &str) -> bool {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    if matches!(ext.as_deref(), Some("stp" | "step" | "p21" | "stpnc")) {
+        return true;
+    }
+    head.trim_start_matches('\u{feff}')
+        .trim_start()
+        .starts_with("ISO-10303-21")
+}
+
+/// Reads a Part 21 text (already registered as `file` in a SourceMap).
+pub fn read_text(text: &str, file: FileId) -> ReadResult {
+    let (graph, mut diagnostics) = part21::parse::parse(text, file);
+    if let Some(d) = unsupported_schema(&graph, file) {
+        diagnostics.push(d);
+        return ReadResult {
+            graph,
+            project: None,
+            diagnostics,
+        };
+    }
+    diagnostics.extend(schema::validate(&graph));
+    let mut project = None;
+    if !diagnostics.iter().any(Diagnostic::is_error) {
+        let (p, d) = read::read_project(&graph);
+        project = p;
+        diagnostics.extend(d);
+    }
+    ReadResult {
+        graph,
+        project,
+        diagnostics,
+    }
+}
+
+/// Reads a Part 21 file, registering it in `files` for the diagnostics'
+/// spans.
+pub fn read_file(path: &Path, files: &mut SourceMap) -> std::io::Result<ReadResult> {
+    let bytes = std::fs::read(path)?;
+    let text = crate::driver::decode(&bytes);
+    let id = files.add(path.display().to_string(), text.clone());
+    Ok(read_text(&text, id))
+}
+
+/// E0806 for a FILE_SCHEMA that is not ISO 14649 ARM.
+fn unsupported_schema(graph: &P21File, file: FileId) -> Option<Diagnostic> {
+    let schemas = graph.schemas();
+    let span = graph
+        .header_record("FILE_SCHEMA")
+        .map_or(Span::new(file, 0, 0), |r| r.span);
+    if schemas.is_empty() {
+        return Some(
+            Diagnostic::new(Code::UnsupportedSchema, "the file names no FILE_SCHEMA")
+                .primary(span, "no schema")
+                .help("an ISO 14649 file has FILE_SCHEMA(('MACHINING_SCHEMA','MILLING_SCHEMA'));"),
+        );
+    }
+    let foreign: Vec<&String> = schemas
+        .iter()
+        .filter(|s| !ARM_SCHEMAS.contains(&s.split_whitespace().next().unwrap_or("")))
+        .collect();
+    if foreign.is_empty() {
+        return None;
+    }
+    let aim = foreign.iter().any(|s| {
+        s.starts_with("INTEGRATED_CNC_SCHEMA")
+            || s.starts_with("MODEL_BASED_INTEGRATED_MANUFACTURING")
+    });
+    let mut d = Diagnostic::new(
+        Code::UnsupportedSchema,
+        format!("unsupported schema {}", foreign[0]),
+    )
+    .primary(span, "not an ISO 14649 ARM schema");
+    d = if aim {
+        d.note("this is an AP238 AIM file: the same concepts mapped onto generic STEP resources")
+            .help("export the ISO 14649 ARM form (MACHINING_SCHEMA, MILLING_SCHEMA) instead")
+    } else {
+        d.help(
+            "cncc reads ISO 14649 ARM files: MACHINING_SCHEMA, MILLING_SCHEMA or COMBINED_SCHEMA",
+        )
+    };
+    Some(d)
+}

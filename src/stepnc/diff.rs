@@ -1,0 +1,1 @@
+//! Semantic difference of two STEP-NC files (placeholder replaced below).

@@ -1,0 +1,256 @@
+//! Reading a Part 21 text into the generic [`P21File`]: the token stream is
+//! cut at `;`, the section structure (ISO-10303-21, HEADER, DATA, ENDSEC)
+//! is followed here and every statement goes to the LALRPOP grammar on its
+//! own, so one bad instance costs only itself.
+
+use super::lexer::{tokens, Tok};
+use super::{Instance, P21File, Stmt};
+use crate::diag::{Code, Diagnostic};
+use crate::span::{FileId, Span};
+
+lalrpop_util::lalrpop_mod!(
+    #[allow(clippy::all, unused_parens, dead_code, unused_imports)]
+    grammar,
+    "/part21.rs"
+);
+
+type Spanned = (usize, Tok, usize);
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Section {
+    Before,
+    Header,
+    Between,
+    Data,
+    After,
+}
+
+/// Reads a Part 21 text; diagnostics for every statement that cannot be
+/// read (it is skipped) and for a broken file structure.
+pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
+    let mut diags = Vec::new();
+    let mut out = P21File::default();
+    let mut stmt: Vec<Spanned> = Vec::new();
+    let mut section = Section::Before;
+    let parser = grammar::StatementParser::new();
+    for t in tokens(src) {
+        match t {
+            Err((a, b)) => diags.push(unreadable(file, a, b, "a character that starts no token")),
+            Ok((a, Tok::OpenComment, _)) => {
+                diags.push(unreadable(file, a, a + 2, "this comment is never closed"))
+            }
+            Ok((a, Tok::OpenString, b)) => {
+                diags.push(unreadable(file, a, b, "this string is never closed"));
+                stmt.clear();
+            }
+            Ok((_, Tok::Semi, b)) => {
+                let s = std::mem::take(&mut stmt);
+                section = statement(src, file, &parser, &s, b, section, &mut out, &mut diags);
+            }
+            Ok(t) => stmt.push(t),
+        }
+    }
+    if let Some(&(a, _, b)) = stmt.first() {
+        diags.push(syntax(
+            file,
+            a,
+            b,
+            "the file ends inside a statement (a `;` is missing)",
+        ));
+    }
+    if section != Section::After {
+        let at = src.len();
+        diags.push(
+            Diagnostic::new(
+                Code::P21Structure,
+                "the file does not end with `END-ISO-10303-21;`",
+            )
+            .primary(Span::new(file, at, at), "file ends here")
+            .help(format!(
+                "the file stops in the {section:?} part; a truncated file?"
+            )),
+        );
+    }
+    (out, diags)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn statement(
+    src: &str,
+    file: FileId,
+    parser: &grammar::StatementParser,
+    toks: &[Spanned],
+    end: usize,
+    section: Section,
+    out: &mut P21File,
+    diags: &mut Vec<Diagnostic>,
+) -> Section {
+    let Some(&(a, first, b)) = toks.first() else {
+        diags.push(syntax(file, end - 1, end, "an empty statement"));
+        return section;
+    };
+    let word = &src[a..b];
+    let lone = toks.len() == 1;
+    let next = match (section, first, word) {
+        (Section::Before, Tok::Begin, _) if lone => Some(Section::Before),
+        (Section::Before, Tok::Keyword, "HEADER") if lone => Some(Section::Header),
+        (Section::Header | Section::Data, Tok::Keyword, "ENDSEC") if lone => Some(Section::Between),
+        // DATA; or, from edition 3 on, DATA('name',('schema'));
+        (Section::Between, Tok::Keyword, "DATA") => Some(Section::Data),
+        (Section::Between, Tok::End, _) if lone => Some(Section::After),
+        _ => None,
+    };
+    if let Some(n) = next {
+        return n;
+    }
+    match section {
+        Section::Header | Section::Data => {}
+        _ => {
+            diags.push(
+                Diagnostic::new(
+                    Code::P21Structure,
+                    format!("`{word}` outside the HEADER and DATA sections"),
+                )
+                .primary(Span::new(file, a, b), "not expected here")
+                .help("a Part 21 file is `ISO-10303-21; HEADER; ... ENDSEC; DATA; ... ENDSEC; END-ISO-10303-21;`"),
+            );
+            return section;
+        }
+    }
+    let feed = toks.iter().map(|&t| Ok::<_, (usize, usize, String)>(t));
+    match parser.parse(src, file, feed) {
+        Ok(Stmt::Header(r)) if section == Section::Header => out.header.push(r),
+        Ok(Stmt::Instance { id, id_span, parts }) if section == Section::Data => {
+            add_instance(out, id, id_span, parts, diags)
+        }
+        Ok(_) => diags.push(syntax(
+            file,
+            a,
+            b,
+            if section == Section::Header {
+                "an instance in the HEADER section"
+            } else {
+                "a header entity in the DATA section (`#n=` is missing)"
+            },
+        )),
+        Err(e) => diags.push(parse_error(file, e, end)),
+    }
+    section
+}
+
+fn add_instance(
+    out: &mut P21File,
+    id: u64,
+    span: Span,
+    mut parts: Vec<crate::stepnc::part21::Record>,
+    diags: &mut Vec<Diagnostic>,
+) {
+    if let Some(first) = out.get(id) {
+        diags.push(
+            Diagnostic::new(Code::DuplicateInstance, format!("#{id} is defined twice"))
+                .primary(span, "second definition")
+                .secondary(first.span, "first definition, the one kept")
+                .help("give the second instance a number of its own"),
+        );
+        return;
+    }
+    let first = parts.remove(0);
+    out.push(Instance {
+        id,
+        entity: first.entity,
+        params: first.params,
+        span,
+        entity_span: first.span,
+        more_parts: parts,
+    });
+}
+
+fn unreadable(file: FileId, a: usize, b: usize, what: &str) -> Diagnostic {
+    Diagnostic::new(Code::P21UnreadableText, what.to_string())
+        .primary(Span::new(file, a, b.max(a + 1)), "here")
+        .help(
+            "close strings with `'` and comments with `*/`; write a quote inside a string as `''`",
+        )
+}
+
+fn syntax(file: FileId, a: usize, b: usize, msg: &str) -> Diagnostic {
+    Diagnostic::new(Code::P21Syntax, msg.to_string())
+        .primary(Span::new(file, a, b), "here")
+        .help("an instance is `#n=ENTITY(p1,p2,...);`")
+}
+
+fn parse_error(
+    file: FileId,
+    e: lalrpop_util::ParseError<usize, Tok, (usize, usize, String)>,
+    end: usize,
+) -> Diagnostic {
+    use lalrpop_util::ParseError as P;
+    let (a, b, msg) = match e {
+        P::InvalidToken { location } => (location, location + 1, "invalid token".to_string()),
+        P::UnrecognizedEof { location, expected } => (
+            location,
+            end,
+            format!(
+                "the statement ends too early; expected {}",
+                expected_list(&expected)
+            ),
+        ),
+        P::UnrecognizedToken {
+            token: (a, t, b),
+            expected,
+        } => (
+            a,
+            b,
+            format!(
+                "unexpected {}; expected {}",
+                describe(t),
+                expected_list(&expected)
+            ),
+        ),
+        P::ExtraToken { token: (a, t, b) } => (a, b, format!("unexpected {}", describe(t))),
+        P::User { error: (a, b, m) } => (a, b, m),
+    };
+    Diagnostic::new(Code::P21Syntax, msg)
+        .primary(Span::new(file, a, b.max(a)), "here")
+        .help("an instance is `#n=ENTITY(p1,p2,...);`; this one is skipped")
+}
+
+fn describe(t: Tok) -> &'static str {
+    match t {
+        Tok::Begin => "`ISO-10303-21`",
+        Tok::End => "`END-ISO-10303-21`",
+        Tok::Keyword => "a name",
+        Tok::InstanceName => "an instance reference",
+        Tok::Integer => "an integer",
+        Tok::Real => "a real",
+        Tok::Str => "a string",
+        Tok::Enumeration => "an enumeration",
+        Tok::Binary => "a binary",
+        Tok::Dollar => "`$`",
+        Tok::Star => "`*`",
+        Tok::LParen => "`(`",
+        Tok::RParen => "`)`",
+        Tok::Comma => "`,`",
+        Tok::Eq => "`=`",
+        Tok::Semi => "`;`",
+        Tok::OpenComment => "an unclosed comment",
+        Tok::OpenString => "an unclosed string",
+    }
+}
+
+fn expected_list(expected: &[String]) -> String {
+    let names: Vec<String> = expected
+        .iter()
+        .map(|e| match e.trim_matches('"') {
+            "keyword" => "a name".to_string(),
+            "#n" => "`#n`".to_string(),
+            other if other.len() == 1 => format!("`{other}`"),
+            other => format!("a {other}"),
+        })
+        .collect();
+    match names.len() {
+        0 => "nothing more".to_string(),
+        1 => names[0].clone(),
+        _ => format!("one of {}", names.join(", ")),
+    }
+}

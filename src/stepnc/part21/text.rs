@@ -1,0 +1,121 @@
+//! Writing the generic graph as Part 21 text: a header, then one instance
+//! per line, `#n=NAME(p1,p2);`, reals always with a decimal point, strings
+//! re-escaped.
+
+use super::lexer::encode_string;
+use super::{Instance, Param, Record, Value};
+use std::fmt::Write;
+
+/// The whole file: header records then instances in the order given.
+pub fn write_file(header: &[Record], instances: &[Instance]) -> String {
+    let mut out = String::with_capacity(64 * instances.len() + 256);
+    out.push_str("ISO-10303-21;\nHEADER;\n");
+    for r in header {
+        write_record(&mut out, r);
+        out.push_str(";\n");
+    }
+    out.push_str("ENDSEC;\nDATA;\n");
+    for i in instances {
+        write_instance(&mut out, i);
+    }
+    out.push_str("ENDSEC;\nEND-ISO-10303-21;\n");
+    out
+}
+
+/// `#n=NAME(...);` and a newline.
+pub fn write_instance(out: &mut String, i: &Instance) {
+    let _ = write!(out, "#{}=", i.id);
+    if i.is_complex() {
+        out.push('(');
+        write_parts(out, &i.entity, &i.params);
+        for r in &i.more_parts {
+            write_record(out, r);
+        }
+        out.push(')');
+    } else {
+        write_parts(out, &i.entity, &i.params);
+    }
+    out.push_str(";\n");
+}
+
+fn write_record(out: &mut String, r: &Record) {
+    write_parts(out, &r.entity, &r.params);
+}
+
+fn write_parts(out: &mut String, entity: &str, params: &[Param]) {
+    out.push_str(entity);
+    out.push('(');
+    write_params(out, params);
+    out.push(')');
+}
+
+fn write_params(out: &mut String, params: &[Param]) {
+    for (k, p) in params.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        write_value(out, &p.value);
+    }
+}
+
+/// One parameter value.
+pub fn write_value(out: &mut String, v: &Value) {
+    match v {
+        Value::Null => out.push('$'),
+        Value::Derived => out.push('*'),
+        Value::Int(i) => {
+            let _ = write!(out, "{i}");
+        }
+        Value::Real(r) => out.push_str(&real(*r)),
+        Value::Str(s) => {
+            out.push('\'');
+            out.push_str(&encode_string(s));
+            out.push('\'');
+        }
+        Value::Enum(e) => {
+            let _ = write!(out, ".{e}.");
+        }
+        Value::Binary(b) => {
+            let _ = write!(out, "\"{b}\"");
+        }
+        Value::Ref(n) => {
+            let _ = write!(out, "#{n}");
+        }
+        Value::List(l) => {
+            out.push('(');
+            write_params(out, l);
+            out.push(')');
+        }
+        Value::Typed(name, p) => {
+            out.push_str(name);
+            out.push('(');
+            write_value(out, &p.value);
+            out.push(')');
+        }
+    }
+}
+
+/// A real in the shortest form that reads back to the same `f64`, always
+/// with a decimal point (`10.`, `0.04`, `-12.`).
+pub fn real(r: f64) -> String {
+    let mut s = format!("{r}");
+    if !s.contains('.') {
+        s.push('.');
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reals_have_a_point_and_round_trip() {
+        assert_eq!(real(10.0), "10.");
+        assert_eq!(real(0.04), "0.04");
+        assert_eq!(real(-12.0), "-12.");
+        for v in [0.1 + 0.2, 1e-9, 123456.789, 1e22] {
+            assert_eq!(real(v).parse::<f64>().unwrap(), v);
+        }
+    }
+}

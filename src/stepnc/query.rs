@@ -1,0 +1,1 @@
+//! Attribute paths over a Part 21 file (placeholder replaced below).
