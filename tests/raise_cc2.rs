@@ -33,13 +33,96 @@ fn raise(file: &str, dialect: &str) -> Project {
         stock: Some(([0.0, 0.0, -20.0], [120.0, 80.0, 1.0])),
         secplane_z: 30.0,
     };
-    let mut project = Project::default();
+    let mut project = skeleton();
     let notes = recognise_report(&events, &mut project, &|t| ToolId(t as u32), &ctx);
     assert!(
         notes.is_empty(),
         "{file}: moves left unrecognised: {notes:?}"
     );
     project
+}
+
+/// What the CC1 side makes before recognition: the project, its main
+/// workplan with a setup, workpiece 0 and the tools (index = number).
+fn skeleton() -> Project {
+    let origin = Axis2Placement {
+        name: "ORIGIN".into(),
+        location: Point {
+            name: "ORIGIN".into(),
+            xyz: [0.0; 3],
+        },
+        axis: None,
+        ref_direction: None,
+    };
+    let plane = Plane {
+        name: "SECURITY PLANE".into(),
+        position: origin.clone(),
+    };
+    let tool = |id: &str, kind: ToolBodyKind, diameter: f64| Tool {
+        id: id.into(),
+        body: ToolBody {
+            kind,
+            dimension: ToolDimension {
+                diameter,
+                ..ToolDimension::default()
+            },
+            number_of_teeth: None,
+            hand_of_cut: None,
+            coolant_through_tool: None,
+            pilot_length: None,
+            extra: Vec::new(),
+        },
+        cutting_edges: vec![CuttingComponent {
+            tool_offset_length: 50.0,
+            material: None,
+            technological_data: None,
+            expected_tool_life: None,
+            technology: None,
+        }],
+        overall_assembly_length: None,
+        direction_for_spindle_orientation: None,
+        holder_diameter_for_spindle_orientation: None,
+    };
+    Project {
+        id: "CC2 PART".into(),
+        main_workplan: Workplan {
+            id: "MAIN WORKPLAN".into(),
+            elements: Vec::new(),
+            channel: None,
+            setup: Some(Setup {
+                id: "SETUP".into(),
+                origin: None,
+                secplane: plane,
+                workpiece_setups: vec![WorkpieceSetup {
+                    workpiece: WorkpieceId(0),
+                    origin: origin.clone(),
+                    offset: None,
+                    restricted_area: None,
+                    instructions: Vec::new(),
+                }],
+            }),
+            effect: None,
+        },
+        its_workpieces: vec![WorkpieceId(0)],
+        workpieces: vec![Workpiece {
+            id: "PART".into(),
+            material: None,
+            global_tolerance: None,
+            rawpiece: None,
+            geometry: None,
+            bounding: None,
+            clamping_positions: Vec::new(),
+        }],
+        tools: vec![
+            tool("T0", ToolBodyKind::Endmill, 1.0),
+            tool("T1 FACE MILL", ToolBodyKind::Facemill, 20.0),
+            tool("T2 DRILL", ToolBodyKind::TwistDrill, 8.0),
+            tool("T3 END MILL", ToolBodyKind::Endmill, 10.0),
+            tool("T4 DRILL", ToolBodyKind::TwistDrill, 6.0),
+            tool("T5 END MILL", ToolBodyKind::Endmill, 8.0),
+        ],
+        ..Project::default()
+    }
 }
 
 fn kinds(p: &Project) -> Vec<String> {
@@ -327,6 +410,41 @@ fn slot(f: &Feature, p: &Project) {
         milling.strategy,
         Some(Strategy::CenterMilling { .. })
     ));
+}
+
+/// Both programs give the same Part 21 file, which reads back into the
+/// same model.
+#[test]
+fn part21_files_are_the_same_and_read_back() {
+    let text = cncc::stepnc::write_project(&raise("cc2part.nc", "fanuc"));
+    assert_eq!(
+        text,
+        cncc::stepnc::write_project(&raise("cc2part.mpf", "siemens840d"))
+    );
+    for entity in [
+        "PLANAR_FACE(",
+        "ROUND_HOLE(",
+        "CLOSED_POCKET(",
+        "SLOT(",
+        "MULTISTEP_DRILLING(",
+        "BOTTOM_AND_SIDE_ROUGH_MILLING(",
+        "BOTTOM_AND_SIDE_FINISH_MILLING(",
+        "CONTOUR_PARALLEL(",
+        "BIDIRECTIONAL",
+    ] {
+        assert!(text.contains(entity), "no {entity} in\n{text}");
+    }
+    let mut files = cncc::source::SourceMap::new();
+    let id = files.add("cc2part.stp", text.clone());
+    let back = cncc::stepnc::read_text(&text, id);
+    assert!(
+        back.diagnostics.iter().all(|d| !d.is_error()),
+        "{:?}",
+        back.diagnostics
+    );
+    let p = back.project.expect("a model");
+    assert_eq!(p.features, raise("cc2part.nc", "fanuc").features);
+    assert_eq!(cncc::stepnc::write_project(&p), text);
 }
 
 #[test]

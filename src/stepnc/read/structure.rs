@@ -85,13 +85,15 @@ impl<'f> Rd<'f> {
             "PARALLEL" | "SELECTIVE" | "NON_SEQUENTIAL" | "SET_MARK" | "WAIT_FOR_MARK" => {
                 Executable::Other(self.raw(i)?)
             }
-            _ => return Err(fail(
-                i.entity_span,
-                format!(
+            _ => {
+                return Err(fail(
+                    i.entity_span,
+                    format!(
                     "expected an executable (workingstep, workplan, NC function), found {} (#{})",
                     i.entity, i.id
                 ),
-            )),
+                ))
+            }
         })
     }
 
