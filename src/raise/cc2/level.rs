@@ -6,6 +6,7 @@
 
 use super::segment::{Chunk, EPS};
 use crate::toolpath::{Move, MoveKind};
+use std::collections::HashMap;
 
 /// A 2D box: min x, min y, max x, max y.
 pub type Box2 = [f64; 4];
@@ -25,6 +26,10 @@ pub struct MillCut {
     pub moves: Vec<Move>,
     /// Levels in the order they are first cut.
     pub levels: Vec<Level>,
+    /// The XY box of the horizontal cutting moves.
+    footprint: Box2,
+    /// The highest cutting feed and the first cutting move's spindle.
+    speeds: (f64, f64),
 }
 
 /// Is it a feed move in the XY plane at one Z?
@@ -99,17 +104,26 @@ impl MillCut {
                 }),
             }
         }
-        (!levels.is_empty()).then(|| MillCut {
+        if levels.is_empty() {
+            return None;
+        }
+        let cuts: Vec<Move> = levels
+            .iter()
+            .flat_map(|l| l.moves.iter().cloned())
+            .collect();
+        let feed = cuts.iter().map(|m| m.feed).fold(0.0, f64::max);
+        Some(MillCut {
             tool: c.tool,
             moves: c.moves.clone(),
+            footprint: bbox(&cuts),
+            speeds: (feed, cuts[0].spindle),
             levels,
         })
     }
 
     /// The XY box of the horizontal cutting moves.
     pub fn footprint(&self) -> Box2 {
-        let all: Vec<Move> = self.levels.iter().flat_map(|l| l.moves.clone()).collect();
-        bbox(&all)
+        self.footprint
     }
 
     pub fn deepest(&self) -> &Level {
@@ -130,7 +144,9 @@ impl MillCut {
         }
         let (a, b) = (self.footprint(), next.footprint());
         let below = next.levels.iter().all(|l| l.z < self.deepest().z - EPS);
-        let layers = below && same_box(a, b, 1e-3) && self.speeds() == next.speeds();
+        // A pass cut with other speeds is another operation (a finishing
+        // pass), not a layer.
+        let layers = below && same_box(a, b, 1e-3) && self.speeds == next.speeds;
         let one_level = |c: &MillCut| c.levels.len() == 1;
         let strokes = one_level(self)
             && one_level(next)
@@ -139,15 +155,15 @@ impl MillCut {
         layers || strokes
     }
 
-    /// The highest cutting feed and the spindle speed: a pass cut with
-    /// other speeds is another operation (a finishing pass), not a layer.
-    fn speeds(&self) -> (f64, f64) {
-        let cuts = self.levels.iter().flat_map(|l| l.moves.iter());
-        let feed = cuts.clone().map(|m| m.feed).fold(0.0, f64::max);
-        (feed, cuts.map(|m| m.spindle).next().unwrap_or(0.0))
-    }
-
     pub fn absorb(&mut self, next: MillCut) {
+        let (a, b) = (self.footprint, next.footprint);
+        self.footprint = [
+            a[0].min(b[0]),
+            a[1].min(b[1]),
+            a[2].max(b[2]),
+            a[3].max(b[3]),
+        ];
+        self.speeds.0 = self.speeds.0.max(next.speeds.0);
         self.moves.extend(next.moves);
         for l in next.levels {
             match self.levels.iter_mut().find(|m| (m.z - l.z).abs() < EPS) {
@@ -174,20 +190,26 @@ fn same_xy(a: [f64; 3], b: [f64; 3]) -> bool {
 pub fn split(moves: &[Move]) -> Split {
     let mut out = Split::default();
     let mut cur: Vec<Move> = Vec::new();
+    // Where each start point of `cur` first occurs (on a 0.1 µm grid).
+    let mut starts: HashMap<(i64, i64), usize> = HashMap::new();
+    let key = |p: [f64; 3]| ((p[0] * 1e7).round() as i64, (p[1] * 1e7).round() as i64);
     for m in moves {
         if let Some(last) = cur.last() {
             if !same_xy(last.to, m.from) {
                 out.others.append(&mut cur);
+                starts.clear();
             }
         }
+        starts.entry(key(m.from)).or_insert(cur.len());
         cur.push(m.clone());
-        let closes = cur.iter().position(|c| same_xy(c.from, m.to));
+        let closes = starts.get(&key(m.to)).copied();
         if let Some(i) = closes {
             let is_circle = i + 1 == cur.len() && matches!(m.kind, MoveKind::Arc(_));
             if i + 1 < cur.len() || is_circle {
                 let lp = cur.split_off(i);
                 out.others.append(&mut cur);
                 out.loops.push(lp);
+                starts.clear();
             }
         }
     }

@@ -1,6 +1,8 @@
 //! Closed pockets: a cut whose deepest level has a closed loop with all
 //! the level's moves inside it (contour-parallel loops, or a contour with
-//! strokes inside), or only parallel strokes (zig-zag). The wall is the
+//! strokes inside, or a spiral ending in a contour), or only parallel
+//! strokes (zig-zag), or a spiral (its wall: a circle when the spiral
+//! is round, else its box). The wall is the
 //! outermost loop grown by the tool radius: an axis-parallel rectangle
 //! (corner radius = the loop's corner arcs + the tool radius, so a
 //! sharp-cornered path gives the tool's radius), a circle, or a general
@@ -23,8 +25,8 @@
 use super::build::{machine_functions, placement, plane, point, r6, technology, tol};
 use super::face::layer_steps;
 use super::level::{bbox, contains, split, MillCut};
-use super::shape::{loop_shape, Shape};
-use super::strategy::{approach, loop_stepover, parallel, pocket_strategy, strokes};
+use super::shape::{loop_shape, vertices, Shape};
+use super::strategy::{approach, loop_stepover, parallel, pocket_strategy, strokes, winding};
 use super::{Known, Raiser};
 use crate::stepnc::model::*;
 use crate::toolpath::Move;
@@ -44,15 +46,22 @@ pub fn path_shape(m: &MillCut) -> Option<Shape> {
         Some(lp) => loop_shape(lp),
         None => {
             let st = strokes(&deep.moves);
-            if st.len() < 2 || !parallel(&st) {
+            let zigzag = st.len() >= 2 && parallel(&st);
+            let spiral = winding(&deep.moves).abs() >= std::f64::consts::TAU - 1e-3;
+            if !zigzag && !spiral {
                 return None;
             }
             let b = bbox(&deep.moves);
-            Shape::Rect {
-                c: [(b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0],
-                lx: b[2] - b[0],
-                ly: b[3] - b[1],
-                r: 0.0,
+            let c = [(b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0];
+            let (lx, ly) = (b[2] - b[0], b[3] - b[1]);
+            let far = vertices(&deep.moves)
+                .iter()
+                .map(|p| (p[0] - c[0]).hypot(p[1] - c[1]))
+                .fold(0.0, f64::max);
+            if spiral && (lx - ly).abs() < 1e-3 && (far - lx / 2.0).abs() < 1e-3 {
+                Shape::Circle { c, r: far }
+            } else {
+                Shape::Rect { c, lx, ly, r: 0.0 }
             }
         }
     };

@@ -121,6 +121,14 @@ pub fn pocket_strategy(level: &Level, spindle: f64, radius: f64) -> Strategy {
     };
     let ccw = is_ccw(outer);
     let mode = Some(cutmode(ccw, spindle, true));
+    let spiral = s.others.len() > 1 && winding(&s.others).abs() >= std::f64::consts::TAU - 1e-3;
+    if spiral && long.is_empty() {
+        return Strategy::ContourSpiral {
+            base,
+            rotation: Some(rot(ccw)),
+            cutmode: mode,
+        };
+    }
     if long.len() >= 2 && parallel(&long) {
         let pos = |m: &Move| level.moves.iter().position(|x| x == m).unwrap_or(0);
         let Strategy::Bidirectional {
@@ -157,7 +165,7 @@ fn area(lp: &[Move]) -> f64 {
 }
 
 /// The total angle (radians) the path turns about its box centre.
-fn winding(moves: &[Move]) -> f64 {
+pub fn winding(moves: &[Move]) -> f64 {
     let b = super::level::bbox(moves);
     let c = [(b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0];
     let v = vertices(moves);

@@ -405,3 +405,75 @@ fn a_pocket_through_a_stock_edge_is_an_open_pocket() {
         Some(2.0)
     );
 }
+
+#[test]
+fn a_growing_spiral_is_a_pocket_with_contour_spiral() {
+    use crate::toolpath::{ArcGeom, MoveKind};
+    let zz = -2.0;
+    let mut ev = path(&[z(51.0, 50.0, 2.0), z(51.0, 50.0, zz)], &[false], 3);
+    let halves = [
+        (50.0, 51.0, 49.0),
+        (50.5, 49.0, 52.0),
+        (50.0, 52.0, 48.0),
+        (50.5, 48.0, 53.0),
+    ];
+    for (cx, x0, x1) in halves {
+        let geom = ArcGeom {
+            axes: [0, 1, 2],
+            centre: [cx, 50.0, zz],
+            rotation: 1,
+        };
+        ev.push(Event::Move(super::segment::tests::mv(
+            MoveKind::Arc(geom),
+            z(x0, 50.0, zz),
+            z(x1, 50.0, zz),
+            3,
+        )));
+    }
+    let strategy = |p: &Project| {
+        let OperationKind::BottomAndSideMilling { milling, .. } = &op(p, 0, 0).kind else {
+            panic!()
+        };
+        milling.strategy.clone()
+    };
+    // The spiral alone: its box (5 x 4.5: the last half turn is below).
+    let (p, notes) = run(&ev, 2.0, None);
+    assert_eq!(notes, 0);
+    let FeatureKind::ClosedPocket {
+        boundary: ClosedProfile::Rectangular { length, width, .. },
+        ..
+    } = &p.features[0].kind
+    else {
+        panic!("{:?}", p.features[0].kind)
+    };
+    assert_eq!((length.nominal, width.nominal), (7.0, 6.5));
+    assert!(matches!(
+        strategy(&p),
+        Some(Strategy::ContourSpiral {
+            rotation: Some(RotDirection::Ccw),
+            ..
+        })
+    ));
+    // Ending in a full circle: a circular pocket.
+    ev.push(circle([50.5, 50.0], z(53.0, 50.0, zz), true, 3));
+    let (p, _) = run(&ev, 2.0, None);
+    let FeatureKind::ClosedPocket {
+        boundary: ClosedProfile::Circular { diameter, .. },
+        ..
+    } = &p.features[0].kind
+    else {
+        panic!("{:?}", p.features[0].kind)
+    };
+    assert_eq!(diameter.nominal, 7.0);
+    assert!(
+        matches!(
+            strategy(&p),
+            Some(Strategy::ContourSpiral {
+                cutmode: Some(CutMode::Climb),
+                ..
+            })
+        ),
+        "{:?}",
+        strategy(&p)
+    );
+}
