@@ -451,3 +451,69 @@ fn part21_files_are_the_same_and_read_back() {
 fn listing_snapshot() {
     insta::assert_snapshot!("cc2part_features", listing(&raise("cc2part.nc", "fanuc")));
 }
+
+/// Every corpus program (`../shared/corpus`) is raised without a panic,
+/// and every run with cutting moves gives workingsteps; prints what each
+/// gives.
+#[test]
+fn corpus_programs_raise() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus");
+    if !root.is_dir() {
+        eprintln!("note: {} absent, corpus raising not tested", root.display());
+        return;
+    }
+    for (dir, dialect) in [
+        ("fanuc", "fanuc"),
+        ("haas", "haas"),
+        ("linuxcnc", "linuxcnc"),
+        ("siemens840d", "siemens840d"),
+    ] {
+        let Ok(entries) = std::fs::read_dir(root.join(dir)) else {
+            continue;
+        };
+        let mut paths: Vec<_> = entries.flatten().map(|e| e.path()).collect();
+        paths.sort();
+        for path in paths {
+            if std::env::var("CC2_ONLY").is_ok_and(|o| !path.display().to_string().contains(&o)) {
+                continue;
+            }
+            let spec = cncc::dialect::builtin::builtin(dialect).unwrap();
+            let mut files = cncc::source::SourceMap::new();
+            let id = files.add_sparse(path.display().to_string(), Vec::new());
+            // Bounded runs: the test is about raising, not about long loops.
+            let mut opts = cncc::interp::Options::default();
+            opts.limits.blocks = 200_000;
+            opts.limits.loop_iterations = 20_000;
+            let Ok((events, _)) =
+                cncc::toolpath::events_of_file(&path, id, &spec, &opts, &mut files)
+            else {
+                continue;
+            };
+            let ctx = Cc2Context {
+                tool_diameter: Box::new(|_| Some(10.0)),
+                ..Cc2Context::default()
+            };
+            let mut p = Project::default();
+            let start = std::time::Instant::now();
+            let notes = recognise_report(&events, &mut p, &|_| ToolId(0), &ctx);
+            eprintln!("recognised in {:?}", start.elapsed());
+            if std::env::var("CC2_ONLY").is_ok() {
+                eprintln!("{}", listing(&p));
+            }
+            let feeds = events
+                .iter()
+                .filter(|e| matches!(e, cncc::toolpath::Event::Move(m) if m.is_feed()))
+                .count();
+            if feeds > 0 {
+                assert!(!p.main_workplan.elements.is_empty(), "{}", path.display());
+            }
+            eprintln!(
+                "{}: {} feed moves, features {:?}, {} left as toolpaths",
+                path.display(),
+                feeds,
+                kinds(&p),
+                notes.len()
+            );
+        }
+    }
+}
