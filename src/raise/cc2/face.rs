@@ -4,7 +4,8 @@
 //! program). The face is placed at the stock's top (or at the cut level
 //! when the stock is not known: depth 0) at the covered region's corner;
 //! `course_of_travel` runs along the strokes over the region, the removal
-//! boundary is the region's width across. A later face cut over the same
+//! boundary is the region's width across. Without the stock, the cut
+//! must also lie at or above every other cut's levels. A later face cut over the same
 //! region at a lower Z is its finishing operation; the earlier ones are
 //! PLANE_ROUGH_MILLING with `allowance_bottom` the Z difference. A face
 //! cut once is PLANE_FINISH_MILLING (as NIST's Example 1).
@@ -28,10 +29,19 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
     let env = grow(m.footprint(), rad);
     let target = match r.stock_box() {
         Some((b, _, _)) => b,
-        None => match union(&r.other_envelopes()) {
-            Some(b) => b,
-            None => return false,
-        },
+        None => {
+            // Without the stock, a face is the highest cut, over all others.
+            let z = m.levels.iter().map(|l| l.z).fold(f64::INFINITY, f64::min);
+            let highest = r
+                .tops
+                .iter()
+                .enumerate()
+                .all(|(j, t)| j == r.current || *t <= z + 1e-6);
+            match union(&r.other_envelopes()) {
+                Some(b) if highest => b,
+                _ => return false,
+            }
+        }
     };
     if !contains(env, target, 1e-3) {
         return false;

@@ -145,6 +145,11 @@ pub(crate) enum Known {
         /// Each operation with the wall it left and the bottom it cut to.
         ops: Vec<(OperationId, shape::Shape, f64)>,
     },
+    Slot {
+        feature: FeatureId,
+        /// Each operation with the slot it left.
+        ops: Vec<(OperationId, slot::SlotGeom)>,
+    },
 }
 
 /// The state of one recognition run.
@@ -158,6 +163,8 @@ pub(crate) struct Raiser<'a> {
     pub top: f64,
     /// The XY envelopes of all cuts, by index, and the cut being raised.
     pub envelopes: Vec<level::Box2>,
+    /// The highest cutting level of each milling cut (-∞ for others).
+    pub tops: Vec<f64>,
     pub current: usize,
     counters: std::collections::HashMap<&'static str, usize>,
     pub diags: Vec<Diagnostic>,
@@ -174,7 +181,19 @@ impl<'a> Raiser<'a> {
             .iter()
             .map(|c| c.envelope(&|t| radius(project, tool, ctx, t)))
             .collect();
+        let tops = cuts
+            .iter()
+            .map(|c| match c {
+                cuts::Cut::Mill(m) => m
+                    .levels
+                    .iter()
+                    .map(|l| l.z)
+                    .fold(f64::NEG_INFINITY, f64::max),
+                cuts::Cut::Hole { .. } | cuts::Cut::Other(_) => f64::NEG_INFINITY,
+            })
+            .collect();
         Raiser {
+            tops,
             top: ctx.stock.map_or(0.0, |s| s.1[2]),
             project,
             tool,

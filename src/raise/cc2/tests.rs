@@ -477,3 +477,64 @@ fn a_growing_spiral_is_a_pocket_with_contour_spiral() {
         strategy(&p)
     );
 }
+
+#[test]
+fn side_passes_widen_a_slot_and_a_later_pass_finishes_it() {
+    // Rough: 6 mm tool, passes at y = 9.5 and 10.5 (width 7), 2 deep;
+    // finish: passes at y = 9 and 11 (width 8), 2.2 deep, other feed.
+    let pass = |y0: f64, y1: f64, zz: f64, feed: f64| {
+        let pts = [
+            z(20.0, y0, 2.0),
+            z(20.0, y0, zz),
+            z(60.0, y0, zz),
+            z(60.0, y1, zz),
+            z(20.0, y1, zz),
+            z(20.0, y1, 2.0),
+        ];
+        let mut ev = path(&pts, &[false, false, false, false, true], 5);
+        for e in ev.iter_mut() {
+            if let Event::Move(m) = e {
+                m.feed = feed;
+            }
+        }
+        ev.extend(path(&[z(20.0, y1, 2.0), z(0.0, 0.0, 2.0)], &[true], 5));
+        ev
+    };
+    let mut ev = pass(9.5, 10.5, -2.0, 400.0);
+    ev.extend(pass(9.0, 11.0, -2.2, 200.0));
+    let (p, notes) = run(&ev, 6.0, None);
+    assert_eq!(notes, 0);
+    assert_eq!(p.features.len(), 1, "{}", super::listing::listing(&p));
+    let f = &p.features[0];
+    assert_eq!(f.placement.location.xyz, [20.0, 10.0, 0.0]);
+    let FeatureKind::Slot {
+        course_of_travel: TravelPath::Linear { distance, .. },
+        swept_shape: OpenProfile::SquareU { width, .. },
+        ..
+    } = &f.kind
+    else {
+        panic!("{:?}", f.kind)
+    };
+    assert_eq!((distance.nominal, width.nominal), (40.0, 8.0));
+    assert_eq!(f.depth.position.location.xyz[2], -2.2);
+    let OperationKind::BottomAndSideMilling {
+        finish: false,
+        allowance_side,
+        allowance_bottom,
+        milling,
+        ..
+    } = &op(&p, 0, 0).kind
+    else {
+        panic!()
+    };
+    assert_eq!((*allowance_side, *allowance_bottom), (Some(0.5), Some(0.2)));
+    assert!(
+        matches!(milling.strategy, Some(Strategy::Bidirectional { .. })),
+        "{:?}",
+        milling.strategy
+    );
+    assert!(matches!(
+        op(&p, 0, 1).kind,
+        OperationKind::BottomAndSideMilling { finish: true, .. }
+    ));
+}
