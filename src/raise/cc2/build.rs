@@ -6,7 +6,7 @@
 //! the size the program cuts, nothing more is claimed.
 
 use crate::stepnc::model::*;
-use crate::toolpath::Move;
+use crate::toolpath::{FeedMode, Move};
 
 /// Rounds to 1e-6 mm, so float noise from arcs and offsets does not show.
 pub fn r6(x: f64) -> f64 {
@@ -61,12 +61,25 @@ pub fn tol(v: f64) -> Toleranced {
     }
 }
 
+/// A move's feed in mm/min (a feed per revolution times the spindle
+/// speed).
+pub fn feed_per_minute(m: &Move) -> f64 {
+    match m.feed_mode {
+        FeedMode::PerMinute => m.feed,
+        FeedMode::PerRev => m.feed * m.spindle.abs(),
+    }
+}
+
 /// Feed and spindle of an operation, from its cutting moves: the feed is
-/// the highest feed among them (plunges are often slower), the spindle
-/// that of the first.
+/// the highest feed among them (plunges are often slower), in mm/min, the
+/// spindle that of the first.
 pub fn technology(cuts: &[&Move]) -> Technology {
     Technology {
-        feed: cuts.iter().map(|m| m.feed).reduce(f64::max).map(r6),
+        feed: cuts
+            .iter()
+            .map(|m| feed_per_minute(m))
+            .reduce(f64::max)
+            .map(r6),
         feed_at_tcp: true,
         spindle: cuts.first().map(|m| r6(m.spindle)),
         ..Technology::default()
@@ -81,5 +94,22 @@ pub fn machine_functions(cuts: &[&Move]) -> MachineFunctions {
         coolant: flood || mist,
         mist: mist.then_some(true),
         ..MachineFunctions::default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::raise::cc2::segment::tests::mv;
+    use crate::toolpath::MoveKind;
+
+    #[test]
+    fn feed_per_revolution_becomes_per_minute() {
+        let mut m = mv(MoveKind::Line, [0.0; 3], [1.0, 0.0, 0.0], 1);
+        m.feed_mode = FeedMode::PerRev;
+        m.feed = 0.1;
+        m.spindle = -2000.0;
+        let t = technology(&[&m]);
+        assert_eq!((t.feed, t.spindle), (Some(200.0), Some(-2000.0)));
     }
 }
