@@ -1,8 +1,9 @@
 //! Milling chunks seen as layers: the horizontal feed moves grouped by
 //! their Z level, each level split into closed loops and the other moves
 //! (strokes, links); consecutive chunks of one tool that are layers of
-//! one cut (same footprint, deeper, same feed and spindle) or strokes of one face (same Z,
-//! touching) are merged into one [`MillCut`].
+//! one cut (same footprint, deeper, same feed and spindle) or open
+//! strokes of one face (same Z, touching, no loops) are merged into one
+//! [`MillCut`].
 
 use super::segment::{Chunk, EPS};
 use crate::toolpath::{Move, MoveKind};
@@ -30,6 +31,8 @@ pub struct MillCut {
     footprint: Box2,
     /// The highest cutting feed and the first cutting move's spindle.
     speeds: (f64, f64),
+    /// Does any level hold a closed loop?
+    has_loops: bool,
 }
 
 /// Is it a feed move in the XY plane at one Z?
@@ -117,6 +120,7 @@ impl MillCut {
             moves: c.moves.clone(),
             footprint: bbox(&cuts),
             speeds: (feed, cuts[0].spindle),
+            has_loops: levels.iter().any(|l| !split(&l.moves).loops.is_empty()),
             levels,
         })
     }
@@ -150,6 +154,8 @@ impl MillCut {
         let one_level = |c: &MillCut| c.levels.len() == 1;
         let strokes = one_level(self)
             && one_level(next)
+            && !self.has_loops
+            && !next.has_loops
             && (self.levels[0].z - next.levels[0].z).abs() < EPS
             && overlap(grow(a, radius), grow(b, radius));
         layers || strokes
@@ -164,6 +170,7 @@ impl MillCut {
             a[3].max(b[3]),
         ];
         self.speeds.0 = self.speeds.0.max(next.speeds.0);
+        self.has_loops |= next.has_loops;
         self.moves.extend(next.moves);
         for l in next.levels {
             match self.levels.iter_mut().find(|m| (m.z - l.z).abs() < EPS) {

@@ -145,6 +145,11 @@ pub(crate) enum Known {
         /// Each operation with the wall it left and the bottom it cut to.
         ops: Vec<(OperationId, shape::Shape, f64)>,
     },
+    Profile {
+        feature: FeatureId,
+        /// Each operation with the outline it left and its bottom.
+        ops: Vec<(OperationId, shape::Shape, f64)>,
+    },
     Slot {
         feature: FeatureId,
         /// Each operation with the slot it left.

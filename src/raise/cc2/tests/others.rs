@@ -259,3 +259,65 @@ fn side_passes_widen_a_slot_and_a_later_pass_finishes_it() {
         OperationKind::BottomAndSideMilling { finish: true, .. }
     ));
 }
+
+#[test]
+fn a_second_loop_closer_in_finishes_the_outside_profile() {
+    let mut ev = path(
+        &[
+            z(50.0, 30.0, 5.0),
+            z(50.0, 30.0, 2.0),
+            z(50.0, 30.0, -8.0),
+            z(50.0, 30.0, 5.0),
+        ],
+        &[true, false, true],
+        2,
+    );
+    for (off, feed) in [(5.3, 500.0), (5.0, 300.0)] {
+        let (a, b, c, d) = (-off, -off, 100.0 + off, 60.0 + off);
+        let mut pts = vec![z(a, b, 5.0), z(a, b, -10.0)];
+        pts.extend([
+            z(a, d, -10.0),
+            z(c, d, -10.0),
+            z(c, b, -10.0),
+            z(a, b, -10.0),
+        ]);
+        ev.extend(path(&[z(50.0, 30.0, 5.0), z(a, b, 5.0)], &[true], 3));
+        let mut lp = path(&pts, &[false; 5], 3);
+        for e in lp.iter_mut() {
+            if let Event::Move(m) = e {
+                m.feed = feed;
+            }
+        }
+        ev.extend(lp);
+        ev.extend(path(&[z(a, b, -10.0), z(a, b, 5.0)], &[true], 3));
+    }
+    let (p, notes) = run(&ev, 10.0, None);
+    assert_eq!(notes, 0);
+    assert_eq!(
+        p.features.len(),
+        2,
+        "{}",
+        crate::raise::cc2::listing::listing(&p)
+    );
+    let FeatureKind::GeneralOutsideProfile {
+        boundary: Profile::Closed(ClosedProfile::Rectangular { length, .. }),
+        ..
+    } = &p.features[1].kind
+    else {
+        panic!("{:?}", p.features[1].kind)
+    };
+    assert_eq!(length.nominal, 100.0);
+    let OperationKind::SideMilling {
+        finish: false,
+        allowance_side,
+        ..
+    } = &op(&p, 1, 0).kind
+    else {
+        panic!("{}", crate::raise::cc2::listing::listing(&p))
+    };
+    assert_eq!(*allowance_side, Some(0.3));
+    assert!(matches!(
+        op(&p, 1, 1).kind,
+        OperationKind::SideMilling { finish: true, .. }
+    ));
+}
