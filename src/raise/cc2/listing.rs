@@ -255,7 +255,12 @@ fn rf(finish: bool) -> &'static str {
 
 fn milling_text(m: &MillingCommon) -> String {
     let a = match &m.approach {
-        Some(a) => format!("{a:?}"),
+        Some(ApproachRetract::PlungeToolaxis { .. }) => "PLUNGE_TOOLAXIS".into(),
+        Some(ApproachRetract::PlungeRamp { angle, .. }) => format!("PLUNGE_RAMP {}°", n(*angle)),
+        Some(ApproachRetract::PlungeHelix { radius, angle, .. }) => {
+            format!("PLUNGE_HELIX R{} {}°", n(*radius), n(*angle))
+        }
+        Some(other) => format!("{other:?}"),
         None => "-".into(),
     };
     let s = match &m.strategy {

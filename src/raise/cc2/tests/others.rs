@@ -321,3 +321,36 @@ fn a_second_loop_closer_in_finishes_the_outside_profile() {
         OperationKind::SideMilling { finish: true, .. }
     ));
 }
+
+#[test]
+fn spindle_stopped_at_the_bottom_is_boring_a_dwell_and_rapid_out_is_drilling() {
+    let mut ev = path(&[z(5.0, 5.0, 2.0), z(5.0, 5.0, -10.0)], &[false], 6);
+    let mut out = path(&[z(5.0, 5.0, -10.0), z(5.0, 5.0, 2.0)], &[true], 6);
+    if let Event::Move(m) = &mut out[0] {
+        m.spindle = 0.0;
+    }
+    ev.extend(out);
+    ev.extend(path(
+        &[z(5.0, 5.0, 2.0), z(25.0, 5.0, 2.0), z(25.0, 5.0, -4.0)],
+        &[true, false],
+        6,
+    ));
+    ev.push(Event::Dwell {
+        seconds: 1.5,
+        span: Default::default(),
+    });
+    ev.extend(path(&[z(25.0, 5.0, -4.0), z(25.0, 5.0, 2.0)], &[true], 6));
+    let (p, _) = run(&ev, 12.0, None);
+    assert!(matches!(
+        op(&p, 0, 0).kind,
+        OperationKind::Boring {
+            reaming: false,
+            spindle_stop_at_bottom: true,
+            ..
+        }
+    ));
+    let OperationKind::Drilling(d) = &op(&p, 1, 0).kind else {
+        panic!("{:?}", op(&p, 1, 0).kind)
+    };
+    assert_eq!(d.dwell_time_bottom, Some(1.5));
+}
