@@ -33,6 +33,10 @@ pub fn raise(r: &mut Raiser, h: &HoleCut, t: i64, moves: &[Move]) {
         .tools
         .get((r.tool)(t).index())
         .map(|tl| tl.body.kind.clone());
+    if h.tapping || matches!(kind, Some(ToolBodyKind::Tap)) {
+        let what = "tapping moves (the model has no TAPPING operation yet)";
+        return super::freeform::raise(r, t, moves, what);
+    }
     let existing = r.known.iter().find_map(|k| match k {
         Known::Hole { feature, xy } if near(*xy, h.xy) => Some(*feature),
         _ => None,

@@ -13,6 +13,9 @@
 //! * spindle stopped at the bottom then rapid out: BORING with
 //!   `spindle_stop_at_bottom` (G86, CYCLE86).
 //!
+//! * fed out with the spindle reversed: tapping, which the model has no
+//!   operation for yet: the hole stays a toolpath feature (W0870).
+//!
 //! The tool's kind, when the project knows it, wins: a reamer reams, a
 //! centre or spot drill centre-drills, a countersink countersinks.
 
@@ -33,6 +36,8 @@ pub struct HoleCut {
     pub first_retract_to: Option<f64>,
     pub dwell_bottom: Option<f64>,
     pub feed_out: bool,
+    /// Fed out with the spindle turned the other way (G84, G74, CYCLE84).
+    pub tapping: bool,
     pub spindle_stop: bool,
     pub feed: f64,
     pub spindle: f64,
@@ -66,7 +71,7 @@ pub fn as_hole(chunk: &Chunk) -> Option<HoleCut> {
     let dwell_bottom = chunk
         .dwells
         .iter()
-        .find(|d| d.after == bottom_at + 1)
+        .find(|d| d.after == bottom_at + 1 && d.seconds > 0.0)
         .map(|d| d.seconds);
     Some(HoleCut {
         xy: [first.from[0], first.from[1]],
@@ -80,6 +85,7 @@ pub fn as_hole(chunk: &Chunk) -> Option<HoleCut> {
         pecks,
         dwell_bottom,
         feed_out: after.is_some_and(|m| m.is_feed() && m.to[2] > m.from[2]),
+        tapping: after.is_some_and(|m| m.is_feed() && m.spindle * first.spindle < 0.0),
         spindle_stop: after.is_some_and(|m| m.spindle == 0.0),
         feed: first.feed,
         spindle: first.spindle,

@@ -354,3 +354,18 @@ fn spindle_stopped_at_the_bottom_is_boring_a_dwell_and_rapid_out_is_drilling() {
     };
     assert_eq!(d.dwell_time_bottom, Some(1.5));
 }
+
+#[test]
+fn tapping_stays_a_toolpath_feature() {
+    let mut ev = path(
+        &[z(5.0, 5.0, 2.0), z(5.0, 5.0, -10.0), z(5.0, 5.0, 2.0)],
+        &[false, false],
+        7,
+    );
+    if let Event::Move(m) = &mut ev[1] {
+        m.spindle = -m.spindle;
+    }
+    let (p, notes) = run(&ev, 6.0, None);
+    assert_eq!(notes, 1);
+    assert_eq!(p.features[0].kind, FeatureKind::ToolpathFeature);
+}
