@@ -50,6 +50,17 @@ fn raise_events(file: &str, dialect: &str) -> (Project, Vec<cncc::toolpath::Even
 /// What the CC1 side makes before recognition: the project, its main
 /// workplan with a setup, workpiece 0 and the tools (index = number).
 fn skeleton() -> Project {
+    skeleton_with(&[
+        ("T1 FACE MILL", ToolBodyKind::Facemill, 20.0),
+        ("T2 DRILL", ToolBodyKind::TwistDrill, 8.0),
+        ("T3 END MILL", ToolBodyKind::Endmill, 10.0),
+        ("T4 DRILL", ToolBodyKind::TwistDrill, 6.0),
+        ("T5 END MILL", ToolBodyKind::Endmill, 8.0),
+    ])
+}
+
+/// A skeleton with tools 1.. as given (index 0 unused).
+fn skeleton_with(tools: &[(&str, ToolBodyKind, f64)]) -> Project {
     let origin = Axis2Placement {
         name: "ORIGIN".into(),
         location: Point {
@@ -118,14 +129,9 @@ fn skeleton() -> Project {
             bounding: None,
             clamping_positions: Vec::new(),
         }],
-        tools: vec![
-            tool("T0", ToolBodyKind::Endmill, 1.0),
-            tool("T1 FACE MILL", ToolBodyKind::Facemill, 20.0),
-            tool("T2 DRILL", ToolBodyKind::TwistDrill, 8.0),
-            tool("T3 END MILL", ToolBodyKind::Endmill, 10.0),
-            tool("T4 DRILL", ToolBodyKind::TwistDrill, 6.0),
-            tool("T5 END MILL", ToolBodyKind::Endmill, 8.0),
-        ],
+        tools: std::iter::once(tool("T0", ToolBodyKind::Endmill, 1.0))
+            .chain(tools.iter().map(|(n, k, d)| tool(n, k.clone(), *d)))
+            .collect(),
         ..Project::default()
     }
 }
@@ -532,4 +538,146 @@ fn corpus_programs_raise() {
             );
         }
     }
+}
+
+/// A part as a CAM system posts it: spot drilling then drilling at the
+/// same holes, a pocket roughed with a helical entry and zig-zag inside
+/// a contour in two layers then finished along a contour with corner
+/// arcs, an outside profile in two layers. Tool diameters come from the
+/// project's tools only.
+#[test]
+fn cam_like_program_gives_its_features() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/programs/raise2/camlike.nc");
+    let spec = cncc::dialect::builtin::builtin("fanuc").unwrap();
+    let mut files = cncc::source::SourceMap::new();
+    let id = files.add_sparse(path.display().to_string(), Vec::new());
+    let (events, diags) =
+        cncc::toolpath::events_of_file(&path, id, &spec, &Default::default(), &mut files).unwrap();
+    assert!(diags.iter().all(|d| !d.is_error()), "{diags:?}");
+    let mut p = skeleton_with(&[
+        ("T1 SPOT DRILL", ToolBodyKind::Spotdrill, 6.0),
+        ("T2 DRILL", ToolBodyKind::TwistDrill, 5.0),
+        ("T3 END MILL", ToolBodyKind::Endmill, 8.0),
+        ("T4 END MILL", ToolBodyKind::Endmill, 10.0),
+    ]);
+    let ctx = Cc2Context {
+        stock: Some(([0.0, 0.0, -15.0], [80.0, 60.0, 0.0])),
+        secplane_z: 15.0,
+        ..Cc2Context::default()
+    };
+    let notes = recognise_report(&events, &mut p, &|t| ToolId(t as u32), &ctx);
+    assert!(notes.is_empty(), "{notes:?}");
+    let text = listing(&p);
+    assert_eq!(
+        kinds(&p),
+        [
+            "RoundHole",
+            "RoundHole",
+            "ClosedPocket",
+            "GeneralOutsideProfile"
+        ],
+        "{text}"
+    );
+    for f in &p.features[..2] {
+        let FeatureKind::RoundHole {
+            diameter,
+            bottom: HoleBottom::Through,
+            ..
+        } = &f.kind
+        else {
+            panic!("{text}")
+        };
+        assert_eq!((diameter.nominal, depth(f)), (5.0, 15.0));
+        let ops: Vec<_> = f.operations.iter().map(|o| &p.operation(*o).kind).collect();
+        assert!(
+            matches!(
+                ops[..],
+                [OperationKind::CenterDrilling(_), OperationKind::Drilling(_)]
+            ),
+            "{text}"
+        );
+    }
+    let pocket = &p.features[2];
+    let FeatureKind::ClosedPocket {
+        pocket: common,
+        boundary: ClosedProfile::Rectangular { length, width, .. },
+    } = &pocket.kind
+    else {
+        panic!("{text}")
+    };
+    assert_eq!(
+        (length.nominal, width.nominal, depth(pocket)),
+        (30.0, 20.0, 5.0)
+    );
+    assert_eq!(
+        common.orthogonal_radius.as_ref().map(|r| r.nominal),
+        Some(6.0)
+    );
+    let rough = &p.operation(pocket.operations[0]).kind;
+    let OperationKind::BottomAndSideMilling {
+        finish: false,
+        milling,
+        allowance_side,
+        allowance_bottom,
+        axial_cutting_depth,
+        radial_cutting_depth,
+    } = rough
+    else {
+        panic!("{text}")
+    };
+    assert_eq!(
+        (
+            *allowance_side,
+            *allowance_bottom,
+            *axial_cutting_depth,
+            *radial_cutting_depth
+        ),
+        (Some(0.3), Some(0.2), Some(2.4), Some(3.0))
+    );
+    assert!(
+        matches!(
+            milling.strategy,
+            Some(Strategy::BidirectionalContour {
+                contour_first: false,
+                ..
+            })
+        ),
+        "{text}"
+    );
+    assert!(
+        matches!(milling.approach, Some(ApproachRetract::PlungeHelix { radius, .. }) if radius == 1.5),
+        "{text}"
+    );
+    let profile = &p.features[3];
+    let FeatureKind::GeneralOutsideProfile {
+        boundary: Profile::Closed(ClosedProfile::Rectangular { length, width, .. }),
+        ..
+    } = &profile.kind
+    else {
+        panic!("{text}")
+    };
+    assert_eq!(
+        (length.nominal, width.nominal, depth(profile)),
+        (76.0, 56.0, 15.0)
+    );
+    let OperationKind::SideMilling {
+        milling,
+        axial_cutting_depth,
+        ..
+    } = &p.operation(profile.operations[0]).kind
+    else {
+        panic!("{text}")
+    };
+    assert_eq!(*axial_cutting_depth, Some(7.5));
+    assert!(
+        matches!(
+            milling.strategy,
+            Some(Strategy::ContourParallel {
+                rotation: Some(RotDirection::Cw),
+                cutmode: Some(CutMode::Climb),
+                ..
+            })
+        ),
+        "{text}"
+    );
 }

@@ -2,7 +2,9 @@
 //! for what the moves tell). A later drilling operation at the same X Y
 //! (ream after drill) is another operation of the same hole.
 //!
-//! * Diameter: the tool's diameter (the largest of the hole's tools).
+//! * Diameter: the tool's diameter (the largest of the hole's tools;
+//!   centre and spot drills and countersinks do not size a hole once
+//!   another tool has, nor after).
 //! * Depth, from the top surface at the hole: a hole whose full diameter
 //!   reaches the stock's bottom is THROUGH with the stock's thickness as
 //!   depth; else a drill (twist, tapered, centre, spot drill, or a tool
@@ -38,12 +40,20 @@ pub fn raise(r: &mut Raiser, h: &HoleCut, t: i64, moves: &[Move]) {
         return super::freeform::raise(r, t, moves, what);
     }
     let existing = r.known.iter().find_map(|k| match k {
-        Known::Hole { feature, xy } if near(*xy, h.xy) => Some(*feature),
+        Known::Hole { feature, xy, sized } if near(*xy, h.xy) => Some((*feature, *sized)),
         _ => None,
     });
+    let sizing = sizes_hole(kind.as_ref());
     let (feature, name) = match existing {
-        Some(f) => {
-            deepen(r, f, h, rad, kind.as_ref());
+        Some((f, sized)) => {
+            if sizing {
+                deepen(r, f, h, rad, kind.as_ref(), !sized);
+                for k in r.known.iter_mut() {
+                    if let Known::Hole { feature, sized, .. } = k {
+                        *sized |= *feature == f;
+                    }
+                }
+            }
             (f, r.project.features[f.index()].id.clone())
         }
         None => {
@@ -52,6 +62,7 @@ pub fn raise(r: &mut Raiser, h: &HoleCut, t: i64, moves: &[Move]) {
             r.known.push(Known::Hole {
                 feature: f,
                 xy: h.xy,
+                sized: sizing,
             });
             (f, name)
         }
@@ -143,7 +154,25 @@ fn new_hole(
 
 /// A further operation on a hole: a larger tool widens it, a deeper one
 /// deepens it.
-fn deepen(r: &mut Raiser, f: FeatureId, h: &HoleCut, rad: f64, kind: Option<&ToolBodyKind>) {
+/// Does the tool give the hole its size? Centre and spot drills and
+/// countersinks only mark or chamfer it.
+fn sizes_hole(kind: Option<&ToolBodyKind>) -> bool {
+    !matches!(
+        kind,
+        Some(ToolBodyKind::CenterDrill | ToolBodyKind::Spotdrill | ToolBodyKind::Countersink)
+    )
+}
+
+/// `first`: the first operation that sizes the hole (after a spot
+/// drill): its diameter and depth replace the spot's.
+fn deepen(
+    r: &mut Raiser,
+    f: FeatureId,
+    h: &HoleCut,
+    rad: f64,
+    kind: Option<&ToolBodyKind>,
+    first: bool,
+) {
     let (depth, bottom) = depth_and_bottom(r, h, rad, kind);
     let feat = &mut r.project.features[f.index()];
     if let FeatureKind::RoundHole {
@@ -152,10 +181,10 @@ fn deepen(r: &mut Raiser, f: FeatureId, h: &HoleCut, rad: f64, kind: Option<&Too
         ..
     } = &mut feat.kind
     {
-        if 2.0 * rad > diameter.nominal {
+        if first || 2.0 * rad > diameter.nominal {
             *diameter = tol(2.0 * rad);
         }
-        if depth > -feat.depth.position.location.xyz[2] + 1e-6 {
+        if first || depth > -feat.depth.position.location.xyz[2] + 1e-6 {
             feat.depth.position.location.xyz[2] = -r6(depth);
             *b = bottom;
         }

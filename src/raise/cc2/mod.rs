@@ -134,6 +134,8 @@ pub(crate) enum Known {
     Hole {
         feature: FeatureId,
         xy: [f64; 2],
+        /// Has a tool that sizes holes (not a spot drill) cut it?
+        sized: bool,
     },
     Face {
         feature: FeatureId,

@@ -26,7 +26,9 @@ use super::build::{machine_functions, placement, plane, point, r6, technology, t
 use super::face::layer_steps;
 use super::level::{bbox, contains, split, MillCut};
 use super::shape::{loop_shape, vertices, Shape};
-use super::strategy::{approach, loop_stepover, parallel, pocket_strategy, strokes, winding};
+use super::strategy::{
+    approach, loop_stepover, pocket_strategy, stroke_stepover, strokes_along, winding,
+};
 use super::{Known, Raiser};
 use crate::stepnc::model::*;
 use crate::toolpath::Move;
@@ -45,8 +47,8 @@ pub fn path_shape(m: &MillCut) -> Option<Shape> {
     let shape = match outer {
         Some(lp) => loop_shape(lp),
         None => {
-            let st = strokes(&deep.moves);
-            let zigzag = st.len() >= 2 && parallel(&st);
+            let st = strokes_along(&deep.moves);
+            let zigzag = st.len() >= 2;
             let spiral = winding(&deep.moves).abs() >= std::f64::consts::TAU - 1e-3;
             if !zigzag && !spiral {
                 return None;
@@ -235,7 +237,8 @@ pub fn pocket_op(r: &mut Raiser, m: &MillCut, rad: f64, feature: FeatureId) -> O
                 strategy: Some(pocket_strategy(m.deepest(), spindle, rad)),
             },
             axial_cutting_depth: layer_steps(m, top),
-            radial_cutting_depth: loop_stepover(m.deepest()),
+            radial_cutting_depth: loop_stepover(m.deepest())
+                .or_else(|| stroke_stepover(m.deepest())),
             allowance_side: None,
             allowance_bottom: None,
         },

@@ -19,6 +19,22 @@ pub fn strokes(moves: &[Move]) -> Vec<&Move> {
     lines().filter(|m| m.length() >= 0.5 * longest).collect()
 }
 
+/// The long straight moves along the longest one's direction (a
+/// zig-zag's strokes among its links and lead moves).
+pub fn strokes_along(moves: &[Move]) -> Vec<&Move> {
+    let all = strokes(moves);
+    let Some(longest) = all
+        .iter()
+        .copied()
+        .max_by(|a, b| a.length().total_cmp(&b.length()))
+    else {
+        return all;
+    };
+    all.into_iter()
+        .filter(|m| parallel(&[longest, m]))
+        .collect()
+}
+
 pub fn unit(m: &Move) -> [f64; 2] {
     let (dx, dy) = (m.to[0] - m.from[0], m.to[1] - m.from[1]);
     let l = dx.hypot(dy).max(1e-12);
@@ -106,7 +122,7 @@ fn rot(ccw: bool) -> RotDirection {
 /// The strategy of a pocket's level.
 pub fn pocket_strategy(level: &Level, spindle: f64, radius: f64) -> Strategy {
     let s = split(&level.moves);
-    let long = strokes(&s.others);
+    let long = strokes_along(&s.others);
     let base = StrategyBase::default();
     let Some(outer) = s.loops.iter().max_by(|a, b| area(a).total_cmp(&area(b))) else {
         if long.len() >= 2 && parallel(&long) {
@@ -200,6 +216,15 @@ pub fn retract_plane(moves: &[Move], top: f64) -> Option<f64> {
         .iter()
         .find(|m| m.is_feed())
         .map(|m| r6(m.from[2] - top))
+}
+
+/// The stepover between a level's first two strokes, if it has them.
+pub fn stroke_stepover(level: &Level) -> Option<f64> {
+    let st = strokes_along(&split(&level.moves).others);
+    let (a, b) = (st.first()?, st.get(1)?);
+    let d = unit(a);
+    let across = (b.from[0] - a.from[0]) * d[1] - (b.from[1] - a.from[1]) * d[0];
+    (across.abs() > 1e-6).then(|| r6(across.abs()))
 }
 
 /// How the tool first enters the material: the first feed move that is
