@@ -220,7 +220,8 @@ pub fn retract_plane(moves: &[Move], top: f64) -> Option<f64> {
 
 /// The stepover between a level's first two strokes, if it has them.
 pub fn stroke_stepover(level: &Level) -> Option<f64> {
-    let st = strokes_along(&split(&level.moves).others);
+    let others = split(&level.moves).others;
+    let st = strokes_along(&others);
     let (a, b) = (st.first()?, st.get(1)?);
     let d = unit(a);
     let across = (b.from[0] - a.from[0]) * d[1] - (b.from[1] - a.from[1]) * d[0];
