@@ -202,8 +202,8 @@ fn the_part_gives_exactly_its_features() {
             "WS DRILL HOLE1",
             "WS DRILL HOLE2",
             "WS DRILL HOLE3",
-            "WS MILL POCKET1",
-            "WS MILL POCKET1",
+            "WS ROUGH POCKET1",
+            "WS FINISH POCKET1",
             "WS PECK DRILL HOLE4",
             "WS MILL SLOT1"
         ]
@@ -680,4 +680,5 @@ fn cam_like_program_gives_its_features() {
         ),
         "{text}"
     );
+    insta::assert_snapshot!("camlike_features", text);
 }

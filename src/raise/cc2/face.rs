@@ -80,6 +80,7 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
         },
     };
     let id = r.add_operation(feature, op);
+    r.name_passes(feature, "FACE");
     if let Some(Known::Face { ops, .. }) = r
         .known
         .iter_mut()

@@ -1,5 +1,5 @@
-//! A readable listing of a project's features and operations, in
-//! workplan order (for reviews and snapshot tests).
+//! A readable listing of a project's features with their operations and
+//! the workplan's order (for reviews and snapshot tests).
 
 use crate::stepnc::model::*;
 use std::fmt::Write;
@@ -18,19 +18,22 @@ fn p3(p: P3) -> String {
     format!("({}, {}, {})", n(p[0]), n(p[1]), n(p[2]))
 }
 
-/// Features (once, at their first workingstep) with their operations.
+/// Each feature with its operations, then the workplan's order.
 pub fn listing(project: &Project) -> String {
     let mut out = String::new();
-    let mut seen = Vec::new();
-    for e in &project.main_workplan.elements {
-        let Executable::Workingstep(ws) = e else {
-            continue;
-        };
-        if !seen.contains(&ws.feature) {
-            seen.push(ws.feature);
-            feature(&mut out, project.feature(ws.feature));
+    for f in &project.features {
+        feature(&mut out, f);
+        for op in &f.operations {
+            operation(&mut out, project.operation(*op));
         }
-        operation(&mut out, project.operation(ws.operation), &ws.id);
+    }
+    out.push_str("workplan:\n");
+    for e in &project.main_workplan.elements {
+        let line = match e {
+            Executable::Workingstep(ws) => ws.id.clone(),
+            other => format!("{other:?}"),
+        };
+        let _ = writeln!(out, "  {line}");
     }
     out
 }
@@ -51,6 +54,15 @@ fn feature(out: &mut String, f: &Feature) {
         p3(x),
         n(depth)
     );
+}
+
+fn hole_bottom(b: &HoleBottom) -> String {
+    match b {
+        HoleBottom::Through => "through".into(),
+        HoleBottom::Flat => "flat".into(),
+        HoleBottom::Conical { tip_angle, .. } => format!("conical {}°", n(*tip_angle)),
+        other => format!("{other:?}"),
+    }
 }
 
 fn tl(t: &Toleranced) -> String {
@@ -105,7 +117,13 @@ fn kind(k: &FeatureKind) -> String {
         }
         FeatureKind::RoundHole {
             diameter, bottom, ..
-        } => format!("ROUND_HOLE D{} bottom {bottom:?}", tl(diameter)),
+        } => {
+            format!(
+                "ROUND_HOLE D{} bottom {}",
+                tl(diameter),
+                hole_bottom(bottom)
+            )
+        }
         FeatureKind::ClosedPocket { pocket, boundary } => {
             let r = pocket.orthogonal_radius.as_ref().map_or("-".into(), tl);
             format!(
@@ -150,7 +168,7 @@ fn kind(k: &FeatureKind) -> String {
     }
 }
 
-fn operation(out: &mut String, o: &Operation, ws: &str) {
+fn operation(out: &mut String, o: &Operation) {
     let t = &o.technology;
     let f = t.feed.map_or("-".into(), n);
     let s = t.spindle.map_or("-".into(), n);
@@ -162,8 +180,8 @@ fn operation(out: &mut String, o: &Operation, ws: &str) {
     let rp = o.retract_plane.map_or("-".into(), n);
     let _ = writeln!(
         out,
-        "  [{ws}] tool #{} F{f} S{s} {cool} retract {rp}",
-        o.tool.0
+        "  {}: tool #{} F{f} S{s} {cool} retract {rp}",
+        o.id, o.tool.0
     );
     let _ = writeln!(out, "    {}", op_kind(&o.kind));
 }

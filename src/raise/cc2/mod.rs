@@ -278,3 +278,30 @@ impl Raiser<'_> {
             .unwrap_or(0.0)
     }
 }
+
+impl Raiser<'_> {
+    /// Names a milling feature's operations once it has more than one:
+    /// `ROUGH POCKET1` (`ROUGH1 ..`, `ROUGH2 ..` when several) and
+    /// `FINISH POCKET1`, with their workingsteps.
+    pub fn name_passes(&mut self, feature: FeatureId, verb: &str) {
+        let f = &self.project.features[feature.index()];
+        let (name, ops) = (f.id.clone(), f.operations.clone());
+        let n = ops.len();
+        for (i, op) in ops.iter().enumerate() {
+            let id = match (n, i + 1 == n) {
+                (1, _) => format!("{verb} {name}"),
+                (_, true) => format!("FINISH {name}"),
+                (2, false) => format!("ROUGH {name}"),
+                _ => format!("ROUGH{} {name}", i + 1),
+            };
+            self.project.operations[op.index()].id = id.clone();
+            for e in self.project.main_workplan.elements.iter_mut() {
+                if let Executable::Workingstep(ws) = e {
+                    if ws.operation == *op {
+                        ws.id = format!("WS {id}");
+                    }
+                }
+            }
+        }
+    }
+}

@@ -243,5 +243,7 @@ pub fn pocket_op(r: &mut Raiser, m: &MillCut, rad: f64, feature: FeatureId) -> O
             allowance_bottom: None,
         },
     };
-    r.add_operation(feature, op)
+    let id = r.add_operation(feature, op);
+    r.name_passes(feature, "MILL");
+    id
 }

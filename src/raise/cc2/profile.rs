@@ -96,6 +96,7 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
         },
     };
     let id = r.add_operation(feature, op);
+    r.name_passes(feature, "MILL");
     for k in r.known.iter_mut() {
         if let Known::Profile { feature: f, ops } = k {
             if *f == feature {

@@ -144,6 +144,7 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
         },
     };
     let id = r.add_operation(feature, op);
+    r.name_passes(feature, "MILL");
     for k in r.known.iter_mut() {
         if let Known::Slot { feature: f, ops } = k {
             if *f == feature {
