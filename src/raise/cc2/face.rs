@@ -1,5 +1,5 @@
-//! Planar faces: a cut made only of parallel straight strokes (with
-//! links between them) whose swept envelope covers the stock's top (or,
+//! Planar faces: a cut made only of parallel straight strokes (one or
+//! more, at most a tool diameter apart, with links between them) whose swept envelope covers the stock's top (or,
 //! when the stock is not known, the envelopes of every other cut of the
 //! program). The face is placed at the stock's top (or at the cut level
 //! when the stock is not known: depth 0) at the covered region's corner;
@@ -21,7 +21,7 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
     let only_strokes = m.levels.iter().all(|l| {
         let s = split(&l.moves);
         let st = strokes(&l.moves);
-        s.loops.is_empty() && st.len() >= 2 && parallel(&st)
+        s.loops.is_empty() && !st.is_empty() && parallel(&st) && no_ridges(&st, rad)
     });
     if !only_strokes {
         return false;
@@ -95,6 +95,18 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
     }
     r.top = z;
     true
+}
+
+/// Do neighbouring strokes lie at most a tool diameter apart (no ridge
+/// left between them)?
+fn no_ridges(strokes: &[&Move], rad: f64) -> bool {
+    let d = unit(strokes[0]);
+    let mut across: Vec<f64> = strokes
+        .iter()
+        .map(|m| (m.from[0] - strokes[0].from[0]) * d[1] - (m.from[1] - strokes[0].from[1]) * d[0])
+        .collect();
+    across.sort_by(f64::total_cmp);
+    across.windows(2).all(|w| w[1] - w[0] <= 2.0 * rad + 1e-6)
 }
 
 /// The largest Z step between layers (from the top to the first).

@@ -83,3 +83,47 @@ fn a_second_face_pass_finishes_and_the_first_leaves_its_allowance() {
         OperationKind::PlaneMilling { finish: true, .. }
     ));
 }
+
+#[test]
+fn one_pass_of_a_wide_cutter_is_a_face_strokes_too_far_apart_are_not() {
+    let stock = Some(([0.0, 0.0, -10.0], [50.0, 30.0, 1.0]));
+    let one = path(
+        &[
+            z(-60.0, 15.0, 5.0),
+            z(-60.0, 15.0, 0.0),
+            z(110.0, 15.0, 0.0),
+        ],
+        &[false; 2],
+        1,
+    );
+    let (p, notes) = run(&one, 50.0, stock);
+    assert_eq!(notes, 0);
+    assert!(
+        matches!(p.features[0].kind, FeatureKind::PlanarFace { .. }),
+        "{:?}",
+        p.features[0].kind
+    );
+    let OperationKind::PlaneMilling { milling, .. } = &op(&p, 0, 0).kind else {
+        panic!()
+    };
+    assert!(matches!(
+        milling.strategy,
+        Some(Strategy::Unidirectional { .. })
+    ));
+    // A 10 mm tool with strokes 12 mm apart leaves ridges: no face.
+    let pts = [
+        z(-6.0, -2.0, 0.0),
+        z(56.0, -2.0, 0.0),
+        z(56.0, 10.0, 0.0),
+        z(-6.0, 10.0, 0.0),
+        z(-6.0, 22.0, 0.0),
+        z(56.0, 22.0, 0.0),
+        z(56.0, 34.0, 0.0),
+        z(-6.0, 34.0, 0.0),
+    ];
+    let (p, _) = run(&path(&pts, &[false; 7], 1), 10.0, stock);
+    assert!(!matches!(
+        p.features[0].kind,
+        FeatureKind::PlanarFace { .. }
+    ));
+}
