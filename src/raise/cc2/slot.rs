@@ -102,7 +102,7 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
     }
     let feature = match find_rough(r, &g) {
         Some(i) => finish(r, i, &g, m.tool),
-        None => new_slot(r, &g, rad, r.tool_edge_radius(m.tool)),
+        None => new_slot(r, &g, r.tool_edge_radius(m.tool)),
     };
     let top = r.top;
     let cuts: Vec<&Move> = m.levels.iter().flat_map(|l| l.moves.iter()).collect();
@@ -201,7 +201,7 @@ fn finish(r: &mut Raiser, i: usize, g: &SlotGeom, tool: i64) -> FeatureId {
     feature
 }
 
-fn new_slot(r: &mut Raiser, g: &SlotGeom, _rad: f64, edge: f64) -> FeatureId {
+fn new_slot(r: &mut Raiser, g: &SlotGeom, edge: f64) -> FeatureId {
     let name = r.name("SLOT");
     let f = slot_feature(r, &name, g, edge);
     r.add_feature(f)
