@@ -19,7 +19,7 @@
 
 use super::build::{machine_functions, placement, plane, r6, technology, tol};
 use super::hole::{hole_op, HoleCut, HoleOp};
-use super::{Known, Raiser};
+use super::Raiser;
 use crate::stepnc::model::*;
 use crate::toolpath::Move;
 
@@ -39,31 +39,24 @@ pub fn raise(r: &mut Raiser, h: &HoleCut, t: i64, moves: &[Move]) {
         let what = "tapping moves (the model has no TAPPING operation yet)";
         return super::freeform::raise(r, t, moves, what);
     }
-    let existing = r.known.iter().find_map(|k| match k {
-        Known::Hole { feature, xy, sized } if near(*xy, h.xy) => Some((*feature, *sized)),
-        _ => None,
-    });
+    // Holes by position on a 1 µm grid: programs drill thousands.
+    let key = (
+        (h.xy[0] * 1e3).round() as i64,
+        (h.xy[1] * 1e3).round() as i64,
+    );
     let sizing = sizes_hole(kind.as_ref());
-    let (feature, name) = match existing {
+    let (feature, name) = match r.holes.get(&key).copied() {
         Some((f, sized)) => {
             if sizing {
                 deepen(r, f, h, rad, kind.as_ref(), !sized);
-                for k in r.known.iter_mut() {
-                    if let Known::Hole { feature, sized, .. } = k {
-                        *sized |= *feature == f;
-                    }
-                }
+                r.holes.insert(key, (f, true));
             }
             (f, r.project.features[f.index()].id.clone())
         }
         None => {
             let name = r.name("HOLE");
             let f = new_hole(r, &name, h, rad, kind.as_ref());
-            r.known.push(Known::Hole {
-                feature: f,
-                xy: h.xy,
-                sized: sizing,
-            });
+            r.holes.insert(key, (f, sizing));
             (f, name)
         }
     };
@@ -82,10 +75,6 @@ pub fn raise(r: &mut Raiser, h: &HoleCut, t: i64, moves: &[Move]) {
         kind: op_kind,
     };
     r.add_operation(feature, op);
-}
-
-fn near(a: [f64; 2], b: [f64; 2]) -> bool {
-    (a[0] - b[0]).hypot(a[1] - b[1]) < 1e-3
 }
 
 fn is_drill(kind: Option<&ToolBodyKind>) -> bool {

@@ -98,13 +98,19 @@ pub fn contains(outer: Box2, inner: Box2, tol: f64) -> bool {
 impl MillCut {
     pub fn of_chunk(c: &Chunk) -> Option<MillCut> {
         let mut levels: Vec<Level> = Vec::new();
+        // Level index by Z on the EPS grid (programs hold thousands).
+        let mut by_z: HashMap<i64, usize> = HashMap::new();
         for m in c.moves.iter().filter(|m| horizontal(m)) {
-            match levels.iter_mut().find(|l| (l.z - m.from[2]).abs() < EPS) {
-                Some(l) => l.moves.push(m.clone()),
-                None => levels.push(Level {
-                    z: m.from[2],
-                    moves: vec![m.clone()],
-                }),
+            let key = (m.from[2] / EPS).round() as i64;
+            match by_z.get(&key) {
+                Some(i) => levels[*i].moves.push(m.clone()),
+                None => {
+                    by_z.insert(key, levels.len());
+                    levels.push(Level {
+                        z: m.from[2],
+                        moves: vec![m.clone()],
+                    });
+                }
             }
         }
         if levels.is_empty() {

@@ -11,12 +11,6 @@ use crate::stepnc::model::{
 /// A feature found so far, with what later operations are matched by.
 #[derive(Clone, Debug)]
 pub(crate) enum Known {
-    Hole {
-        feature: FeatureId,
-        xy: [f64; 2],
-        /// Has a tool that sizes holes (not a spot drill) cut it?
-        sized: bool,
-    },
     Face {
         feature: FeatureId,
         /// Each operation with the Z it cut to.
@@ -45,6 +39,9 @@ pub(crate) struct Raiser<'a> {
     pub tool: &'a dyn Fn(i64) -> ToolId,
     pub ctx: &'a Cc2Context,
     pub known: Vec<Known>,
+    /// Holes by position (µm grid): the feature and whether a tool that
+    /// sizes holes has cut it.
+    pub holes: std::collections::HashMap<(i64, i64), (FeatureId, bool)>,
     /// The top surface features are measured from: the stock top, or the
     /// level a face was cut to, or 0 when neither is known.
     pub top: f64,
@@ -86,6 +83,7 @@ impl<'a> Raiser<'a> {
             tool,
             ctx,
             known: Vec::new(),
+            holes: Default::default(),
             envelopes,
             current: 0,
             counters: Default::default(),

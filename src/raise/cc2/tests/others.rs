@@ -369,3 +369,44 @@ fn tapping_stays_a_toolpath_feature() {
     assert_eq!(notes, 1);
     assert_eq!(p.features[0].kind, FeatureKind::ToolpathFeature);
 }
+
+/// Thousands of holes and a cut with tens of thousands of levels are
+/// raised in time close to linear (a loose bound: the test would take
+/// minutes if any step were quadratic).
+#[test]
+fn large_programs_raise_quickly() {
+    let mut ev = Vec::new();
+    for i in 0..20_000 {
+        let (x, y) = ((i % 200) as f64 * 2.0, (i / 200) as f64 * 2.0);
+        ev.extend(path(
+            &[z(x, y, 2.0), z(x, y, -3.0), z(x, y, 2.0)],
+            &[false, true],
+            2,
+        ));
+        ev.extend(path(&[z(x, y, 2.0), z(x + 1.0, y + 0.5, 2.0)], &[true], 2));
+    }
+    ev.push(Event::ToolChange {
+        tool: 3,
+        span: Default::default(),
+    });
+    // 25000 levels 1 µm apart, one pass each, back and forth.
+    let x = |i: usize| {
+        if (i / 2) % 2 == 0 {
+            [0.0, 10.0][i % 2]
+        } else {
+            [10.0, 0.0][i % 2]
+        }
+    };
+    let pts: Vec<[f64; 3]> = (0..50_000)
+        .map(|i| z(x(i), 0.0, -((i / 2) as f64) * 1e-3))
+        .collect();
+    ev.extend(path(&pts, &vec![false; pts.len() - 1], 3));
+    let start = std::time::Instant::now();
+    let (p, notes) = run(&ev, 1.0, None);
+    let took = start.elapsed();
+    eprintln!("raised {} features in {took:?}", p.features.len());
+    assert_eq!(p.features.len(), 20_001);
+    assert_eq!(notes, 0);
+    assert!(matches!(p.features[20_000].kind, FeatureKind::Slot { .. }));
+    assert!(took.as_secs() < 20, "{took:?}");
+}
