@@ -391,7 +391,7 @@ fn large_programs_raise_quickly() {
     });
     // 25000 levels 1 µm apart, one pass each, back and forth.
     let x = |i: usize| {
-        if (i / 2) % 2 == 0 {
+        if (i / 2).is_multiple_of(2) {
             [0.0, 10.0][i % 2]
         } else {
             [10.0, 0.0][i % 2]
