@@ -682,3 +682,87 @@ fn cam_like_program_gives_its_features() {
     );
     insta::assert_snapshot!("camlike_features", text);
 }
+
+/// Moves no recogniser explains stay a TOOLPATH_FEATURE whose explicit
+/// toolpath (polylines, an arc as a trimmed circle, a helix as a
+/// polyline, rapids) is written to Part 21 and read back unchanged.
+#[test]
+fn toolpath_features_round_trip_through_part21() {
+    use cncc::toolpath::{ArcGeom, CoolantState, Event, FeedMode, Move, MoveKind};
+    let mv = |kind, from, to| {
+        Event::Move(Move {
+            kind,
+            from,
+            to,
+            feed: 300.0,
+            feed_mode: FeedMode::PerMinute,
+            tool: 3,
+            spindle: 2000.0,
+            coolant: CoolantState {
+                flood: true,
+                mist: false,
+            },
+            span: Default::default(),
+        })
+    };
+    let arc = |c: [f64; 3], rotation| {
+        MoveKind::Arc(ArcGeom {
+            axes: [0, 1, 2],
+            centre: c,
+            rotation,
+        })
+    };
+    let events = vec![
+        mv(MoveKind::Rapid, [0.0, 0.0, 5.0], [0.0, 0.0, 2.0]),
+        mv(MoveKind::Line, [0.0, 0.0, 2.0], [5.0, 3.0, -1.0]),
+        mv(
+            arc([5.0, 8.0, -1.0], 1),
+            [5.0, 3.0, -1.0],
+            [10.0, 8.0, -1.0],
+        ),
+        mv(
+            arc([5.0, 8.0, -1.0], 1),
+            [10.0, 8.0, -1.0],
+            [0.0, 8.0, -2.0],
+        ),
+        mv(MoveKind::Rapid, [0.0, 8.0, -2.0], [0.0, 8.0, 5.0]),
+    ];
+    let mut p = skeleton();
+    let ctx = Cc2Context {
+        tool_diameter: Box::new(|_| Some(6.0)),
+        ..Cc2Context::default()
+    };
+    let notes = recognise_report(&events, &mut p, &|t| ToolId(t as u32), &ctx);
+    assert_eq!(notes.len(), 1);
+    assert_eq!(notes[0].code.code(), "W0870");
+    assert_eq!(kinds(&p), ["ToolpathFeature"]);
+    let Some(tps) = &p.operations[0].toolpath else {
+        panic!()
+    };
+    // Rapid in, line, arc, helix, rapid out.
+    assert_eq!(tps.len(), 5, "{tps:?}");
+    let text = cncc::stepnc::write_project(&p);
+    for entity in [
+        "TOOLPATH_FEATURE(",
+        "FREEFORM_OPERATION(",
+        "CUTTER_LOCATION_TRAJECTORY(",
+        "TRIMMED_CURVE(",
+        "POLYLINE(",
+    ] {
+        assert!(text.contains(entity), "no {entity} in\n{text}");
+    }
+    let mut files = cncc::source::SourceMap::new();
+    let id = files.add("tp.stp", text.clone());
+    let back = cncc::stepnc::read_text(&text, id);
+    assert!(
+        back.diagnostics.iter().all(|d| !d.is_error()),
+        "{:?}",
+        back.diagnostics
+    );
+    let q = back.project.expect("a model");
+    assert_eq!(q.features, p.features);
+    // Tools are renumbered by the reader and rpm go through rev/s: the
+    // toolpaths and the operation's kind are compared.
+    assert_eq!(q.operations[0].toolpath, p.operations[0].toolpath);
+    assert_eq!(q.operations[0].kind, p.operations[0].kind);
+}
