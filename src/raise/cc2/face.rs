@@ -136,7 +136,14 @@ fn union(boxes: &[[f64; 4]]) -> Option<[f64; 4]> {
 fn new_face(r: &mut Raiser, m: &MillCut, region: [f64; 4], z: f64) -> FeatureId {
     let name = r.name("PLANAR FACE");
     let top = if r.stock_box().is_some() { r.top } else { z };
+    // The course is the face's, not the tool's: along +X or +Y (the
+    // strategy keeps the direction the tool fed in).
     let d = unit(strokes(&m.levels[0].moves)[0]);
+    let d = if d[0] < -1e-9 || (d[0].abs() <= 1e-9 && d[1] < 0.0) {
+        [-d[0], -d[1]]
+    } else {
+        d
+    };
     let (along, across) = if d[0].abs() >= d[1].abs() {
         (region[2] - region[0], region[3] - region[1])
     } else {

@@ -127,3 +127,40 @@ fn one_pass_of_a_wide_cutter_is_a_face_strokes_too_far_apart_are_not() {
         FeatureKind::PlanarFace { .. }
     ));
 }
+
+#[test]
+fn the_course_of_a_face_does_not_depend_on_the_feed_direction() {
+    let stock = Some(([0.0, 0.0, -10.0], [50.0, 16.0, 0.5]));
+    let pts = [
+        z(56.0, 0.0, 0.0),
+        z(-6.0, 0.0, 0.0),
+        z(-6.0, 8.0, 0.0),
+        z(56.0, 8.0, 0.0),
+        z(56.0, 16.0, 0.0),
+        z(-6.0, 16.0, 0.0),
+    ];
+    let (p, _) = run(&path(&pts, &[false; 5], 1), 10.0, stock);
+    let FeatureKind::PlanarFace {
+        course_of_travel: TravelPath::Linear { direction, .. },
+        ..
+    } = &p.features[0].kind
+    else {
+        panic!()
+    };
+    assert_eq!(direction.ratios, [1.0, 0.0, 0.0]);
+    let OperationKind::PlaneMilling { milling, .. } = &op(&p, 0, 0).kind else {
+        panic!()
+    };
+    let Some(Strategy::Bidirectional {
+        feed_direction: Some(f),
+        stepover_direction,
+        ..
+    }) = &milling.strategy
+    else {
+        panic!()
+    };
+    assert_eq!(
+        (f.ratios, *stepover_direction),
+        ([-1.0, 0.0, 0.0], Some(LeftOrRight::Right))
+    );
+}
