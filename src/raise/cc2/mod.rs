@@ -1,16 +1,16 @@
 //! CC2 feature recognition: a program's resolved moves raised into ISO
 //! 14649 machining features (2.5D milling) with their operations, after
 //! the method of Xu, Anwer and Lavernhe (2014): the moves are cut into
-//! chunks (one tool at one place, [`segment`]); chunks are recognised as
-//! drilling ([`hole`], [`drill`]) or as milling cuts made of layers and
-//! loops ([`cuts`], [`level`], [`shape`]); milling cuts become planar
-//! faces ([`face`]), slots ([`slot`]), outside profiles ([`profile`]),
-//! closed pockets ([`pocket`]), open pockets and steps ([`open`]), tried
-//! in that order, with their strategies ([`strategy`]). An operation
+//! chunks (one tool at one place, `segment`); chunks are recognised as
+//! drilling (`hole`, `drill`) or as milling cuts made of layers and
+//! loops (`cuts`, `level`, `shape`); milling cuts become planar
+//! faces (`face`), slots (`slot`), outside profiles (`profile`),
+//! closed pockets (`pocket`), open pockets and steps (`open`), tried
+//! in that order, with their strategies (`strategy`). An operation
 //! over a feature already found is a further operation of it: the last
 //! one is the finishing one and the allowances of the earlier ones are
 //! read from the offset between them. Whatever is not recognised stays a
-//! TOOLPATH_FEATURE with its explicit toolpath ([`freeform`]), reported
+//! TOOLPATH_FEATURE with its explicit toolpath (`freeform`), reported
 //! with W0870: nothing is dropped. Features, operations and workingsteps
 //! are appended in program order.
 //!
