@@ -14,12 +14,15 @@
 //!   end of the cylinder); other tools leave a FLAT bottom.
 //! * `retract_plane`: where the first feed starts (the R plane), in the
 //!   feature's frame.
+//! * The hole starts at the top surface, or at the floor of a pocket or
+//!   slot cut before round its centre (a hole drilled in a pocket floor);
+//!   the placement is there. (A pocket's wall box is used for the test.)
 //!
 //! [`hole`]: super::hole
 
 use super::build::{machine_functions, placement, plane, r6, technology, tol};
 use super::hole::{hole_op, HoleCut, HoleOp};
-use super::Raiser;
+use super::{Known, Raiser};
 use crate::stepnc::model::*;
 use crate::toolpath::Move;
 
@@ -66,7 +69,7 @@ pub fn raise(r: &mut Raiser, h: &HoleCut, t: i64, moves: &[Move]) {
         id: format!("{verb} {name}"),
         toolpath: None,
         tool_direction: None,
-        retract_plane: Some(r6(h.start_z - r.top)),
+        retract_plane: Some(r6(h.start_z - surface_at(r, h.xy))),
         start_point: None,
         tool: (r.tool)(t),
         technology: technology(&cuts[..1]),
@@ -104,7 +107,7 @@ fn depth_and_bottom(
     let cylinder_end = h.bottom + cone;
     if let Some((_, zmin, _)) = r.stock_box() {
         if cylinder_end <= zmin + 1e-6 {
-            return (r.top - zmin, HoleBottom::Through);
+            return (surface_at(r, h.xy) - zmin, HoleBottom::Through);
         }
     }
     let bottom = if cone > 0.0 {
@@ -115,7 +118,7 @@ fn depth_and_bottom(
     } else {
         HoleBottom::Flat
     };
-    (r.top - cylinder_end, bottom)
+    (surface_at(r, h.xy) - cylinder_end, bottom)
 }
 
 fn new_hole(
@@ -130,7 +133,7 @@ fn new_hole(
         id: name.to_string(),
         workpiece: WorkpieceId(0),
         operations: Vec::new(),
-        placement: placement(name, [h.xy[0], h.xy[1], r.top], [1.0, 0.0]),
+        placement: placement(name, [h.xy[0], h.xy[1], surface_at(r, h.xy)], [1.0, 0.0]),
         depth: plane(&format!("{name} DEPTH"), [0.0, 0.0, -r6(depth)]),
         kind: FeatureKind::RoundHole {
             diameter: tol(2.0 * rad),
@@ -143,6 +146,35 @@ fn new_hole(
 
 /// A further operation on a hole: a larger tool widens it, a deeper one
 /// deepens it.
+/// The surface a hole starts from: the floor of the deepest pocket or
+/// slot already cut round its centre, else the top.
+fn surface_at(r: &Raiser, xy: [f64; 2]) -> f64 {
+    let inside = |b: [f64; 4]| xy[0] > b[0] && xy[0] < b[2] && xy[1] > b[1] && xy[1] < b[3];
+    let mut z = r.top;
+    for k in &r.known {
+        let floor = match k {
+            Known::Pocket { ops, .. } => ops
+                .last()
+                .filter(|(_, w, _)| inside(w.bbox()))
+                .map(|(_, _, b)| *b),
+            Known::Slot { ops, .. } => ops
+                .last()
+                .filter(|(_, g)| in_slot(g, xy))
+                .map(|(_, g)| g.bottom),
+            Known::Face { .. } | Known::Profile { .. } => None,
+        };
+        z = floor.map_or(z, |f| z.min(f));
+    }
+    z
+}
+
+fn in_slot(g: &super::slot::SlotGeom, xy: [f64; 2]) -> bool {
+    let (dx, dy) = (xy[0] - g.start[0], xy[1] - g.start[1]);
+    let along = dx * g.dir[0] + dy * g.dir[1];
+    let across = dx * g.dir[1] - dy * g.dir[0];
+    (0.0..=g.length).contains(&along) && across.abs() < g.width / 2.0
+}
+
 /// Does the tool give the hole its size? Centre and spot drills and
 /// countersinks only mark or chamfer it.
 fn sizes_hole(kind: Option<&ToolBodyKind>) -> bool {

@@ -1,8 +1,9 @@
 //! General outside profiles: a cut that follows one closed loop per level
 //! (nothing inside it) around the rest of the part: the outline the loop
 //! leaves (the loop shrunk by the tool radius) holds every other cut of
-//! the program (but other passes round it), or the tool's envelope goes
-//! round the whole stock. The boundary is that outline in the feature's
+//! the program (but other passes round it) when the stock is not known;
+//! when it is, the tool's envelope must go round the whole stock (a loop
+//! inside the stock with nothing inside it is a pocket's contour). The boundary is that outline in the feature's
 //! frame (placed at its centre on the top surface);
 //! `profile_swept_shape` is a LINEAR_PATH down the tool axis over the
 //! depth [?: ISO 14649-10 names it a linear_path without saying more;
@@ -51,7 +52,13 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
             let round_stock = r
                 .stock_box()
                 .is_some_and(|(b, _, _)| contains(grow(path.bbox(), rad), b, 1e-3));
-            if !(holds_others || round_stock) {
+            // With the stock known the loop must go round it (no material
+            // is left outside the outline); without it, round the others.
+            let outside = match r.stock_box() {
+                Some(_) => round_stock,
+                None => holds_others,
+            };
+            if !outside {
                 return false;
             }
             let name = r.name("PROFILE");

@@ -410,3 +410,36 @@ fn large_programs_raise_quickly() {
     assert!(matches!(p.features[20_000].kind, FeatureKind::Slot { .. }));
     assert!(took.as_secs() < 20, "{took:?}");
 }
+
+#[test]
+fn a_hole_drilled_in_a_pocket_floor_starts_there() {
+    let zz = -4.0;
+    let mut pts = vec![z(10.0, 10.0, 2.0)];
+    pts.extend(rect(10.0, 10.0, 30.0, 20.0, zz));
+    let mut ev = path(&pts, &[false; 5], 3);
+    ev.push(Event::ToolChange {
+        tool: 2,
+        span: Default::default(),
+    });
+    ev.extend(path(
+        &[
+            z(20.0, 15.0, -2.0),
+            z(20.0, 15.0, -12.0),
+            z(20.0, 15.0, 2.0),
+        ],
+        &[false, true],
+        2,
+    ));
+    let (p, _) = run(&ev, 4.0, Some(([0.0, 0.0, -10.0], [50.0, 40.0, 0.0])));
+    let hole = &p.features[1];
+    assert_eq!(hole.placement.location.xyz, [20.0, 15.0, -4.0]);
+    assert!(matches!(
+        hole.kind,
+        FeatureKind::RoundHole {
+            bottom: HoleBottom::Through,
+            ..
+        }
+    ));
+    assert_eq!(hole.depth.position.location.xyz[2], -6.0);
+    assert_eq!(op(&p, 1, 0).retract_plane, Some(2.0));
+}
