@@ -531,10 +531,30 @@ fn cli_query_prints_one_value_per_line() {
 }
 
 #[test]
-fn cli_stepnc_refuses_programs_until_raising_is_wired() {
-    let o = cncc(&["stepnc", "tests/programs/linuxcnc/subs.ngc"]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("not built in this tree"));
+fn cli_stepnc_raises_a_program_and_its_output_reads_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("subs.stp");
+    let o = cncc(&[
+        "stepnc",
+        "tests/programs/linuxcnc/subs.ngc",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert!(text.starts_with("ISO-10303-21;"));
+    let c = cncc(&["check", out.to_str().unwrap()]);
+    assert_eq!(
+        c.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&c.stderr)
+    );
 }
 
 #[test]

@@ -262,6 +262,9 @@ codes! {
     CannotExpandCycle = "W0510", "cycle-not-expanded", Warning,
         "a cycle the interpreter cannot expand into moves",
         "The cycle is kept in the program, but its documentation does not define its toolpath well enough for cncc to generate it; the canonical output skips its moves.";
+    KeptAsToolpathFeature = "W0870", "kept-as-toolpath-feature", Warning,
+        "moves left as a toolpath feature when raising to STEP-NC features",
+        "`cncc stepnc --cc2` recognises drilled holes, faces, pockets, slots, steps and outside profiles in the moves. These moves matched none of them (or the tool's diameter is not known), so they are carried as a TOOLPATH_FEATURE with a FREEFORM_OPERATION holding the explicit toolpath: nothing is lost, but the feature is not described. Give the tool table and stock, or program the feature in a recognisable way.";
     CycleRBelowBottom = "E0540", "cycle-r-below-bottom", Error,
         "a canned cycle whose R plane is below its bottom",
         "The retract (R) plane of a drilling cycle must not be below the hole bottom along the drilling axis. Check the signs of R and Z (in G91, R is measured from the initial level and Z from R).";

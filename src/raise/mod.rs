@@ -151,11 +151,12 @@ fn raise_cc2(events: &[Event], opts: &RaiseOptions) -> Raised {
         secplane_z,
     };
     let tool = |n: i64| ids.get(&n).copied().unwrap_or(ToolId(0));
-    cc2::recognise(events, &mut project, &tool, &ctx);
+    let mut diagnostics = tools.diagnostics;
+    diagnostics.extend(cc2::recognise_report(events, &mut project, &tool, &ctx));
     project::set_security_plane(&mut project, secplane_z);
     Raised {
         project,
-        diagnostics: tools.diagnostics,
+        diagnostics,
     }
 }
 

@@ -1,22 +1,136 @@
-//! CC2 feature recognition: a stub standing in for the recognisers being
-//! written on branch `cc2` (whose file replaces this one). It recognises
-//! nothing, so `cncc stepnc --cc2` gives the project skeleton and tools.
+//! CC2 feature recognition: a program's resolved moves raised into ISO
+//! 14649 machining features (2.5D milling) with their operations, after
+//! the method of Xu, Anwer and Lavernhe (2014): the moves are cut into
+//! chunks (one tool at one place, `segment`); chunks are recognised as
+//! drilling (`hole`, `drill`) or as milling cuts made of layers and
+//! loops (`cuts`, `level`, `shape`); milling cuts become planar
+//! faces (`face`), slots (`slot`), outside profiles (`profile`),
+//! closed pockets (`pocket`), open pockets and steps (`open`), tried
+//! in that order, with their strategies (`strategy`). An operation
+//! over a feature already found is a further operation of it: the last
+//! one is the finishing one and the allowances of the earlier ones are
+//! read from the offset between them. Whatever is not recognised stays a
+//! TOOLPATH_FEATURE with its explicit toolpath (`freeform`), reported
+//! with W0870: nothing is dropped. Features, operations and workingsteps
+//! are appended in program order.
+//!
+//! Sizes come from the tool diameters (the context's, else the project's
+//! tools); without them a cut stays a toolpath feature. The stock, when
+//! given, tells faces, through holes, open ends, steps and open pockets;
+//! without it the top is taken at Z0 and a face must cover every other
+//! cut from above them.
+//!
+//! Frames: feature placements and toolpaths are in workpiece
+//! coordinates (the setup and workpiece placements are identity); a
+//! feature's geometry (depth plane, profiles) is in its local frame. The
+//! workingsteps' security plane is at `secplane_z` in workpiece
+//! coordinates (as NIST's Example 1 shares one plane).
 
-use crate::stepnc::model::{Project, ToolId};
-use crate::toolpath::{Event, P3};
+mod build;
+mod cuts;
+mod drill;
+mod face;
+mod freeform;
+mod hole;
+mod level;
+pub mod listing;
+mod open;
+mod pocket;
+mod profile;
+mod segment;
+mod shape;
+mod slot;
+mod state;
+mod strategy;
+#[cfg(test)]
+mod tests;
 
+use crate::diag::Diagnostic;
+use crate::stepnc::model::{Project, ToolId, P3};
+use crate::toolpath::Event;
+pub(crate) use state::{Known, Raiser};
+
+/// What recognition needs beyond the moves.
 pub struct Cc2Context {
+    /// The diameter (mm) of a tool by its number.
     pub tool_diameter: Box<dyn Fn(i64) -> Option<f64>>,
-    /// min, max mm.
+    /// The stock's box (min, max, mm, work coordinates), when known:
+    /// through holes, open slot ends, steps and faces are told by it.
     pub stock: Option<(P3, P3)>,
+    /// The security plane's Z, work coordinates.
     pub secplane_z: f64,
 }
 
-/// Appends the recognised workingsteps to `project.main_workplan`.
+impl Default for Cc2Context {
+    fn default() -> Self {
+        Cc2Context {
+            tool_diameter: Box::new(|_| None),
+            stock: None,
+            secplane_z: 50.0,
+        }
+    }
+}
+
+/// Appends the features, operations and workingsteps the moves make to
+/// the project, in program order. See [`recognise_report`] for the
+/// diagnostics (moves left as toolpath features).
 pub fn recognise(
-    _events: &[Event],
-    _project: &mut Project,
-    _tool: &dyn Fn(i64) -> ToolId,
-    _ctx: &Cc2Context,
+    events: &[Event],
+    project: &mut Project,
+    tool: &dyn Fn(i64) -> ToolId,
+    ctx: &Cc2Context,
 ) {
+    // The moves are all carried into the project; the notes saying which
+    // were not recognised are available from `recognise_report`.
+    let _notes = recognise_report(events, project, tool, ctx);
+}
+
+/// [`recognise`], returning a W0870 note for each run of moves kept as a
+/// TOOLPATH_FEATURE.
+pub fn recognise_report(
+    events: &[Event],
+    project: &mut Project,
+    tool: &dyn Fn(i64) -> ToolId,
+    ctx: &Cc2Context,
+) -> Vec<Diagnostic> {
+    let cuts = cuts::cuts(events, &|t| radius(project, tool, ctx, t));
+    let mut r = Raiser::new(project, tool, ctx, &cuts);
+    for (i, cut) in cuts.iter().enumerate() {
+        r.current = i;
+        match cut {
+            cuts::Cut::Hole { hole, tool, moves } => drill::raise(&mut r, hole, *tool, moves),
+            cuts::Cut::Mill(m) => raise_mill(&mut r, m),
+            cuts::Cut::Other(c) => freeform::raise(&mut r, c.tool, &c.moves, "moves"),
+        }
+    }
+    r.diags
+}
+
+fn raise_mill(r: &mut Raiser, m: &level::MillCut) {
+    let Some(rad) = r.radius(m.tool) else {
+        return freeform::raise(r, m.tool, &m.moves, "the tool's diameter is unknown; moves");
+    };
+    let done = face::raise(r, m, rad)
+        || slot::raise(r, m, rad)
+        || profile::raise(r, m, rad)
+        || pocket::raise(r, m, rad);
+    if !done {
+        freeform::raise(r, m.tool, &m.moves, "milling moves");
+    }
+}
+
+fn radius(
+    project: &Project,
+    tool: &dyn Fn(i64) -> ToolId,
+    ctx: &Cc2Context,
+    t: i64,
+) -> Option<f64> {
+    let d = (ctx.tool_diameter)(t).or_else(|| {
+        let id = tool(t);
+        project
+            .tools
+            .get(id.index())
+            .map(|tl| tl.body.dimension.diameter)
+    });
+    d.filter(|d| *d > 0.0 && d.is_finite()).map(|d| d / 2.0)
 }
