@@ -202,3 +202,99 @@ fn plunges_merge_pecks() {
         ]
     );
 }
+
+/// `cncc stepnc --cc2 PROGRAM -o OUT` (extra arguments after), OUT's text.
+fn raise_cc2(file: &str, dialect: &str, extra: &[&str]) -> String {
+    let path = dir().join(file);
+    let out = std::env::temp_dir().join(format!("cncc-samepart-{}-{file}.stp", std::process::id()));
+    let mut args = vec![
+        "stepnc",
+        "--cc2",
+        path.to_str().unwrap(),
+        "--dialect",
+        dialect,
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    let (code, _, err) = cncc(&args);
+    assert_eq!(code, 0, "cncc stepnc --cc2 {file}: {err}");
+    assert!(err.trim().is_empty(), "{file}: {err}");
+    let text = std::fs::read_to_string(&out).expect("the Part 21 file");
+    let _ = std::fs::remove_file(&out);
+    text
+}
+
+/// The TNC and the Fanuc program give the same CC2 features and
+/// operations (`cncc diff` of the two Part 21 files). The Heidenhain stock
+/// comes from its `BLK FORM`; the Fanuc one from `--stock`. Ignored, and
+/// why: the peck depths of the pecked hole. Fanuc G83's Q counts the first
+/// peck from the R plane (R2 Q5: to Z-3), TNC cycle 200's Q202 from the
+/// surface (Q203=0 Q202=5: to Z-5), so MULTISTEP_DRILLING's `first_depth`
+/// and `retract_distance` (both measured from the R plane) legitimately
+/// differ; the hole, its depth and everything else must not.
+#[test]
+fn fanuc_and_heidenhain_give_the_same_cc2_features() {
+    let fanuc = raise_cc2("part.nc", "fanuc", &["--stock", "100x50x20"]);
+    let tnc = raise_cc2("part.h", "heidenhain", &[]);
+    let tmp = std::env::temp_dir();
+    let a = tmp.join(format!("cncc-samepart-{}-a.stp", std::process::id()));
+    let b = tmp.join(format!("cncc-samepart-{}-b.stp", std::process::id()));
+    std::fs::write(&a, &fanuc).unwrap();
+    std::fs::write(&b, &tnc).unwrap();
+    let (_, out, err) = cncc(&["diff", a.to_str().unwrap(), b.to_str().unwrap()]);
+    let _ = (std::fs::remove_file(&a), std::fs::remove_file(&b));
+    assert!(err.trim().is_empty(), "{err}");
+    let differences: Vec<&str> = out
+        .lines()
+        .filter(|l| !l.ends_with("difference(s)"))
+        .collect();
+    assert_eq!(
+        differences,
+        [
+            "~ operation 'PECK DRILL HOLE4' / first_depth: 5. → 7.",
+            "~ operation 'PECK DRILL HOLE4' / retract_distance: 5. → 7."
+        ],
+        "{out}"
+    );
+    for entity in ["ROUND_HOLE(", "CLOSED_POCKET(", "MULTISTEP_DRILLING("] {
+        assert!(tnc.contains(entity), "no {entity} in\n{tnc}");
+    }
+}
+
+/// The workpiece's raw stock: from the program's `BLK FORM` when
+/// `--stock` is absent, `--stock` when given; none for a Fanuc program
+/// without `--stock`.
+#[test]
+fn blk_form_gives_the_stock() {
+    let summary = |file: &str, dialect: &str, extra: &[&str]| {
+        let path = dir().join(file);
+        let mut args = vec![
+            "stepnc",
+            "--cc2",
+            "--summary",
+            path.to_str().unwrap(),
+            "--dialect",
+            dialect,
+        ];
+        args.extend_from_slice(extra);
+        let (code, out, err) = cncc(&args);
+        assert_eq!(code, 0, "{err}");
+        out.lines()
+            .find(|l| l.starts_with("workpiece"))
+            .unwrap_or("")
+            .to_string()
+    };
+    assert!(
+        summary("part.h", "heidenhain", &[]).ends_with("block 100 x 50 x 20 from (0, 0, -20)"),
+        "{}",
+        summary("part.h", "heidenhain", &[])
+    );
+    let given = summary("part.h", "heidenhain", &["--stock", "110x60x25-5-5-25"]);
+    assert!(
+        given.ends_with("block 110 x 60 x 25 from (-5, -5, -25)"),
+        "{given}"
+    );
+    let fanuc = summary("part.nc", "fanuc", &[]);
+    assert!(!fanuc.contains("block"), "{fanuc}");
+}

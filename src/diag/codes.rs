@@ -265,6 +265,9 @@ codes! {
     KeptAsToolpathFeature = "W0870", "kept-as-toolpath-feature", Warning,
         "moves left as a toolpath feature when raising to STEP-NC features",
         "`cncc stepnc --cc2` recognises drilled holes, faces, pockets, slots, steps and outside profiles in the moves. These moves matched none of them (or the tool's diameter is not known), so they are carried as a TOOLPATH_FEATURE with a FREEFORM_OPERATION holding the explicit toolpath: nothing is lost, but the feature is not described. Give the tool table and stock, or program the feature in a recognisable way.";
+    BlankNotRead = "W0580", "blank-not-read", Warning,
+        "a BLK FORM blank that cannot be taken as the stock",
+        "Without `--stock`, `cncc stepnc` takes the workpiece's raw stock from the program's Heidenhain `BLK FORM 0.1` (minimum point) and `BLK FORM 0.2` (maximum point, absolute or incremental from the minimum). These blocks were incomplete, used parameters, or gave no volume, so the project has no raw piece. Give both points with numbers for X, Y and Z, or give `--stock`.";
     CycleRBelowBottom = "E0540", "cycle-r-below-bottom", Error,
         "a canned cycle whose R plane is below its bottom",
         "The retract (R) plane of a drilling cycle must not be below the hole bottom along the drilling axis. Check the signs of R and Z (in G91, R is measured from the initial level and Z from R).";

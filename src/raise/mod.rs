@@ -170,6 +170,38 @@ pub fn raise_file(
     opts: &RaiseOptions,
     files: &mut SourceMap,
 ) -> std::io::Result<Raised> {
+    let (opts, mut blank_diags) = with_program_stock(path, id, spec, opts)?;
+    let opts = &opts;
+    let mut raised = raise_run(path, id, spec, run, opts, files)?;
+    raised.diagnostics.append(&mut blank_diags);
+    Ok(raised)
+}
+
+/// `opts`, with the program's own blank (`BLK FORM`) as the stock when
+/// `--stock` is absent ([`Stock::from_program`]).
+fn with_program_stock(
+    path: &std::path::Path,
+    id: FileId,
+    spec: &DialectSpec,
+    opts: &RaiseOptions,
+) -> std::io::Result<(RaiseOptions, Vec<Diagnostic>)> {
+    let mut opts = opts.clone();
+    if opts.stock.is_some() {
+        return Ok((opts, Vec::new()));
+    }
+    let (stock, diags) = Stock::from_program(std::fs::File::open(path)?, id, spec);
+    opts.stock = stock;
+    Ok((opts, diags))
+}
+
+fn raise_run(
+    path: &std::path::Path,
+    id: FileId,
+    spec: &std::sync::Arc<DialectSpec>,
+    run: &crate::interp::Options,
+    opts: &RaiseOptions,
+    files: &mut SourceMap,
+) -> std::io::Result<Raised> {
     match opts.level {
         Level::Cc1 => {
             let mut tracker = Tracker::new();
