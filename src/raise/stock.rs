@@ -265,4 +265,42 @@ mod tests {
         assert!(Stock::parse("axbxc").is_err());
         assert!(Stock::parse("").is_err());
     }
+
+    fn blank(text: &str) -> (Option<Stock>, Vec<Diagnostic>) {
+        let spec = crate::dialect::builtin::builtin("heidenhain").unwrap();
+        Stock::from_program(text.as_bytes(), FileId::default(), &spec)
+    }
+
+    #[test]
+    fn blk_form_gives_the_stock() {
+        let (s, d) = blank(
+            "0 BEGIN PGM P MM\n1 BLK FORM 0.1 Z X-50 Y-40 Z-30\n2 BLK FORM 0.2 IX+100 Y+40 IZ+30\n3 END PGM P MM\n",
+        );
+        assert!(d.is_empty(), "{d:?}");
+        let s = s.unwrap();
+        assert_eq!(
+            (s.corner, s.size),
+            ([-50.0, -40.0, -30.0], [100.0, 80.0, 30.0])
+        );
+        let (s, _) = blank(
+            "0 BEGIN PGM P INCH\n1 BLK FORM 0.1 Z X+0 Y+0 Z-1\n2 BLK FORM 0.2 X+4 Y+2 Z+0\n3 END PGM P INCH\n",
+        );
+        assert_eq!(s.unwrap().size, [101.6, 50.8, 25.4]);
+        assert_eq!(blank("0 BEGIN PGM P MM\n1 L X+0 FMAX\n").0, None);
+    }
+
+    #[test]
+    fn a_blank_that_cannot_be_taken_is_reported() {
+        for text in [
+            "0 BEGIN PGM P MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-20\n",
+            "0 BEGIN PGM P MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-20\n2 BLK FORM 0.2 X+100 Y+50\n",
+            "0 BEGIN PGM P MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-20\n2 BLK FORM 0.2 X+100 Y+50 Z-30\n",
+            "0 BEGIN PGM P MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z+Q1\n2 BLK FORM 0.2 X+100 Y+50 Z+0\n",
+        ] {
+            let (s, d) = blank(text);
+            assert_eq!(s, None, "{text}");
+            assert_eq!(d.len(), 1, "{text}");
+            assert_eq!(d[0].code.code(), "W0580");
+        }
+    }
 }
