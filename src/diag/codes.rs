@@ -268,6 +268,9 @@ codes! {
     BlankNotRead = "W0580", "blank-not-read", Warning,
         "a BLK FORM blank that cannot be taken as the stock",
         "Without `--stock`, `cncc stepnc` takes the workpiece's raw stock from the program's Heidenhain `BLK FORM 0.1` (minimum point) and `BLK FORM 0.2` (maximum point, absolute or incremental from the minimum). These blocks were incomplete, used parameters, or gave no volume, so the project has no raw piece. Give both points with numbers for X, Y and Z, or give `--stock`.";
+    CancelOverridden = "W0581", "cancel-overridden", Warning,
+        "a G80 beside a motion code of its modal group",
+        "LinuxCNC accepts G80 in a block with another motion code (`G80 G0 X0 Y0`): the motion code sets the motion mode and the G80 counts for nothing. cncc reads the block the same way and notes it; remove the G80, or put it in a block of its own to cancel a cycle before the move.";
     CycleRBelowBottom = "E0540", "cycle-r-below-bottom", Error,
         "a canned cycle whose R plane is below its bottom",
         "The retract (R) plane of a drilling cycle must not be below the hole bottom along the drilling axis. Check the signs of R and Z (in G91, R is measured from the initial level and Z from R).";

@@ -82,7 +82,7 @@ pub(super) fn code_stmt(
             kind,
             axes: Box::new(words.take_axes()),
         },
-        M::SetData => set_data(words, ctx),
+        M::SetData => set_data(cw, words, ctx),
         M::RefReturn { index, store } => StmtKind::RefReturn {
             index,
             store,
@@ -187,8 +187,10 @@ fn dwell(cw: &CodeWord<'_>, words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
     aux(cw, words)
 }
 
-/// G10: L, and every other word as written (P, axes, R...).
-fn set_data(words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
+/// G10: L, and the words it uses (the spec's `uses`, and axes) as
+/// written. Other words (F, S, T...) stay the block's own: in
+/// `F200 S1000 G10 L1 P1 R1` rs274 sets the feed and the speed.
+fn set_data(cw: &CodeWord<'_>, words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
     let l = words.take("L");
     let is_l2 = l
         .as_ref()
@@ -203,8 +205,16 @@ fn set_data(words: &mut Words, ctx: &mut Ctx<'_>) -> StmtKind {
     let l = l.map(|w| w.value).unwrap_or(Value::Number(Decimal::ZERO));
     StmtKind::SetData {
         l,
-        words: words.take_all_letters(&[]),
+        words: words.take_all_letters(&not_used(cw)),
     }
+}
+
+/// The letters that are neither axes nor among the code's `uses`.
+fn not_used(cw: &CodeWord<'_>) -> Vec<char> {
+    let uses = uses(cw);
+    ('A'..='Z')
+        .filter(|c| !uses.contains(c) && !crate::ir::AXIS_LETTERS.contains(c))
+        .collect()
 }
 
 /// M98 / M97: target P (a number, packed `P00031234`, or computed), repeats L.

@@ -169,8 +169,52 @@ fn conflicts(a: &CodeWord<'_>, b: &CodeWord<'_>, spec: &DialectSpec) -> bool {
     if a.is_motion() && b.is_motion() {
         return true;
     }
+    if overridden_cancel(a, b) || overridden_cancel(b, a) {
+        return false;
+    }
     let exclusive = |g: &str| spec.group(g).map(|d| d.exclusive).unwrap_or(true);
     a.letter == b.letter && a.group().is_some_and(exclusive) && a.group() == b.group()
+}
+
+/// Is `cancel` a cycle cancel (G80) sharing its modal group with the
+/// motion code `motion`? rs274 accepts `G80 G0 X1` and `G0 G80 X1`: the
+/// motion code is the block's and the G80 counts for nothing (LinuxCNC's
+/// reader skips a G80 when its group already has a code, and a later code
+/// replaces a G80). A dialect with G80 in a group of its own (Fanuc's
+/// group 09) never has the two in one group.
+pub(super) fn overridden_cancel(cancel: &CodeWord<'_>, motion: &CodeWord<'_>) -> bool {
+    cancel.meaning == Some(Meaning::CycleCancel)
+        && motion.is_motion()
+        && cancel.letter == motion.letter
+        && cancel.group().is_some()
+        && cancel.group() == motion.group()
+}
+
+/// Removes a G80 a motion code of its group overrides (see
+/// [`overridden_cancel`]), with a W0581 note: the block's statements are
+/// the motion code's, as rs274 runs it.
+pub(super) fn drop_overridden_cancels(codes: &mut Vec<CodeWord<'_>>, diags: &mut Vec<Diagnostic>) {
+    let overridden: Vec<usize> = (0..codes.len())
+        .filter(|&i| codes.iter().any(|m| overridden_cancel(&codes[i], m)))
+        .collect();
+    for i in overridden.into_iter().rev() {
+        let cancel = codes.remove(i);
+        let motion = codes.iter().find(|m| overridden_cancel(&cancel, m));
+        let mut d = Diagnostic::new(
+            Code::CancelOverridden,
+            format!(
+                "`{}` has no effect beside the motion code `{}`",
+                cancel.name(),
+                motion.map(|m| m.name()).unwrap_or_default()
+            ),
+        )
+        .primary(cancel.span, "overridden by the block's motion code")
+        .help("remove it: the block's motion code sets the motion mode (as in rs274)");
+        if let Some(m) = motion {
+            d = d.secondary(m.span, "the block's motion code");
+        }
+        diags.push(d);
+    }
 }
 
 fn conflict(first: &CodeWord<'_>, later: &CodeWord<'_>) -> Diagnostic {

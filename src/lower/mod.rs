@@ -152,6 +152,7 @@ impl<'s> Lowering<'s> {
         }
         s.plain.clear();
         codes::check_groups(&s.codes, spec, ctx.diags);
+        codes::drop_overridden_cancels(&mut s.codes, ctx.diags);
         for cw in &s.codes {
             checks::check_required(cw, &self.words, ctx.diags);
         }

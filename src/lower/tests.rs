@@ -107,9 +107,15 @@ fn two_codes_of_one_group() {
         vec![Code::ModalGroupConflict, Code::ModalGroupConflict]
     );
     insta::assert_snapshot!(o.rendered);
+    // rs274 accepts G80 beside a motion code of its group (checked with
+    // rs274-canon): the motion code wins, the G80 is noted.
     assert_eq!(
         codes(&run(&linuxcnc(), "G80 G0 Z1")),
-        vec![Code::ModalGroupConflict]
+        vec![Code::CancelOverridden]
+    );
+    assert_eq!(
+        codes(&run(&linuxcnc(), "G0 G80 G1 Z1")),
+        vec![Code::TwoMotionCodes, Code::CancelOverridden]
     );
 }
 
