@@ -75,7 +75,7 @@ fn common_codes(group_cycle: &str) -> Vec<CodeDef> {
         def('G', "2", "motion", "motion.arc-cw", "", ""),
         def('G', "3", "motion", "motion.arc-ccw", "", ""),
         dwell,
-        def('G', "10", "non-modal", "set-data", "L", ""),
+        def('G', "10", "non-modal", "set-data", "L", "LPRQ"),
         def('G', "17", "plane", "plane.xy", "", ""),
         def('G', "20", "units", "units.inch", "", ""),
         def('G', "21", "units", "units.mm", "", ""),

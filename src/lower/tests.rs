@@ -386,6 +386,20 @@ fn non_modal_codes_take_the_axes() {
     };
     assert_eq!(l, &num("2"));
     assert_eq!(words.iter().map(|w| w.letter).collect::<String>(), "PXY");
+    // F and S are not G10's: they stay the block's (rs274 sets them).
+    let o = run(&fanuc(), "F200 S1000 G10 L1 P1 R1");
+    let Some(StmtKind::SetData { words, .. }) = kinds(&o)
+        .into_iter()
+        .find(|k| matches!(k, StmtKind::SetData { .. }))
+    else {
+        panic!("{:?}", kinds(&o))
+    };
+    assert_eq!(words.iter().map(|w| w.letter).collect::<String>(), "PR");
+    assert!(
+        kinds(&o).iter().any(|k| matches!(k, StmtKind::Feed(_))),
+        "{:?}",
+        kinds(&o)
+    );
     let o = run(&fanuc(), "G68 X1. Y2. R45.");
     assert!(
         matches!(kinds(&o)[0], StmtKind::Transform(t) if matches!(**t, Transform::RotateOn { angle: Some(_), .. }))
