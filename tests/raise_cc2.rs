@@ -170,6 +170,39 @@ fn fanuc_and_siemens_programs_give_the_same_features_and_operations() {
     assert_eq!(fanuc.main_workplan, siemens.main_workplan);
 }
 
+/// The same process plan for a Heidenhain TNC (`cc2part.h`): the drilling
+/// by CYCL DEF 200 called at each hole (M99, CYCL CALL), the pocket, face
+/// and slot by explicit L moves. It gives the same features, workplan and
+/// operations as the Fanuc program except, legitimately, the pecked
+/// hole's `first_depth` and `retract_distance` (both from the R plane):
+/// G83's Q4 counts the first peck from R (R2: to Z-2), cycle 200's Q202=4
+/// from the surface (Q203=0: to Z-4).
+#[test]
+fn fanuc_and_heidenhain_programs_give_the_same_features_and_operations() {
+    let fanuc = raise("cc2part.nc", "fanuc");
+    let tnc = raise("cc2part.h", "heidenhain");
+    assert_eq!(kinds(&tnc), kinds(&fanuc));
+    assert_eq!(tnc.features, fanuc.features);
+    assert_eq!(tnc.main_workplan, fanuc.main_workplan);
+    let report = cncc::stepnc::diff::diff_projects(&fanuc, &tnc);
+    assert_eq!(
+        report.lines,
+        [
+            "~ operation 'PECK DRILL HOLE4' / first_depth: 4. → 6.",
+            "~ operation 'PECK DRILL HOLE4' / retract_distance: 4. → 6."
+        ],
+        "{}",
+        report.lines.join("\n")
+    );
+    let peck = |p: &Project| {
+        p.operations
+            .iter()
+            .filter(|o| matches!(o.kind, OperationKind::MultistepDrilling { .. }))
+            .count()
+    };
+    assert_eq!((peck(&fanuc), peck(&tnc)), (1, 1));
+}
+
 #[test]
 fn the_part_gives_exactly_its_features() {
     let p = raise("cc2part.nc", "fanuc");

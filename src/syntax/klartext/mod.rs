@@ -308,8 +308,12 @@ fn body(
     };
     if let Some((a, Tok::Name(n), b)) = toks.first() {
         if n != "M" {
-            let w = build::WordNode::new(n.clone(), None, None, *a, *b);
-            program::bare(&mut ctx, &[w]);
+            let mut w = vec![build::WordNode::new(n.clone(), None, None, *a, *b)];
+            // The next name too: `CYCLE DEF` gets its own message.
+            if let Some((a, Tok::Name(n), b)) = toks.get(1) {
+                w.push(build::WordNode::new(n.clone(), None, None, *a, *b));
+            }
+            program::bare(&mut ctx, &w);
             diags.append(&mut ctx.diags);
             return Vec::new();
         }

@@ -156,6 +156,24 @@ pub fn stop(ctx: &mut Ctx<'_>, words: &[WordNode], l: usize, r: usize) -> Vec<It
 /// unknown block.
 pub fn bare(ctx: &mut Ctx<'_>, words: &[WordNode]) -> Vec<Item> {
     if let Some(w) = words.first().filter(|w| w.name != "M") {
+        if w.name == "CYCLE"
+            && words
+                .get(1)
+                .is_some_and(|d| d.name == "DEF" || d.name == "CALL")
+        {
+            let d = &words[1];
+            ctx.error(
+                Code::KlartextUnknownBlock,
+                w.l,
+                d.r,
+                format!("`CYCLE {}` is not Klartext: the keyword is `CYCL {}`", d.name, d.name),
+                &format!(
+                    "write `CYCL {}` (no E), as in `CYCL DEF 9.0 DWELL TIME` / `CYCL DEF 9.1 DWELL 5`",
+                    d.name
+                ),
+            );
+            return Vec::new();
+        }
         let hint = suggestion(&w.name);
         ctx.error(
             Code::KlartextUnknownBlock,

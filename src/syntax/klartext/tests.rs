@@ -133,3 +133,19 @@ fn fast_path_gives_what_the_grammar_gives() {
         assert!(super::fast::line(line, 0, FileId(0)).is_none(), "{line}");
     }
 }
+
+#[test]
+fn cycle_def_is_rejected_with_the_right_keyword() {
+    let spec = builtin("heidenhain").unwrap();
+    let text = "0 BEGIN PGM P MM\n1 CYCLE DEF 9.0 DWELL TIME\n2 END PGM P MM\n";
+    let (_, d) = read_program(text, FileId(0), &spec);
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0].code.code(), "E0120");
+    assert!(
+        d[0].message.contains("the keyword is `CYCL DEF`"),
+        "{}",
+        d[0].message
+    );
+    let (_, d) = read("0 BEGIN PGM P MM\n1 CYCLE CALL\n2 END PGM P MM\n");
+    assert_eq!(d, ["E0120"]);
+}
