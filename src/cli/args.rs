@@ -128,7 +128,7 @@ pub enum Command {
         /// A tool table in LinuxCNC's .tbl format: tool geometry (a built-in T1-T20 table otherwise).
         #[arg(long = "tool-table", value_name = "T.tbl")]
         tool_table: Option<PathBuf>,
-        /// The stock block, mm: `LxWxH[+X+Y+Z]` (sizes, then the lowest corner; default top at Z0, corner at X0 Y0).
+        /// The stock block, mm: `LxWxH[+X+Y+Z]` (sizes, then the lowest corner; default top at Z0, corner at X0 Y0). Without it, a Heidenhain `BLK FORM 0.1/0.2` gives the stock.
         #[arg(long, value_name = "LxWxH[+X+Y+Z]")]
         stock: Option<String>,
         /// Explicit toolpaths (the default).
