@@ -7,6 +7,7 @@
 //! the statement it belongs to, only the model grows. CC2 needs the whole
 //! event list (its recognisers look back and ahead).
 
+pub mod blank;
 pub mod cc1;
 pub mod cc2;
 mod curves;
