@@ -32,6 +32,7 @@ mod levels;
 mod loops;
 pub mod subload;
 pub mod to_named;
+pub mod to_tnc;
 pub mod to_word;
 pub mod toolmap;
 mod tools;
@@ -66,6 +67,7 @@ pub fn port_program(
     }
     to_named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
+    to_tnc::run(&mut out, from, to, &mut diags);
     decls::run(&mut out, to, &mut diags);
     loops::run(&mut out, to, &mut diags);
     arcs::run(&mut out, from, to);
