@@ -27,6 +27,8 @@ mod decls;
 pub mod expand;
 mod flow_ids;
 pub mod forms;
+mod frame;
+mod from_tnc;
 mod groups;
 mod levels;
 mod loops;
@@ -65,6 +67,8 @@ pub fn port_program(
     if opts.expand_cycles {
         expand::expand_unmappable(&mut out, from, to, &mut diags);
     }
+    from_tnc::run(&mut out, from, to, &mut diags);
+    frame::run(&mut out, from, to);
     to_named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
     to_tnc::run(&mut out, from, to, &mut diags);
