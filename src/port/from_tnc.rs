@@ -182,8 +182,17 @@ impl Pass<'_> {
                 ));
             }
             let mut c = m.cycle.clone();
-            c.target.x = pos.x;
-            c.target.y = pos.y;
+            // `CYCL CALL` drills where the tool is: the position is
+            // written so that the next `X Y` blocks repeat the cycle.
+            let here = |v: &Option<Value>, span| {
+                v.as_ref().map(|v| Coord {
+                    value: v.clone(),
+                    dim: None,
+                    span,
+                })
+            };
+            c.target.x = pos.x.or_else(|| here(&self.modal.x, span));
+            c.target.y = pos.y.or_else(|| here(&self.modal.y, span));
             stmts.insert(0, Stmt::new(StmtKind::ReturnToInitial(initial), span));
             stmts.insert(1, Stmt::new(StmtKind::Cycle(Box::new(c)), span));
             stmts.push(Stmt::new(

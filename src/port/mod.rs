@@ -32,6 +32,7 @@ mod from_tnc;
 mod groups;
 mod levels;
 mod loops;
+mod poles;
 pub mod subload;
 pub mod to_named;
 pub mod to_tnc;
@@ -69,6 +70,7 @@ pub fn port_program(
     }
     from_tnc::run(&mut out, from, to, &mut diags);
     frame::run(&mut out, from, to);
+    poles::run(&mut out, from, to, &mut diags);
     to_named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
     to_tnc::run(&mut out, from, to, &mut diags);
