@@ -1,5 +1,6 @@
 //! The program frame of a Klartext source for a target of another family:
 //!
+//! * `TOOL CALL` gets `D1` for a Siemens target (the tool's edge).
 //! * Block numbers go (every Klartext block has one; jumps use labels).
 //! * `BEGIN PGM name` is a program known only by name; a target that
 //!   numbers its programs (capability `numbered-programs`) gets the name
@@ -21,6 +22,23 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
         // Klartext numbers every block; nothing refers to the numbers
         // (jumps go to `LBL`s), so the target numbers its own way.
         b.number = None;
+        // `TOOL CALL` activates the tool's (one) cutting edge: Siemens
+        // needs `D1` for that (as the Klartext writer reads `D1`) [?].
+        if to.family == Family::Sinumerik
+            && b.stmts
+                .iter()
+                .any(|s| matches!(s.kind, StmtKind::ToolChange))
+            && !b
+                .stmts
+                .iter()
+                .any(|s| matches!(s.kind, StmtKind::CuttingEdge(_)))
+        {
+            let span = b.span;
+            b.stmts.push(crate::ir::Stmt::new(
+                StmtKind::CuttingEdge(crate::ir::Value::Number(crate::ir::Decimal::from_int(1))),
+                span,
+            ));
+        }
         b.stmts
             .retain(|s| !matches!(s.kind, StmtKind::ProgramEnd { .. }));
         for s in &mut b.stmts {

@@ -32,6 +32,7 @@ mod from_tnc;
 mod groups;
 mod levels;
 mod loops;
+mod pockets;
 mod poles;
 pub mod subload;
 pub mod to_named;
@@ -68,6 +69,7 @@ pub fn port_program(
     if opts.expand_cycles {
         expand::expand_unmappable(&mut out, from, to, &mut diags);
     }
+    pockets::run(&mut out, from, to, &mut diags);
     from_tnc::run(&mut out, from, to, &mut diags);
     frame::run(&mut out, from, to);
     poles::run(&mut out, from, to, &mut diags);
