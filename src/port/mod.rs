@@ -38,6 +38,7 @@ pub mod subload;
 pub mod to_named;
 pub mod to_tnc;
 pub mod to_word;
+mod tool_call;
 pub mod toolmap;
 mod tools;
 pub mod verify;
@@ -81,6 +82,7 @@ pub fn port_program(
     arcs::run(&mut out, from, to);
     forms::run(&mut out, from, to, opts, &mut diags);
     groups::run(&mut out, to);
+    tool_call::run(&mut out, from, to);
     out.dialect = to.id.clone();
     (out, diags)
 }
