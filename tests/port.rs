@@ -256,3 +256,26 @@ fn fanuc_g81_g83_become_cycl_def_200_203() {
     }
     assert!(!tnc.contains("G8"), "{tnc}");
 }
+
+#[test]
+fn siemens_pocket1_to_cycl_def_251_and_back_verifies() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = root().join("tests/matrix/pockets/from-siemens840d.mpf");
+    let h = dir.path().join("pocket.h");
+    let tnc = port_verified(&src.display().to_string(), "siemens840d", "heidenhain", &h);
+    for part in [
+        "CYCL DEF 251 RECTANGULAR POCKET",
+        "Q218=+40 ;FIRST SIDE LENGTH",
+        "Q201=-4 ;DEPTH",
+        "Q204=+10 ;2ND SET-UP CLEARANCE",
+        "L X+30 Y+20 R0 FMAX M99",
+    ] {
+        assert!(tnc.contains(part), "{part}:\n{tnc}");
+    }
+    let mpf = dir.path().join("pocket.mpf");
+    let back = port_verified(&h.display().to_string(), "heidenhain", "siemens840d", &mpf);
+    assert!(
+        back.contains("POCKET1(10,0,1,-4,,40,20,5,30,20,0,200,400,2,2,0,0)"),
+        "{back}"
+    );
+}
