@@ -245,11 +245,12 @@ fn fanuc_g81_g83_become_cycl_def_200_203() {
         "Q203=+2 ;SURFACE COORDINATE ~\n  Q204=+0 ;2ND SET-UP CLEARANCE",
         "L X+10 Y+10 R0 FMAX M99",
         "L X+30 R0 FMAX M99",
-        // G83 Q5 under G98: the initial level is R (the G99 cycle left the
-        // tool there), infeed Q202 = 5, full retract (Q213 = 0).
+        // G83 Q5 under G98: the initial level is the Z when cycle mode
+        // began (25, Q204 = 25 - 2), infeed Q202 = 5, full retract.
         "CYCL DEF 203 UNIVERSAL DRILLING ~\n  Q200=+0 ;SET-UP CLEARANCE ~\n  Q201=-22 ;DEPTH",
         "Q202=+5 ;PLUNGING DEPTH",
         "Q213=+0 ;NR OF BREAKS",
+        "Q204=+23 ;2ND SET-UP CLEARANCE",
         "L X+50 Y+40 R0 FMAX M99",
     ] {
         assert!(tnc.contains(part), "{part}:\n{tnc}");

@@ -60,6 +60,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         modal: Modal::new(from),
         active: None,
         last_def: None,
+        initial: None,
         diags,
     };
     let blocks = std::mem::take(&mut p.blocks);
@@ -77,6 +78,8 @@ struct Pass<'a> {
     /// The cycle in force (for the words later blocks leave out).
     active: Option<CannedCycle>,
     last_def: Option<CycleDef>,
+    /// The Z when cycle mode began (the G98 level).
+    initial: Option<Value>,
     diags: &'a mut Vec<Diagnostic>,
 }
 
@@ -215,6 +218,9 @@ impl Pass<'_> {
             );
             return None;
         }
+        if self.active.is_none() {
+            self.initial = self.modal.z.clone();
+        }
         let prev = self.active.clone().filter(|a| a.kind == c.kind);
         let pick = |own: &Option<Value>, old: Option<&Option<Value>>| {
             own.clone().or_else(|| old.cloned().flatten())
@@ -229,7 +235,9 @@ impl Pass<'_> {
         let r = self.num(r.as_ref(), span, "R plane")?;
         let z = self.num(z.as_ref(), span, "depth Z")?;
         let rtp = if self.modal.return_initial {
-            let init = self.num(self.modal.z.clone().as_ref(), span, "initial level (G98)")?;
+            // The initial level is the Z when cycle mode began (a G99
+            // cycle before in the same mode leaves the tool at R).
+            let init = self.num(self.initial.clone().as_ref(), span, "initial level (G98)")?;
             init.max(r)
         } else {
             r
