@@ -41,6 +41,7 @@ mod loops;
 mod pockets;
 mod poles;
 pub mod subload;
+mod tnc_labels;
 pub mod to_named;
 pub mod to_tnc;
 pub mod to_word;

@@ -30,6 +30,7 @@
 //! cycles (tapping, boring) have no mapping yet: E0610.
 
 use super::levels::Modal;
+use super::tnc_labels::label;
 use super::{decimal, follow_block};
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec, Meaning};
@@ -316,25 +317,5 @@ impl Pass<'_> {
         } else {
             1.0
         }
-    }
-}
-
-/// The English label the control writes after each parameter.
-fn label(q: &str) -> &'static str {
-    match q {
-        "Q200" => "SET-UP CLEARANCE",
-        "Q201" => "DEPTH",
-        "Q202" => "PLUNGING DEPTH",
-        "Q203" => "SURFACE COORDINATE",
-        "Q204" => "2ND SET-UP CLEARANCE",
-        "Q205" => "MIN. PLUNGING DEPTH",
-        "Q206" => "FEED RATE FOR PLNGNG",
-        "Q208" => "RETRACTION FEED RATE",
-        "Q210" => "DWELL TIME AT TOP",
-        "Q211" => "DWELL TIME AT DEPTH",
-        "Q212" => "DECREMENT",
-        "Q213" => "NR OF BREAKS",
-        "Q256" => "DIST FOR CHIP BRKNG",
-        _ => "",
     }
 }

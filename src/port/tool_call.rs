@@ -10,6 +10,7 @@
 //! * the first spindle speed after it, when no feed move (or spindle
 //!   start in another block) comes before: the spindle is stopped by the
 //!   tool change, so setting its speed earlier changes nothing.
+//!
 //! What cannot be moved stays where it was (`TOOL CALL Z`, `TOOL CALL S..`).
 
 use crate::dialect::{DialectSpec, Family};
