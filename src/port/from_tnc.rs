@@ -251,8 +251,11 @@ impl Pass<'_> {
             return Err("a dwell at the top (Q210)".into());
         }
         let pecking = d.number == 203 || (peck > 0.0 && peck < depth.abs());
-        if pecking && (dwell != 0.0 || q(212).unwrap_or(0.0) != 0.0) {
-            return Err("pecking with a dwell (Q211) or a decrement (Q212)".into());
+        if pecking && dwell != 0.0 {
+            return Err(format!("pecking with a dwell at the bottom (Q211={dwell})"));
+        }
+        if pecking && q(212).unwrap_or(0.0) != 0.0 {
+            return Err("pecking with a decrement (Q212)".into());
         }
         let kind = match (d.number, pecking, dwell > 0.0) {
             (203, _, _) if q(213).unwrap_or(0.0) > 0.0 => CycleKind::ChipBreak,
