@@ -178,3 +178,105 @@ fn siemens_pocket_and_face_cycles_expand_for_fanuc() {
         assert!(o.lines().any(|l| l.starts_with("G1 X")), "{o}");
     }
 }
+
+fn port_verified(src: &str, from: &str, to: &str, out: &std::path::Path) -> String {
+    let o = out.display().to_string();
+    let res = cncc(&[
+        "port", src, "--from", from, "--to", to, "--verify", "-o", &o,
+    ]);
+    let err = text(&res.stderr);
+    assert_eq!(res.status.code(), Some(0), "{from} -> {to}: {err}");
+    assert!(err.contains("verify: OK"), "{from} -> {to}: {err}");
+    std::fs::read_to_string(out).unwrap()
+}
+
+#[test]
+fn heidenhain_to_fanuc_and_back_verifies() {
+    let dir = tempfile::tempdir().unwrap();
+    for (topic, fanuc_has, tnc_has) in [
+        (
+            "drilling",
+            vec![
+                "G98 G81 X10. Y10. Z-10. R2. F120",
+                "X20.",
+                "G98 G82 X30. Y10. Z-5. R2. P500 F120",
+            ],
+            vec!["CYCL DEF 200 DRILLING", "Q211=+0.5 ;DWELL TIME AT DEPTH"],
+        ),
+        (
+            "pecking",
+            vec!["G98 G83 X40. Y20. Z-23. R3. Q6. F90", "Y30.", "G80"],
+            vec!["CYCL DEF 203 UNIVERSAL DRILLING", "Q202=+6 ;PLUNGING DEPTH"],
+        ),
+    ] {
+        let src = root().join(format!("tests/matrix/{topic}/from-heidenhain.h"));
+        let nc = dir.path().join(format!("{topic}.nc"));
+        let fanuc = port_verified(&src.display().to_string(), "heidenhain", "fanuc", &nc);
+        for line in fanuc_has {
+            assert!(fanuc.lines().any(|l| l == line), "{line}:\n{fanuc}");
+        }
+        let h = dir.path().join(format!("{topic}.h"));
+        let back = port_verified(&nc.display().to_string(), "fanuc", "heidenhain", &h);
+        for part in tnc_has {
+            assert!(back.contains(part), "{part}:\n{back}");
+        }
+        assert!(back.contains(" R0 FMAX M99"), "{back}");
+    }
+}
+
+#[test]
+fn fanuc_g81_g83_become_cycl_def_200_203() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("holes.nc");
+    std::fs::write(
+        &src,
+        "O1 (HOLES)\nG21 G17 G90 G94\nT2 M6\nG0 G43 H2 Z25.\nS2000 M3\n\
+         G0 X10. Y10.\nG99 G81 X10. Y10. Z-10. R2. F100.\nX30.\n\
+         G98 G83 X50. Y40. Z-20. R2. Q5. F80.\nG80\nG0 Z25.\nM30\n",
+    )
+    .unwrap();
+    let h = dir.path().join("holes.h");
+    let tnc = port_verified(&src.display().to_string(), "fanuc", "heidenhain", &h);
+    // G81: surface = R, no set-up clearance, depth Z - R, one plunge;
+    // G99 returns to R (Q204 = 0).
+    for part in [
+        "CYCL DEF 200 DRILLING ~\n  Q200=+0 ;SET-UP CLEARANCE ~\n  Q201=-12 ;DEPTH ~\n  \
+         Q206=+100 ;FEED RATE FOR PLNGNG ~\n  Q202=+12 ;PLUNGING DEPTH",
+        "Q203=+2 ;SURFACE COORDINATE ~\n  Q204=+0 ;2ND SET-UP CLEARANCE",
+        "L X+10 Y+10 R0 FMAX M99",
+        "L X+30 R0 FMAX M99",
+        // G83 Q5 under G98: the initial level is the Z when cycle mode
+        // began (25, Q204 = 25 - 2), infeed Q202 = 5, full retract.
+        "CYCL DEF 203 UNIVERSAL DRILLING ~\n  Q200=+0 ;SET-UP CLEARANCE ~\n  Q201=-22 ;DEPTH",
+        "Q202=+5 ;PLUNGING DEPTH",
+        "Q213=+0 ;NR OF BREAKS",
+        "Q204=+23 ;2ND SET-UP CLEARANCE",
+        "L X+50 Y+40 R0 FMAX M99",
+    ] {
+        assert!(tnc.contains(part), "{part}:\n{tnc}");
+    }
+    assert!(!tnc.contains("G8"), "{tnc}");
+}
+
+#[test]
+fn siemens_pocket1_to_cycl_def_251_and_back_verifies() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = root().join("tests/matrix/pockets/from-siemens840d.mpf");
+    let h = dir.path().join("pocket.h");
+    let tnc = port_verified(&src.display().to_string(), "siemens840d", "heidenhain", &h);
+    for part in [
+        "CYCL DEF 251 RECTANGULAR POCKET",
+        "Q218=+40 ;FIRST SIDE LENGTH",
+        "Q201=-4 ;DEPTH",
+        "Q204=+10 ;2ND SET-UP CLEARANCE",
+        "L X+30 Y+20 R0 FMAX M99",
+    ] {
+        assert!(tnc.contains(part), "{part}:\n{tnc}");
+    }
+    let mpf = dir.path().join("pocket.mpf");
+    let back = port_verified(&h.display().to_string(), "heidenhain", "siemens840d", &mpf);
+    assert!(
+        back.contains("POCKET1(10,0,1,-4,,40,20,5,30,20,0,200,400,2,2,0,0)"),
+        "{back}"
+    );
+}

@@ -8,6 +8,12 @@
 //!   the position-only blocks that repeat them, G80) become named cycle
 //!   calls `MCALL CYCLE8x(..)` + positions + `MCALL` where the target has
 //!   named cycles and no G8x codes; [`to_word`] does the reverse.
+//! * Heidenhain Klartext: [`pockets`] (POCKET1/2 ↔ `CYCL DEF 251/252`),
+//!   [`from_tnc`] (`CYCL DEF 200/203` + calls → G81/G82/G83/G73, which
+//!   [`to_named`] turns into CYCLE8x for Siemens), [`to_tnc`] (G8x, and
+//!   CYCLE8x through [`to_word`], → `CYCL DEF 200/203` + `L X Y R0 FMAX
+//!   M99`), [`frame`] (`BEGIN`/`END PGM`, block numbers, D1), [`poles`]
+//!   (`CC` + `C` → G2/G3 with I J) and [`tool_call`] (`TOOL CALL n Z S`).
 //! * [`forms`]: numbered variables (`#n` ↔ `Rn`), loop and conditional
 //!   forms (Fanuc DO ids, Siemens nesting, LinuxCNC o-words), labels to
 //!   sequence numbers, tool length (G43 H / G49 ↔ D / D0), and the tool map.
@@ -27,12 +33,19 @@ mod decls;
 pub mod expand;
 mod flow_ids;
 pub mod forms;
+mod frame;
+mod from_tnc;
 mod groups;
 mod levels;
 mod loops;
+mod pockets;
+mod poles;
 pub mod subload;
+mod tnc_labels;
 pub mod to_named;
+pub mod to_tnc;
 pub mod to_word;
+mod tool_call;
 pub mod toolmap;
 mod tools;
 pub mod verify;
@@ -64,13 +77,19 @@ pub fn port_program(
     if opts.expand_cycles {
         expand::expand_unmappable(&mut out, from, to, &mut diags);
     }
+    pockets::run(&mut out, from, to, &mut diags);
+    from_tnc::run(&mut out, from, to, &mut diags);
+    frame::run(&mut out, from, to);
+    poles::run(&mut out, from, to, &mut diags);
     to_named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
+    to_tnc::run(&mut out, from, to, &mut diags);
     decls::run(&mut out, to, &mut diags);
     loops::run(&mut out, to, &mut diags);
     arcs::run(&mut out, from, to);
     forms::run(&mut out, from, to, opts, &mut diags);
     groups::run(&mut out, to);
+    tool_call::run(&mut out, from, to);
     out.dialect = to.id.clone();
     (out, diags)
 }

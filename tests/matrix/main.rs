@@ -18,7 +18,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-const TARGETS: [&str; 4] = ["fanuc", "haas", "linuxcnc", "siemens840d"];
+const TARGETS: [&str; 5] = ["fanuc", "haas", "heidenhain", "linuxcnc", "siemens840d"];
 
 fn sources(dir: &Path) -> Vec<(PathBuf, String)> {
     let mut out = Vec::new();

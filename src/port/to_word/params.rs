@@ -85,7 +85,14 @@ impl Pass<'_> {
             "bore-manual" => CycleKind::BoreManual,
             _ => CycleKind::BoreDwellFeedOut,
         };
-        if self.to.code_for(Meaning::Cycle(kind)).is_none() {
+        // A target with Q-parameter drilling cycles takes the G8x on to
+        // `to_tnc` (drilling and pecking only; it refuses the rest).
+        let tnc = super::super::to_tnc::q_cycle(self.to, "drill").is_some()
+            && matches!(
+                kind,
+                CycleKind::Drill | CycleKind::DrillDwell | CycleKind::Peck | CycleKind::ChipBreak
+            );
+        if self.to.code_for(Meaning::Cycle(kind)).is_none() && !tnc {
             self.refuse(
                 span,
                 format!(

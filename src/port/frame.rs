@@ -1,0 +1,74 @@
+//! The program frame of a Klartext source for a target of another family:
+//!
+//! * `TOOL CALL` gets `D1` for a Siemens target (the tool's edge).
+//! * Block numbers go (every Klartext block has one; jumps use labels).
+//! * `BEGIN PGM name` is a program known only by name; a target that
+//!   numbers its programs (capability `numbered-programs`) gets the name
+//!   as a comment (the number comes from the file, as the source's did).
+//! * `END PGM` marks the end of the program text: outside Klartext the end
+//!   of the file does that, so it goes (the program's M30/M2 stays).
+//! * `BEGIN PGM .. MM` sets millimetres with feeds in mm/min; a target
+//!   whose millimetre code does not exist in that form gets the plain
+//!   millimetre code (G21 sets feeds in mm/min too).
+
+use crate::dialect::{Capability, DialectSpec, Family, Meaning};
+use crate::ir::{CommentStyle, Program, StmtKind};
+
+pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
+    if to.family == Family::Klartext || from.family != Family::Klartext {
+        return;
+    }
+    for b in &mut p.blocks {
+        // Klartext numbers every block; nothing refers to the numbers
+        // (jumps go to `LBL`s), so the target numbers its own way.
+        b.number = None;
+        // `TOOL CALL` activates the tool's (one) cutting edge: Siemens
+        // needs `D1` for that (as the Klartext writer reads `D1`) [?].
+        if to.family == Family::Sinumerik
+            && b.stmts
+                .iter()
+                .any(|s| matches!(s.kind, StmtKind::ToolChange))
+            && !b
+                .stmts
+                .iter()
+                .any(|s| matches!(s.kind, StmtKind::CuttingEdge(_)))
+        {
+            let span = b.span;
+            b.stmts.push(crate::ir::Stmt::new(
+                StmtKind::CuttingEdge(crate::ir::Value::Number(crate::ir::Decimal::from_int(1))),
+                span,
+            ));
+        }
+        b.stmts
+            .retain(|s| !matches!(s.kind, StmtKind::ProgramEnd { .. }));
+        for s in &mut b.stmts {
+            match &mut s.kind {
+                StmtKind::ProgramStart {
+                    number: None,
+                    name: Some(name),
+                } if to.has(Capability::NumberedPrograms) => {
+                    s.kind = StmtKind::Comment {
+                        text: name.clone(),
+                        style: CommentStyle::Paren,
+                    };
+                }
+                StmtKind::Units {
+                    unit,
+                    with_feeds: with_feeds @ true,
+                } if to
+                    .code_for(Meaning::Units {
+                        unit: *unit,
+                        with_feeds: true,
+                    })
+                    .is_none() =>
+                {
+                    *with_feeds = false;
+                }
+                _ => {}
+            }
+        }
+    }
+    // Blocks left empty (`END PGM`, a cycle definition mapped away) go.
+    p.blocks
+        .retain(|b| !b.stmts.is_empty() || b.label.is_some());
+}
