@@ -15,6 +15,7 @@
 
 mod explicit;
 mod faces;
+pub mod features;
 pub mod fixture;
 pub mod frame;
 mod group;

@@ -237,7 +237,7 @@ fn tolerance(project: &Project, s: &Step<'_>) -> Option<f64> {
     }
 }
 
-fn tool_length(t: &Tool) -> f64 {
+pub(crate) fn tool_length(t: &Tool) -> f64 {
     t.overall_assembly_length
         .or_else(|| t.cutting_edges.first().map(|c| c.tool_offset_length))
         .unwrap_or(0.0)
