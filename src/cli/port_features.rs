@@ -104,8 +104,9 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
             }
             Ok(v) if v.same => {
                 eprintln!(
-                    "verify: OK: the same features, operations and tools in {} workingstep(s)",
-                    v.workingsteps
+                    "verify: OK: the same {} feature(s) and tools, machined in the same order; {} difference(s) in operations and workingsteps (not compared)",
+                    v.features,
+                    v.notes.len()
                 );
                 true
             }

@@ -8,12 +8,16 @@
 //! [`crate::stepnc::diff::diff_projects`] (by meaning: instance numbers
 //! aside). Both sides are raised with the same project name, and the
 //! second with a tool table made from the first project's tools under the
-//! numbers the post gave them (so tool names and sizes agree). What is
-//! compared: every feature (kind, placement, depth, profile, sizes), every
-//! operation (kind, technology, planes, strategy), every tool and the
-//! workplan's workingsteps. Nothing is ignored: a difference, however
-//! small, is reported.
-
+//! numbers the post gave them; tools are compared under those numbers.
+//!
+//! Compared (a difference fails): every feature (kind, placement, depth,
+//! profile, sizes, bottom), every tool (body, diameter, length), the
+//! workpiece, and the order in which the features are machined.
+//! Not compared, but counted and listed as notes: operations and
+//! workingsteps. The target's cycle legitimately machines a feature its
+//! own way: POCKET1 roughs and then finishes what the source cut in one
+//! pass (one operation becomes two), a cycle's technology (retract
+//! distances, first peck depth) is raised from the cycle's own moves.
 use super::plan::{self, Item};
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::DialectSpec;
@@ -31,10 +35,12 @@ use std::rc::Rc;
 pub struct FeatureVerdict {
     /// The port raises to the same features.
     pub same: bool,
-    /// Number of workingsteps compared.
-    pub workingsteps: usize,
+    /// Number of features compared.
+    pub features: usize,
     /// The differences (`- only in source`, `+ only in port`, `~ changed`).
     pub lines: Vec<String>,
+    /// Differences in what is not compared (operations, workingsteps).
+    pub notes: Vec<String>,
 }
 
 /// Raises `posted` (a program in `target`, registered as `id`) to CC2
@@ -72,33 +78,86 @@ pub fn verify_features(
         ..opts.clone()
     };
     let raised = raise_events(&events, &again);
-    let (a, steps) = tools_by_number(source);
-    let (b, _) = tools_by_number(&raised.project);
-    let report: DiffReport = diff_projects(&a, &b);
-    Ok(FeatureVerdict {
-        same: report.same,
-        workingsteps: steps,
-        lines: report.lines,
-    })
+    Ok(compare_features(source, &raised.project))
 }
 
-/// A copy of `project` whose tools are named `T<n>` by the number the
-/// post gives them (the source's own numbers are not carried), with the
-/// number of workingsteps posted.
-fn tools_by_number(project: &Project) -> (Project, usize) {
+/// Compares the features of `a` (the source) and `b` (raised from its
+/// post): see the module doc for what is compared.
+pub fn compare_features(a: &Project, b: &Project) -> FeatureVerdict {
+    let (a, order_a) = canonical(a);
+    let (b, order_b) = canonical(b);
+    let report: DiffReport = diff_projects(&a, &b);
+    let (mut lines, notes): (Vec<String>, Vec<String>) =
+        report.lines.into_iter().partition(|l| is_compared(l));
+    if order_a != order_b {
+        lines.push(format!(
+            "~ the features are machined in another order: {} → {}",
+            order_a.join(", "),
+            order_b.join(", ")
+        ));
+    }
+    FeatureVerdict {
+        same: lines.is_empty(),
+        features: order_a.len(),
+        lines,
+        notes,
+    }
+}
+
+/// Whether a difference line (`± section / path ...`) is one that fails
+/// the comparison: not an operation or workingstep, nor the list of a
+/// feature's operations or of the workplan's elements, nor a name, nor a
+/// tolerance (a program does not carry tolerances).
+fn is_compared(line: &str) -> bool {
+    let body = line.get(2..).unwrap_or("");
+    let section_is = |p: &str| body.starts_with(p);
+    let path_has = |p: &str| body.contains(p);
+    !(section_is("operation '")
+        || section_is("workingstep '")
+        || section_is("workplan '")
+        || path_has("/ its_operations")
+        || path_has("/ name = ")
+        || path_has("/ name: ")
+        || path_has("/ its_id")
+        || path_has("implicit_tolerance /"))
+}
+
+/// A copy of `project` with its features named `F<k>` in the order they
+/// are machined and its tools `T<n>` by the number the post gives them
+/// (names and the source's tool numbers are not carried by a program),
+/// with the features' original names in that order.
+fn canonical(project: &Project) -> (Project, Vec<String>) {
     let mut named = project.clone();
     let Ok(items) = plan::plan(project) else {
-        return (named, 0);
+        return (named, Vec::new());
     };
-    let mut steps = 0;
+    let mut order: Vec<String> = Vec::new();
     for it in &items {
         let Item::Step(s) = it else { continue };
-        steps += 1;
+        if !order.contains(&s.feature.id) {
+            order.push(s.feature.id.clone());
+            let k = order.len();
+            if let Some(f) = named.features.iter_mut().find(|f| f.id == s.feature.id) {
+                f.id = format!("F{k}");
+            }
+        }
         if let Some(t) = named.tools.get_mut(s.op.tool.index()) {
             t.id = format!("T{}", s.tool_no);
         }
     }
-    (named, steps)
+    let kinds = order
+        .iter()
+        .enumerate()
+        .map(|(k, _)| {
+            let f = &named.features;
+            let name = format!("F{}", k + 1);
+            f.iter()
+                .find(|x| x.id == name)
+                .map(|x| format!("{name} {}", super::names::feature_kind(&x.kind)))
+                .unwrap_or(name)
+        })
+        .collect();
+    (named, kinds)
 }
 
 /// The tools of `project` as a table (mm) under the numbers the post
@@ -144,4 +203,18 @@ pub fn mismatch(v: &FeatureVerdict) -> Diagnostic {
         format!("the port raises to other features: {first}"),
     )
     .help("the port is not written; port without --features, or report the program")
+}
+
+/// Posts `project` for `target` and raises the posted program to CC2
+/// again (what `cncc post` then `cncc stepnc --cc2` do, with the tools of
+/// `project` as the table): the posted text and how its features compare.
+pub fn round_trip(
+    project: &Project,
+    target: &DialectSpec,
+) -> Result<(String, FeatureVerdict), Vec<Diagnostic>> {
+    let posted = super::post(project, target)?;
+    let opts = RaiseOptions::new(crate::raise::Level::Cc2, project.id.clone());
+    let run = crate::interp::Options::default();
+    let v = verify_features(project, &posted.text, FileId(0), target, &run, &opts)?;
+    Ok((posted.text, v))
 }

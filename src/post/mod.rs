@@ -115,6 +115,7 @@ pub fn post(project: &Project, target: &DialectSpec) -> Result<Posted, Vec<Diagn
         warnings: Vec::new(),
         current_tool: None,
         defined_tools: Vec::new(),
+        coolant_on: false,
     };
     step::write_program(&mut w, project, &items).map_err(into_diags)?;
     read_back(&w.out, target)?;
@@ -174,6 +175,8 @@ pub(crate) struct Writer<'a> {
     pub current_tool: Option<u32>,
     /// Tools whose data the program has defined.
     pub defined_tools: Vec<u32>,
+    /// Coolant (flood or mist) was switched on and not off since.
+    pub coolant_on: bool,
 }
 
 impl Writer<'_> {

@@ -151,6 +151,11 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
 }
 
 fn coolant(w: &mut Writer<'_>, mf: &MachineFunctions) -> Result<(), PostError> {
+    let wanted = mf.coolant || mf.mist == Some(true);
+    if w.coolant_on && !wanted {
+        w.emit("coolant.j2", Vals::new().set("m", "9"))?;
+    }
+    w.coolant_on = wanted;
     if mf.coolant {
         w.emit("coolant.j2", Vals::new().set("m", "8"))?;
     }
