@@ -29,15 +29,10 @@ fn save(name: &str, text: &str) -> PathBuf {
     p
 }
 
-/// The 840D text without its `$TC_DP` lines (which cncc's interpreter
-/// does not simulate, W0511) must read and run without any warning.
+/// The 840D text, `$TC_DP` tool data included, must read and run
+/// without any warning.
 fn siemens_runs_clean(name: &str, text: &str) {
-    let without: String = text
-        .lines()
-        .filter(|l| !l.starts_with("$TC_DP"))
-        .map(|l| format!("{l}\n"))
-        .collect();
-    let err = check_clean(&save(name, &without), "siemens840d");
+    let err = check_clean(&save(name, text), "siemens840d");
     assert!(!err.contains("warning["), "{err}");
 }
 
@@ -97,12 +92,9 @@ fn siemens_cycles_carry_the_features() {
 #[test]
 fn siemens_output_checks_clean() {
     let p = posted("siemens840d");
-    let path = save("ex1.mpf", &p.text);
-    let err = check_clean(&path, "siemens840d");
-    // cncc's interpreter does not simulate writing $TC_DP (W0511): the
-    // only warning. Without those lines every cycle runs clean.
-    assert!(!err.contains("error["), "{err}");
-    siemens_runs_clean("ex1-no-tc.mpf", &p.text);
+    // The $TC_DP tool data are taken into the run's tool table: no
+    // warning at all.
+    siemens_runs_clean("ex1.mpf", &p.text);
 }
 
 #[test]

@@ -11,10 +11,14 @@
 //! numbers the post gave them; tools are compared under those numbers.
 //!
 //! Compared (a difference fails): every feature (kind, placement, depth,
-//! profile, sizes, bottom), every tool (body, diameter, length), the
-//! workpiece, and the order in which the features are machined.
-//! Not compared, but counted and listed as notes: operations and
-//! workingsteps. The target's cycle legitimately machines a feature its
+//! profile, sizes, bottom), every tool's diameter, and the order in which
+//! the features are machined. Names (features are compared as `F1`, `F2`
+//! in machining order, tools as the post numbers them) and tolerances are
+//! not: a program does not carry them.
+//! Not compared, but counted as notes: operations, workingsteps, the
+//! workpiece and the rest of the tool data (teeth, hand of cut, taper,
+//! material, clamping: nothing a program says). The target's cycle
+//! legitimately machines a feature its
 //! own way: POCKET1 roughs and then finishes what the source cut in one
 //! pass (one operation becomes two), a cycle's technology (retract
 //! distances, first peck depth) is raised from the cycle's own moves.
@@ -105,21 +109,23 @@ pub fn compare_features(a: &Project, b: &Project) -> FeatureVerdict {
 }
 
 /// Whether a difference line (`± section / path ...`) is one that fails
-/// the comparison: not an operation or workingstep, nor the list of a
-/// feature's operations or of the workplan's elements, nor a name, nor a
-/// tolerance (a program does not carry tolerances).
+/// the comparison: a feature's geometry (not its name, tolerances, owner
+/// or list of operations) or a tool's diameter. Operations, workingsteps,
+/// the workplan, the workpiece (material, clamping) and the rest of the
+/// tools (teeth, hand of cut, taper) are not carried by a program: not
+/// compared.
 fn is_compared(line: &str) -> bool {
     let body = line.get(2..).unwrap_or("");
-    let section_is = |p: &str| body.starts_with(p);
     let path_has = |p: &str| body.contains(p);
-    !(section_is("operation '")
-        || section_is("workingstep '")
-        || section_is("workplan '")
-        || path_has("/ its_operations")
-        || path_has("/ name = ")
-        || path_has("/ name: ")
-        || path_has("/ its_id")
-        || path_has("implicit_tolerance /"))
+    let feature = body.starts_with("feature '")
+        && !(path_has("/ its_operations")
+            || path_has("/ its_workpiece")
+            || path_has("/ name = ")
+            || path_has("/ name: ")
+            || path_has("/ its_id")
+            || path_has("implicit_tolerance /"));
+    let tool_size = body.starts_with("tool '") && path_has("/ dimension / diameter");
+    feature || tool_size
 }
 
 /// A copy of `project` with its features named `F<k>` in the order they
