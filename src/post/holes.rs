@@ -205,7 +205,10 @@ fn base(w: &Writer<'_>, s: &Step<'_>, d: &DrillCommon) -> Result<Vals, PostError
         .set("sdis", w.fmt.len(s.sdis))
         .set("rplane", w.fmt.len(s.top + s.sdis))
         .set("bottom", w.fmt.len(bottom))
-        .set("feed", w.fmt.feed(feed(s)?)))
+        .set("feed", w.fmt.feed(feed(s)?))
+        .set_derived("depth", w.fmt.len(bottom - s.top))
+        .set_derived("depth_abs", w.fmt.len(s.top - bottom))
+        .set_derived("clear_inc", w.fmt.len(s.clear - s.top)))
 }
 
 /// A conical hole bottom lies below the feature's depth plane (which ends
