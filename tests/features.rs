@@ -125,7 +125,7 @@ fn a_raised_part_posted_and_raised_again_gives_the_same_features() {
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", common::stderr(&o));
     let p = read_stp(&stp);
-    for id in ["siemens840d", "fanuc"] {
+    for id in ["siemens840d", "fanuc", "heidenhain"] {
         let (text, v) = trip(&p, id);
         assert!(v.same, "{id}: {:#?}\n{text}", v.lines);
         assert_eq!(v.features, 7);
@@ -138,7 +138,7 @@ fn ex1_posted_and_raised_again_gives_the_same_holes_and_pockets() {
         return;
     };
     let p = read_stp(&ex1);
-    for id in ["siemens840d", "fanuc"] {
+    for id in ["siemens840d", "fanuc", "heidenhain"] {
         let (text, v) = trip(&p, id);
         assert_eq!(v.features, 3, "{id}");
         // Known gaps, reported: the face (F1) comes back at the cut's

@@ -69,7 +69,9 @@ pub fn write(
         .set("mid", w.fmt.len(c.ap.unwrap_or(s.top - s.bottom)))
         .set("fal", w.fmt.len(fal))
         .set("ffp1", f.clone())
-        .set("ffd", f.clone());
+        .set("ffd", f.clone())
+        .set_derived("depth", w.fmt.len(s.bottom - s.top))
+        .set_derived("clear_inc", w.fmt.len(s.clear - s.top));
     let v = match shape {
         Shape::Rect(r) => v
             .set("leng", w.fmt.len(r.length))
