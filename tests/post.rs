@@ -554,3 +554,32 @@ fn dwell_peck_and_bore_cycles_on_every_target() {
         }
     }
 }
+
+#[test]
+fn heidenhain_cycles_carry_the_features_and_check_clean() {
+    let p = posted("heidenhain");
+    let l = lines(&p.text);
+    assert_eq!(l.first(), Some(&"BEGIN PGM 1000 MM"));
+    assert_eq!(l.last(), Some(&"END PGM 1000 MM"));
+    // Drilling 30 deep from the surface Z0, set-up clearance 10, 2nd
+    // set-up clearance 30 above the surface (the security plane), one
+    // plunge; called at the hole with M99.
+    assert!(l.contains(
+        &"CYCL DEF 200 DRILLING Q200=10 Q201=-30 Q206=1800 Q202=30 Q210=0 Q203=0 Q204=30 Q211=0"
+    ));
+    assert!(l.contains(
+        &"CYCL DEF 201 REAMING Q200=10 Q201=-30 Q206=1800 Q211=0 Q208=1800 Q203=0 Q204=30"
+    ));
+    assert!(l.contains(&"L X20 Y60 R0 FMAX M99"));
+    // The pocket: roughing (Q215 1) then finishing (Q215 2), 80 x 50, R10,
+    // turned 90 degrees, centre (70, 70).
+    assert!(l.iter().any(|x| x.starts_with(
+        "CYCL DEF 251 RECTANGULAR POCKET Q215=1 Q218=80 Q219=50 Q220=10 Q368=1 Q224=90"
+    )));
+    assert!(l.iter().any(|x| x.starts_with("CYCL DEF 251 RECTANGULAR POCKET Q215=2")));
+    assert!(l.contains(&"L X70 Y70 R0 FMAX M99"));
+    assert!(l.contains(&"CYCL DEF 32.1 T0.01"));
+    assert!(l.contains(&"TOOL CALL 1 Z"));
+    let err = check_clean(&save("ex1.h", &p.text), "heidenhain");
+    assert!(!err.contains("warning["), "{err}");
+}
