@@ -154,3 +154,32 @@ fn ex1_posted_and_raised_again_gives_the_same_holes_and_pockets() {
         assert!(rest.is_empty(), "{id}: {rest:#?}\n{text}");
     }
 }
+
+/// `$TC_DP` tool data written by an 840D program are the data `D1` uses.
+#[test]
+fn tc_dp_tool_data_are_used_by_the_cutting_edge() {
+    let dir = common::root().join("target/tmp/features-tests");
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join("tcdp.mpf");
+    std::fs::write(
+        &p,
+        "G71\n$TC_DP1[7,1]=120 $TC_DP3[7,1]=80 $TC_DP6[7,1]=9\nT7\nM6\nD1\nG41 G1 X10 Y0 Z0 F100\nG40 G0 Z10\nM30\n",
+    )
+    .unwrap();
+    let o = common::cncc(&["canon", "--dialect", "siemens840d", p.to_str().unwrap()]);
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", common::stderr(&o));
+    assert!(
+        out.contains("USE_TOOL_LENGTH_OFFSET(0.0000 0.0000 80.0000,"),
+        "{out}"
+    );
+    // The radius 9 compensates the path: the G41 entry along +X ends 9 mm
+    // to its left.
+    assert!(
+        out.contains("STRAIGHT_FEED(10.0000, 9.0000, 0.0000,"),
+        "{out}"
+    );
+    std::fs::write(&p, "$TC_DP3[7,2]=80\nM30\n").unwrap();
+    let c = common::cncc(&["check", "--dialect", "siemens840d", p.to_str().unwrap()]);
+    assert!(common::stderr(&c).contains("is not simulated"));
+}

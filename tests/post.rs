@@ -576,7 +576,9 @@ fn heidenhain_cycles_carry_the_features_and_check_clean() {
     assert!(l.iter().any(|x| x.starts_with(
         "CYCL DEF 251 RECTANGULAR POCKET Q215=1 Q218=80 Q219=50 Q220=10 Q368=1 Q224=90"
     )));
-    assert!(l.iter().any(|x| x.starts_with("CYCL DEF 251 RECTANGULAR POCKET Q215=2")));
+    assert!(l
+        .iter()
+        .any(|x| x.starts_with("CYCL DEF 251 RECTANGULAR POCKET Q215=2")));
     assert!(l.contains(&"L X70 Y70 R0 FMAX M99"));
     assert!(l.contains(&"CYCL DEF 32.1 T0.01"));
     assert!(l.contains(&"TOOL CALL 1 Z"));

@@ -63,11 +63,20 @@ fn write(
     };
     let t = it.eval(*t, exprs)?.unwrap_or(0.0);
     let d = it.eval(*d, exprs)?.unwrap_or(0.0);
-    if t < 1.0 || t.fract() != 0.0 || t > 32000.0 || d != 1.0 {
+    if t < 1.0 || t.fract() != 0.0 || t > 32000.0 || d < 1.0 || d.fract() != 0.0 {
         return Err(it.error_at(
             it.span,
             Code::DomainError,
-            format!("{name}[{t},{d}]: cncc keeps edge 1 of tools 1..32000 only"),
+            format!(
+                "{name}[{t},{d}]: a tool is a whole number 1..32000, an edge a whole number from 1"
+            ),
+        ));
+    }
+    if d != 1.0 {
+        return Err(it.error_at(
+            it.span,
+            Code::UnsupportedHere,
+            format!("writing {name} of edge D{d} is not simulated: the tool table holds one edge (D1) per tool"),
         ));
     }
     let to_machine = match (it.state.units, it.opts.machine_units) {
