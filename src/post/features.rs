@@ -18,10 +18,11 @@
 //! Not compared, but counted as notes: operations, workingsteps, the
 //! workpiece and the rest of the tool data (teeth, hand of cut, taper,
 //! material, clamping: nothing a program says). The target's cycle
-//! legitimately machines a feature its
-//! own way: POCKET1 roughs and then finishes what the source cut in one
-//! pass (one operation becomes two), a cycle's technology (retract
-//! distances, first peck depth) is raised from the cycle's own moves.
+//! legitimately machines a feature its own way: POCKET1 roughs and then
+//! finishes what the source cut in one pass (one operation becomes two),
+//! a cycle's technology (retract distances, first peck depth) is raised
+//! from the cycle's own moves.
+
 use super::plan::{self, Item};
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::DialectSpec;
