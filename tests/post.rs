@@ -585,3 +585,37 @@ fn heidenhain_cycles_carry_the_features_and_check_clean() {
     let err = check_clean(&save("ex1.h", &p.text), "heidenhain");
     assert!(!err.contains("warning["), "{err}");
 }
+
+#[test]
+fn heidenhain_blk_form_comes_from_the_workpiece_block() {
+    use cncc::stepnc::model::{Axis2Placement, Bounding, Point};
+    let mut p = fixture::ex1();
+    p.workpieces[0].bounding = Some(Bounding::Block {
+        name: "STOCK".into(),
+        position: Axis2Placement {
+            name: "STOCK".into(),
+            location: Point {
+                name: String::new(),
+                xyz: [0.0, 0.0, -40.0],
+            },
+            axis: None,
+            ref_direction: None,
+        },
+        size: [140.0, 140.0, 45.0],
+    });
+    let text = post(&p, &builtin("heidenhain").unwrap()).unwrap().text;
+    let l = lines(&text);
+    assert_eq!(
+        l[..3],
+        [
+            "BEGIN PGM 1000 MM",
+            "BLK FORM 0.1 Z X0 Y0 Z-40",
+            "BLK FORM 0.2 X140 Y140 Z5"
+        ]
+    );
+    check_clean(&save("blk.h", &text), "heidenhain");
+    // Without a block, no BLK FORM; other targets ignore the block.
+    assert!(!posted("heidenhain").text.contains("BLK FORM"));
+    let siemens = post(&p, &builtin("siemens840d").unwrap()).unwrap().text;
+    assert_eq!(siemens, posted("siemens840d").text);
+}
