@@ -321,6 +321,19 @@ fn a_circular_pocket_is_pocket2_or_rings_of_arcs() {
     assert!(l.contains(&"CYCLE832(0.01,102003)"));
     siemens_runs_clean("round.mpf", &siemens);
 
+    let tnc = post(&p, &builtin("heidenhain").unwrap()).unwrap().text;
+    let l = lines(&tnc);
+    // Diameter 60, 30 deep, roughing then finishing, called at (70, 70).
+    assert!(l.iter().any(|x| x.starts_with(
+        "CYCL DEF 252 CIRCULAR POCKET Q215=1 Q223=60 Q368=1 Q207=2400 Q351=-1 Q201=-30 Q202=6.5"
+    )));
+    assert!(l
+        .iter()
+        .any(|x| x.starts_with("CYCL DEF 252 CIRCULAR POCKET Q215=2 Q223=60")));
+    assert!(l.contains(&"L X70 Y70 R0 FMAX M99"));
+    let err = check_clean(&save("round.h", &tnc), "heidenhain");
+    assert!(!err.contains("warning["), "{err}");
+
     let ngc = post(&p, &builtin("linuxcnc").unwrap()).unwrap().text;
     assert!(ngc.lines().any(|x| x.starts_with("G2 X")));
     let path = save("round.ngc", &ngc);

@@ -78,7 +78,9 @@ pub fn write(
             .set("wid", w.fmt.len(r.width))
             .set("crad", w.fmt.len(r.corner_radius))
             .set("angle", w.fmt.angle(frame.angle_deg().rem_euclid(180.0))),
-        Shape::Circle { diameter } => v.set("prad", w.fmt.len(diameter / 2.0)),
+        Shape::Circle { diameter } => v
+            .set("prad", w.fmt.len(diameter / 2.0))
+            .set_derived("diameter", w.fmt.len(*diameter)),
     };
     let units = match (c.finish, s.roughed_by.is_some()) {
         (false, _) => 1,
