@@ -29,15 +29,10 @@ fn save(name: &str, text: &str) -> PathBuf {
     p
 }
 
-/// The 840D text without its `$TC_DP` lines (which cncc's interpreter
-/// does not simulate, W0511) must read and run without any warning.
+/// The 840D text, `$TC_DP` tool data included, must read and run
+/// without any warning.
 fn siemens_runs_clean(name: &str, text: &str) {
-    let without: String = text
-        .lines()
-        .filter(|l| !l.starts_with("$TC_DP"))
-        .map(|l| format!("{l}\n"))
-        .collect();
-    let err = check_clean(&save(name, &without), "siemens840d");
+    let err = check_clean(&save(name, text), "siemens840d");
     assert!(!err.contains("warning["), "{err}");
 }
 
@@ -97,12 +92,9 @@ fn siemens_cycles_carry_the_features() {
 #[test]
 fn siemens_output_checks_clean() {
     let p = posted("siemens840d");
-    let path = save("ex1.mpf", &p.text);
-    let err = check_clean(&path, "siemens840d");
-    // cncc's interpreter does not simulate writing $TC_DP (W0511): the
-    // only warning. Without those lines every cycle runs clean.
-    assert!(!err.contains("error["), "{err}");
-    siemens_runs_clean("ex1-no-tc.mpf", &p.text);
+    // The $TC_DP tool data are taken into the run's tool table: no
+    // warning at all.
+    siemens_runs_clean("ex1.mpf", &p.text);
 }
 
 #[test]
@@ -328,6 +320,19 @@ fn a_circular_pocket_is_pocket2_or_rings_of_arcs() {
     assert!(l.contains(&"POCKET2(30,0,15,-30,,30,70,70,2400,2400,2,2,1,2,2,2400,1200)"));
     assert!(l.contains(&"CYCLE832(0.01,102003)"));
     siemens_runs_clean("round.mpf", &siemens);
+
+    let tnc = post(&p, &builtin("heidenhain").unwrap()).unwrap().text;
+    let l = lines(&tnc);
+    // Diameter 60, 30 deep, roughing then finishing, called at (70, 70).
+    assert!(l.iter().any(|x| x.starts_with(
+        "CYCL DEF 252 CIRCULAR POCKET Q215=1 Q223=60 Q368=1 Q207=2400 Q351=-1 Q201=-30 Q202=6.5"
+    )));
+    assert!(l
+        .iter()
+        .any(|x| x.starts_with("CYCL DEF 252 CIRCULAR POCKET Q215=2 Q223=60")));
+    assert!(l.contains(&"L X70 Y70 R0 FMAX M99"));
+    let err = check_clean(&save("round.h", &tnc), "heidenhain");
+    assert!(!err.contains("warning["), "{err}");
 
     let ngc = post(&p, &builtin("linuxcnc").unwrap()).unwrap().text;
     assert!(ngc.lines().any(|x| x.starts_with("G2 X")));
@@ -561,4 +566,69 @@ fn dwell_peck_and_bore_cycles_on_every_target() {
             }
         }
     }
+}
+
+#[test]
+fn heidenhain_cycles_carry_the_features_and_check_clean() {
+    let p = posted("heidenhain");
+    let l = lines(&p.text);
+    assert_eq!(l.first(), Some(&"BEGIN PGM 1000 MM"));
+    assert_eq!(l.last(), Some(&"END PGM 1000 MM"));
+    // Drilling 30 deep from the surface Z0, set-up clearance 10, 2nd
+    // set-up clearance 30 above the surface (the security plane), one
+    // plunge; called at the hole with M99.
+    assert!(l.contains(
+        &"CYCL DEF 200 DRILLING Q200=10 Q201=-30 Q206=1800 Q202=30 Q210=0 Q203=0 Q204=30 Q211=0"
+    ));
+    assert!(l.contains(
+        &"CYCL DEF 201 REAMING Q200=10 Q201=-30 Q206=1800 Q211=0 Q208=1800 Q203=0 Q204=30"
+    ));
+    assert!(l.contains(&"L X20 Y60 R0 FMAX M99"));
+    // The pocket: roughing (Q215 1) then finishing (Q215 2), 80 x 50, R10,
+    // turned 90 degrees, centre (70, 70).
+    assert!(l.iter().any(|x| x.starts_with(
+        "CYCL DEF 251 RECTANGULAR POCKET Q215=1 Q218=80 Q219=50 Q220=10 Q368=1 Q224=90"
+    )));
+    assert!(l
+        .iter()
+        .any(|x| x.starts_with("CYCL DEF 251 RECTANGULAR POCKET Q215=2")));
+    assert!(l.contains(&"L X70 Y70 R0 FMAX M99"));
+    assert!(l.contains(&"CYCL DEF 32.1 T0.01"));
+    assert!(l.contains(&"TOOL CALL 1 Z"));
+    let err = check_clean(&save("ex1.h", &p.text), "heidenhain");
+    assert!(!err.contains("warning["), "{err}");
+}
+
+#[test]
+fn heidenhain_blk_form_comes_from_the_workpiece_block() {
+    use cncc::stepnc::model::{Axis2Placement, Bounding, Point};
+    let mut p = fixture::ex1();
+    p.workpieces[0].bounding = Some(Bounding::Block {
+        name: "STOCK".into(),
+        position: Axis2Placement {
+            name: "STOCK".into(),
+            location: Point {
+                name: String::new(),
+                xyz: [0.0, 0.0, -40.0],
+            },
+            axis: None,
+            ref_direction: None,
+        },
+        size: [140.0, 140.0, 45.0],
+    });
+    let text = post(&p, &builtin("heidenhain").unwrap()).unwrap().text;
+    let l = lines(&text);
+    assert_eq!(
+        l[..3],
+        [
+            "BEGIN PGM 1000 MM",
+            "BLK FORM 0.1 Z X0 Y0 Z-40",
+            "BLK FORM 0.2 X140 Y140 Z5"
+        ]
+    );
+    check_clean(&save("blk.h", &text), "heidenhain");
+    // Without a block, no BLK FORM; other targets ignore the block.
+    assert!(!posted("heidenhain").text.contains("BLK FORM"));
+    let siemens = post(&p, &builtin("siemens840d").unwrap()).unwrap().text;
+    assert_eq!(siemens, posted("siemens840d").text);
 }

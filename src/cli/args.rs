@@ -86,11 +86,24 @@ pub enum Command {
         /// Fallback: write every canned cycle as the moves it makes.
         #[arg(long = "expand-cycles")]
         expand_cycles: bool,
-        /// Run both programs and compare their cutting moves; exit 1 if they differ.
+        /// Run both programs and compare their cutting moves (with
+        /// --features: their features); exit 1 if they differ.
         #[arg(long)]
         verify: bool,
+        /// Raise to STEP-NC features (CC2) and post them with the target's
+        /// feature cycles (POCKET1, CYCLE71, CYCL DEF ...).
+        #[arg(long, conflicts_with = "expand_cycles")]
+        features: bool,
+        /// With --features: a tool table in LinuxCNC's .tbl format (tool geometry).
+        #[arg(long = "tool-table", value_name = "T.tbl", requires = "features")]
+        tool_table: Option<PathBuf>,
+        /// With --features: the stock block, mm: `LxWxH[+X+Y+Z]`.
+        #[arg(long, value_name = "LxWxH[+X+Y+Z]", requires = "features")]
+        stock: Option<String>,
         #[arg(long, value_enum, default_value_t = Format::Human)]
         format: Format,
+        #[command(flatten)]
+        run: RunArgs,
     },
     /// Post a STEP-NC feature file (ISO 14649) as a program for a target
     /// dialect, with the target's canned cycles.

@@ -10,6 +10,7 @@ pub mod ir;
 pub mod output;
 pub mod plot;
 pub mod port;
+pub mod port_features;
 pub mod post;
 pub mod query;
 pub mod raise;
@@ -72,7 +73,11 @@ pub fn run(cli: Cli) -> i32 {
             tool_map,
             expand_cycles,
             verify,
+            features,
+            tool_table,
+            stock,
             format,
+            run,
         } => port::run(
             &mut ctx,
             port::PortArgs {
@@ -84,6 +89,11 @@ pub fn run(cli: Cli) -> i32 {
                 expand_cycles: *expand_cycles,
                 verify: *verify,
                 format: *format,
+                features: features.then(|| port_features::FeatureArgs {
+                    tool_table: tool_table.as_deref(),
+                    stock: stock.as_deref(),
+                    options: run.options(),
+                }),
             },
         ),
         Command::Post {

@@ -2,6 +2,7 @@
 //! forms ([`crate::port`]), write it with the target's writer and, with
 //! `--verify`, prove that it cuts the same. Nothing is written unless the
 //! whole program could be (and, with `--verify`, was proved the same).
+//! `--features` ports through STEP-NC features ([`crate::cli::port_features`]).
 
 use crate::cli::args::Format;
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
@@ -27,9 +28,14 @@ pub struct PortArgs<'a> {
     pub expand_cycles: bool,
     pub verify: bool,
     pub format: Format,
+    /// `--features`: port through STEP-NC features instead.
+    pub features: Option<crate::cli::port_features::FeatureArgs<'a>>,
 }
 
 pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
+    if a.features.is_some() {
+        return crate::cli::port_features::run(ctx, a);
+    }
     let target = ctx.spec(a.to)?;
     let tool_map = match a.tool_map {
         Some(m) => ToolMap::from_arg(m).map_err(|why| {

@@ -187,6 +187,9 @@ codes! {
     PostNotCarried = "W0900", "post-not-carried", Warning,
         "a STEP-NC value the target's cycle or toolpath cannot carry",
         "The posted program cannot express this value (a drilling strategy's reduced feeds, a spindle stop at the bottom of a reaming pass...). It is named in a comment in the program at the workingstep it belongs to, so nothing is dropped silently; check whether the machining still meets the plan.";
+    FeaturesMismatch = "E0940", "features-mismatch", Error,
+        "a ported program whose features differ from the source's",
+        "`cncc port --features --verify` raises the posted program to STEP-NC CC2 again and compares its features, operations, tools and workingsteps with those raised from the source (by meaning: ids and instance numbers aside). The message names the first difference; the port is not written. The expanded toolpaths are not compared.";
     PortCycle = "E0610", "port-cycle", Error,
         "a canned cycle the target has no equivalent for",
         "`cncc port` maps drilling cycles to the target's own cycles (G81..G89 to CYCLE81..CYCLE89 and back). This cycle, or this combination of its words, has no equivalent that cuts the same way in the target. Allow the documented fallback `--expand-cycles` to write the cycle as the moves it makes.";

@@ -1039,12 +1039,15 @@ pub fn assign(
             it.params.set_r(n, v.unwrap_or(0.0));
         }
         Var::User(name, _) => it.params.set_user(name, v.unwrap_or(0.0)),
-        Var::System(name, _) => {
+        Var::System(name, index) => {
+            if let Some(r) = super::siemens::assign_tool_data(it, name, index, v, exprs) {
+                return r;
+            }
             return Err(it.error_at(
                 it.span,
                 Code::UnsupportedHere,
                 format!("writing system variable {name} is not simulated"),
-            ))
+            ));
         }
     }
     Ok(())

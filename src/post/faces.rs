@@ -1,7 +1,8 @@
 //! A planar face: CYCLE71 where the target has it (`face.j2`), else
 //! explicit zigzag toolpaths. The face is the rectangle swept by the
 //! course of travel (a linear path, normally along the feature's y) over
-//! the removal boundary's length (a linear profile along its x).
+//! the removal boundary's length (a linear profile along its x), or the
+//! same turned a quarter: a course along x, the profile along y.
 
 use super::frame::Frame;
 use super::milling::{explicit_moves, layers, Cut};
@@ -50,14 +51,23 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
     }
     let u = direction.ratios;
     let n = (u[0] * u[0] + u[1] * u[1]).sqrt();
-    if n < 1e-9 || (u[0] / n).abs() > 1e-9 {
+    let (along_x, along_y) = ((u[0] / n.max(1e-300)).abs(), (u[1] / n.max(1e-300)).abs());
+    if n < 1e-9 || (along_x > 1e-9 && along_y > 1e-9) {
         return Err(unsupported());
     }
     let (width, along) = (length.value, distance.nominal);
-    // The rectangle [0, width] x [y0, y0 + along] in the feature's plane.
-    let y0 = if u[1] > 0.0 { 0.0 } else { -along };
-    let corner = s.frame.apply([0.0, y0, 0.0]);
-    let (feed_dir, left_step) = pass_direction(c.strategy, [0.0, u[1].signum()]);
+    // The rectangle swept in the feature's plane: the course along y (the
+    // profile along x), or along x (the profile along y, as raised from a
+    // program that faced along X).
+    let (size, corner_local, travel) = if along_x <= 1e-9 {
+        let y0 = if u[1] > 0.0 { 0.0 } else { -along };
+        ([width, along], [0.0, y0, 0.0], [0.0, u[1].signum()])
+    } else {
+        let x0 = if u[0] > 0.0 { 0.0 } else { -along };
+        ([along, width], [x0, 0.0, 0.0], [u[0].signum(), 0.0])
+    };
+    let corner = s.frame.apply(corner_local);
+    let (feed_dir, left_step) = pass_direction(c.strategy, travel);
     let passes_along_y = feed_dir[0].abs() < 1e-9;
     let d = s.tool.body.dimension.diameter;
     let overlap = c.overlap().unwrap_or(0.1);
@@ -91,8 +101,8 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
             .set("bottom", w.fmt.len(s.bottom))
             .set("pa", w.fmt.len(corner[0]))
             .set("po", w.fmt.len(corner[1]))
-            .set("leng", w.fmt.len(width))
-            .set("wid", w.fmt.len(along))
+            .set("leng", w.fmt.len(size[0]))
+            .set("wid", w.fmt.len(size[1]))
             .set("angle", w.fmt.angle(s.frame.angle_deg()))
             .set("mid", w.fmt.len(c.ap.unwrap_or(s.top - s.bottom)))
             .set("mida", w.fmt.len(stepover))
@@ -105,15 +115,15 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
     }
     // Explicit zigzag in a frame whose y axis is the pass direction.
     let base = s.frame.then(&Frame {
-        origin: [0.0, y0, 0.0],
+        origin: corner_local,
         ..Frame::identity()
     });
     let (frame, area) = if passes_along_y {
         (
             base,
             FaceArea {
-                across: width,
-                along,
+                across: size[0],
+                along: size[1],
             },
         )
     } else {
@@ -126,8 +136,8 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
         (
             swapped,
             FaceArea {
-                across: along,
-                along: width,
+                across: size[1],
+                along: size[0],
             },
         )
     };

@@ -194,7 +194,7 @@ fn cycle(w: &mut Writer<'_>, s: &Step<'_>) -> Result<&'static str, PostError> {
 fn base(w: &Writer<'_>, s: &Step<'_>, d: &DrillCommon) -> Result<Vals, PostError> {
     let bottom = match d.cutting_depth {
         Some(depth) => s.top - depth,
-        None => s.bottom,
+        None => s.bottom - cone_below_depth(s),
     };
     let at = s.frame.origin;
     Ok(Vals::new()
@@ -205,7 +205,26 @@ fn base(w: &Writer<'_>, s: &Step<'_>, d: &DrillCommon) -> Result<Vals, PostError
         .set("sdis", w.fmt.len(s.sdis))
         .set("rplane", w.fmt.len(s.top + s.sdis))
         .set("bottom", w.fmt.len(bottom))
-        .set("feed", w.fmt.feed(feed(s)?)))
+        .set("feed", w.fmt.feed(feed(s)?))
+        .set_derived("depth", w.fmt.len(bottom - s.top))
+        .set_derived("depth_abs", w.fmt.len(s.top - bottom))
+        .set_derived("clear_inc", w.fmt.len(s.clear - s.top)))
+}
+
+/// A conical hole bottom lies below the feature's depth plane (which ends
+/// the cylinder): the drill's point goes down to the cone's tip. 0 for
+/// any other bottom.
+fn cone_below_depth(s: &Step<'_>) -> f64 {
+    match &s.feature.kind {
+        FeatureKind::RoundHole {
+            diameter,
+            bottom: HoleBottom::Conical { tip_angle, .. },
+            ..
+        } if *tip_angle > 0.0 && *tip_angle < 180.0 => {
+            diameter.nominal / 2.0 / (tip_angle / 2.0).to_radians().tan()
+        }
+        _ => 0.0,
+    }
 }
 
 fn dwell(w: &Writer<'_>, v: Vals, seconds: f64) -> Vals {

@@ -11,10 +11,13 @@
 //!
 //! Which cycle a feature becomes is data: the target's template set says
 //! what it has (`pocket_rect.j2` on the 840D, none on Fanuc: explicit
-//! moves). Heidenhain has no template set until its front end exists.
+//! moves). Heidenhain: drilling cycles (CYCL DEF 200/201/202/203) called
+//! with `L X.. Y.. R0 FMAX M99`, CYCL DEF 251/252 pockets, CYCL DEF 32
+//! tolerance and BLK FORM; its faces are explicit moves so far (no 232).
 
 mod explicit;
 mod faces;
+pub mod features;
 pub mod fixture;
 pub mod frame;
 mod group;
@@ -101,7 +104,7 @@ pub fn post(project: &Project, target: &DialectSpec) -> Result<Posted, Vec<Diagn
                 Code::PostNoTarget,
                 format!("no post-processor for `{}` yet", target.id),
             )
-            .help("choose siemens840d, fanuc, haas or linuxcnc")])
+            .help("choose siemens840d, fanuc, haas, linuxcnc or heidenhain")])
         }
         Some(Err(e)) => return Err(vec![PostError::template(e).into_diagnostic()]),
         Some(Ok(p)) => p,
@@ -114,6 +117,7 @@ pub fn post(project: &Project, target: &DialectSpec) -> Result<Posted, Vec<Diagn
         warnings: Vec::new(),
         current_tool: None,
         defined_tools: Vec::new(),
+        coolant_on: false,
     };
     step::write_program(&mut w, project, &items).map_err(into_diags)?;
     read_back(&w.out, target)?;
@@ -173,6 +177,8 @@ pub(crate) struct Writer<'a> {
     pub current_tool: Option<u32>,
     /// Tools whose data the program has defined.
     pub defined_tools: Vec<u32>,
+    /// Coolant (flood or mist) was switched on and not off since.
+    pub coolant_on: bool,
 }
 
 impl Writer<'_> {
@@ -211,7 +217,7 @@ mod tests {
 
     #[test]
     fn ex1_posts_to_every_target_with_a_post() {
-        for id in ["siemens840d", "fanuc", "haas", "linuxcnc"] {
+        for id in ["siemens840d", "fanuc", "haas", "linuxcnc", "heidenhain"] {
             let spec = crate::dialect::builtin(id).unwrap();
             let p = post(&fixture::ex1(), &spec).unwrap_or_else(|e| panic!("{id}: {e:?}"));
             assert!(p.text.contains("WS FINISH POCKET1"), "{id}");
@@ -219,9 +225,9 @@ mod tests {
     }
 
     #[test]
-    fn heidenhain_has_no_post_yet() {
+    fn a_dialect_without_templates_has_no_post() {
         let mut spec = (*crate::dialect::builtin("fanuc").unwrap()).clone();
-        spec.id = "heidenhain".into();
+        spec.id = "mazak".into();
         let e = post(&fixture::ex1(), &spec).unwrap_err();
         assert_eq!(e[0].code, Code::PostNoTarget);
     }

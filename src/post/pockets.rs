@@ -69,14 +69,18 @@ pub fn write(
         .set("mid", w.fmt.len(c.ap.unwrap_or(s.top - s.bottom)))
         .set("fal", w.fmt.len(fal))
         .set("ffp1", f.clone())
-        .set("ffd", f.clone());
+        .set("ffd", f.clone())
+        .set_derived("depth", w.fmt.len(s.bottom - s.top))
+        .set_derived("clear_inc", w.fmt.len(s.clear - s.top));
     let v = match shape {
         Shape::Rect(r) => v
             .set("leng", w.fmt.len(r.length))
             .set("wid", w.fmt.len(r.width))
             .set("crad", w.fmt.len(r.corner_radius))
             .set("angle", w.fmt.angle(frame.angle_deg().rem_euclid(180.0))),
-        Shape::Circle { diameter } => v.set("prad", w.fmt.len(diameter / 2.0)),
+        Shape::Circle { diameter } => v
+            .set("prad", w.fmt.len(diameter / 2.0))
+            .set_derived("diameter", w.fmt.len(*diameter)),
     };
     let units = match (c.finish, s.roughed_by.is_some()) {
         (false, _) => 1,

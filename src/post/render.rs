@@ -90,6 +90,7 @@ impl Post {
             .iter()
             .map(|(k, _)| *k)
             .filter(|k| !used.contains(*k) && !allowed.iter().any(|a| a == k))
+            .filter(|k| !vals.derived.contains(k))
             .collect();
         if !dropped.is_empty() {
             return Err(format!(

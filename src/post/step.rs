@@ -16,12 +16,10 @@ pub fn write_program(
     items: &[Item<'_>],
 ) -> Result<(), Vec<PostError>> {
     let one = |r: Result<(), PostError>| r.map_err(|e| vec![e]);
-    one(w.emit(
-        "begin.j2",
-        Vals::new()
-            .set("number", "1000")
-            .set("title", super::values::comment_text(&project.id)),
-    ))?;
+    let begin = Vals::new()
+        .set("number", "1000")
+        .set("title", super::values::comment_text(&project.id));
+    one(w.emit("begin.j2", blank(w, project, begin)))?;
     let mut errors = Vec::new();
     for unit in group::units(items) {
         let item = match unit {
@@ -49,6 +47,35 @@ pub fn write_program(
         return Err(errors);
     }
     one(w.emit("end.j2", Vals::new()))
+}
+
+/// The workpiece's block (`BLK FORM` on Heidenhain), when the project
+/// gives one along the machine axes: `has_blk` ("1" or empty) and its
+/// lowest and highest corners, for the templates that want them.
+fn blank(w: &Writer<'_>, project: &Project, v: Vals) -> Vals {
+    let block = project.workpieces.iter().find_map(|wp| match &wp.bounding {
+        Some(Bounding::Block { position, size, .. })
+            if super::frame::Frame::from_placement(position)
+                .angle_deg()
+                .abs()
+                < 1e-9
+                && super::frame::Frame::from_placement(position).is_vertical() =>
+        {
+            Some((position.location.xyz, *size))
+        }
+        _ => None,
+    });
+    let Some((at, size)) = block else {
+        return v.set_derived("has_blk", "");
+    };
+    let (lo, hi) = (at, [at[0] + size[0], at[1] + size[1], at[2] + size[2]]);
+    v.set_derived("has_blk", "1")
+        .set_derived("blk_x0", w.fmt.len(lo[0]))
+        .set_derived("blk_y0", w.fmt.len(lo[1]))
+        .set_derived("blk_z0", w.fmt.len(lo[2]))
+        .set_derived("blk_x1", w.fmt.len(hi[0]))
+        .set_derived("blk_y1", w.fmt.len(hi[1]))
+        .set_derived("blk_z1", w.fmt.len(hi[2]))
 }
 
 /// One workingstep, or several that make the same hole at different
@@ -151,6 +178,11 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
 }
 
 fn coolant(w: &mut Writer<'_>, mf: &MachineFunctions) -> Result<(), PostError> {
+    let wanted = mf.coolant || mf.mist == Some(true);
+    if w.coolant_on && !wanted {
+        w.emit("coolant.j2", Vals::new().set("m", "9"))?;
+    }
+    w.coolant_on = wanted;
     if mf.coolant {
         w.emit("coolant.j2", Vals::new().set("m", "8"))?;
     }
@@ -237,7 +269,7 @@ fn tolerance(project: &Project, s: &Step<'_>) -> Option<f64> {
     }
 }
 
-fn tool_length(t: &Tool) -> f64 {
+pub(crate) fn tool_length(t: &Tool) -> f64 {
     t.overall_assembly_length
         .or_else(|| t.cutting_edges.first().map(|c| c.tool_offset_length))
         .unwrap_or(0.0)

@@ -15,6 +15,7 @@ type Set = &'static [(&'static str, &'static str)];
 const SIEMENS_840D: Set = set!("siemens840d": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "face.j2", "hole_at.j2", "holes_circle.j2", "holes_grid.j2", "holes_row.j2", "line.j2", "peck.j2", "pocket_circ.j2", "pocket_circ_any.j2", "pocket_rect.j2", "pocket_rect_any.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tolerance.j2", "tool_change.j2", "tool_data.j2");
 const FANUC: Set = set!("fanuc": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "hole_at.j2", "line.j2", "peck.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tool_change.j2");
 const HAAS: Set = set!("haas": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "hole_at.j2", "line.j2", "peck.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tool_change.j2");
+const HEIDENHAIN: Set = set!("heidenhain": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "hole_at.j2", "line.j2", "peck.j2", "pocket_circ.j2", "pocket_rect.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tolerance.j2", "tool_change.j2");
 const LINUXCNC: Set = set!("linuxcnc": "approach.j2", "arc.j2", "begin.j2", "bore.j2", "comment.j2", "coolant.j2", "cycle_end.j2", "drill.j2", "drill_dwell.j2", "end.j2", "hole_at.j2", "line.j2", "peck.j2", "rapid.j2", "ream.j2", "retract.j2", "spindle.j2", "stop.j2", "tool_change.j2");
 
 /// The templates of a dialect (by id), if it has a post.
@@ -24,6 +25,7 @@ pub fn template_set(dialect: &str) -> Option<Set> {
         "fanuc" => FANUC,
         "haas" => HAAS,
         "linuxcnc" => LINUXCNC,
+        "heidenhain" => HEIDENHAIN,
         _ => return None,
     })
 }
@@ -35,7 +37,7 @@ mod tests {
     #[test]
     fn every_template_file_is_compiled_in() {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("posts");
-        for d in ["siemens840d", "fanuc", "haas", "linuxcnc"] {
+        for d in ["siemens840d", "fanuc", "haas", "linuxcnc", "heidenhain"] {
             let mut on_disk: Vec<String> = std::fs::read_dir(root.join(d))
                 .unwrap()
                 .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())

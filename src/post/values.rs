@@ -62,6 +62,9 @@ fn clean(v: f64) -> f64 {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Vals {
     pub entries: Vec<(&'static str, String)>,
+    /// Values computed from others (`depth` = bottom - top) for targets
+    /// that want them: a template need not use them.
+    pub derived: Vec<&'static str>,
 }
 
 impl Vals {
@@ -77,6 +80,14 @@ impl Vals {
             None => self.entries.push((key, value)),
         }
         self
+    }
+
+    /// Adds a value derived from others (a template may leave it unused).
+    pub fn set_derived(mut self, key: &'static str, value: impl Into<String>) -> Self {
+        if !self.derived.contains(&key) {
+            self.derived.push(key);
+        }
+        self.set(key, value)
     }
 
     pub fn get(&self, key: &str) -> Option<&str> {

@@ -24,6 +24,7 @@ mod edge;
 pub(crate) mod frame;
 mod host;
 pub(crate) mod milling;
+mod tool_data;
 mod transform;
 
 #[cfg(test)]
@@ -32,6 +33,7 @@ mod tests;
 pub use edge::activate_edge;
 pub use frame::ProgFrame;
 pub use host::FramedHost;
+pub use tool_data::assign as assign_tool_data;
 
 use super::{Interp, Stop};
 use crate::diag::{Code, Diagnostic};
