@@ -167,7 +167,9 @@ impl OpBuilder {
         let vertical = self.same_xy(m.from, m.to);
         let kind = match m.kind {
             MoveKind::Rapid => {
-                if !(self.open_plunge && vertical) {
+                // A rapid to where the tool already is goes nowhere.
+                let still = vertical && (m.from[2] - m.to[2]).abs() <= self.tol;
+                if !still && !(self.open_plunge && vertical) {
                     self.open_plunge = false;
                     // Indices stay within u32: past that, rapids are not kept.
                     if self.keep_rapids && self.out.rapids.len() < u32::MAX as usize {

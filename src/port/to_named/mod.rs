@@ -49,6 +49,9 @@ pub(super) struct Pass<'a> {
     to: &'a DialectSpec,
     modal: Modal,
     active: Option<Active>,
+    /// The Z when cycle mode began: where G98 returns to (kept while one
+    /// cycle follows another without G80, as the controls keep it).
+    initial: Option<Value>,
     diags: &'a mut Vec<Diagnostic>,
 }
 
@@ -61,6 +64,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         to,
         modal: Modal::new(from),
         active: None,
+        initial: None,
         diags,
     };
     let blocks = std::mem::take(&mut p.blocks);
@@ -174,6 +178,9 @@ impl Pass<'_> {
         span: Span,
     ) -> Option<(Stmt, Option<Stmt>)> {
         let g = crate::dialect::Meaning::Cycle(c.kind).name();
+        if self.active.is_none() {
+            self.initial = self.modal.z.clone();
+        }
         if !self.modal.absolute {
             self.refuse(
                 Code::PortRunTimeValue,

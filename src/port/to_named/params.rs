@@ -55,7 +55,7 @@ impl Pass<'_> {
         if !self.modal.return_initial {
             return Some(r.clone());
         }
-        match (self.modal.z.clone(), r.number()) {
+        match (self.initial.clone(), r.number()) {
             (Some(Value::Number(z)), Some(rn)) => {
                 Some(Value::Number(if z.to_f64() >= rn.to_f64() {
                     z
