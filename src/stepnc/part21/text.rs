@@ -38,7 +38,7 @@ pub fn write_instance(out: &mut String, i: &Instance) {
     out.push_str(";\n");
 }
 
-fn write_record(out: &mut String, r: &Record) {
+pub fn write_record(out: &mut String, r: &Record) {
     write_parts(out, &r.entity, &r.params);
 }
 
