@@ -66,12 +66,8 @@ pub fn write_value(out: &mut String, v: &Value) {
         Value::Int(i) => {
             let _ = write!(out, "{i}");
         }
-        Value::Real(r) => out.push_str(&real(*r)),
-        Value::Str(s) => {
-            out.push('\'');
-            out.push_str(&encode_string(s));
-            out.push('\'');
-        }
+        Value::Real(r) => push_real(out, *r),
+        Value::Str(s) => push_string(out, s),
         Value::Enum(e) => {
             let _ = write!(out, ".{e}.");
         }
@@ -95,6 +91,28 @@ pub fn write_value(out: &mut String, v: &Value) {
     }
 }
 
+/// Appends [`real`] without a String of its own.
+pub fn push_real(out: &mut String, r: f64) {
+    let start = out.len();
+    let _ = write!(out, "{r}");
+    if !out[start..].contains('.') {
+        out.push('.');
+    }
+}
+
+/// Appends `'text'`, escaped as Part 21 wants.
+pub fn push_string(out: &mut String, s: &str) {
+    out.push('\'');
+    if s.bytes()
+        .all(|b| matches!(b, b' '..=b'~') && b != b'\'' && b != b'\\')
+    {
+        out.push_str(s);
+    } else {
+        out.push_str(&encode_string(s));
+    }
+    out.push('\'');
+}
+
 /// A real in the shortest form that reads back to the same `f64`, always
 /// with a decimal point (`10.`, `0.04`, `-12.`).
 pub fn real(r: f64) -> String {
@@ -110,12 +128,24 @@ mod tests {
     use super::*;
 
     #[test]
+    fn strings_pushed_as_encoded() {
+        for t in ["plain", "it's", "a\\b", "Peça", ""] {
+            let mut pushed = String::new();
+            push_string(&mut pushed, t);
+            assert_eq!(pushed, format!("'{}'", encode_string(t)));
+        }
+    }
+
+    #[test]
     fn reals_have_a_point_and_round_trip() {
         assert_eq!(real(10.0), "10.");
         assert_eq!(real(0.04), "0.04");
         assert_eq!(real(-12.0), "-12.");
-        for v in [0.1 + 0.2, 1e-9, 123456.789, 1e22] {
+        for v in [0.1 + 0.2, 1e-9, 123456.789, 1e22, -0.0, 7.0] {
             assert_eq!(real(v).parse::<f64>().unwrap(), v);
+            let mut pushed = String::from("x");
+            push_real(&mut pushed, v);
+            assert_eq!(pushed, format!("x{}", real(v)));
         }
     }
 }

@@ -84,7 +84,7 @@ impl Graph {
 
     /// Writes the instances reachable from `root`, numbered depth-first
     /// from it (`#1`) following references in order, one a line.
-    pub fn write_numbered(mut self, root: u64, out: &mut impl Write) -> io::Result<()> {
+    pub fn write_numbered<O: Write + ?Sized>(mut self, root: u64, out: &mut O) -> io::Result<()> {
         self.shared = HashMap::default();
         self.collided = HashMap::new();
         let (order, new_id) = self.number(root);

@@ -13,7 +13,7 @@ mod tool;
 mod toolpath;
 
 use super::model::*;
-use super::part21::text::{write_record, write_value};
+use super::part21::text::{push_real, push_string, write_record, write_value};
 use super::part21::{Param, Record, Value};
 use crate::span::Span;
 use std::collections::HashMap;
@@ -35,10 +35,10 @@ pub fn write_project_with_header(p: &Project, original: &[Record]) -> String {
 
 /// Writes the Part 21 text of a project to `out` (see
 /// [`write_project_with_header`]) without holding the text in memory.
-pub fn write_project_to(
+pub fn write_project_to<O: std::io::Write + ?Sized>(
     p: &Project,
     original: &[Record],
-    out: &mut impl std::io::Write,
+    out: &mut O,
 ) -> std::io::Result<()> {
     let timer = graph::PhaseTimer::new();
     let mut w = W::new(p);
@@ -127,6 +127,24 @@ impl<'p> W<'p> {
     pub fn add(&mut self, entity: &str, params: Vec<Value>) -> Value {
         let text = self.graph.scratch();
         write_values(text, entity, &params);
+        Value::Ref(self.graph.add_scratch_shared())
+    }
+
+    /// `ENTITY('name',(r1,r2,...))` (points, directions), shared like
+    /// [`W::add`] but written without building values.
+    pub fn add_reals(&mut self, entity: &str, name: &str, reals: &[f64]) -> Value {
+        let text = self.graph.scratch();
+        text.push_str(entity);
+        text.push('(');
+        push_string(text, name);
+        text.push_str(",(");
+        for (k, &v) in reals.iter().enumerate() {
+            if k > 0 {
+                text.push(',');
+            }
+            push_real(text, v);
+        }
+        text.push_str("))");
         Value::Ref(self.graph.add_scratch_shared())
     }
 
