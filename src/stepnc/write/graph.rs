@@ -14,10 +14,11 @@ use std::time::Instant;
 /// Instance texts by provisional number (index + 1).
 #[derive(Default)]
 pub(super) struct Graph {
-    /// Every instance's text, one after another.
-    text: String,
-    /// Where instance n's text is: `(start, len)` at index n - 1.
-    nodes: Vec<(usize, usize)>,
+    /// Every instance's text, one after another, in chunks that are never
+    /// reallocated (a growing single buffer would need up to twice the room).
+    chunks: Vec<String>,
+    /// Where instance n's text is, at index n - 1: chunk, start, length.
+    nodes: Vec<(u32, u32, usize)>,
     /// The first shared instance whose text has that hash.
     shared: HashMap<u64, u64, BuildHasherDefault<KeyIsHash>>,
     /// Further shared instances whose text hashes the same (rare).
@@ -56,15 +57,28 @@ impl Graph {
 
     /// A number for an instance whose text comes later.
     pub fn reserve(&mut self) -> u64 {
-        self.nodes.push((0, 0));
+        self.nodes.push((0, 0, 0));
         self.nodes.len() as u64
     }
 
     /// Gives a reserved instance the scratch text.
     pub fn fill_from_scratch(&mut self, n: u64) {
-        let span = (self.text.len(), self.scratch.len());
-        self.text.push_str(&self.scratch);
-        if let Some(slot) = self.nodes.get_mut(n as usize - 1) {
+        const CHUNK: usize = 1 << 20;
+        let len = self.scratch.len();
+        let fits = self
+            .chunks
+            .last()
+            .is_some_and(|c| c.capacity() - c.len() >= len);
+        if !fits {
+            self.chunks.push(String::with_capacity(CHUNK.max(len)));
+        }
+        let chunk = self.chunks.len() - 1;
+        let text = &mut self.chunks[chunk];
+        // A chunk holds at most CHUNK bytes before a longer instance,
+        // which then starts a chunk of its own at 0: starts fit in u32.
+        let span = (chunk as u32, text.len() as u32, len);
+        text.push_str(&self.scratch);
+        if let Some(slot) = self.nodes.get_mut((n as usize).wrapping_sub(1)) {
             *slot = span;
         }
     }
@@ -77,7 +91,13 @@ impl Graph {
 
     fn node_text(&self, n: u64) -> &str {
         match self.nodes.get((n as usize).wrapping_sub(1)) {
-            Some(&(start, len)) => &self.text[start..start + len],
+            Some(&(chunk, start, len)) => {
+                let start = start as usize;
+                self.chunks
+                    .get(chunk as usize)
+                    .and_then(|c| c.get(start..start + len))
+                    .unwrap_or("")
+            }
             None => "",
         }
     }
