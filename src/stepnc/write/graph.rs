@@ -19,10 +19,11 @@ pub(super) struct Graph {
     chunks: Vec<String>,
     /// Where instance n's text is, at index n - 1: chunk, start, length.
     nodes: Vec<(u32, u32, usize)>,
-    /// The first shared instance whose text has that hash.
-    shared: HashMap<u64, u64, BuildHasherDefault<KeyIsHash>>,
-    /// Further shared instances whose text hashes the same (rare).
-    collided: HashMap<u64, Vec<u64>>,
+    /// The first shared instance whose text has that (32-bit) hash; both
+    /// halves 32 bits to keep the table small (8 bytes an entry).
+    shared: HashMap<u32, u32, BuildHasherDefault<KeyIsHash>>,
+    /// Further shared instances whose text hashes the same.
+    collided: HashMap<u32, Vec<u64>>,
     /// The instance being written.
     scratch: String,
 }
@@ -40,9 +41,13 @@ impl Graph {
         let hash = text_hash(&self.scratch);
         let Some(&first) = self.shared.get(&hash) else {
             let n = self.push_scratch();
-            self.shared.insert(hash, n);
+            // Past 4 billion instances new values are no longer shared.
+            if let Ok(n) = u32::try_from(n) {
+                self.shared.insert(hash, n);
+            }
             return n;
         };
+        let first = u64::from(first);
         if self.node_text(first) == self.scratch {
             return first;
         }
@@ -216,10 +221,11 @@ fn push_u64(out: &mut Vec<u8>, mut n: u64) {
     out.extend_from_slice(&digits[k..]);
 }
 
-fn text_hash(text: &str) -> u64 {
+fn text_hash(text: &str) -> u32 {
     let mut h = std::collections::hash_map::DefaultHasher::new();
     h.write(text.as_bytes());
-    h.finish()
+    let h = h.finish();
+    (h >> 32) as u32 ^ h as u32
 }
 
 /// The map key is already a hash: use it as it is.
@@ -235,8 +241,9 @@ impl Hasher for KeyIsHash {
             self.0 = self.0.rotate_left(8) ^ u64::from(b);
         }
     }
-    fn write_u64(&mut self, n: u64) {
-        self.0 = n;
+    /// Spread over all 64 bits: the table uses the top ones too.
+    fn write_u32(&mut self, n: u32) {
+        self.0 = u64::from(n).wrapping_mul(0x9E37_79B9_7F4A_7C15);
     }
 }
 
@@ -267,6 +274,23 @@ mod tests {
         let mut out = Vec::new();
         rewrite_refs("A('it''s #2',#2,(#1,#3))", &[0, 5, 7, 0], &mut out);
         assert_eq!(String::from_utf8(out).unwrap(), "A('it''s #2',#7,(#5,#3))");
+    }
+
+    #[test]
+    fn texts_with_the_same_hash_stay_apart() {
+        let mut seen = HashMap::new();
+        let (a, b) = (0..1_000_000u32)
+            .map(|i| format!("P('{i}')"))
+            .find_map(|t| seen.insert(text_hash(&t), t.clone()).map(|o| (o, t)))
+            .expect("a 32-bit collision among a million texts");
+        let mut g = Graph::default();
+        let mut add = |t: &str| {
+            g.scratch().push_str(t);
+            g.add_scratch_shared()
+        };
+        let (na, nb) = (add(&a), add(&b));
+        assert_ne!(na, nb);
+        assert_eq!((add(&a), add(&b)), (na, nb));
     }
 
     #[test]
