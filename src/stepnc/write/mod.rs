@@ -1,8 +1,9 @@
-//! Typed model → generic Part 21 graph → text. Equal value objects
-//! (points, directions, placements, technology...) are written once and
-//! shared; the project's arenas (workpieces, features, operations, tools)
-//! are written once each. Numbering is stable: depth-first from the
-//! PROJECT (#1), following parameters in order.
+//! Typed model → Part 21 text. Equal value objects (points, directions,
+//! placements, technology...) are written once and shared; the project's
+//! arenas (workpieces, features, operations, tools) are written once each.
+//! Numbering is stable: depth-first from the PROJECT (#1), following
+//! parameters in order. Each instance is held as its text in a compact
+//! graph ([`graph`]) and streamed out once numbered.
 
 mod feature;
 mod geom;
