@@ -37,6 +37,35 @@ pub fn emit_output(output: Option<&Path>, text: &str) -> std::io::Result<()> {
     }
 }
 
+/// Like [`emit_output`], for output written piece by piece by `write`
+/// (into a temporary file renamed at the end, or stdout).
+pub fn emit_output_with(
+    output: Option<&Path>,
+    write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+) -> std::io::Result<()> {
+    match output {
+        Some(path) => {
+            let dir = match path.parent() {
+                Some(p) if !p.as_os_str().is_empty() => p,
+                _ => Path::new("."),
+            };
+            let mut tmp = tempfile::NamedTempFile::new_in(dir)?;
+            let mut out = std::io::BufWriter::new(tmp.as_file_mut());
+            write(&mut out)?;
+            out.flush()?;
+            drop(out);
+            tmp.as_file().sync_all()?;
+            tmp.persist(path).map_err(|e| e.error)?;
+            Ok(())
+        }
+        None => {
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            write(&mut out)?;
+            out.flush()
+        }
+    }
+}
+
 /// Prints diagnostics on stderr in the chosen format.
 pub fn print_diagnostics(
     diags: &[Diagnostic],

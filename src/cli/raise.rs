@@ -6,7 +6,7 @@
 use crate::cli::args::Format;
 use crate::cli::check::{keep_lines, read_head};
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
-use crate::cli::output::emit_output;
+use crate::cli::output::{emit_output, emit_output_with};
 use crate::interp::{tooltable::ToolTable, Options};
 use crate::raise::{raise_file, summary::summary, Level, RaiseOptions, Stock};
 use std::path::Path;
@@ -63,11 +63,14 @@ pub fn run(ctx: &mut Context, mut a: RaiseArgs<'_>) -> Result<i32, Failure> {
     if diags.iter().any(|d| d.is_error()) {
         return Ok(EXIT_INPUT_ERRORS);
     }
-    let text = if a.summary {
-        summary(&raised.project)
+    let written = if a.summary {
+        emit_output(a.output, &summary(&raised.project))
     } else {
-        crate::stepnc::write_project(&raised.project)
+        // Streamed: the Part 21 text of a large program is never held whole.
+        emit_output_with(a.output, |out| {
+            crate::stepnc::write_project_to(&raised.project, &[], out)
+        })
     };
-    emit_output(a.output, &text).map_err(|e| Failure(format!("writing the output: {e}")))?;
+    written.map_err(|e| Failure(format!("writing the output: {e}")))?;
     Ok(EXIT_OK)
 }

@@ -5,7 +5,7 @@
 
 use crate::cli::args::Format;
 use crate::cli::context::{Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK, EXIT_USAGE};
-use crate::cli::output::{emit_output, summary_line};
+use crate::cli::output::{emit_output_with, summary_line};
 use crate::diag::{Diagnostic, Severity};
 use crate::stepnc;
 use std::path::Path;
@@ -46,8 +46,10 @@ pub fn run(ctx: &mut Context, a: StepncArgs<'_>) -> Result<i32, Failure> {
         summary(&r.diagnostics, a.format);
         return Ok(EXIT_INPUT_ERRORS);
     };
-    let text = stepnc::write_project_with_header(&project, &header);
-    emit_output(a.output, &text).map_err(|e| Failure(format!("cannot write: {e}")))?;
+    emit_output_with(a.output, |out| {
+        stepnc::write_project_to(&project, &header, out)
+    })
+    .map_err(|e| Failure(format!("cannot write: {e}")))?;
     Ok(EXIT_OK)
 }
 

@@ -3,9 +3,9 @@
 use super::*;
 
 impl<'p> W<'p> {
+    /// Written straight as text: points are most of a toolpath file.
     pub fn point(&mut self, p: &Point) -> Value {
-        let xyz = list(p.xyz.iter().map(|&c| r(c)).collect());
-        self.add("CARTESIAN_POINT", vec![s(&p.name), xyz])
+        self.add_reals("CARTESIAN_POINT", &p.name, &p.xyz)
     }
 
     pub fn opt_point(&mut self, p: &Option<Point>) -> Value {
@@ -13,8 +13,7 @@ impl<'p> W<'p> {
     }
 
     pub fn direction(&mut self, d: &Direction) -> Value {
-        let ratios = list(d.ratios.iter().map(|&c| r(c)).collect());
-        self.add("DIRECTION", vec![s(&d.name), ratios])
+        self.add_reals("DIRECTION", &d.name, &d.ratios)
     }
 
     pub fn opt_direction(&mut self, d: &Option<Direction>) -> Value {

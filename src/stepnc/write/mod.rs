@@ -1,19 +1,21 @@
-//! Typed model → generic Part 21 graph → text. Equal value objects
-//! (points, directions, placements, technology...) are written once and
-//! shared; the project's arenas (workpieces, features, operations, tools)
-//! are written once each. Numbering is stable: depth-first from the
-//! PROJECT (#1), following parameters in order.
+//! Typed model → Part 21 text. Equal value objects (points, directions,
+//! placements, technology...) are written once and shared; the project's
+//! arenas (workpieces, features, operations, tools) are written once each.
+//! Numbering is stable: depth-first from the PROJECT (#1), following
+//! parameters in order. Each instance is held as its text in a compact
+//! graph ([`graph`]) and streamed out once numbered.
 
 mod feature;
 mod geom;
+mod graph;
 mod operation;
 mod structure;
 mod tool;
 mod toolpath;
 
 use super::model::*;
-use super::part21::text::write_file;
-use super::part21::{Instance, Param, Record, Value};
+use super::part21::text::{push_real, push_string, write_record, write_value};
+use super::part21::{Param, Record, Value};
 use crate::span::Span;
 use std::collections::HashMap;
 
@@ -25,9 +27,27 @@ pub fn write_project(p: &Project) -> String {
 /// The Part 21 text of a project, keeping the FILE_DESCRIPTION and
 /// FILE_NAME of the file it was read from (FILE_SCHEMA is always cncc's).
 pub fn write_project_with_header(p: &Project, original: &[Record]) -> String {
+    let mut out = Vec::new();
+    // Writing into memory cannot fail.
+    let _ = write_project_to(p, original, &mut out);
+    // Every piece written is a `&str`, so the bytes are UTF-8.
+    String::from_utf8(out).unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
+}
+
+/// Writes the Part 21 text of a project to `out` (see
+/// [`write_project_with_header`]) without holding the text in memory.
+pub fn write_project_to<O: std::io::Write + ?Sized>(
+    p: &Project,
+    original: &[Record],
+    out: &mut O,
+) -> std::io::Result<()> {
+    let timer = graph::PhaseTimer::new();
     let mut w = W::new(p);
     let root = w.project();
-    let instances = w.numbered(root);
+    timer.phase("build graph");
+    let Value::Ref(root) = root else {
+        return Ok(());
+    };
     let mut head = header(&p.id);
     for r in head.iter_mut() {
         if r.entity == "FILE_SCHEMA" {
@@ -37,7 +57,16 @@ pub fn write_project_with_header(p: &Project, original: &[Record]) -> String {
             r.params = o.params.clone();
         }
     }
-    write_file(&head, &instances)
+    let mut text = String::from("ISO-10303-21;\nHEADER;\n");
+    for r in &head {
+        write_record(&mut text, r);
+        text.push_str(";\n");
+    }
+    text.push_str("ENDSEC;\nDATA;\n");
+    out.write_all(text.as_bytes())?;
+    w.graph.write_numbered(root, out)?;
+    timer.phase("number and write");
+    out.write_all(b"ENDSEC;\nEND-ISO-10303-21;\n")
 }
 
 fn header(name: &str) -> Vec<Record> {
@@ -73,12 +102,10 @@ fn header(name: &str) -> Vec<Record> {
     ]
 }
 
-/// The graph being built: instances by provisional number (index + 1).
+/// The writer: the project being written and the instance graph so far.
 pub(crate) struct W<'p> {
     pub p: &'p Project,
-    nodes: Vec<(String, Vec<Value>)>,
-    /// Value instances by the hash of their entity and parameters.
-    shared: HashMap<u64, Vec<u64>>,
+    graph: graph::Graph,
     pub workpieces: HashMap<WorkpieceId, u64>,
     pub features: HashMap<FeatureId, u64>,
     pub operations: HashMap<OperationId, u64>,
@@ -89,8 +116,7 @@ impl<'p> W<'p> {
     fn new(p: &'p Project) -> Self {
         W {
             p,
-            nodes: Vec::new(),
-            shared: HashMap::new(),
+            graph: graph::Graph::default(),
             workpieces: HashMap::new(),
             features: HashMap::new(),
             operations: HashMap::new(),
@@ -100,42 +126,38 @@ impl<'p> W<'p> {
 
     /// A value instance, shared with an equal one already written.
     pub fn add(&mut self, entity: &str, params: Vec<Value>) -> Value {
-        use std::hash::{Hash, Hasher};
-        let mut h = std::collections::hash_map::DefaultHasher::new();
-        entity.hash(&mut h);
-        for v in &params {
-            hash_value(v, &mut h);
-        }
-        let key = h.finish();
-        if let Some(ids) = self.shared.get(&key) {
-            for &id in ids {
-                let (e, p) = &self.nodes[id as usize - 1];
-                if e == entity && *p == params {
-                    return Value::Ref(id);
-                }
-            }
-        }
-        let id = self.add_unique(entity, params);
-        if let Value::Ref(n) = id {
-            self.shared.entry(key).or_default().push(n);
-        }
-        id
+        let text = self.graph.scratch();
+        write_values(text, entity, &params);
+        Value::Ref(self.graph.add_scratch_shared())
     }
 
-    /// An instance never shared (a project arena object).
-    pub fn add_unique(&mut self, entity: &str, params: Vec<Value>) -> Value {
-        self.nodes.push((entity.to_string(), params));
-        Value::Ref(self.nodes.len() as u64)
+    /// `ENTITY('name',(r1,r2,...))` (points, directions), shared like
+    /// [`W::add`] but written without building values.
+    pub fn add_reals(&mut self, entity: &str, name: &str, reals: &[f64]) -> Value {
+        let text = self.graph.scratch();
+        text.push_str(entity);
+        text.push('(');
+        push_string(text, name);
+        text.push_str(",(");
+        for (k, &v) in reals.iter().enumerate() {
+            if k > 0 {
+                text.push(',');
+            }
+            push_real(text, v);
+        }
+        text.push_str("))");
+        Value::Ref(self.graph.add_scratch_shared())
     }
 
     /// Reserves a number for an instance whose parameters come later.
     pub fn reserve(&mut self) -> u64 {
-        self.nodes.push((String::new(), Vec::new()));
-        self.nodes.len() as u64
+        self.graph.reserve()
     }
 
     pub fn fill(&mut self, id: u64, entity: &str, params: Vec<Value>) {
-        self.nodes[id as usize - 1] = (entity.to_string(), params);
+        let text = self.graph.scratch();
+        write_values(text, entity, &params);
+        self.graph.fill_from_scratch(id);
     }
 
     /// A raw subtree written back as instances.
@@ -172,87 +194,19 @@ impl<'p> W<'p> {
             RawValue::Instance(r) => self.raw(r),
         }
     }
-
-    /// The instances renumbered depth-first from `root`, in number order.
-    fn numbered(self, root: Value) -> Vec<Instance> {
-        let Value::Ref(root) = root else {
-            return Vec::new();
-        };
-        let mut new_id = vec![0u64; self.nodes.len() + 1];
-        let mut order = Vec::new();
-        let mut stack = vec![root];
-        while let Some(n) = stack.pop() {
-            if new_id[n as usize] != 0 {
-                continue;
-            }
-            order.push(n);
-            new_id[n as usize] = order.len() as u64;
-            let mut refs = Vec::new();
-            for v in &self.nodes[n as usize - 1].1 {
-                collect_refs(v, &mut refs);
-            }
-            stack.extend(refs.into_iter().rev());
-        }
-        let mut nodes = self.nodes;
-        order
-            .iter()
-            .map(|&n| {
-                let (entity, params) = std::mem::take(&mut nodes[n as usize - 1]);
-                Instance {
-                    id: new_id[n as usize],
-                    entity,
-                    params: params
-                        .iter()
-                        .map(|v| Param::new(renumber(v, &new_id)))
-                        .collect(),
-                    span: Span::default(),
-                    entity_span: Span::default(),
-                    more_parts: Vec::new(),
-                }
-            })
-            .collect()
-    }
 }
 
-/// Hashes a value as written (reals by their bits).
-fn hash_value(v: &Value, h: &mut impl std::hash::Hasher) {
-    use std::hash::Hash;
-    std::mem::discriminant(v).hash(h);
-    match v {
-        Value::Null | Value::Derived => {}
-        Value::Int(i) => i.hash(h),
-        Value::Real(r) => r.to_bits().hash(h),
-        Value::Str(s) | Value::Enum(s) | Value::Binary(s) => s.hash(h),
-        Value::Ref(n) => n.hash(h),
-        Value::List(l) => {
-            l.len().hash(h);
-            l.iter().for_each(|p| hash_value(&p.value, h));
+/// `NAME(p1,p2,...)`.
+fn write_values(out: &mut String, entity: &str, params: &[Value]) {
+    out.push_str(entity);
+    out.push('(');
+    for (k, v) in params.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
         }
-        Value::Typed(t, p) => {
-            t.hash(h);
-            hash_value(&p.value, h);
-        }
+        write_value(out, v);
     }
-}
-
-fn collect_refs(v: &Value, out: &mut Vec<u64>) {
-    match v {
-        Value::Ref(n) => out.push(*n),
-        Value::List(l) => l.iter().for_each(|p| collect_refs(&p.value, out)),
-        Value::Typed(_, p) => collect_refs(&p.value, out),
-        _ => {}
-    }
-}
-
-fn renumber(v: &Value, new_id: &[u64]) -> Value {
-    match v {
-        Value::Ref(n) => Value::Ref(new_id[*n as usize]),
-        Value::List(l) => list(l.iter().map(|p| renumber(&p.value, new_id)).collect()),
-        Value::Typed(t, p) => {
-            Value::Typed(t.clone(), Box::new(Param::new(renumber(&p.value, new_id))))
-        }
-        other => other.clone(),
-    }
+    out.push(')');
 }
 
 // ---------------------------------------------------------------- values
