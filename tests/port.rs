@@ -48,7 +48,9 @@ fn demo_to_siemens_and_back_verifies() {
     let siemens = std::fs::read_to_string(&mpf).unwrap();
     assert!(siemens.contains("MCALL CYCLE81(2,2,0,-10)"), "{siemens}");
     assert!(
-        siemens.contains("MCALL CYCLE83(2,2,0,-20,,,5,0,,,1,1,,,,,0.254)"),
+        // G98 after G99 G81 without G80: back to the initial level Z25,
+        // the Z when cycle mode began.
+        siemens.contains("MCALL CYCLE83(25,2,0,-20,,,5,0,,,1,1,,,,,0.254)"),
         "{siemens}"
     );
     // The explicit moves are the same statements in Siemens form.
