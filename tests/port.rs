@@ -73,7 +73,11 @@ fn demo_to_siemens_and_back_verifies() {
     assert!(err.contains("verify: OK"), "{err}");
     let fanuc = std::fs::read_to_string(&back).unwrap();
     assert!(fanuc.contains("G99 G81 X10. Y10. Z-10. R2."), "{fanuc}");
-    assert!(fanuc.contains("G99 G83 X50. Y40. Z-20. R2. Q5."), "{fanuc}");
+    // RTP 25 above R: a G98 cycle from Z25.
+    assert!(
+        fanuc.contains("G0 Z25.\nG98 G83 X50. Y40. Z-20. R2. Q5."),
+        "{fanuc}"
+    );
     assert!(fanuc.contains("G80"), "{fanuc}");
 }
 
