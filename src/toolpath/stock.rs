@@ -26,6 +26,16 @@ impl Stock {
             self.corner[2] + self.size[2],
         ]
     }
+
+    /// The top face's Z.
+    pub fn top(&self) -> f64 {
+        self.corner[2] + self.size[2]
+    }
+
+    /// Reads `LxWxH[+X+Y+Z]`; the error says what is wrong.
+    pub fn parse(text: &str) -> Result<Stock, String> {
+        text.parse()
+    }
 }
 
 impl std::str::FromStr for Stock {
