@@ -799,3 +799,37 @@ fn toolpath_features_round_trip_through_part21() {
     assert_eq!(q.operations[0].toolpath, p.operations[0].toolpath);
     assert_eq!(q.operations[0].kind, p.operations[0].kind);
 }
+
+/// The Part 21 that `cncc stepnc --cc2` writes for the test part, as a new
+/// user would ask for it (tool table, stock, mm machine units): planar
+/// face (bidirectional), through holes (drilling), a rectangular pocket
+/// (contour-parallel rough in layers + finish with allowances), a peck
+/// hole (multistep drilling, conical bottom) and a slot (centre milling).
+#[test]
+fn cli_part21_snapshot() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/programs/raise2");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_cncc"))
+        .args([
+            "stepnc",
+            "--cc2",
+            "--machine-units",
+            "mm",
+            "--stock",
+            "120x80x21+0+0-20",
+        ])
+        .arg("--tool-table")
+        .arg(dir.join("cc2part.tbl"))
+        .arg(dir.join("cc2part.nc"))
+        .output()
+        .expect("cncc runs");
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    // The header's time stamp and file name vary: the data section is compared.
+    let data = &text[text.find("DATA;").expect("a DATA section")..];
+    insta::assert_snapshot!("cc2part_part21", data);
+}

@@ -177,7 +177,11 @@ fn feature(f: &Feature) -> String {
             f.id,
             n(f.depth.position.location.xyz[2])
         ),
-        other => format!("{:?} {at}", std::mem::discriminant(other)),
+        other => format!(
+            "{:?} {} at {at} depth {depth}",
+            f.id,
+            super::cc2::listing::kind(other)
+        ),
     }
 }
 

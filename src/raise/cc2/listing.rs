@@ -102,7 +102,8 @@ fn path(t: &TravelPath) -> String {
     }
 }
 
-fn kind(k: &FeatureKind) -> String {
+/// A feature kind in a few words (`closed pocket rectangle 40 x 30 ...`).
+pub fn kind(k: &FeatureKind) -> String {
     match k {
         FeatureKind::PlanarFace {
             course_of_travel,
