@@ -167,9 +167,10 @@ fn feature(f: &Feature) -> String {
             diameter, bottom, ..
         } => {
             format!(
-                "ROUND_HOLE {:?} at {at} diameter {} depth {depth} bottom {bottom:?}",
+                "ROUND_HOLE {:?} at {at} diameter {} depth {depth} bottom {}",
                 f.id,
-                n(diameter.nominal)
+                n(diameter.nominal),
+                super::cc2::listing::hole_bottom(bottom)
             )
         }
         FeatureKind::ToolpathFeature => format!(

@@ -56,7 +56,8 @@ fn feature(out: &mut String, f: &Feature) {
     );
 }
 
-fn hole_bottom(b: &HoleBottom) -> String {
+/// A hole bottom in a word or two (`through`, `conical 118°`).
+pub fn hole_bottom(b: &HoleBottom) -> String {
     match b {
         HoleBottom::Through => "through".into(),
         HoleBottom::Flat => "flat".into(),
