@@ -35,10 +35,12 @@ use super::{decimal, follow_block};
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec, Meaning};
 use crate::ir::{
-    Block, CannedCycle, CompSide, CycleDef, CycleKind, CycleRunKind, DwellUnit, Motion, MotionKind,
-    Program, QParam, Stmt, StmtKind, Value,
+    Block, CannedCycle, CompSide, CycleDef, CycleKind, CycleRunKind, DwellUnit, FeedMode, Motion,
+    MotionKind, Program, QParam, Stmt, StmtKind, Value,
 };
 use crate::span::Span;
+
+mod values;
 
 /// The target's Q-parameter cycle of `kind` (`drill`, `peck`).
 pub(super) fn q_cycle<'a>(to: &'a DialectSpec, kind: &str) -> Option<&'a crate::dialect::CycleSig> {
@@ -49,6 +51,12 @@ pub(super) fn q_cycle<'a>(to: &'a DialectSpec, kind: &str) -> Option<&'a crate::
                 .iter()
                 .all(|q| c.param_index(q).is_some())
     })
+}
+
+/// Whether this pass maps the word-address cycle `kind` (to_word hands
+/// named cycles over only for these).
+pub(super) fn maps(kind: CycleKind) -> bool {
+    values::target(kind).is_some()
 }
 
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
@@ -62,6 +70,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         active: None,
         last_def: None,
         initial: None,
+        per_rev: false,
         diags,
     };
     let blocks = std::mem::take(&mut p.blocks);
@@ -81,6 +90,8 @@ struct Pass<'a> {
     last_def: Option<CycleDef>,
     /// The Z when cycle mode began (the G98 level).
     initial: Option<Value>,
+    /// Feed per revolution (G95) in force.
+    per_rev: bool,
     diags: &'a mut Vec<Diagnostic>,
 }
 
@@ -93,6 +104,9 @@ impl Pass<'_> {
         for s in &b.stmts {
             if !matches!(s.kind, StmtKind::Cycle(_) | StmtKind::Motion(_)) {
                 self.modal.see(s);
+            }
+            if let StmtKind::FeedMode(m) = &s.kind {
+                self.per_rev = *m == FeedMode::PerRevolution;
             }
         }
         let mut cur = Vec::new();
@@ -196,20 +210,16 @@ impl Pass<'_> {
     /// The cycle definition for `c` (words left out come from the cycle in force).
     fn define(&mut self, c: &CannedCycle, span: Span) -> Option<CycleDef> {
         let g = Meaning::Cycle(c.kind).name();
-        let kind = match c.kind {
-            CycleKind::Drill | CycleKind::DrillDwell => "drill",
-            CycleKind::Peck | CycleKind::ChipBreak => "peck",
-            _ => {
-                self.diags.push(
-                    Diagnostic::new(
-                        Code::PortCycle,
-                        format!("`{g}` has no Heidenhain-style cycle mapping in the port yet"),
-                    )
-                    .primary(span, "this cycle")
-                    .help("use --expand-cycles to write the moves it makes"),
-                );
-                return None;
-            }
+        let Some((kind, name)) = values::target(c.kind) else {
+            self.diags.push(
+                Diagnostic::new(
+                    Code::PortCycle,
+                    format!("`{g}` has no Heidenhain-style cycle mapping in the port yet"),
+                )
+                .primary(span, "this cycle")
+                .help("use --expand-cycles to write the moves it makes"),
+            );
+            return None;
         };
         if !self.modal.absolute || c.repeat.is_some() {
             self.refuse(
@@ -245,23 +255,28 @@ impl Pass<'_> {
         };
         let feed = self.num(self.modal.feed.clone().as_ref(), span, "feed")?;
         let sig = q_cycle(self.to, kind)?;
-        let mut vals: Vec<(&str, f64)> = vec![
-            ("Q200", 0.0),
-            ("Q201", z - r),
-            ("Q206", feed),
-            ("Q210", 0.0),
-            ("Q203", r),
-            ("Q204", rtp - r),
-            ("Q211", 0.0),
-        ];
+        let levels = values::Levels { r, z, rtp, feed };
+        let mut vals = values::common(&levels);
         match c.kind {
             CycleKind::Drill => vals.push(("Q202", (z - r).abs())),
             CycleKind::DrillDwell => {
                 vals.push(("Q202", (z - r).abs()));
                 let p = self.num(dwell.as_ref(), span, "dwell P")?;
-                vals[6].1 = p * self.dwell_scale();
+                values::set(&mut vals, "Q211", p * self.dwell_scale());
             }
-            _ => {
+            CycleKind::Tap | CycleKind::TapLeft => {
+                let pitch = self.pitch(feed, span)?;
+                let hand = if c.kind == CycleKind::Tap { 1.0 } else { -1.0 };
+                vals.push(("Q239", hand * pitch));
+            }
+            CycleKind::BoreFeedOut | CycleKind::BoreDwellFeedOut => {
+                vals.push(("Q208", feed));
+                if c.kind == CycleKind::BoreDwellFeedOut {
+                    let p = self.num(dwell.as_ref(), span, "dwell P")?;
+                    values::set(&mut vals, "Q211", p * self.dwell_scale());
+                }
+            }
+            CycleKind::Peck | CycleKind::ChipBreak => {
                 let q = self.num(q.as_ref(), span, "peck Q")?;
                 let chip = c.kind == CycleKind::ChipBreak;
                 vals.extend([
@@ -273,6 +288,10 @@ impl Pass<'_> {
                     ("Q256", self.modal.peck_clearance()),
                 ]);
             }
+            CycleKind::BoreStopRapidOut
+            | CycleKind::BackBore
+            | CycleKind::BoreManual
+            | CycleKind::FineBore => return None,
         }
         let mut params = Vec::new();
         for ps in &sig.params {
@@ -280,7 +299,7 @@ impl Pass<'_> {
             params.push(QParam {
                 q: ps.name[1..].parse().ok()?,
                 value: Value::Number(decimal(v)),
-                label: Some(label(&ps.name).to_string()),
+                label: Some(values::label(&ps.name).to_string()),
                 span,
             });
         }
@@ -295,14 +314,23 @@ impl Pass<'_> {
         self.modal.z = Some(Value::Number(decimal(rtp)));
         Some(CycleDef {
             number: sig.name.parse().ok()?,
-            name: if kind == "drill" {
-                "DRILLING"
-            } else {
-                "UNIVERSAL DRILLING"
-            }
-            .into(),
+            name: name.into(),
             params,
         })
+    }
+
+    /// The thread pitch of a tapping cycle: F under feed per revolution,
+    /// F / S under feed per minute.
+    fn pitch(&mut self, feed: f64, span: Span) -> Option<f64> {
+        if self.per_rev {
+            return Some(feed.abs());
+        }
+        let s = self.num(self.modal.speed.clone().as_ref(), span, "spindle speed S")?;
+        if s == 0.0 {
+            self.refuse(Code::PortRunTimeValue, span, "tapping with spindle speed 0");
+            return None;
+        }
+        Some((feed / s).abs())
     }
 
     /// Seconds per unit of the source's dwell word P.
