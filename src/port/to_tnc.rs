@@ -1,8 +1,8 @@
-//! Word-address drilling cycles to Heidenhain cycle definitions, for a
+//! Word-address drilling, tapping and boring cycles to Heidenhain cycle definitions, for a
 //! target whose cycle table gives drilling as Q-parameter cycles (a
 //! `drill` cycle with Q200/Q201/Q203/Q204, `dialects/heidenhain.xml`) and
 //! has no code for the G8x. Runs after [`super::to_word`], so Siemens
-//! `CYCLE81/82/83` reach it as G81/G82/G83.
+//! `CYCLE81/82/83/84/85/86/89` reach it as G8x.
 //!
 //! `G98|G99 G8x X Y Z R Q P F` becomes `CYCL DEF 200|203 ...` (written
 //! again only when a parameter changes) and `L X Y R0 FMAX M99` per hole
@@ -26,8 +26,18 @@
 //!   and Q256 = the back-off (0.254 mm / 0.010 in, LinuxCNC's G73 value;
 //!   Fanuc's is machine parameter 5114 [?]).
 //!
-//! R, Z, the initial level and P must be numbers known here; other
-//! cycles (tapping, boring) have no mapping yet: E0610.
+//! * G84/G74 → 207 RIGID TAPPING NEW with Q239 = the pitch: F / S under
+//!   feed per minute, F under G95; positive right hand (G84), negative
+//!   left hand (G74).
+//! * G85 → 201 REAMING with Q208 = Q206 (feed out), Q211 = 0; G89 → 201
+//!   with Q211 = P.
+//! * G86 → 202 BORING with Q211 = P, Q214 = 0 (no disengaging move),
+//!   Q336 = 0, Q208 = 0 [?: 0 may retract at the plunging feed on the
+//!   control; the interpreter retracts at rapid, as G86 does]. 202 stops
+//!   the spindle oriented where G86 stops it free; the moves are the same.
+//!
+//! R, Z, the initial level, P and S (tapping) must be numbers known here;
+//! other cycles (G76, G87, G88) have no mapping: E0610.
 
 use super::levels::Modal;
 use super::tnc_labels::label;
@@ -288,10 +298,12 @@ impl Pass<'_> {
                     ("Q256", self.modal.peck_clearance()),
                 ]);
             }
-            CycleKind::BoreStopRapidOut
-            | CycleKind::BackBore
-            | CycleKind::BoreManual
-            | CycleKind::FineBore => return None,
+            CycleKind::BoreStopRapidOut => {
+                let p = self.num(dwell.as_ref(), span, "dwell P")?;
+                values::set(&mut vals, "Q211", p * self.dwell_scale());
+                vals.extend([("Q208", 0.0), ("Q214", 0.0), ("Q336", 0.0)]);
+            }
+            CycleKind::BackBore | CycleKind::BoreManual | CycleKind::FineBore => return None,
         }
         let mut params = Vec::new();
         for ps in &sig.params {

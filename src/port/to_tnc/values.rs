@@ -24,12 +24,8 @@ pub(super) fn target(kind: CycleKind) -> Option<(&'static str, &'static str)> {
         CycleKind::Peck | CycleKind::ChipBreak => ("peck", "UNIVERSAL DRILLING"),
         CycleKind::Tap | CycleKind::TapLeft => ("tap", "TAPPING NEW"),
         CycleKind::BoreFeedOut | CycleKind::BoreDwellFeedOut => ("bore-feed-out", "REAMING"),
-        // G86 stops the spindle and rapids out where it is; 202 orients the
-        // spindle, disengages sideways and the interpreter runs it so.
-        CycleKind::BoreStopRapidOut
-        | CycleKind::BackBore
-        | CycleKind::BoreManual
-        | CycleKind::FineBore => return None,
+        CycleKind::BoreStopRapidOut => ("fine-bore", "BORING"),
+        CycleKind::BackBore | CycleKind::BoreManual | CycleKind::FineBore => return None,
     })
 }
 
