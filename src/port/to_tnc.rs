@@ -45,8 +45,8 @@ use super::{decimal, follow_block};
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec, Meaning};
 use crate::ir::{
-    Block, CannedCycle, CompSide, CycleDef, CycleKind, CycleRunKind, DwellUnit, FeedMode, Motion,
-    MotionKind, Program, QParam, Stmt, StmtKind, Value,
+    Block, CannedCycle, CompSide, CycleDef, CycleKind, CycleRunKind, FeedMode, Motion, MotionKind,
+    Program, QParam, Stmt, StmtKind, Value,
 };
 use crate::span::Span;
 
@@ -329,33 +329,5 @@ impl Pass<'_> {
             name: name.into(),
             params,
         })
-    }
-
-    /// The thread pitch of a tapping cycle: F under feed per revolution,
-    /// F / S under feed per minute.
-    fn pitch(&mut self, feed: f64, span: Span) -> Option<f64> {
-        if self.per_rev {
-            return Some(feed.abs());
-        }
-        let s = self.num(self.modal.speed.clone().as_ref(), span, "spindle speed S")?;
-        if s == 0.0 {
-            self.refuse(Code::PortRunTimeValue, span, "tapping with spindle speed 0");
-            return None;
-        }
-        Some((feed / s).abs())
-    }
-
-    /// Seconds per unit of the source's dwell word P.
-    fn dwell_scale(&self) -> f64 {
-        let ms = self.from.code_for(Meaning::Dwell).is_some_and(|c| {
-            c.dwell_units
-                .iter()
-                .any(|(l, u)| *l == 'P' && *u == DwellUnit::Milliseconds)
-        });
-        if ms {
-            0.001
-        } else {
-            1.0
-        }
     }
 }

@@ -2,7 +2,11 @@
 //! becomes (see [`super`] for the mapping and its reasons): which cycle
 //! kind of the target's table, its name, and the values by Q number.
 
-use crate::ir::CycleKind;
+use super::Pass;
+use crate::diag::Code;
+use crate::dialect::Meaning;
+use crate::ir::{CycleKind, DwellUnit};
+use crate::span::Span;
 
 /// The levels and feed every mapped cycle shares.
 pub(super) struct Levels {
@@ -61,5 +65,35 @@ pub(super) fn label(q: &str) -> &'static str {
             _ => "",
         },
         l => l,
+    }
+}
+
+impl Pass<'_> {
+    /// The thread pitch of a tapping cycle: F under feed per revolution,
+    /// F / S under feed per minute.
+    pub(super) fn pitch(&mut self, feed: f64, span: Span) -> Option<f64> {
+        if self.per_rev {
+            return Some(feed.abs());
+        }
+        let s = self.num(self.modal.speed.clone().as_ref(), span, "spindle speed S")?;
+        if s == 0.0 {
+            self.refuse(Code::PortRunTimeValue, span, "tapping with spindle speed 0");
+            return None;
+        }
+        Some((feed / s).abs())
+    }
+
+    /// Seconds per unit of the source's dwell word P.
+    pub(super) fn dwell_scale(&self) -> f64 {
+        let ms = self.from.code_for(Meaning::Dwell).is_some_and(|c| {
+            c.dwell_units
+                .iter()
+                .any(|(l, u)| *l == 'P' && *u == DwellUnit::Milliseconds)
+        });
+        if ms {
+            0.001
+        } else {
+            1.0
+        }
     }
 }
