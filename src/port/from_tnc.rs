@@ -3,7 +3,7 @@
 //! [`super::to_named`], so a Siemens target gets `MCALL CYCLE8x` from the
 //! G8x made here. The reverse of [`super::to_tnc`]:
 //!
-//! * `CYCL DEF 200|203` is remembered; each call (`L X Y .. M99`,
+//! * `CYCL DEF 200|201|203` is remembered; each call (`L X Y .. M99`,
 //!   `CYCL CALL`, `CYCL CALL POS X Y`) drills one hole: the first call
 //!   after the definition (or after any other block) is
 //!   `G98|G99 G8x X Y Z R [Q] [P] F`, the next calls `X Y`, and `G80`
@@ -16,7 +16,8 @@
 //! * 200: Q211 > 0 → G82 P (in the target's dwell unit); Q202 less than
 //!   the depth → G83 Q = Q202; else G81. 203: Q213 = 0 → G83 Q = Q202;
 //!   Q213 > 0 → G73 Q = Q202 (the back-off Q256 is the control's own in
-//!   the target [?]).
+//!   the target [?]). 201: Q211 = 0 → G85, Q211 > 0 → G89 P; its
+//!   retraction feed Q208 must be 0 or Q206 (G85/G89 feed out at F).
 //! * No equivalent (E0610): a dwell at the top (Q210), a decrement
 //!   (Q212), a dwell together with pecking, 203 with a dwell, the other
 //!   numbered cycles, `CYCL CALL PAT` and `M89` calls.
@@ -238,7 +239,7 @@ impl Pass<'_> {
     fn map(&mut self, d: &CycleDef, span: Span) -> Result<Mapped, String> {
         let q = |n: u32| d.param(n).and_then(Value::number).map(|v| v.to_f64());
         let need = |n: u32| q(n).ok_or(format!("Q{n} is not a number known here"));
-        if !matches!(d.number, 200 | 203) {
+        if !matches!(d.number, 200 | 201 | 203) {
             return Err(format!(
                 "cycle {} {} has no canned-cycle equivalent",
                 d.number, d.name
@@ -257,7 +258,12 @@ impl Pass<'_> {
         if pecking && q(212).unwrap_or(0.0) != 0.0 {
             return Err("pecking with a decrement (Q212)".into());
         }
+        if d.number == 201 && !matches!(q(208), Some(f) if f == 0.0 || f == feed) {
+            return Err("reaming with a retraction feed Q208 other than Q206".into());
+        }
         let kind = match (d.number, pecking, dwell > 0.0) {
+            (201, _, true) => CycleKind::BoreDwellFeedOut,
+            (201, _, false) => CycleKind::BoreFeedOut,
             (203, _, _) if q(213).unwrap_or(0.0) > 0.0 => CycleKind::ChipBreak,
             (_, true, _) => CycleKind::Peck,
             (_, false, true) => CycleKind::DrillDwell,

@@ -1,8 +1,8 @@
-//! Word-address drilling cycles to Heidenhain cycle definitions, for a
+//! Word-address drilling, tapping and boring cycles to Heidenhain cycle definitions, for a
 //! target whose cycle table gives drilling as Q-parameter cycles (a
 //! `drill` cycle with Q200/Q201/Q203/Q204, `dialects/heidenhain.xml`) and
 //! has no code for the G8x. Runs after [`super::to_word`], so Siemens
-//! `CYCLE81/82/83` reach it as G81/G82/G83.
+//! `CYCLE81/82/83/84/85/86/89` reach it as G8x.
 //!
 //! `G98|G99 G8x X Y Z R Q P F` becomes `CYCL DEF 200|203 ...` (written
 //! again only when a parameter changes) and `L X Y R0 FMAX M99` per hole
@@ -26,8 +26,18 @@
 //!   and Q256 = the back-off (0.254 mm / 0.010 in, LinuxCNC's G73 value;
 //!   Fanuc's is machine parameter 5114 [?]).
 //!
-//! R, Z, the initial level and P must be numbers known here; other
-//! cycles (tapping, boring) have no mapping yet: E0610.
+//! * G84/G74 → 207 RIGID TAPPING NEW with Q239 = the pitch: F / S under
+//!   feed per minute, F under G95; positive right hand (G84), negative
+//!   left hand (G74).
+//! * G85 → 201 REAMING with Q208 = Q206 (feed out), Q211 = 0; G89 → 201
+//!   with Q211 = P.
+//! * G86 → 202 BORING with Q211 = P, Q214 = 0 (no disengaging move),
+//!   Q336 = 0, Q208 = 0 [?: 0 may retract at the plunging feed on the
+//!   control; the interpreter retracts at rapid, as G86 does]. 202 stops
+//!   the spindle oriented where G86 stops it free; the moves are the same.
+//!
+//! R, Z, the initial level, P and S (tapping) must be numbers known here;
+//! other cycles (G76, G87, G88) have no mapping: E0610.
 
 use super::levels::Modal;
 use super::tnc_labels::label;
@@ -35,10 +45,12 @@ use super::{decimal, follow_block};
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec, Meaning};
 use crate::ir::{
-    Block, CannedCycle, CompSide, CycleDef, CycleKind, CycleRunKind, DwellUnit, Motion, MotionKind,
+    Block, CannedCycle, CompSide, CycleDef, CycleKind, CycleRunKind, FeedMode, Motion, MotionKind,
     Program, QParam, Stmt, StmtKind, Value,
 };
 use crate::span::Span;
+
+mod values;
 
 /// The target's Q-parameter cycle of `kind` (`drill`, `peck`).
 pub(super) fn q_cycle<'a>(to: &'a DialectSpec, kind: &str) -> Option<&'a crate::dialect::CycleSig> {
@@ -49,6 +61,12 @@ pub(super) fn q_cycle<'a>(to: &'a DialectSpec, kind: &str) -> Option<&'a crate::
                 .iter()
                 .all(|q| c.param_index(q).is_some())
     })
+}
+
+/// Whether this pass maps the word-address cycle `kind` (to_word hands
+/// named cycles over only for these).
+pub(super) fn maps(kind: CycleKind) -> bool {
+    values::target(kind).is_some()
 }
 
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
@@ -62,6 +80,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         active: None,
         last_def: None,
         initial: None,
+        per_rev: false,
         diags,
     };
     let blocks = std::mem::take(&mut p.blocks);
@@ -81,6 +100,8 @@ struct Pass<'a> {
     last_def: Option<CycleDef>,
     /// The Z when cycle mode began (the G98 level).
     initial: Option<Value>,
+    /// Feed per revolution (G95) in force.
+    per_rev: bool,
     diags: &'a mut Vec<Diagnostic>,
 }
 
@@ -93,6 +114,9 @@ impl Pass<'_> {
         for s in &b.stmts {
             if !matches!(s.kind, StmtKind::Cycle(_) | StmtKind::Motion(_)) {
                 self.modal.see(s);
+            }
+            if let StmtKind::FeedMode(m) = &s.kind {
+                self.per_rev = *m == FeedMode::PerRevolution;
             }
         }
         let mut cur = Vec::new();
@@ -196,20 +220,16 @@ impl Pass<'_> {
     /// The cycle definition for `c` (words left out come from the cycle in force).
     fn define(&mut self, c: &CannedCycle, span: Span) -> Option<CycleDef> {
         let g = Meaning::Cycle(c.kind).name();
-        let kind = match c.kind {
-            CycleKind::Drill | CycleKind::DrillDwell => "drill",
-            CycleKind::Peck | CycleKind::ChipBreak => "peck",
-            _ => {
-                self.diags.push(
-                    Diagnostic::new(
-                        Code::PortCycle,
-                        format!("`{g}` has no Heidenhain-style cycle mapping in the port yet"),
-                    )
-                    .primary(span, "this cycle")
-                    .help("use --expand-cycles to write the moves it makes"),
-                );
-                return None;
-            }
+        let Some((kind, name)) = values::target(c.kind) else {
+            self.diags.push(
+                Diagnostic::new(
+                    Code::PortCycle,
+                    format!("`{g}` has no Heidenhain-style cycle mapping in the port yet"),
+                )
+                .primary(span, "this cycle")
+                .help("use --expand-cycles to write the moves it makes"),
+            );
+            return None;
         };
         if !self.modal.absolute || c.repeat.is_some() {
             self.refuse(
@@ -245,23 +265,28 @@ impl Pass<'_> {
         };
         let feed = self.num(self.modal.feed.clone().as_ref(), span, "feed")?;
         let sig = q_cycle(self.to, kind)?;
-        let mut vals: Vec<(&str, f64)> = vec![
-            ("Q200", 0.0),
-            ("Q201", z - r),
-            ("Q206", feed),
-            ("Q210", 0.0),
-            ("Q203", r),
-            ("Q204", rtp - r),
-            ("Q211", 0.0),
-        ];
+        let levels = values::Levels { r, z, rtp, feed };
+        let mut vals = values::common(&levels);
         match c.kind {
             CycleKind::Drill => vals.push(("Q202", (z - r).abs())),
             CycleKind::DrillDwell => {
                 vals.push(("Q202", (z - r).abs()));
                 let p = self.num(dwell.as_ref(), span, "dwell P")?;
-                vals[6].1 = p * self.dwell_scale();
+                values::set(&mut vals, "Q211", p * self.dwell_scale());
             }
-            _ => {
+            CycleKind::Tap | CycleKind::TapLeft => {
+                let pitch = self.pitch(feed, span)?;
+                let hand = if c.kind == CycleKind::Tap { 1.0 } else { -1.0 };
+                vals.push(("Q239", hand * pitch));
+            }
+            CycleKind::BoreFeedOut | CycleKind::BoreDwellFeedOut => {
+                vals.push(("Q208", feed));
+                if c.kind == CycleKind::BoreDwellFeedOut {
+                    let p = self.num(dwell.as_ref(), span, "dwell P")?;
+                    values::set(&mut vals, "Q211", p * self.dwell_scale());
+                }
+            }
+            CycleKind::Peck | CycleKind::ChipBreak => {
                 let q = self.num(q.as_ref(), span, "peck Q")?;
                 let chip = c.kind == CycleKind::ChipBreak;
                 vals.extend([
@@ -273,6 +298,12 @@ impl Pass<'_> {
                     ("Q256", self.modal.peck_clearance()),
                 ]);
             }
+            CycleKind::BoreStopRapidOut => {
+                let p = self.num(dwell.as_ref(), span, "dwell P")?;
+                values::set(&mut vals, "Q211", p * self.dwell_scale());
+                vals.extend([("Q208", 0.0), ("Q214", 0.0), ("Q336", 0.0)]);
+            }
+            CycleKind::BackBore | CycleKind::BoreManual | CycleKind::FineBore => return None,
         }
         let mut params = Vec::new();
         for ps in &sig.params {
@@ -280,7 +311,7 @@ impl Pass<'_> {
             params.push(QParam {
                 q: ps.name[1..].parse().ok()?,
                 value: Value::Number(decimal(v)),
-                label: Some(label(&ps.name).to_string()),
+                label: Some(values::label(&ps.name).to_string()),
                 span,
             });
         }
@@ -295,27 +326,8 @@ impl Pass<'_> {
         self.modal.z = Some(Value::Number(decimal(rtp)));
         Some(CycleDef {
             number: sig.name.parse().ok()?,
-            name: if kind == "drill" {
-                "DRILLING"
-            } else {
-                "UNIVERSAL DRILLING"
-            }
-            .into(),
+            name: name.into(),
             params,
         })
-    }
-
-    /// Seconds per unit of the source's dwell word P.
-    fn dwell_scale(&self) -> f64 {
-        let ms = self.from.code_for(Meaning::Dwell).is_some_and(|c| {
-            c.dwell_units
-                .iter()
-                .any(|(l, u)| *l == 'P' && *u == DwellUnit::Milliseconds)
-        });
-        if ms {
-            0.001
-        } else {
-            1.0
-        }
     }
 }

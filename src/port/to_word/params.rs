@@ -86,12 +86,9 @@ impl Pass<'_> {
             _ => CycleKind::BoreDwellFeedOut,
         };
         // A target with Q-parameter drilling cycles takes the G8x on to
-        // `to_tnc` (drilling and pecking only; it refuses the rest).
+        // `to_tnc` (the kinds it maps; it refuses the rest).
         let tnc = super::super::to_tnc::q_cycle(self.to, "drill").is_some()
-            && matches!(
-                kind,
-                CycleKind::Drill | CycleKind::DrillDwell | CycleKind::Peck | CycleKind::ChipBreak
-            );
+            && super::super::to_tnc::maps(kind);
         if self.to.code_for(Meaning::Cycle(kind)).is_none() && !tnc {
             self.refuse(
                 span,

@@ -1,1 +1,1 @@
-port: CYCLE85/CYCLE89 to CYCL DEF 201/202 not mapped yet (E0610); Klartext has the cycles
+port: CYCLE85 with its own feeds FFR/RFF is refused by to_word (E0610: G85 feeds at F) before to_tnc, though CYCL DEF 201 has Q206/Q208 for them; CYCLE85/CYCLE89 without FFR/RFF map to 201

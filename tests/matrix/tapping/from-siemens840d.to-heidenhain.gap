@@ -1,1 +1,0 @@
-port: CYCLE84 to CYCL DEF 207 not mapped yet (E0610); Klartext has the cycle
