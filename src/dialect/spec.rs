@@ -395,6 +395,12 @@ impl DialectSpec {
             .map(|f| f.name.as_str())
     }
 
+    /// Is `dialect` this dialect's id or one of its aliases (so text kept
+    /// verbatim in that dialect may be written back here)?
+    pub fn answers_to(&self, dialect: &str) -> bool {
+        self.id == dialect || self.aliases.iter().any(|a| a == dialect)
+    }
+
     pub fn is_command(&self, name: &str) -> bool {
         self.commands.iter().any(|c| c.eq_ignore_ascii_case(name))
     }

@@ -317,7 +317,7 @@ fn raw(
     words: &mut Vec<String>,
 ) {
     let spec = w.spec;
-    if spec.id == dialect || spec.aliases.iter().any(|a| a == dialect) {
+    if spec.answers_to(dialect) {
         words.push(text.to_string());
         return;
     }

@@ -116,7 +116,7 @@ pub(super) fn other(w: &mut Writer<'_>, out: &mut Out, s: &Stmt) {
             }
             Some(l)
         }
-        K::Raw { dialect, text } if dialect == "heidenhain" => Some(text.clone()),
+        K::Raw { dialect, text } if w.spec.answers_to(dialect) => Some(text.clone()),
         K::Assign { var: v, value } if super::expr::is_angle(w, *value) => {
             super::expr::fn13(w, v, *value, span)
         }

@@ -113,3 +113,29 @@ mod tests {
         assert_eq!((t.feed, t.spindle), (Some(200.0), Some(-2000.0)));
     }
 }
+
+/// A milling operation on cut `m`, with the fields every milled feature
+/// fills the same way: the retract plane from the cut's moves above
+/// `top`, the tool, and the technology and machine functions of its
+/// cutting moves. `kind` says the rest.
+pub fn milled_operation(
+    r: &super::state::Raiser,
+    m: &super::level::MillCut,
+    id: String,
+    top: f64,
+    cuts: &[&Move],
+    kind: OperationKind,
+) -> Operation {
+    Operation {
+        id,
+        toolpath: None,
+        tool_direction: None,
+        retract_plane: super::strategy::retract_plane(&m.moves, top),
+        start_point: None,
+        tool: (r.tool)(m.tool),
+        technology: technology(cuts),
+        machine_functions: machine_functions(cuts),
+        overcut_length: None,
+        kind,
+    }
+}

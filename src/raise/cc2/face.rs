@@ -10,7 +10,7 @@
 //! PLANE_ROUGH_MILLING with `allowance_bottom` the Z difference. A face
 //! cut once is PLANE_FINISH_MILLING (as NIST's Example 1).
 
-use super::build::{direction, machine_functions, placement, plane, r6, technology};
+use super::build::{direction, milled_operation, placement, plane, r6};
 use super::level::{contains, grow, split, MillCut};
 use super::strategy::{approach, parallel, stroke_strategy, strokes, unit};
 use super::{Known, Raiser};
@@ -58,17 +58,13 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
     let steps = layer_steps(m, r.top.max(m.levels[0].z));
     let name = r.project.features[feature.index()].id.clone();
     let face_top = r.project.features[feature.index()].placement.location.xyz[2];
-    let op = Operation {
-        id: format!("FACE {name}"),
-        toolpath: None,
-        tool_direction: None,
-        retract_plane: super::strategy::retract_plane(&m.moves, face_top),
-        start_point: None,
-        tool: (r.tool)(m.tool),
-        technology: technology(&cuts),
-        machine_functions: machine_functions(&cuts),
-        overcut_length: None,
-        kind: OperationKind::PlaneMilling {
+    let op = milled_operation(
+        r,
+        m,
+        format!("FACE {name}"),
+        face_top,
+        &cuts,
+        OperationKind::PlaneMilling {
             finish: true,
             milling: MillingCommon {
                 approach: approach(&m.moves),
@@ -78,7 +74,7 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
             axial_cutting_depth: steps,
             allowance_bottom: None,
         },
-    };
+    );
     let id = r.add_operation(feature, op);
     r.name_passes(feature, "FACE");
     if let Some(Known::Face { ops, .. }) = r

@@ -22,7 +22,7 @@
 //! leaves the final size). A pocket whose wall leaves the stock is an
 //! open pocket or a step ([`super::open`]).
 
-use super::build::{machine_functions, placement, plane, point, r6, technology, tol};
+use super::build::{milled_operation, placement, plane, point, r6, tol};
 use super::face::layer_steps;
 use super::level::{bbox, contains, split, MillCut};
 use super::shape::{loop_shape, vertices, Shape};
@@ -219,17 +219,13 @@ pub fn pocket_op(r: &mut Raiser, m: &MillCut, rad: f64, feature: FeatureId) -> O
     let name = r.project.features[feature.index()].id.clone();
     let cuts: Vec<&Move> = m.levels.iter().flat_map(|l| l.moves.iter()).collect();
     let spindle = cuts.first().map_or(0.0, |c| c.spindle);
-    let op = Operation {
-        id: format!("MILL {name}"),
-        toolpath: None,
-        tool_direction: None,
-        retract_plane: super::strategy::retract_plane(&m.moves, top),
-        start_point: None,
-        tool: (r.tool)(m.tool),
-        technology: technology(&cuts),
-        machine_functions: machine_functions(&cuts),
-        overcut_length: None,
-        kind: OperationKind::BottomAndSideMilling {
+    let op = milled_operation(
+        r,
+        m,
+        format!("MILL {name}"),
+        top,
+        &cuts,
+        OperationKind::BottomAndSideMilling {
             finish: true,
             milling: MillingCommon {
                 approach: approach(&m.moves),
@@ -242,7 +238,7 @@ pub fn pocket_op(r: &mut Raiser, m: &MillCut, rad: f64, feature: FeatureId) -> O
             allowance_side: None,
             allowance_bottom: None,
         },
-    };
+    );
     let id = r.add_operation(feature, op);
     r.name_passes(feature, "MILL");
     id

@@ -16,11 +16,11 @@
 //! profile: the earlier operations become SIDE_ROUGH_MILLING with
 //! `allowance_side` the difference (as for pockets, [`super::pocket`]).
 
-use super::build::{direction, machine_functions, placement, plane, point, r6, technology, tol};
+use super::build::{direction, milled_operation, placement, plane, point, r6, tol};
 use super::face::layer_steps;
 use super::level::{contains, grow, split, MillCut};
 use super::shape::{is_ccw, loop_shape, Shape};
-use super::strategy::{approach, cutmode, retract_plane};
+use super::strategy::{approach, cutmode};
 use super::{Known, Raiser};
 use crate::stepnc::model::*;
 use crate::toolpath::Move;
@@ -80,17 +80,13 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
         }),
         cutmode: Some(cutmode(ccw, spindle, false)),
     };
-    let op = Operation {
-        id: format!("MILL {name}"),
-        toolpath: None,
-        tool_direction: None,
-        retract_plane: retract_plane(&m.moves, top),
-        start_point: None,
-        tool: (r.tool)(m.tool),
-        technology: technology(&cuts),
-        machine_functions: machine_functions(&cuts),
-        overcut_length: None,
-        kind: OperationKind::SideMilling {
+    let op = milled_operation(
+        r,
+        m,
+        format!("MILL {name}"),
+        top,
+        &cuts,
+        OperationKind::SideMilling {
             finish: true,
             milling: MillingCommon {
                 approach: approach(&m.moves),
@@ -101,7 +97,7 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
             radial_cutting_depth: None,
             allowance_side: None,
         },
-    };
+    );
     let id = r.add_operation(feature, op);
     r.name_passes(feature, "MILL");
     for k in r.known.iter_mut() {

@@ -18,10 +18,10 @@
 //! earlier operations become BOTTOM_AND_SIDE_ROUGH_MILLING with their
 //! allowances, the last one is the finishing one.
 
-use super::build::{direction, machine_functions, placement, plane, r6, technology, tol};
+use super::build::{direction, milled_operation, placement, plane, r6, tol};
 use super::face::layer_steps;
 use super::level::{split, MillCut};
-use super::strategy::{approach, retract_plane, stroke_strategy, unit};
+use super::strategy::{approach, stroke_strategy, unit};
 use super::{Known, Raiser};
 use crate::stepnc::model::*;
 use crate::toolpath::{Move, MoveKind};
@@ -120,17 +120,13 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
             base: StrategyBase::default(),
         }
     };
-    let op = Operation {
-        id: format!("MILL {name}"),
-        toolpath: None,
-        tool_direction: None,
-        retract_plane: retract_plane(&m.moves, top),
-        start_point: None,
-        tool: (r.tool)(m.tool),
-        technology: technology(&cuts),
-        machine_functions: machine_functions(&cuts),
-        overcut_length: None,
-        kind: OperationKind::BottomAndSideMilling {
+    let op = milled_operation(
+        r,
+        m,
+        format!("MILL {name}"),
+        top,
+        &cuts,
+        OperationKind::BottomAndSideMilling {
             finish: true,
             milling: MillingCommon {
                 approach: approach(&m.moves),
@@ -142,7 +138,7 @@ pub fn raise(r: &mut Raiser, m: &MillCut, rad: f64) -> bool {
             allowance_side: None,
             allowance_bottom: None,
         },
-    };
+    );
     let id = r.add_operation(feature, op);
     r.name_passes(feature, "MILL");
     for k in r.known.iter_mut() {

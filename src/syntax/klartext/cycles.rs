@@ -171,7 +171,7 @@ pub(super) fn kept(ctx: &mut Ctx<'_>, l: usize, r: usize) -> Item {
     );
     ctx.stmt(
         StmtKind::Raw {
-            dialect: "heidenhain".into(),
+            dialect: ctx.spec.id.clone(),
             text,
         },
         l,

@@ -113,7 +113,7 @@ fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said, radius_ok: bool)
         ("FMAX", None) => s.rapid = true,
         ("FAUTO", None) => s.items.push(ctx.stmt(
             StmtKind::Raw {
-                dialect: "heidenhain".into(),
+                dialect: ctx.spec.id.clone(),
                 text: "FAUTO".into(),
             },
             l,
