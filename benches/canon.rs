@@ -8,63 +8,18 @@
 //! Figures are printed, never asserted.
 //! `cncc check` (which runs the program too) is measured the same way.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::time::Instant;
+#[path = "support/mod.rs"]
+mod support;
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
+use std::path::Path;
+use support::{best_of, generate, measure, root, Run};
 
-fn generate(lines: u64, out: &Path) -> bool {
-    let gen = root().join("../shared/bench/gen_program.py");
-    if !gen.exists() {
-        eprintln!("note: ../shared/bench/gen_program.py is absent; benchmark skipped");
-        return false;
-    }
-    out.exists()
-        || Command::new("python3")
-            .arg(&gen)
-            .args(["--lines", &lines.to_string(), "-o"])
-            .arg(out)
-            .status()
-            .map(|s| s.success())
-            .unwrap_or(false)
-}
-
-/// Runs a command with its output discarded; seconds, peak RSS in MiB
-/// (from `/usr/bin/time -f %M`), exit code.
-fn measure(program: &Path, args: &[&std::ffi::OsStr]) -> Option<(f64, f64, i32)> {
-    let rss_file = std::env::temp_dir().join(format!("cncc-bench-rss-{}", std::process::id()));
-    let start = Instant::now();
-    let status = Command::new("/usr/bin/time")
-        .arg("-o")
-        .arg(&rss_file)
-        .args(["-f", "%M"])
-        .arg(program)
-        .args(args)
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status()
-        .ok()?;
-    let secs = start.elapsed().as_secs_f64();
-    let text = std::fs::read_to_string(&rss_file).ok()?;
-    let kb: f64 = text.lines().rev().find_map(|l| l.trim().parse().ok())?;
-    Some((secs, kb / 1024.0, status.code().unwrap_or(-1)))
-}
-
-/// The fastest of `n` runs (other work on the machine only slows a run
-/// down), with the largest peak memory seen.
-fn best_of(n: usize, program: &Path, args: &[&std::ffi::OsStr]) -> Option<(f64, f64, i32)> {
-    let runs: Vec<_> = (0..n).filter_map(|_| measure(program, args)).collect();
-    let secs = runs.iter().map(|r| r.0).fold(f64::INFINITY, f64::min);
-    let rss = runs.iter().map(|r| r.1).fold(0.0, f64::max);
-    let code = runs.iter().map(|r| r.2).find(|c| *c != 0).unwrap_or(0);
-    (!runs.is_empty()).then_some((secs, rss, code))
-}
-
-fn row(what: &str, mb: f64, m: Option<(f64, f64, i32)>) -> Option<f64> {
-    let (secs, rss, code) = m?;
+fn row(what: &str, mb: f64, m: Option<Run>) -> Option<f64> {
+    let Run {
+        secs,
+        peak_mib: rss,
+        exit: code,
+    } = m?;
     let note = if code == 0 {
         String::new()
     } else {
@@ -97,7 +52,7 @@ fn main() {
     );
     for (lines, name) in [(215_000u64, "cam-3MB.ngc"), (2_150_000, "cam-30MB.ngc")] {
         let path = dir.join(name);
-        if !generate(lines, &path) {
+        if !generate(lines, &[], &path) {
             return;
         }
         let mb = std::fs::metadata(&path)

@@ -7,53 +7,18 @@
 //! runs each command as a subprocess under `/usr/bin/time -f %M` and prints
 //! seconds, MB/s of input and peak resident memory. Printed, never asserted.
 
-use std::ffi::OsStr;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::time::Instant;
+#[path = "support/mod.rs"]
+mod support;
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
+use std::path::Path;
+use support::{generate, measure, root, Run};
 
-fn generate(lines: u64, out: &Path) -> bool {
-    let gen = root().join("../shared/bench/gen_program.py");
-    if !gen.exists() {
-        eprintln!("note: ../shared/bench/gen_program.py is absent; benchmark skipped");
-        return false;
-    }
-    out.exists()
-        || Command::new("python3")
-            .arg(&gen)
-            .args(["--lines", &lines.to_string(), "-o"])
-            .arg(out)
-            .status()
-            .map(|s| s.success())
-            .unwrap_or(false)
-}
-
-/// Seconds and peak RSS in MiB of one run, its output discarded.
-fn measure(program: &Path, args: &[&OsStr]) -> Option<(f64, f64)> {
-    let rss_file = std::env::temp_dir().join(format!("cncc-bench-rss-{}", std::process::id()));
-    let start = Instant::now();
-    Command::new("/usr/bin/time")
-        .arg("-o")
-        .arg(&rss_file)
-        .args(["-f", "%M"])
-        .arg(program)
-        .args(args)
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status()
-        .ok()?;
-    let secs = start.elapsed().as_secs_f64();
-    let text = std::fs::read_to_string(&rss_file).ok()?;
-    let kb: f64 = text.lines().rev().find_map(|l| l.trim().parse().ok())?;
-    Some((secs, kb / 1024.0))
-}
-
-fn row(what: &str, mb: f64, m: Option<(f64, f64)>) -> Option<f64> {
-    let (secs, rss) = m?;
+fn row(what: &str, mb: f64, m: Option<Run>) -> Option<f64> {
+    let Run {
+        secs,
+        peak_mib: rss,
+        ..
+    } = m?;
     println!(
         "{what:<36} {mb:>7.1} {secs:>8.2} {:>7.1} {rss:>12.1}",
         mb / secs
@@ -77,7 +42,7 @@ fn main() {
     );
     for (lines, name) in [(215_000u64, "cam-3MB.ngc"), (2_150_000, "cam-30MB.ngc")] {
         let path = dir.join(name);
-        if !generate(lines, &path) {
+        if !generate(lines, &[], &path) {
             return;
         }
         let mb = std::fs::metadata(&path).map_or(0.0, |m| m.len() as f64 / 1e6);

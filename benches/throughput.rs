@@ -14,27 +14,11 @@ use cncc::driver::check_stream;
 use cncc::span::FileId;
 use std::io::BufReader;
 use std::path::{Path, PathBuf};
-use std::time::Instant;
 
-fn generate(lines: u64, flags: &[&str], out: &Path) -> bool {
-    let gen = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/bench/gen_program.py");
-    if !gen.exists() {
-        eprintln!("note: ../shared/bench/gen_program.py is absent; benchmark skipped");
-        return false;
-    }
-    if out.exists() {
-        return true;
-    }
-    std::process::Command::new("python3")
-        .arg(&gen)
-        .args(["--lines", &lines.to_string()])
-        .args(flags)
-        .arg("-o")
-        .arg(out)
-        .status()
-        .map(|s| s.success())
-        .unwrap_or(false)
-}
+#[path = "support/mod.rs"]
+mod support;
+use std::time::Instant;
+use support::generate;
 
 /// Peak resident set size of this process, in MiB (Linux).
 fn peak_rss_mib() -> f64 {
