@@ -11,7 +11,7 @@ use super::frame::ProgFrame;
 use super::host::FramedHost;
 use super::milling;
 use crate::interp::host::MotionHost;
-use rec::Rec;
+use rec::{mill, Rec};
 
 fn close(a: [f64; 3], b: [f64; 3]) -> bool {
     a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-9)
@@ -85,20 +85,6 @@ fn framed_host_maps_moves_and_arcs() {
         assert_eq!(h.position(), [5.0, -5.0, 1.0, 0.0, 0.0, 0.0]);
     }
     insta::assert_snapshot!("framed_host", rec.text());
-}
-
-fn mill(name: &str, args: &[f64], radius: f64) -> String {
-    let mut rec = Rec::new();
-    rec.pos = [0.0, 0.0, 50.0, 0.0, 0.0, 0.0];
-    let a: Vec<Option<f64>> = args
-        .iter()
-        .map(|x| if x.is_nan() { None } else { Some(*x) })
-        .collect();
-    match milling::run(&mut rec, name, &a, radius) {
-        Ok(milling::Outcome::Done) => rec.text(),
-        Ok(milling::Outcome::NotExpanded(why)) => format!("{}\nnot expanded: {why}", rec.text()),
-        Err(d) => format!("{}\nerror {}: {}", rec.text(), d.code.code(), d.message),
-    }
 }
 
 #[test]

@@ -3,22 +3,7 @@
 //! and `milling/slots.rs` (there is no Siemens oracle); the snapshots were
 //! checked by hand against them (positions, depths, feeds, directions).
 
-use super::rec::Rec;
-use crate::interp::siemens::milling;
-
-fn mill(name: &str, args: &[f64], radius: f64) -> String {
-    let mut rec = Rec::new();
-    rec.pos = [0.0, 0.0, 50.0, 0.0, 0.0, 0.0];
-    let a: Vec<Option<f64>> = args
-        .iter()
-        .map(|x| if x.is_nan() { None } else { Some(*x) })
-        .collect();
-    match milling::run(&mut rec, name, &a, radius) {
-        Ok(milling::Outcome::Done) => rec.text(),
-        Ok(milling::Outcome::NotExpanded(why)) => format!("{}\nnot expanded: {why}", rec.text()),
-        Err(d) => format!("{}\nerror {}: {}", rec.text(), d.code.code(), d.message),
-    }
-}
+use super::rec::mill;
 
 #[test]
 fn pocket3_climb_with_base_allowance() {

@@ -3,6 +3,7 @@
 use crate::canon::{format_call, Canon, CanonPlane, CanonUnits, Pose};
 use crate::diag::Diagnostic;
 use crate::interp::host::{plane_axes, MotionHost, SpindleDir};
+use crate::interp::siemens::milling;
 
 pub struct Rec {
     pub pos: Pose,
@@ -83,5 +84,21 @@ impl MotionHost for Rec {
     }
     fn spindle_speed(&self) -> f64 {
         1000.0
+    }
+}
+
+/// Runs one milling cycle on a recording host starting at Z50 (NaN in
+/// `args` = an omitted parameter): the moves, then how it ended.
+pub fn mill(name: &str, args: &[f64], radius: f64) -> String {
+    let mut rec = Rec::new();
+    rec.pos = [0.0, 0.0, 50.0, 0.0, 0.0, 0.0];
+    let a: Vec<Option<f64>> = args
+        .iter()
+        .map(|x| if x.is_nan() { None } else { Some(*x) })
+        .collect();
+    match milling::run(&mut rec, name, &a, radius) {
+        Ok(milling::Outcome::Done) => rec.text(),
+        Ok(milling::Outcome::NotExpanded(why)) => format!("{}\nnot expanded: {why}", rec.text()),
+        Err(d) => format!("{}\nerror {}: {}", rec.text(), d.code.code(), d.message),
     }
 }
