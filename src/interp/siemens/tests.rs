@@ -9,7 +9,6 @@ mod rec;
 
 use super::frame::ProgFrame;
 use super::host::FramedHost;
-use super::milling;
 use crate::interp::host::MotionHost;
 use rec::{mill, Rec};
 
