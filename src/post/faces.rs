@@ -80,7 +80,11 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
             format!("the overlap {overlap} gives no usable stepover"),
         ));
     }
-    if w.post.has("face.j2") {
+    let turned = s.frame.angle_deg().abs() > 1e-9;
+    if w.post.has("face.j2") && !(turned && w.post.ignores("face.j2", "angle")) {
+        if passes_along_y && w.post.ignores("face.j2", "vari") {
+            w.not_carried("the pass direction along Y: the face cycle mills along X")?;
+        }
         if c.finish && !roughed {
             w.comment(
                 "nothing roughed before: the face is machined whole down to the depth plane",
@@ -110,7 +114,10 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
             .set("fald", w.fmt.len(bottom_allowance))
             .set("feed", w.fmt.feed(feed(s)?))
             .set("vari", (tens * 10 + units).to_string())
-            .set("fdp1", w.fmt.len(overlap * d));
+            .set("fdp1", w.fmt.len(overlap * d))
+            .set_derived("strategy", if bidirectional { "0" } else { "2" })
+            .set_derived("overlap_factor", w.fmt.plain(stepover / (d / 2.0), 4))
+            .set_derived("clear_inc", w.fmt.len(s.clear - s.top));
         return w.emit("face.j2", v);
     }
     // Explicit zigzag in a frame whose y axis is the pass direction.
