@@ -137,40 +137,13 @@ fn rebuild(it: &mut Interp<'_, '_>) {
     it.siemens.frame = f;
 }
 
-/// `PATTERN DEF`: the points of `POSn (X Y Z)` items [?: ROW, PAT, CIRC
-/// and FRAME patterns are kept but not expanded].
+/// `PATTERN DEF`: the points it gives (see [`super::pattern`]).
 pub fn pattern(
     it: &mut Interp<'_, '_>,
     items: &[PatternItem],
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    let mut pts = Vec::new();
-    for i in items {
-        if !i.name.starts_with("POS") {
-            return Err(it.error_at(
-                i.span,
-                Code::UnsupportedHere,
-                format!(
-                    "the pattern {} is not expanded yet (POS points are)",
-                    i.name
-                ),
-            ));
-        }
-        let mut p = [None; 3];
-        for w in &i.words {
-            let k = match w.name.as_str() {
-                "X" => 0,
-                "Y" => 1,
-                "Z" => 2,
-                _ => continue,
-            };
-            if let Some(v) = &w.value {
-                p[k] = Some(it.value(v, exprs)?);
-            }
-        }
-        pts.push(p);
-    }
-    it.heidenhain.pattern = pts;
+    it.heidenhain.pattern = super::pattern::points(it, items, exprs)?;
     Ok(())
 }
 
