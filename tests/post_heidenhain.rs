@@ -409,3 +409,82 @@ fn cc2part_raised_and_posted_back_gives_the_same_features() {
         }
     }
 }
+
+const PATTERNS: &str = "0 BEGIN PGM PAT MM
+1 TOOL DEF 1 L+50 R+2
+2 TOOL CALL 1 Z S1000
+3 L Z+50 R0 FMAX M3
+4 CYCL DEF 200 DRILLING Q200=+2 Q201=-5 Q206=+100 Q202=+5 Q210=+0 Q203=+0 Q204=+20 Q211=+0
+5 PATTERN DEF ~
+  POS1 (X+5 Y+5 Z+0) ~
+  ROW1 (X+10 Y+0 D+10 NUM3 ROT+90 Z-1) ~
+  PAT1 (X+50 Y+50 DX+10 DY+20 NUMX2 NUMY2 ROT+0 ROTX+0 ROTY+0 Z+0) ~
+  CIRC1 (X+100 Y+0 D+20 START+0 NUM4 Z+0) ~
+  PITCHCIRC1 (X+0 Y+100 D+40 START+90 STEP-90 NUM2 Z+0)
+6 CYCL CALL PAT F100
+7 END PGM PAT MM
+";
+
+/// The interpreter expands every PATTERN DEF form the post writes (and
+/// the full circle): the cycle runs at each point, the point's Z the
+/// surface.
+#[test]
+fn pattern_def_forms_run_at_their_points() {
+    let path = save("patterns.h", PATTERNS);
+    checks_and_runs(&path, "heidenhain");
+    let file = path.to_str().unwrap();
+    let o = common::cncc(&[
+        "canon",
+        "--dialect",
+        "heidenhain",
+        "--machine-units",
+        "mm",
+        file,
+    ]);
+    let bottoms: Vec<String> = common::stdout(&o)
+        .lines()
+        .filter(|l| l.starts_with("STRAIGHT_FEED("))
+        .map(|l| {
+            let v: Vec<f64> = l[14..l.len() - 1]
+                .split(", ")
+                .map(|x| x.parse().unwrap())
+                .collect();
+            format!("{} {} {}", v[0], v[1], v[2])
+        })
+        .collect();
+    assert_eq!(
+        bottoms,
+        [
+            "5 5 -5",
+            // ROW: three 10 apart along +Y, surface Z-1.
+            "10 0 -6",
+            "10 10 -6",
+            "10 20 -6",
+            // PAT: row by row.
+            "50 50 -5",
+            "60 50 -5",
+            "50 70 -5",
+            "60 70 -5",
+            // CIRC: four over the full circle from 0 degrees.
+            "110 0 -5",
+            "100 10 -5",
+            "90 0 -5",
+            "100 -10 -5",
+            // PITCHCIRC: from 90 degrees, 90 degrees clockwise.
+            "0 120 -5",
+            "20 100 -5",
+        ]
+    );
+    // A count out of range is an error at the item, not a long run.
+    let bad = save(
+        "pattern-bad.h",
+        &PATTERNS.replace("NUM3 ROT+90", "NUM99999999 ROT+90"),
+    );
+    let o = common::cncc(&["canon", "--dialect", "heidenhain", bad.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        common::stderr(&o).contains("NUM 99999999 in ROW1"),
+        "{}",
+        common::stderr(&o)
+    );
+}

@@ -105,11 +105,16 @@ pub(super) fn numbered(
             }
         }
         203 | 205 => {
-            let chip = def.number == 203 && g(213) > 0.0;
+            // 205 breaks chips after every Q257 (backing off Q256) [?: a
+            // full retract after each Q202 as well is not modelled, nor
+            // the Q212 decrement of either cycle].
+            let breaks_205 = def.number == 205 && g(257) > 0.0;
+            let chip = (def.number == 203 && g(213) > 0.0) || breaks_205;
+            let infeed = if breaks_205 { g(257) } else { g(202) }.abs();
             a.extend([
                 None,
-                Some(g(202).abs()),
-                Some(g(202).abs()),
+                Some(infeed),
+                Some(infeed),
                 q(211),
                 q(210),
                 None,
