@@ -488,3 +488,41 @@ fn pattern_def_forms_run_at_their_points() {
         common::stderr(&o)
     );
 }
+
+/// The STEP-NC samples that post (ex1.stp, furo.p21) post to Heidenhain
+/// from the command line, check clean and run; ex1.stp as the fixture.
+#[test]
+fn shared_samples_post_check_and_run() {
+    let Some(shared) = common::shared() else {
+        return;
+    };
+    for name in ["ex1.stp", "furo.p21"] {
+        let file = shared.join("stepnc-samples").join(name);
+        if !file.exists() {
+            eprintln!("note: {name} is absent; skipping");
+            continue;
+        }
+        let o = common::cncc(&["post", file.to_str().unwrap(), "--to", "heidenhain"]);
+        assert_eq!(o.status.code(), Some(0), "{name}: {}", common::stderr(&o));
+        let text = common::stdout(&o);
+        if name == "ex1.stp" {
+            assert_eq!(text, tnc(&fixture::ex1()));
+        }
+        checks_and_runs(&save(&format!("{name}.h"), &text), "heidenhain");
+    }
+}
+
+/// A face turned in the plane: 232 has no rotation, so the face is
+/// milled by explicit moves.
+#[test]
+fn a_turned_face_is_explicit_moves() {
+    let mut p = fixture::ex1();
+    p.features[0].placement.ref_direction = Some(Direction {
+        name: String::new(),
+        ratios: [0.6, 0.8, 0.0],
+    });
+    let text = tnc(&p);
+    assert!(!text.contains("CYCL DEF 232"));
+    assert!(text.contains("; explicit toolpath:"));
+    checks_and_runs(&save("turned-face.h", &text), "heidenhain");
+}
