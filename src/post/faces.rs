@@ -1,5 +1,6 @@
-//! A planar face: CYCLE71 where the target has it (`face.j2`), else
-//! explicit zigzag toolpaths. The face is the rectangle swept by the
+//! A planar face: CYCLE71 or CYCL DEF 232 where the target has it
+//! (`face.j2`; a cycle that cannot turn the face, as 232, only for a face
+//! along the axes), else explicit zigzag toolpaths. The face is the rectangle swept by the
 //! course of travel (a linear path, normally along the feature's y) over
 //! the removal boundary's length (a linear profile along its x), or the
 //! same turned a quarter: a course along x, the profile along y.
