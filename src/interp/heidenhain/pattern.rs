@@ -106,6 +106,14 @@ pub fn points(
             }
         }
     }
+    if out.iter().flatten().flatten().any(|v: &f64| !v.is_finite()) {
+        let span = items.first().map(|i| i.span).unwrap_or_default();
+        return Err(it.error_at(
+            span,
+            Code::DomainError,
+            "PATTERN DEF gives a point that is not a finite number",
+        ));
+    }
     Ok(out)
 }
 
