@@ -9,6 +9,7 @@
 //!   backs off rather than leaving the hole): one infeed to the depth with
 //!   a chip break after every step (Q257), backing off the retract
 //!   distance (Q256); a decreasing first depth is then not carried.
+//!
 //! Otherwise the even cycle, whose retract to the set-up clearance does
 //! not carry the retract distance. A comment says which was chosen.
 

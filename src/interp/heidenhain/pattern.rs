@@ -12,6 +12,7 @@
 //!   of diameter D about (X, Y), the first at START degrees.
 //! * `CIRCn`/`PITCHCIRCn` with `STEP`: the points STEP degrees apart [?:
 //!   newer manuals name the pitch circle PITCHCIRC].
+//!
 //! `FRAME` is not expanded.
 
 use super::super::{Interp, Stop};
