@@ -594,7 +594,9 @@ fn heidenhain_cycles_carry_the_features_and_check_clean() {
         .any(|x| x.starts_with("CYCL DEF 251 RECTANGULAR POCKET Q215=2")));
     assert!(l.contains(&"L X70 Y70 R0 FMAX M99"));
     assert!(l.contains(&"CYCL DEF 32.1 T0.01"));
-    assert!(l.contains(&"TOOL CALL 1 Z"));
+    // The tool is defined in the program and called with its speed.
+    assert!(l.contains(&"TOOL DEF 1 L80 R9"));
+    assert!(l.contains(&"TOOL CALL 1 Z S720"));
     let err = check_clean(&save("ex1.h", &p.text), "heidenhain");
     assert!(!err.contains("warning["), "{err}");
 }

@@ -1,5 +1,6 @@
-//! A planar face: CYCLE71 where the target has it (`face.j2`), else
-//! explicit zigzag toolpaths. The face is the rectangle swept by the
+//! A planar face: CYCLE71 or CYCL DEF 232 where the target has it
+//! (`face.j2`; a cycle that cannot turn the face, as 232, only for a face
+//! along the axes), else explicit zigzag toolpaths. The face is the rectangle swept by the
 //! course of travel (a linear path, normally along the feature's y) over
 //! the removal boundary's length (a linear profile along its x), or the
 //! same turned a quarter: a course along x, the profile along y.
@@ -80,7 +81,11 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
             format!("the overlap {overlap} gives no usable stepover"),
         ));
     }
-    if w.post.has("face.j2") {
+    let turned = s.frame.angle_deg().abs() > 1e-9;
+    if w.post.has("face.j2") && !(turned && w.post.ignores("face.j2", "angle")) {
+        if passes_along_y && w.post.ignores("face.j2", "vari") {
+            w.not_carried("the pass direction along Y: the face cycle mills along X")?;
+        }
         if c.finish && !roughed {
             w.comment(
                 "nothing roughed before: the face is machined whole down to the depth plane",
@@ -110,7 +115,10 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
             .set("fald", w.fmt.len(bottom_allowance))
             .set("feed", w.fmt.feed(feed(s)?))
             .set("vari", (tens * 10 + units).to_string())
-            .set("fdp1", w.fmt.len(overlap * d));
+            .set("fdp1", w.fmt.len(overlap * d))
+            .set_derived("strategy", if bidirectional { "0" } else { "2" })
+            .set_derived("overlap_factor", w.fmt.plain(stepover / (d / 2.0), 4))
+            .set_derived("clear_inc", w.fmt.len(s.clear - s.top));
         return w.emit("face.j2", v);
     }
     // Explicit zigzag in a frame whose y axis is the pass direction.

@@ -26,6 +26,7 @@ fn positions(w: &mut Writer<'_>, cycle: &str, steps: &[&Step<'_>]) -> Result<(),
         if let Some(p) = group::pattern(&pts) {
             if let Some((name, v)) = pattern_vals(w, &p) {
                 if w.post.has(name) {
+                    let v = v.set_derived("top", w.fmt.len(steps[0].top));
                     return w.emit(name, v);
                 }
             }
@@ -72,6 +73,7 @@ fn pattern_vals(w: &Writer<'_>, p: &Pattern) -> Option<(&'static str, Vals)> {
                 .set("cx", f.len(centre[0]))
                 .set("cy", f.len(centre[1]))
                 .set("radius", f.len(*radius))
+                .set_derived("diameter", f.len(2.0 * radius))
                 .set("start", f.angle(*start))
                 .set("index", f.angle(*index))
                 .set("num", num.to_string()),
@@ -97,6 +99,11 @@ fn pattern_vals(w: &Writer<'_>, p: &Pattern) -> Option<(&'static str, Vals)> {
 
 /// Writes the cycle call; returns its template's name.
 fn cycle(w: &mut Writer<'_>, s: &Step<'_>) -> Result<&'static str, PostError> {
+    if matches!(s.op.kind, OperationKind::MultistepDrilling { .. })
+        && w.post.has("peck_universal.j2")
+    {
+        return super::pecking::write(w, s);
+    }
     let name = match &s.op.kind {
         OperationKind::Drilling(d)
         | OperationKind::CenterDrilling(d)
@@ -191,7 +198,7 @@ fn cycle(w: &mut Writer<'_>, s: &Step<'_>) -> Result<&'static str, PostError> {
 }
 
 /// The values every hole cycle has.
-fn base(w: &Writer<'_>, s: &Step<'_>, d: &DrillCommon) -> Result<Vals, PostError> {
+pub(super) fn base(w: &Writer<'_>, s: &Step<'_>, d: &DrillCommon) -> Result<Vals, PostError> {
     let bottom = match d.cutting_depth {
         Some(depth) => s.top - depth,
         None => s.bottom - cone_below_depth(s),
@@ -232,7 +239,7 @@ fn dwell(w: &Writer<'_>, v: Vals, seconds: f64) -> Vals {
         .set("dwell_ms", w.fmt.plain((seconds * 1000.0).round(), 0))
 }
 
-fn strategy_notes(w: &mut Writer<'_>, d: &DrillCommon) -> Result<(), PostError> {
+pub(super) fn strategy_notes(w: &mut Writer<'_>, d: &DrillCommon) -> Result<(), PostError> {
     if let Some(st) = &d.strategy {
         let parts: Vec<String> = [
             ("reduced cut at start", st.reduced_cut_at_start),

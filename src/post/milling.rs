@@ -108,7 +108,12 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>) -> Result<(), PostError> {
             super::pockets::write(w, s, &cut, &shape, &frame, true)
         }
         FeatureKind::PlanarFace { .. } => super::faces::write(w, s, &cut),
-        FeatureKind::Slot { .. } => super::slots::write(w, s, &cut),
+        FeatureKind::Slot { .. } => {
+            if w.post.has("slot.j2") && super::slot_cycle::write(w, s, &cut)? {
+                return Ok(());
+            }
+            super::slots::write(w, s, &cut)
+        }
         _ => Err(PostError::unsupported(&s.feature.id, "this feature")),
     }
 }

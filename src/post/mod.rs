@@ -11,9 +11,11 @@
 //!
 //! Which cycle a feature becomes is data: the target's template set says
 //! what it has (`pocket_rect.j2` on the 840D, none on Fanuc: explicit
-//! moves). Heidenhain: drilling cycles (CYCL DEF 200/201/202/203) called
-//! with `L X.. Y.. R0 FMAX M99`, CYCL DEF 251/252 pockets, CYCL DEF 32
-//! tolerance and BLK FORM; its faces are explicit moves so far (no 232).
+//! moves). Heidenhain: drilling cycles (CYCL DEF 200/201/202, 203 or
+//! 205 for pecking: `pecking.rs`) called with `L X.. Y.. R0 FMAX M99` or
+//! `PATTERN DEF` + `CYCL CALL PAT`, CYCL DEF 251/252 pockets, 232 faces,
+//! 253 slots (`slot_cycle.rs`), CYCL DEF 32 tolerance, TOOL DEF and
+//! BLK FORM.
 
 mod explicit;
 mod faces;
@@ -25,9 +27,11 @@ mod holes;
 mod milling;
 mod names;
 pub mod paths;
+mod pecking;
 pub mod plan;
 mod pockets;
 pub mod render;
+mod slot_cycle;
 mod slots;
 mod step;
 mod templates;

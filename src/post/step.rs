@@ -105,26 +105,41 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
         w.fmt.plain(tool_len, 3),
         w.fmt.plain(d, 3)
     ))?;
+    // The tool was called in this step (a Heidenhain TOOL CALL also sets
+    // the spindle speed).
+    let mut tool_called = false;
     if w.current_tool != Some(s.tool_no) {
         if w.post.has("tool_data.j2") && !w.defined_tools.contains(&s.tool_no) {
             w.defined_tools.push(s.tool_no);
-            let code = siemens_tool_type(&s.tool.body.kind).ok_or_else(|| {
-                PostError::unsupported(&s.tool.id, "a tool of this body type (no tool type code)")
-            })?;
+            let code = match siemens_tool_type(&s.tool.body.kind) {
+                Some(code) => code.to_string(),
+                // A target whose tool data has no type code (Heidenhain
+                // TOOL DEF) posts any tool.
+                None if w.post.ignores("tool_data.j2", "type") => String::new(),
+                None => {
+                    return Err(PostError::unsupported(
+                        &s.tool.id,
+                        "a tool of this body type (no tool type code)",
+                    ))
+                }
+            };
             w.emit(
                 "tool_data.j2",
                 Vals::new()
                     .set("t", s.tool_no.to_string())
-                    .set("type", code.to_string())
+                    .set("type", code)
                     .set("length", w.fmt.len(tool_len))
                     .set("radius", w.fmt.len(d / 2.0)),
             )?;
         }
         w.emit(
             "tool_change.j2",
-            Vals::new().set("t", s.tool_no.to_string()),
+            Vals::new()
+                .set("t", s.tool_no.to_string())
+                .set_derived("s", w.fmt.feed(spindle_rpm(s)?.abs())),
         )?;
         w.current_tool = Some(s.tool_no);
+        tool_called = true;
     }
     if w.post.has("tolerance.j2") {
         if let Some(tol) = tolerance(project, s) {
@@ -155,7 +170,8 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
         "spindle.j2",
         Vals::new()
             .set("s", w.fmt.feed(rpm.abs()))
-            .set("m", if rpm >= 0.0 { "3" } else { "4" }),
+            .set("m", if rpm >= 0.0 { "3" } else { "4" })
+            .set_derived("tool_called", if tool_called { "1" } else { "" }),
     )?;
     coolant(w, &s.op.machine_functions)?;
     match &s.feature.kind {

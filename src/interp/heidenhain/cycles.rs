@@ -6,13 +6,17 @@
 //!   (SDIS), Q201 the depth from Q203, signed (DP = Q203 + Q201), Q204 the
 //!   2nd set-up clearance (RTP = Q203 + Q204), Q206 the plunging feed.
 //! * 200 with Q202 less than the depth pecks (CYCLE83, full retract to the
-//!   set-up clearance after each infeed); else CYCLE82/CYCLE81. 203 is
-//!   CYCLE83 with Q212 decrement, Q205 minimum infeed, and chip breaking
-//!   (Q256) when Q213 > 0 [?: the number of breaks before a full retract
-//!   is not modelled]. 201 → CYCLE85, 202 → CYCLE86, 207 → CYCLE84.
-//! * 251 → POCKET1, 252 → POCKET2 about the current position (Q367 = 0);
-//!   stepover and finishing as the Siemens expansion does them [?]; 253
+//!   set-up clearance after each infeed); else CYCLE82/CYCLE81. 203 and
+//!   205 are CYCLE83 with even Q202 infeeds and Q205 as the minimum
+//!   infeed [?: the Q212 decrement is not modelled]; chip breaking
+//!   (backing off Q256) when 203's Q213 > 0 or after every Q257 of 205
+//!   [?: the number of breaks before a full retract is not modelled].
+//!   201 → CYCLE85, 202 → CYCLE86, 207 → CYCLE84.
+//! * 251 → POCKET1, 252 → POCKET2 about the current position (Q367 = 0),
+//!   Q215 as their VARI (0 rough + finish, 1 rough, 2 finish); stepover
+//!   and finishing as the Siemens expansion does them [?]; 253
 //!   (slot) → POCKET1 with full-round ends [?]; 232 (face) → CYCLE71.
+//! * `PATTERN DEF` points: [`super::pattern`].
 //! * Not expanded (W0510, the call is left out): 204, 208, 209, 241,
 //!   254, 256, 262.
 //! * Old cycle 1 (pecking): 1.1 set-up clearance, 1.2 depth, 1.3
@@ -137,40 +141,13 @@ fn rebuild(it: &mut Interp<'_, '_>) {
     it.siemens.frame = f;
 }
 
-/// `PATTERN DEF`: the points of `POSn (X Y Z)` items [?: ROW, PAT, CIRC
-/// and FRAME patterns are kept but not expanded].
+/// `PATTERN DEF`: the points it gives (see [`super::pattern`]).
 pub fn pattern(
     it: &mut Interp<'_, '_>,
     items: &[PatternItem],
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    let mut pts = Vec::new();
-    for i in items {
-        if !i.name.starts_with("POS") {
-            return Err(it.error_at(
-                i.span,
-                Code::UnsupportedHere,
-                format!(
-                    "the pattern {} is not expanded yet (POS points are)",
-                    i.name
-                ),
-            ));
-        }
-        let mut p = [None; 3];
-        for w in &i.words {
-            let k = match w.name.as_str() {
-                "X" => 0,
-                "Y" => 1,
-                "Z" => 2,
-                _ => continue,
-            };
-            if let Some(v) = &w.value {
-                p[k] = Some(it.value(v, exprs)?);
-            }
-        }
-        pts.push(p);
-    }
-    it.heidenhain.pattern = pts;
+    it.heidenhain.pattern = super::pattern::points(it, items, exprs)?;
     Ok(())
 }
 

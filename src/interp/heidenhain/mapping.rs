@@ -105,11 +105,16 @@ pub(super) fn numbered(
             }
         }
         203 | 205 => {
-            let chip = def.number == 203 && g(213) > 0.0;
+            // 205 breaks chips after every Q257 (backing off Q256) [?: a
+            // full retract after each Q202 as well is not modelled, nor
+            // the Q212 decrement of either cycle].
+            let breaks_205 = def.number == 205 && g(257) > 0.0;
+            let chip = (def.number == 203 && g(213) > 0.0) || breaks_205;
+            let infeed = if breaks_205 { g(257) } else { g(202) }.abs();
             a.extend([
                 None,
-                Some(g(202).abs()),
-                Some(g(202).abs()),
+                Some(infeed),
+                Some(infeed),
                 q(211),
                 q(210),
                 None,
@@ -139,7 +144,8 @@ pub(super) fn numbered(
             );
             let (cx, cy) = (it.state.to_prog(p[0]), it.state.to_prog(p[1]));
             let cdir = if g(351) >= 0.0 { 2.0 } else { 3.0 };
-            let tail = [q(206), q(207), q(202), Some(cdir), q(368), Some(0.0)];
+            // Q215 0 rough + finish, 1 rough, 2 finish: POCKET1/2's VARI.
+            let tail = [q(206), q(207), q(202), Some(cdir), q(368), Some(g(215))];
             if def.number == 251 {
                 a.extend([q(218), q(219), q(220), Some(cx), Some(cy), q(224)]);
                 a.extend(tail);
@@ -165,7 +171,7 @@ pub(super) fn numbered(
                 Some(cy),
                 q(374),
             ]);
-            a.extend([q(206), q(207), q(202), Some(cdir), q(368), Some(0.0)]);
+            a.extend([q(206), q(207), q(202), Some(cdir), q(368), Some(g(215))]);
             return (Some("POCKET1".into()), a, None);
         }
         // 232 as CYCLE71: Q227 surface, Q386 bottom (absolute), the face

@@ -14,6 +14,7 @@ mod corner;
 mod cycles;
 mod mapping;
 mod paths;
+mod pattern;
 
 use super::{Interp, Stop};
 use crate::diag::Code;
