@@ -243,6 +243,9 @@ pub fn call_here(
 fn call_at(it: &mut Interp<'_, '_>, span: Span, surface: Option<f64>) -> Result<(), Stop> {
     let (name, args, feed) = match (it.heidenhain.cycle.clone(), it.heidenhain.old_cycle) {
         (_, Some(1)) => old_pecking(it),
+        (Some(def), _) if super::cycles_run::expands(def.number) => {
+            return super::cycles_run::call(it, span, &def, surface)
+        }
         (Some(def), _) => numbered(it, &def, surface),
         (None, Some(c)) => {
             return Err(it.error_at(
