@@ -172,9 +172,10 @@ impl Place {
     }
 
     fn at(&self, u: f64, v: f64) -> (f64, f64) {
+        // `+ 0.0` turns a -0 into 0, so that no `-0.0000` is printed.
         (
-            self.origin.0 + u * self.cos - v * self.sin,
-            self.origin.1 + u * self.sin + v * self.cos,
+            self.origin.0 + u * self.cos - v * self.sin + 0.0,
+            self.origin.1 + u * self.sin + v * self.cos + 0.0,
         )
     }
 
