@@ -13,8 +13,10 @@
 //! * 251 → POCKET1, 252 → POCKET2 about the current position (Q367 = 0);
 //!   stepover and finishing as the Siemens expansion does them [?]; 253
 //!   (slot) → POCKET1 with full-round ends [?]; 232 (face) → CYCLE71.
-//! * Not expanded (W0510, the call is left out): 204, 208, 209, 241,
-//!   254, 256, 262.
+//! * 204, 208, 209, 241, 254, 256, 262 run in `cycles_run` (own
+//!   expansions; 254 through SLOT2), see `docs/heidenhain-cycles.md`.
+//! * Old cycles 2, 3, 4, 5, 17 are not run (E0510 at the call): their
+//!   sub-number layouts are not in the reference [?].
 //! * Old cycle 1 (pecking): 1.1 set-up clearance, 1.2 depth, 1.3
 //!   plunging depth, 1.4 dwell, 1.5 feed, from the current height, which
 //!   is the set-up clearance above the surface.
