@@ -92,6 +92,8 @@ fn impossible_cycles_stop_with_their_code() {
         ("toowide", "E0524", "wider than the hole"),
         ("noradius", "E0525", "needs the tool radius"),
         ("direction", "E0526", "Q214=0"),
+        // 5000 levels x 2500 rings: refused at once, not run for hours.
+        ("toomany", "E0524", "more passes than cncc runs"),
     ] {
         let o = canon(&format!("{DIR}/errors/{f}.h"));
         assert_eq!(o.status.code(), Some(1), "{f}");

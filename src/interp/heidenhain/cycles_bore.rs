@@ -139,10 +139,15 @@ pub(super) fn tap_chip_breaking(host: &mut dyn MotionHost, q: &Qs) -> Result<Don
         pitch: pitch.abs(),
         velocity_mode: false,
     });
+    if step > 0.0 && (top - bottom) / step > 10_000.0 {
+        return Err(geometry(format!(
+            "cycle 209: more than 10000 chip-breaking steps of Q257={step}"
+        )));
+    }
     let mut depths = Vec::new();
     if step > 0.0 {
         let mut d = top - step;
-        while d > bottom + 1e-9 && depths.len() < 10_000 {
+        while d > bottom + 1e-9 {
             depths.push(d);
             d -= step;
         }

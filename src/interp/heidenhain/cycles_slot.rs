@@ -115,7 +115,14 @@ pub(super) fn stud(host: &mut dyn MotionHost, q: &Qs, r: f64) -> Result<Done, Di
         .map(|k| r + allow + material.max(0.0) * k as f64 / n as f64)
         .collect();
     let levels = super::super::siemens::milling::levels("256", top, bottom, q.or(202, 0.0))
-        .map_err(|_| geometry("cycle 256: the depth lies above the surface".into()))?;
+        .map_err(|d| geometry(format!("cycle {}", d.message)))?;
+    if (levels.len() * offsets.len()) as f64 > super::super::siemens::milling::MAX_PASSES {
+        return Err(geometry(format!(
+            "cycle 256: {} depth levels of {} rings each are more passes than cncc runs",
+            levels.len(),
+            offsets.len()
+        )));
+    }
     let corner = [
         (0.0, 0.0),
         (1.0, 1.0),
