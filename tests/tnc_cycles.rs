@@ -25,6 +25,10 @@
 //!   25 + 5 + 2 = 32 right of the centre (X82).
 //! * 262 at (20, 20), M12 x 1.5, R4: circle radius 2; up from -4 (right
 //!   hand, climb: ccw rising) three turns to 0.5.
+//! * frame: 208 under a datum shift X100 and a rotation of 90°, called
+//!   with `CYCL CALL POS X+10 Y+0 Z-1`: centre (100, 10), surface -1, so
+//!   from 1 one whole turn (Q334 7) to -6, the circle start (rp, 0) turned
+//!   to +Y: (100, 13); out to -1 + 20 = 19.
 
 mod common;
 use common::*;
@@ -37,8 +41,11 @@ fn canon(file: &str) -> std::process::Output {
 
 #[test]
 fn each_cycle_runs_into_canonical_calls() {
-    for c in ["204", "208", "209", "241", "254", "256", "262"] {
-        let f = format!("{DIR}/c{c}.h");
+    for c in ["204", "208", "209", "241", "254", "256", "262", "frame"] {
+        let f = match c {
+            "frame" => format!("{DIR}/frame.h"),
+            _ => format!("{DIR}/c{c}.h"),
+        };
         let o = canon(&f);
         assert_eq!(o.status.code(), Some(0), "{f}: {}", stderr(&o));
         assert_eq!(stderr(&o), "", "{f}");
