@@ -29,6 +29,9 @@
 //!   with `CYCL CALL POS X+10 Y+0 Z-1`: centre (100, 10), surface -1, so
 //!   from 1 one whole turn (Q334 7) to -6, the circle start (rp, 0) turned
 //!   to +Y: (100, 13); out to -1 + 20 = 19.
+//! * old: cycle 2 from Z2 (set-up 2 above the surface 0) fed at 750 to
+//!   -20, dwell 0.4, spindle reversed, back to 2, forward again; cycle 17
+//!   pitch -1 (left hand: M4) rigid tap from 2 to -12.
 
 mod common;
 use common::*;
@@ -41,9 +44,11 @@ fn canon(file: &str) -> std::process::Output {
 
 #[test]
 fn each_cycle_runs_into_canonical_calls() {
-    for c in ["204", "208", "209", "241", "254", "256", "262", "frame"] {
+    for c in [
+        "204", "208", "209", "241", "254", "256", "262", "frame", "old",
+    ] {
         let f = match c {
-            "frame" => format!("{DIR}/frame.h"),
+            "frame" | "old" => format!("{DIR}/{c}.h"),
             _ => format!("{DIR}/c{c}.h"),
         };
         let o = canon(&f);

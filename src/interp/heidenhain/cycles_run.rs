@@ -132,6 +132,18 @@ pub(super) fn call(
             _ => cycles_helix::thread_mill(host, &q, radius),
         }
     };
+    finish(it, span, saved, mark, result)
+}
+
+/// After a cycle: the error with the call's span, the caller's feed rate
+/// again, coolant state, warnings with the call's span.
+pub(super) fn finish(
+    it: &mut Interp<'_, '_>,
+    span: Span,
+    saved: f64,
+    mark: usize,
+    result: Result<Done, Diagnostic>,
+) -> Result<(), Stop> {
     let done = result.map_err(|d| {
         let d = if d.span().is_some() {
             d

@@ -15,6 +15,7 @@ mod cycles;
 mod cycles_bore;
 mod cycles_geom;
 mod cycles_helix;
+mod cycles_old;
 mod cycles_run;
 mod cycles_slot;
 mod mapping;
