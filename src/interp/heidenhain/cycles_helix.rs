@@ -105,9 +105,9 @@ fn snap(v: f64) -> f64 {
 /// 262: internal thread milling.
 ///
 /// Direction [K]: climb milling runs counter-clockwise (M3); a helix
-/// counter-clockwise rising is right-hand, so a right-hand thread (Q239
-/// > 0) climb-milled goes up from the bottom, up-cut goes down from the
-/// top; a left-hand thread the other way.
+/// counter-clockwise rising is right-hand, so a right-hand thread
+/// (positive Q239) climb-milled goes up from the bottom, up-cut goes down
+/// from the top; a left-hand thread the other way.
 ///
 /// Q355 threads per step [K]: 0 one 360° helix over the thread depth (a
 /// cutter as long as the thread); 1 one continuous helix over the whole
