@@ -32,6 +32,11 @@
 //! * old: cycle 2 from Z2 (set-up 2 above the surface 0) fed at 750 to
 //!   -20, dwell 0.4, spindle reversed, back to 2, forward again; cycle 17
 //!   pitch -1 (left hand: M4) rigid tap from 2 to -12.
+//! * variants: 262 left hand, up-cut (clockwise, so rising), Q355 2:
+//!   one-turn passes 2 pitches apart from the bottom -5: -5→-4, -3→-2,
+//!   -1→0, approached at Q512 100; 262 right hand, up-cut (clockwise,
+//!   falling), Q355 0: one turn -4→-5; 208 up-cut: clockwise, 2→-1→-4 in
+//!   whole turns of 3, full circle at -4.
 
 mod common;
 use common::*;
@@ -48,7 +53,7 @@ fn each_cycle_runs_into_canonical_calls() {
         "204", "208", "209", "241", "254", "256", "262", "frame", "old",
     ] {
         let f = match c {
-            "frame" | "old" => format!("{DIR}/{c}.h"),
+            "frame" | "old" | "variants" => format!("{DIR}/{c}.h"),
             _ => format!("{DIR}/c{c}.h"),
         };
         let o = canon(&f);
