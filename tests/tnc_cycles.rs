@@ -22,7 +22,8 @@
 //!   finishing ring 2 each side (32/28) at -6 at Q385 400.
 //! * 256 at (50, 40): stud 40 x 20, blank 50 x 30, R5: one ring 5 off the
 //!   stud (25..75 x 25..55, corners R7) clockwise (climb), start point
-//!   25 + 5 + 2 = 32 right of the centre (X82).
+//!   25 + 5 + 2 = 32 right of the centre (X82), in and out on the
+//!   semicircles about (78.5, 40) of radius 3.5.
 //! * 262 at (20, 20), M12 x 1.5, R4: circle radius 2; up from -4 (right
 //!   hand, climb: ccw rising) three turns to 0.5.
 //! * frame: 208 under a datum shift X100 and a rotation of 90°, called

@@ -80,9 +80,11 @@ pub(super) fn slot2_args(q: &Qs, here: (f64, f64)) -> Result<Vec<Option<f64>>, D
 ///   the start point 2 mm to the right of the blank [K; 2/25.4 in for inch
 ///   programs]) rings round the stud from the blank inwards, equal
 ///   stepovers of at most Q370 x tool radius [K], the last one Q368 from
-///   the stud; each ring starts and ends in the middle of the right side,
-///   reached by a straight feed [?: the TNC comes in on a tangential
-///   semicircle], at Q207; then back to the start point;
+///   the stud, all at Q207; each ring is reached from the start point on
+///   a semicircle meeting it tangentially in the middle of its right side
+///   and left on the other half of that circle back to the start point
+///   [K: TNC 640 manual; the semicircle's size is not given: here its
+///   diameter spans the start point and the ring [?]];
 /// * climb milling (Q351 +1) runs clockwise round the stud (M3) [K];
 /// * Q215 (TNC 640 software) 0 or 2: a finishing ring on the stud at the
 ///   depth at Q385 (Q207 when absent) when Q368 leaves something [?];
@@ -156,20 +158,48 @@ pub(super) fn stud(host: &mut dyn MotionHost, q: &Qs, r: f64) -> Result<Done, Di
             p.feed(host, start, 0.0, *lv);
             done.set_feed(host, mill);
             for o in &offsets {
-                ring(host, &p, l / 2.0 + o, w / 2.0 + o, rc + o, ccw);
+                let r = Ring {
+                    hu: l / 2.0 + o,
+                    hv: w / 2.0 + o,
+                    rc: rc + o,
+                };
+                r.cut_from(host, &p, start, ccw);
             }
-            p.feed(host, start, 0.0, *lv);
         }
     }
     if ops != 1 && (allow > 0.0 || ops == 2) {
         done.set_feed(host, plunge);
         p.feed(host, start, 0.0, bottom);
         done.set_feed(host, q.get(385).filter(|f| *f > 0.0).unwrap_or(mill));
-        ring(host, &p, l / 2.0 + r, w / 2.0 + r, rc + r, ccw);
-        p.feed(host, start, 0.0, bottom);
+        let fin = Ring {
+            hu: l / 2.0 + r,
+            hv: w / 2.0 + r,
+            rc: rc + r,
+        };
+        fin.cut_from(host, &p, start, ccw);
     }
     p.rapid_w(host, clear);
     Ok(done)
+}
+
+/// A ring round the stud: half sizes and corner radius.
+struct Ring {
+    hu: f64,
+    hv: f64,
+    rc: f64,
+}
+
+impl Ring {
+    /// From the start point (`start`, 0) on a semicircle that meets the
+    /// ring tangentially in the middle of its right side, once round, and
+    /// back to the start point on the other half of that circle.
+    fn cut_from(&self, host: &mut dyn MotionHost, p: &Place, start: f64, ccw: bool) {
+        let w = p.w(host);
+        let c = (start + self.hu) / 2.0;
+        p.arc(host, self.hu, 0.0, w, c, 0.0, !ccw);
+        ring(host, p, self.hu, self.hv, self.rc, ccw);
+        p.arc(host, start, 0.0, w, c, 0.0, !ccw);
+    }
 }
 
 /// One rounded rectangle ring from and back to (hu, 0).
