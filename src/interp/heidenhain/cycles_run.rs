@@ -87,19 +87,55 @@ const NOT_APPLIED: &[(u32, u32, f64, &str)] = &[
     (262, 439, 0.0, "feed rate reference"),
 ];
 
+/// The Q parameters each expansion reads.
+fn read_by(number: u32) -> &'static [u32] {
+    match number {
+        204 => &[200, 249, 250, 251, 252, 253, 254, 255, 203, 204, 214, 336],
+        208 => &[200, 201, 206, 334, 203, 204, 335, 342, 351],
+        209 => &[200, 201, 239, 203, 204, 257, 256, 336],
+        241 => &[
+            200, 201, 206, 211, 203, 204, 379, 253, 208, 426, 427, 428, 429, 430, 435,
+        ],
+        254 => &[
+            215, 219, 368, 375, 367, 216, 217, 376, 248, 378, 377, 207, 351, 201, 202, 206, 200,
+            203, 204, 385,
+        ],
+        256 => &[
+            218, 424, 219, 425, 220, 368, 224, 367, 207, 351, 201, 202, 206, 200, 203, 204, 370,
+            215, 385,
+        ],
+        _ => &[335, 239, 201, 355, 253, 351, 200, 203, 204, 207, 512],
+    }
+}
+
+/// W0514 for every parameter the expansion does not read whose value
+/// asks for something: the table's values, else anything but 0 [?: 0 is
+/// taken as "nothing to apply" for parameters newer software appends,
+/// such as Q395 depth reference and Q439 feed reference].
 fn not_applied(it: &mut Interp<'_, '_>, span: Span, def: &Defined) {
-    for (c, q, none, what) in NOT_APPLIED {
-        let given = def.params.iter().find(|(k, _)| k == q).map(|(_, v)| *v);
-        if *c == def.number && given.is_some_and(|v| v != *none) {
-            it.diags.push(
-                Diagnostic::new(
-                    Code::TncCycleParameterNotApplied,
-                    format!("cycle {c}: Q{q} ({what}) is not applied by the simulated cycle"),
-                )
-                .primary(span, "this call runs without it")
-                .help("the canonical output, plots and STEP-NC lack its effect; the parameter is kept in the program"),
-            );
+    for (q, v) in &def.params {
+        if read_by(def.number).contains(q) {
+            continue;
         }
+        let known = NOT_APPLIED
+            .iter()
+            .find(|(c, k, _, _)| *c == def.number && k == q);
+        let none = known.map_or(0.0, |k| k.2);
+        if *v == none {
+            continue;
+        }
+        let what = known.map_or(String::new(), |k| format!(" ({})", k.3));
+        it.diags.push(
+            Diagnostic::new(
+                Code::TncCycleParameterNotApplied,
+                format!(
+                    "cycle {}: Q{q}={v}{what} is not applied by the simulated cycle",
+                    def.number
+                ),
+            )
+            .primary(span, "this call runs without it")
+            .help("the canonical output, plots and STEP-NC lack its effect; the parameter is kept in the program"),
+        );
     }
 }
 
