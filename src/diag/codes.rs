@@ -425,6 +425,24 @@ codes! {
     PolarAtOrigin = "E0513", "polar-at-origin", Error,
         "incremental polar words (@ ^) at the program origin",
         "Under G91 the polar words add to the current point's distance and angle from the program origin; at the origin that angle is undefined, so LinuxCNC rejects the move (or the canned-cycle repeat). Move off the origin first, or use G90 polar words.";
+    TncCycleParameterMissing = "E0523", "cycle-parameter-missing-at-run", Error,
+        "a Heidenhain cycle called without a Q parameter its run needs",
+        "The cycle defined last lacks a Q parameter (E0320 names it where it is defined) and the run cannot go on without its value: the TNC asks for every parameter when the cycle is defined. Add the `Qnnn=value` line to the CYCL DEF.";
+    TncCycleGeometry = "E0524", "cycle-geometry-impossible", Error,
+        "a Heidenhain cycle whose sizes cannot be machined with the active tool",
+        "The cycle's dimensions and the active tool do not fit: the tool is wider than the hole, slot or thread, a side is shorter than the stud it leaves, or a pitch or infeed is 0. The TNC stops with an error message here. Check the Q parameters and the tool radius (TOOL DEF or the tool table).";
+    TncCycleNoToolRadius = "E0525", "cycle-without-tool-radius", Error,
+        "a Heidenhain milling cycle run without a known tool radius",
+        "Bore milling, thread milling, circular slots and studs place the tool centre from the tool radius. No radius is known for the active tool: program `TOOL DEF n L.. R..` or give a tool table with the tool's diameter.";
+    TncCycleBadValue = "E0526", "cycle-parameter-out-of-range", Error,
+        "a Heidenhain cycle parameter with a value the cycle does not accept",
+        "A selector parameter has a value outside its list (Q214 disengaging direction 1 to 4, Q426 spindle direction 3, 4 or 5, Q367 position 0 to 4, Q215 0 to 2), or a count is not a positive whole number. Correct the value in the CYCL DEF.";
+    TncCycleParameterNotApplied = "W0514", "cycle-parameter-not-applied", Warning,
+        "a Heidenhain cycle parameter the simulated cycle does not apply",
+        "The cycle runs, but the moves cncc generates for it do not take this parameter into account (a plunging strategy, an approach position, a finishing infeed): the parameter's effect on the real control is missing from the canonical output, plots and STEP-NC. The parameter is kept in the program and written back unchanged.";
+    TncCycleMachineFunction = "W0515", "cycle-machine-function-not-run", Warning,
+        "an M function given to a Heidenhain cycle that cncc does not simulate",
+        "Cycle 241 switches coolant with the M functions in Q429/Q430. M7, M8 and M9 are run as mist, flood and coolant off; other numbers are machine-dependent (set by the machine builder), so they are not run and the canonical output lacks them.";
 }
 
 impl Code {

@@ -17,8 +17,10 @@
 //!   and finishing as the Siemens expansion does them [?]; 253
 //!   (slot) → POCKET1 with full-round ends [?]; 232 (face) → CYCLE71.
 //! * `PATTERN DEF` points: [`super::pattern`].
-//! * Not expanded (W0510, the call is left out): 204, 208, 209, 241,
-//!   254, 256, 262.
+//! * 204, 208, 209, 241, 254, 256, 262 run in `cycles_run` (own
+//!   expansions; 254 through SLOT2), see `docs/heidenhain-cycles.md`.
+//! * Old cycles 2 and 17 (tapping) run in `cycles_old`; 3, 4, 5 are not
+//!   run (E0510 at the call): their sub-number layouts are not confirmed.
 //! * Old cycle 1 (pecking): 1.1 set-up clearance, 1.2 depth, 1.3
 //!   plunging depth, 1.4 dwell, 1.5 feed, from the current height, which
 //!   is the set-up clearance above the surface.
@@ -220,6 +222,12 @@ pub fn call_here(
 fn call_at(it: &mut Interp<'_, '_>, span: Span, surface: Option<f64>) -> Result<(), Stop> {
     let (name, args, feed) = match (it.heidenhain.cycle.clone(), it.heidenhain.old_cycle) {
         (_, Some(1)) => old_pecking(it),
+        (_, Some(c)) if super::cycles_old::expands(c) => {
+            return super::cycles_old::call(it, span, c)
+        }
+        (Some(def), _) if super::cycles_run::expands(def.number) => {
+            return super::cycles_run::call(it, span, &def, surface)
+        }
         (Some(def), _) => numbered(it, &def, surface),
         (None, Some(c)) => {
             return Err(it.error_at(

@@ -12,6 +12,12 @@
 mod approach;
 mod corner;
 mod cycles;
+mod cycles_bore;
+mod cycles_geom;
+mod cycles_helix;
+mod cycles_old;
+mod cycles_run;
+mod cycles_slot;
 mod mapping;
 mod paths;
 mod pattern;
