@@ -143,7 +143,8 @@ pub(super) fn numbered(
                 [it.state.pos[0], it.state.pos[1], it.state.pos[2]],
             );
             let (cx, cy) = (it.state.to_prog(p[0]), it.state.to_prog(p[1]));
-            let cdir = if g(351) >= 0.0 { 2.0 } else { 3.0 };
+            // Q351 +1 climbs: G3 inside the pocket with M3 (CDIR 3).
+            let cdir = if g(351) >= 0.0 { 3.0 } else { 2.0 };
             // Q215 0 rough + finish, 1 rough, 2 finish: POCKET1/2's VARI.
             let tail = [q(206), q(207), q(202), Some(cdir), q(368), Some(g(215))];
             if def.number == 251 {
@@ -162,7 +163,8 @@ pub(super) fn numbered(
                 [it.state.pos[0], it.state.pos[1], it.state.pos[2]],
             );
             let (cx, cy) = (it.state.to_prog(p[0]), it.state.to_prog(p[1]));
-            let cdir = if g(351) >= 0.0 { 2.0 } else { 3.0 };
+            // Q351 +1 climbs: G3 inside the pocket with M3 (CDIR 3).
+            let cdir = if g(351) >= 0.0 { 3.0 } else { 2.0 };
             a.extend([
                 q(218),
                 q(219),

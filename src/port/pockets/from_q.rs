@@ -58,9 +58,9 @@ pub(super) fn from_tnc(
         (
             "CDIR",
             if q(351).unwrap_or(1.0) >= 0.0 {
-                2.0
-            } else {
                 3.0
+            } else {
+                2.0
             },
         ),
         ("FAL", q(368).unwrap_or(0.0)),

@@ -5,8 +5,9 @@
 //!
 //! * Q203 = RFP, Q200 = SDIS, Q201 = DP − RFP (or −DPR), Q204 = RTP − RFP,
 //!   Q218/Q219/Q220 = LENG/WID/CRAD (252: Q223 = 2 × PRAD), Q224 = STA1,
-//!   Q206 = FFD, Q207 = Q385 = FFP1, Q202 = MID, Q351 = +1 for CDIR 2 (G2)
-//!   and −1 for CDIR 3, Q368 = FAL; Q215 = 0 (roughing and finishing, the
+//!   Q206 = FFD, Q207 = Q385 = FFP1, Q202 = MID, Q351 = +1 (climb: G3
+//!   inside the pocket with M3) for CDIR 3 and −1 for CDIR 2 (G2, as
+//!   POCKET1/2 run every CDIR other than 3), Q368 = FAL; Q215 = 0 (roughing and finishing, the
 //!   VARI 0 of POCKET1), Q367 = 0 (pocket centre at the tool: the call is
 //!   `L X<CPA> Y<CPO> R0 FMAX M99`), Q369 = Q338 = 0, Q370 = 1, Q366 = 0.
 //! * Back: the call's position is CPA/CPO.

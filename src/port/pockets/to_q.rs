@@ -29,7 +29,9 @@ pub(super) fn to_tnc(
         None => -need("DPR")?,
     };
     let ffp1 = need("FFP1")?;
-    let cdir = if get("CDIR")? == Some(3.0) { -1.0 } else { 1.0 };
+    // Q351 +1 climbs (G3 inside a pocket with M3); POCKET1/2 run G3 only
+    // for CDIR 3 and G2 for any other value.
+    let cdir = if get("CDIR")? == Some(3.0) { 1.0 } else { -1.0 };
     let mut vals = vec![
         ("Q215", 0.0),
         ("Q368", get("FAL")?.unwrap_or(0.0)),
