@@ -99,6 +99,8 @@ pub enum Capability {
     /// Heidenhain paths: circles round the pole `CC`, polar `LP`/`CP`/`CTP`,
     /// `RND`/`CHF` blocks between elements, cycles by `CYCL DEF` + call.
     PolePaths,
+    /// Haas G12/G13 circular pocket milling (I K Q Z L D), run as a cycle.
+    CircularPocketCycle,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -134,6 +136,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ),
     ("semicolon-end-of-block", Capability::SemicolonEndOfBlock),
     ("pole-paths", Capability::PolePaths),
+    ("circular-pocket-cycle", Capability::CircularPocketCycle),
 ];
 
 impl Capability {

@@ -28,6 +28,7 @@ pub mod paths;
 pub mod plan;
 mod pockets;
 pub mod render;
+mod slot_cycles;
 mod slots;
 mod step;
 mod templates;

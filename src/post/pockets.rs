@@ -159,7 +159,7 @@ fn insertion(a: Option<&ApproachRetract>) -> (u32, f64, f64) {
 
 /// End mills cut across their centre; face mills and the rest do not
 /// (ISO 14649-111 has no such attribute: the body type decides).
-fn cuts_across_centre(k: &ToolBodyKind) -> bool {
+pub(super) fn cuts_across_centre(k: &ToolBodyKind) -> bool {
     matches!(
         k,
         ToolBodyKind::Endmill

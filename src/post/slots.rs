@@ -5,17 +5,18 @@
 //! from its centre line outwards (a slot as wide as the tool is one pass
 //! per layer along the centre line).
 //!
-//! Not posted as SLOT1/LONGHOLE: those cycles place slots radially on a
-//! circle, and which point of the slot their RAD and LENG refer to is not
-//! confirmed in our references ([?] in dialects.md §1.7). Also uncertain
-//! [?]: whether a radiused slot's course of travel runs between the
-//! centres of its end arcs (read so here: the outline is the travel
+//! Where the target has a slot cycle that fits (840D SLOT1/LONGHOLE,
+//! [`super::slot_cycles`]) the slot is posted as that cycle instead, else
+//! the comment before the moves says why not.
+//! Uncertain [?]: whether a radiused slot's course of travel runs between
+//! the centres of its end arcs (read so here: the outline is the travel
 //! length plus the width) or spans the whole slot.
 
 use super::frame::Frame;
 use super::milling::Cut;
 use super::paths::pocket::{RectPocket, Shape};
 use super::plan::Step;
+use super::slot_cycles::{try_cycle, SlotGeom};
 use super::{PostError, Writer};
 use crate::stepnc::model::*;
 
@@ -100,12 +101,25 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
         None => s.frame,
     };
     let frame = path.then(&local);
+    let radiused = end_conditions.len() == 2
+        && end_conditions
+            .iter()
+            .all(|e| matches!(e, SlotEnd::Radiused));
+    let geom = SlotGeom {
+        frame,
+        travel: distance.nominal,
+        width,
+    };
+    let why = match try_cycle(w, s, c, &geom, radiused)? {
+        None => return Ok(()),
+        Some(why) => why,
+    };
     let shape = Shape::Rect(RectPocket {
         length,
         width,
         corner_radius: corner,
     });
-    w.comment("slot: explicit toolpath")?;
+    w.comment(&format!("slot: explicit toolpath ({why})"))?;
     super::pockets::write(w, s, c, &shape, &frame, false)
 }
 
