@@ -1,0 +1,232 @@
+//! Straight slots posted to the 840D as SLOT1 (wider than the tool) or
+//! LONGHOLE (as wide as the tool), explicit moves where neither fits
+//! (with the reason in the comment), and the posted program read back:
+//! it runs clean, and `cncc stepnc --cc2` of it finds the slot again.
+
+mod common;
+
+use cncc::dialect::builtin;
+use cncc::post::{fixture, post};
+use cncc::stepnc::model::*;
+use std::path::PathBuf;
+
+fn tol(v: f64) -> Toleranced {
+    Toleranced {
+        nominal: v,
+        tolerance: Tolerance::PlusMinus {
+            upper: 0.1,
+            lower: 0.1,
+            significant_digits: 3,
+        },
+    }
+}
+
+/// Example 1 plus one straight slot: `width` wide, travel 40 from
+/// (50, 10) along `dir`, 5 deep, cut with the 18 mm end mill (roughing
+/// operation of Example 1, without allowances, 2.5 per layer).
+fn with_slot(width: f64, dir: [f64; 3], ends: Vec<SlotEnd>) -> Project {
+    let mut p = fixture::ex1();
+    let mut f = p.features[2].clone();
+    f.id = "SLOT A".into();
+    f.placement.location.xyz = [50.0, 10.0, 0.0];
+    f.placement.ref_direction.as_mut().unwrap().ratios = [1.0, 0.0, 0.0];
+    f.depth.position.location.xyz = [0.0, 0.0, -5.0];
+    let mut direction = p.features[0].placement.ref_direction.clone().unwrap();
+    direction.ratios = dir;
+    f.kind = FeatureKind::Slot {
+        course_of_travel: TravelPath::Linear {
+            placement: None,
+            distance: tol(40.0),
+            direction,
+        },
+        swept_shape: OpenProfile::RoundedU {
+            placement: None,
+            width: tol(width),
+        },
+        end_conditions: ends,
+    };
+    p.features.push(f);
+    let mut op = p.operations[3].clone();
+    op.id = "ROUGH SLOT A".into();
+    if let OperationKind::BottomAndSideMilling {
+        axial_cutting_depth,
+        allowance_side,
+        allowance_bottom,
+        ..
+    } = &mut op.kind
+    {
+        *axial_cutting_depth = Some(2.5);
+        *allowance_side = None;
+        *allowance_bottom = None;
+    }
+    p.operations.push(op);
+    p.main_workplan
+        .elements
+        .push(Executable::Workingstep(MachiningWorkingstep {
+            id: "WS SLOT A".into(),
+            secplane: p.main_workplan.setup.as_ref().unwrap().secplane.clone(),
+            feature: FeatureId(3),
+            operation: OperationId(5),
+            effect: None,
+        }));
+    p
+}
+
+fn radiused() -> Vec<SlotEnd> {
+    vec![SlotEnd::Radiused, SlotEnd::Radiused]
+}
+
+fn siemens(p: &Project) -> String {
+    post(p, &builtin::builtin("siemens840d").unwrap())
+        .unwrap_or_else(|e| panic!("{e:#?}"))
+        .text
+}
+
+/// The workingstep's part of the program.
+fn slot_part(text: &str) -> &str {
+    text.split_once("WS SLOT A").unwrap().1
+}
+
+fn save(name: &str, text: &str) -> PathBuf {
+    let dir = common::root().join("target/tmp/post-slot-tests");
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// `cncc check` is clean (no warning) and `cncc stepnc --cc2` runs (with
+/// Example 1's tools in a table and a stock round the part); its Part 21
+/// text.
+fn check_and_raise(name: &str, text: &str, dialect: &str) -> String {
+    let path = save(name, text);
+    let table = save("ex1.tbl", "T1 P1 D18 Z80\nT2 P2 D20 Z90\nT3 P3 D22 Z100\n");
+    let path = path.to_str().unwrap();
+    let o = common::cncc(&["check", "--dialect", dialect, path]);
+    let err = common::stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(!err.contains("warning["), "{err}");
+    let o = common::cncc(&[
+        "stepnc",
+        "--cc2",
+        "--machine-units",
+        "mm",
+        "--stock",
+        "300x300x40-50-50-35",
+        "--tool-table",
+        table.to_str().unwrap(),
+        "--dialect",
+        dialect,
+        path,
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", common::stderr(&o));
+    common::stdout(&o)
+}
+
+#[test]
+fn a_slot_wider_than_the_tool_is_one_slot1() {
+    let text = siemens(&with_slot(24.0, [1.0, 0.0, 0.0], radiused()));
+    let part = slot_part(&text);
+    // LENG 40 + 24, WID 24, inner end at x 50 - 12, STA1 0, NUM 1, RAD 0,
+    // MID 2.5, CDIR 2 (M3, conventional as the pockets), VARI 1 (rough).
+    assert!(
+        part.contains("SLOT1(30,0,15,-5,,1,64,24,38,10,0,0,0,2400,2400,2.5,2,0,1,2.5,2400,1200)"),
+        "{part}"
+    );
+    assert!(!part.lines().any(|l| l.starts_with("G1 ")), "{part}");
+    // Raised back: the stadium 64 x 24 (corner radius 12) centred at
+    // (70, 10), floor 10 below the stock top (z -5). The recogniser types
+    // it as a closed pocket with that outline (it takes slots only from
+    // straight passes), exactly as it types the explicit moves the other
+    // targets get for the same slot.
+    let stadium = [
+        "CLOSED_POCKET(",
+        ",(70.,10.,5.));",
+        "DEPTH',(0.,0.,-10.));",
+        "RECTANGULAR_CLOSED_PROFILE(",
+        "TOLERANCED_LENGTH_MEASURE(24.,",
+        "TOLERANCED_LENGTH_MEASURE(64.,",
+        "TOLERANCED_LENGTH_MEASURE(12.,",
+    ];
+    let p21 = check_and_raise("slot1.mpf", &text, "siemens840d");
+    let fanuc = post(
+        &with_slot(24.0, [1.0, 0.0, 0.0], radiused()),
+        &builtin::builtin("fanuc").unwrap(),
+    );
+    let explicit = check_and_raise("slot-fanuc.nc", &fanuc.unwrap().text, "fanuc");
+    for s in stadium {
+        let raised = |p: &str| {
+            let l: Vec<&str> = p.lines().collect();
+            let at = l
+                .iter()
+                .position(|x| x.contains("(70.,10.,5.)"))
+                .unwrap_or(0);
+            l[at.saturating_sub(4)..(at + 10).min(l.len())]
+                .iter()
+                .any(|x| x.contains(s))
+        };
+        assert!(raised(&p21), "{s}:\n{p21}");
+        assert!(raised(&explicit), "{s}:\n{explicit}");
+    }
+}
+
+#[test]
+fn a_slot_as_wide_as_the_tool_is_a_longhole() {
+    // Travel along Y: STA1 90, inner end 9 below the start.
+    let text = siemens(&with_slot(18.0, [0.0, 1.0, 0.0], radiused()));
+    let part = slot_part(&text);
+    assert!(
+        part.contains("LONGHOLE(30,0,15,-5,,1,58,50,1,0,90,0,2400,2400,2.5)"),
+        "{part}"
+    );
+    // Raised back as the slot: from (50, 10) over 40 along Y, 18 wide,
+    // radiused ends, floor 10 below the stock top (z -5).
+    let p21 = check_and_raise("longhole.mpf", &text, "siemens840d");
+    let slot: Vec<&str> = p21
+        .lines()
+        .skip_while(|l| !l.contains("=SLOT("))
+        .take(16)
+        .collect();
+    let slot = slot.join("\n");
+    for s in [
+        ",(50.,10.,5.));",
+        "DEPTH',(0.,0.,-10.));",
+        "LINEAR_PATH(",
+        "TOLERANCED_LENGTH_MEASURE(40.,",
+        "'COURSE OF TRAVEL',(0.,1.,0.)",
+        "SQUARE_U_PROFILE(",
+        "TOLERANCED_LENGTH_MEASURE(18.,",
+        "RADIUSED_SLOT_END_TYPE()",
+    ] {
+        assert!(slot.contains(s), "{s}:\n{p21}");
+    }
+}
+
+#[test]
+fn open_ends_stay_explicit_moves_and_say_why() {
+    let text = siemens(&with_slot(
+        24.0,
+        [1.0, 0.0, 0.0],
+        vec![SlotEnd::Open, SlotEnd::Open],
+    ));
+    let part = slot_part(&text);
+    assert!(!part.contains("SLOT1("), "{part}");
+    assert!(
+        part.contains("slot: explicit toolpath (SLOT1/LONGHOLE cut round ends"),
+        "{part}"
+    );
+    assert!(part.lines().any(|l| l.starts_with("G1 ")), "{part}");
+}
+
+#[test]
+fn other_targets_keep_explicit_moves() {
+    let p = with_slot(24.0, [1.0, 0.0, 0.0], radiused());
+    for id in ["fanuc", "haas", "linuxcnc", "heidenhain"] {
+        let text = post(&p, &builtin::builtin(id).unwrap()).unwrap().text;
+        let part = slot_part(&text);
+        assert!(
+            part.contains("the target has no slot cycle"),
+            "{id}: {part}"
+        );
+    }
+}
