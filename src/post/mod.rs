@@ -26,6 +26,7 @@ mod milling;
 mod names;
 pub mod paths;
 pub mod plan;
+mod pocket_g12;
 mod pockets;
 pub mod render;
 mod slot_cycles;
