@@ -214,3 +214,30 @@ fn post_writes_a_circular_pocket_as_g12_on_haas_only() {
         assert!(text.lines().any(|l| l.starts_with("G2 X")), "{id}");
     }
 }
+
+#[test]
+fn g150_is_kept_and_reported_as_not_expanded() {
+    let text = "G17 G21 G90\nT1 M6\nG0 X0. Y0. Z1.\nG150 P2000 Q0.5 R0.1 Z-1. F100. D1\nG1 X5. F100.\nM30\n";
+    let (code, out, err) = canon("g150.nc", text);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("W0510"), "{err}");
+    // The run goes on: the next block's move is there.
+    assert!(
+        out.contains("STRAIGHT_FEED(5.0000, 0.0000, 1.0000"),
+        "{out}"
+    );
+    let p = save("g150rt.nc", text);
+    let o = common::cncc(&[
+        "port",
+        "--from",
+        "haas",
+        "--to",
+        "haas",
+        p.to_str().unwrap(),
+    ]);
+    assert!(
+        common::stdout(&o).contains("G150 P2000 Q0.5 R0.1"),
+        "{}",
+        common::stderr(&o)
+    );
+}

@@ -155,6 +155,10 @@ fn exec_stmt(
             it.begin_block(block);
             super::threading::exec(it, words, block, exprs)
         }
+        Aux { letter, code, .. } if super::haas_g150::runs(it, *letter, *code) => {
+            it.begin_block(block);
+            super::haas_g150::exec(it)
+        }
         Aux {
             letter,
             code,
