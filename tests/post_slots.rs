@@ -230,3 +230,77 @@ fn other_targets_keep_explicit_moves() {
         );
     }
 }
+
+/// `cncc port --features --to siemens840d` of the CC2 test part: its
+/// tool-wide slot (60 long, 4 deep in two layers, 8 mm end mill) becomes
+/// one LONGHOLE, and the ported program raises to the same SLOT.
+#[test]
+fn port_features_writes_the_test_parts_slot_as_a_longhole() {
+    let dir = common::root().join("tests/programs/raise2");
+    let table = dir.join("cc2part.tbl");
+    let table = table.to_str().unwrap();
+    let raise = |file: &str, dialect: &str| {
+        let o = common::cncc(&[
+            "stepnc",
+            "--cc2",
+            "--machine-units",
+            "mm",
+            "--tool-table",
+            table,
+            "--stock",
+            "120x80x21+0+0-20",
+            "--dialect",
+            dialect,
+            file,
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{}", common::stderr(&o));
+        let text = common::stdout(&o);
+        let l: Vec<String> = text.lines().map(str::to_string).collect();
+        let at = l.iter().position(|x| x.contains("=SLOT(")).expect("a slot");
+        // The slot's own entities, without the ids that number them.
+        l[at..at + 17]
+            .iter()
+            .map(|x| x.split_once('=').map_or(x.as_str(), |(_, r)| r).to_string())
+            .filter(|x| !x.starts_with("MILLING_TECHNOLOGY") && !x.starts_with("SETUP"))
+            .collect::<Vec<_>>()
+    };
+    let src = dir.join("cc2part.nc");
+    let o = common::cncc(&[
+        "port",
+        "--features",
+        "--to",
+        "siemens840d",
+        "--from",
+        "fanuc",
+        "--machine-units",
+        "mm",
+        "--tool-table",
+        table,
+        "--stock",
+        "120x80x21+0+0-20",
+        src.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", common::stderr(&o));
+    let text = common::stdout(&o);
+    assert!(
+        text.contains("LONGHOLE(25,0,2,-4,,1,68,26,10,0,0,0,250,250,2)"),
+        "{text}"
+    );
+    let ported = save("cc2part-slot.mpf", &text);
+    let a = raise(src.to_str().unwrap(), "fanuc");
+    let b = raise(ported.to_str().unwrap(), "siemens840d");
+    let geometry = |v: &[String]| {
+        v.iter()
+            .filter(|x| {
+                x.starts_with("CARTESIAN_POINT")
+                    || x.starts_with("TOLERANCED_LENGTH_MEASURE")
+                    || x.starts_with("DIRECTION('COURSE")
+                    || x.starts_with("RADIUSED")
+                    || x.starts_with("SQUARE_U")
+            })
+            .map(|x| x.split(",#").next().unwrap().to_string())
+            .collect::<Vec<_>>()
+    };
+    assert!(geometry(&a).len() >= 6, "{a:#?}");
+    assert_eq!(geometry(&a), geometry(&b), "{a:#?}\n{b:#?}");
+}
