@@ -241,3 +241,70 @@ fn g150_is_kept_and_reported_as_not_expanded() {
         common::stderr(&o)
     );
 }
+
+#[test]
+fn port_refuses_g12_where_the_target_has_none_and_expands_it_on_request() {
+    let p = save("port.nc", PROGRAM);
+    let p = p.to_str().unwrap();
+    for to in ["fanuc", "linuxcnc", "siemens840d", "heidenhain"] {
+        let o = common::cncc(&["port", "--from", "haas", "--to", to, p]);
+        let err = common::stderr(&o);
+        assert_eq!(o.status.code(), Some(1), "{to}: {err}");
+        assert!(
+            err.contains("E0610") && err.contains("G12 cannot be ported"),
+            "{to}: {err}"
+        );
+    }
+    // --expand-cycles: the G90 G12 becomes its moves; the G91 G13 stays refused.
+    let o = common::cncc(&[
+        "port",
+        "--from",
+        "haas",
+        "--to",
+        "linuxcnc",
+        "--expand-cycles",
+        p,
+    ]);
+    let err = common::stderr(&o);
+    assert!(
+        err.contains("G13 cannot be ported to linuxcnc: in G91"),
+        "{err}"
+    );
+    assert!(!err.contains("G12 cannot"), "{err}");
+    let absolute = PROGRAM.replace("G91 G13 X-30. I4. Z-2. L2 F200.\n", "");
+    let p = save("port-abs.nc", &absolute);
+    let o = common::cncc(&[
+        "port",
+        "--from",
+        "haas",
+        "--to",
+        "linuxcnc",
+        "--expand-cycles",
+        "--verify",
+        p.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", common::stderr(&o));
+    let out = common::stdout(&o);
+    assert!(out.contains("G2 X35 Y40 Z-3 I-15 J0"), "{out}");
+    assert!(!out.lines().any(|l| l.starts_with("G12")), "{out}");
+    // G150 is never expanded.
+    let p = save(
+        "port150.nc",
+        "G17 G21 G90\nT1 M6\nG150 P2000 Q0.5 R0.1 Z-1. F100. D1\nM30\n",
+    );
+    let o = common::cncc(&[
+        "port",
+        "--from",
+        "haas",
+        "--to",
+        "fanuc",
+        "--expand-cycles",
+        p.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        common::stderr(&o).contains("G150 cannot be ported"),
+        "{}",
+        common::stderr(&o)
+    );
+}

@@ -15,11 +15,14 @@ use crate::diag::{Code, Diagnostic};
 use crate::dialect::Capability;
 use crate::ir::Decimal;
 
+/// Is this code G150 (whatever the dialect)?
+pub fn is_general_pocket(letter: char, code: Decimal) -> bool {
+    letter.eq_ignore_ascii_case(&'G') && (code.to_f64() - 150.0).abs() < 1e-9
+}
+
 /// Does this interpreter read the code as Haas's G150?
 pub fn runs(it: &Interp<'_, '_>, letter: char, code: Decimal) -> bool {
-    letter.eq_ignore_ascii_case(&'G')
-        && (code.to_f64() - 150.0).abs() < 1e-9
-        && it.spec.has(Capability::GeneralPocketCycle)
+    is_general_pocket(letter, code) && it.spec.has(Capability::GeneralPocketCycle)
 }
 
 /// Notes that the cycle is not expanded (W0510); the run goes on.
