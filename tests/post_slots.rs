@@ -25,29 +25,15 @@ fn tol(v: f64) -> Toleranced {
 /// (50, 10) along `dir`, 5 deep, cut with the 18 mm end mill (roughing
 /// operation of Example 1, without allowances, 2.5 per layer).
 fn with_slot(width: f64, dir: [f64; 3], ends: Vec<SlotEnd>) -> Project {
+    with_slots(width, &[([50.0, 10.0], dir)], ends)
+}
+
+/// Example 1 plus alike slots, one workingstep each (ids `SLOT A`,
+/// `SLOT B`...), each from its origin along its direction.
+fn with_slots(width: f64, slots: &[([f64; 2], [f64; 3])], ends: Vec<SlotEnd>) -> Project {
     let mut p = fixture::ex1();
-    let mut f = p.features[2].clone();
-    f.id = "SLOT A".into();
-    f.placement.location.xyz = [50.0, 10.0, 0.0];
-    f.placement.ref_direction.as_mut().unwrap().ratios = [1.0, 0.0, 0.0];
-    f.depth.position.location.xyz = [0.0, 0.0, -5.0];
-    let mut direction = p.features[0].placement.ref_direction.clone().unwrap();
-    direction.ratios = dir;
-    f.kind = FeatureKind::Slot {
-        course_of_travel: TravelPath::Linear {
-            placement: None,
-            distance: tol(40.0),
-            direction,
-        },
-        swept_shape: OpenProfile::RoundedU {
-            placement: None,
-            width: tol(width),
-        },
-        end_conditions: ends,
-    };
-    p.features.push(f);
     let mut op = p.operations[3].clone();
-    op.id = "ROUGH SLOT A".into();
+    op.id = "ROUGH SLOT".into();
     if let OperationKind::BottomAndSideMilling {
         axial_cutting_depth,
         allowance_side,
@@ -60,15 +46,40 @@ fn with_slot(width: f64, dir: [f64; 3], ends: Vec<SlotEnd>) -> Project {
         *allowance_bottom = None;
     }
     p.operations.push(op);
-    p.main_workplan
-        .elements
-        .push(Executable::Workingstep(MachiningWorkingstep {
-            id: "WS SLOT A".into(),
-            secplane: p.main_workplan.setup.as_ref().unwrap().secplane.clone(),
-            feature: FeatureId(3),
-            operation: OperationId(5),
-            effect: None,
-        }));
+    let op_id = OperationId(p.operations.len() as u32 - 1);
+    for (k, (at, dir)) in slots.iter().enumerate() {
+        let name = format!("SLOT {}", (b'A' + k as u8) as char);
+        let mut f = p.features[2].clone();
+        f.id = name.clone();
+        f.placement.location.xyz = [at[0], at[1], 0.0];
+        f.placement.ref_direction.as_mut().unwrap().ratios = [1.0, 0.0, 0.0];
+        f.depth.position.location.xyz = [0.0, 0.0, -5.0];
+        let mut direction = p.features[0].placement.ref_direction.clone().unwrap();
+        direction.ratios = *dir;
+        f.kind = FeatureKind::Slot {
+            course_of_travel: TravelPath::Linear {
+                placement: None,
+                distance: tol(40.0),
+                direction,
+            },
+            swept_shape: OpenProfile::RoundedU {
+                placement: None,
+                width: tol(width),
+            },
+            end_conditions: ends.clone(),
+        };
+        p.features.push(f);
+        let feature = FeatureId(p.features.len() as u32 - 1);
+        p.main_workplan
+            .elements
+            .push(Executable::Workingstep(MachiningWorkingstep {
+                id: format!("WS {name}"),
+                secplane: p.main_workplan.setup.as_ref().unwrap().secplane.clone(),
+                feature,
+                operation: op_id,
+                effect: None,
+            }));
+    }
     p
 }
 
@@ -303,4 +314,60 @@ fn port_features_writes_the_test_parts_slot_as_a_longhole() {
     };
     assert!(geometry(&a).len() >= 6, "{a:#?}");
     assert_eq!(geometry(&a), geometry(&b), "{a:#?}\n{b:#?}");
+}
+
+/// Four alike slots 24 wide pointing out from (100, 100), their inner ends
+/// 20 from it, 90 degrees apart: one SLOT1 with NUM 4, RAD 20, INDA 90.
+#[test]
+fn alike_slots_on_a_circle_are_one_slot1() {
+    let slots: Vec<([f64; 2], [f64; 3])> = (0..4)
+        .map(|k| {
+            let a = (k as f64 * 90.0_f64).to_radians();
+            let (c, s) = (a.cos().round(), a.sin().round());
+            // The course of travel starts at the first end arc's centre:
+            // 20 + 12 out from the circle's centre.
+            ([100.0 + 32.0 * c, 100.0 + 32.0 * s], [c, s, 0.0])
+        })
+        .collect();
+    let text = siemens(&with_slots(24.0, &slots, radiused()));
+    let calls: Vec<&str> = text.lines().filter(|l| l.starts_with("SLOT1(")).collect();
+    assert_eq!(
+        calls,
+        ["SLOT1(30,0,15,-5,,4,64,24,100,100,20,0,90,2400,2400,2.5,2,0,1,2.5,2400,1200)"],
+        "{text}"
+    );
+    assert!(text.contains("4 slots on a circle"), "{text}");
+    // Raised back: four 64 x 24 stadiums centred 52 out from the centre.
+    let p21 = check_and_raise("slot1-circle.mpf", &text, "siemens840d");
+    for centre in [
+        "(152.,100.,5.)",
+        "(100.,152.,5.)",
+        "(48.,100.,5.)",
+        "(100.,48.,5.)",
+    ] {
+        assert!(p21.contains(centre), "{centre}:\n{p21}");
+    }
+    // Two of them are not a circle of four: each its own SLOT1.
+    let text = siemens(&with_slots(
+        24.0,
+        &slots[..1]
+            .iter()
+            .chain(&slots[2..3])
+            .cloned()
+            .collect::<Vec<_>>(),
+        radiused(),
+    ));
+    let n = text.lines().filter(|l| l.starts_with("SLOT1(")).count();
+    assert_eq!(n, 1, "opposite slots form a circle of two:\n{text}");
+    let parallel = [
+        ([50.0, 10.0], [1.0, 0.0, 0.0]),
+        ([50.0, 50.0], [1.0, 0.0, 0.0]),
+    ];
+    let text = siemens(&with_slots(24.0, &parallel, radiused()));
+    let n = text.lines().filter(|l| l.starts_with("SLOT1(")).count();
+    assert_eq!(n, 2, "{text}");
+    assert!(
+        text.contains("2 alike slots, one by one: the slots do not lie radially"),
+        "{text}"
+    );
 }

@@ -29,6 +29,7 @@ pub mod plan;
 mod pocket_g12;
 mod pockets;
 pub mod render;
+mod slot_circle;
 mod slot_cycles;
 mod slots;
 mod step;

@@ -24,6 +24,7 @@
 use super::frame::Frame;
 use super::milling::{spindle_cw, Cut};
 use super::plan::Step;
+use super::slot_circle::SlotCircle;
 use super::step::{feed, spindle_rpm};
 use super::values::Vals;
 use super::{PostError, Writer};
@@ -45,6 +46,7 @@ pub fn try_cycle(
     c: &Cut<'_>,
     g: &SlotGeom,
     radiused: bool,
+    circle: Option<&SlotCircle>,
 ) -> Result<Option<String>, PostError> {
     let has_slot1 = w.post.has("slot1.j2");
     let has_longhole = w.post.has("slot_longhole.j2");
@@ -73,7 +75,7 @@ pub fn try_cycle(
                     .into(),
             ));
         }
-        return longhole(w, s, c, g).map(|()| None);
+        return longhole(w, s, c, g, circle).map(|()| None);
     }
     if g.width < d {
         return Ok(Some("the tool is wider than the slot".into()));
@@ -86,45 +88,75 @@ pub fn try_cycle(
             "SLOT1 plunges inside the slot and the tool does not cut across its centre".into(),
         ));
     }
-    slot1(w, s, c, g).map(|()| None)
+    slot1(w, s, c, g, circle).map(|()| None)
 }
 
 /// The values both cycles share.
-fn common(w: &Writer<'_>, s: &Step<'_>, c: &Cut<'_>, g: &SlotGeom, bottom: f64) -> Vals {
+/// One slot: NUM 1, RAD 0, the circle's centre at the slot's inner end.
+fn common(
+    w: &Writer<'_>,
+    s: &Step<'_>,
+    c: &Cut<'_>,
+    g: &SlotGeom,
+    bottom: f64,
+    circle: Option<&SlotCircle>,
+) -> Vals {
     let leng = g.travel + g.width;
     let x = g.frame.x;
-    let inner = [
-        g.frame.origin[0] - x[0] * leng / 2.0,
-        g.frame.origin[1] - x[1] * leng / 2.0,
-    ];
+    let one = SlotCircle {
+        centre: [
+            g.frame.origin[0] - x[0] * leng / 2.0,
+            g.frame.origin[1] - x[1] * leng / 2.0,
+        ],
+        rad: 0.0,
+        sta: g.frame.angle_deg(),
+        inda: 0.0,
+        num: 1,
+    };
+    let k = circle.unwrap_or(&one);
     Vals::new()
         .set("clear", w.fmt.len(s.clear))
         .set("top", w.fmt.len(s.top))
         .set("sdis", w.fmt.len(s.sdis))
         .set("bottom", w.fmt.len(bottom))
-        .set("num", "1")
+        .set("num", k.num.to_string())
         .set("leng", w.fmt.len(leng))
-        .set("cpa", w.fmt.len(inner[0]))
-        .set("cpo", w.fmt.len(inner[1]))
-        .set("rad", w.fmt.len(0.0))
-        .set("sta1", w.fmt.angle(g.frame.angle_deg().rem_euclid(360.0)))
-        .set("inda", w.fmt.angle(0.0))
+        .set("cpa", w.fmt.len(k.centre[0]))
+        .set("cpo", w.fmt.len(k.centre[1]))
+        .set("rad", w.fmt.len(k.rad))
+        .set("sta1", w.fmt.angle(k.sta.rem_euclid(360.0)))
+        .set("inda", w.fmt.angle(k.inda))
         .set("mid", w.fmt.len(c.ap.unwrap_or(s.top - bottom)))
 }
 
 /// LONGHOLE: one plunge-and-feed pass per level along the centre line.
-fn longhole(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>, g: &SlotGeom) -> Result<(), PostError> {
+fn longhole(
+    w: &mut Writer<'_>,
+    s: &Step<'_>,
+    c: &Cut<'_>,
+    g: &SlotGeom,
+    circle: Option<&SlotCircle>,
+) -> Result<(), PostError> {
     let bottom = s.bottom + if c.finish { 0.0 } else { c.allow_bottom };
     let f = w.fmt.feed(feed(s)?);
-    w.comment("slot as wide as the tool: LONGHOLE")?;
-    let v = common(w, s, c, g, bottom)
+    w.comment(&format!(
+        "slot as wide as the tool: LONGHOLE{}",
+        placed(circle)
+    ))?;
+    let v = common(w, s, c, g, bottom, circle)
         .set("ffd", f.clone())
         .set("ffp1", f);
     w.emit("slot_longhole.j2", v)
 }
 
 /// SLOT1: the slot cleared as a pocket with round ends.
-fn slot1(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>, g: &SlotGeom) -> Result<(), PostError> {
+fn slot1(
+    w: &mut Writer<'_>,
+    s: &Step<'_>,
+    c: &Cut<'_>,
+    g: &SlotGeom,
+    circle: Option<&SlotCircle>,
+) -> Result<(), PostError> {
     let ccw = c.ccw(spindle_cw(s)?);
     let (fal, units) = match (c.finish, s.roughed_by) {
         (false, _) => (c.allow_side, 1),
@@ -135,8 +167,11 @@ fn slot1(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>, g: &SlotGeom) -> Result<
         w.not_carried("the floor allowance of the roughing pass (SLOT1 reads none)")?;
     }
     let f = w.fmt.feed(feed(s)?);
-    w.comment("slot wider than the tool: SLOT1, one slot (NUM 1, RAD 0)")?;
-    let v = common(w, s, c, g, s.bottom)
+    w.comment(&format!(
+        "slot wider than the tool: SLOT1{}",
+        placed(circle)
+    ))?;
+    let v = common(w, s, c, g, s.bottom, circle)
         .set("wid", w.fmt.len(g.width))
         .set("ffd", f.clone())
         .set("ffp1", f.clone())
@@ -147,6 +182,14 @@ fn slot1(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>, g: &SlotGeom) -> Result<
         .set("ffp2", f)
         .set("ssf", w.fmt.feed(spindle_rpm(s)?.abs()));
     w.emit("slot1.j2", v)
+}
+
+/// How the cycle places the slots, for the comment.
+fn placed(circle: Option<&SlotCircle>) -> String {
+    match circle {
+        None => ", one slot (NUM 1, RAD 0)".into(),
+        Some(k) => format!(", {} slots on a circle", k.num),
+    }
 }
 
 fn side_allowance(op: &crate::stepnc::model::Operation) -> f64 {
