@@ -430,7 +430,7 @@ codes! {
         "G12/G13 compensate their circles by the tool radius of their own D word. Cancel G41/G42 with G40 before the cycle, and give the offset with D (D0: the radii are the tool centre's).";
     CircularPocketRadius = "E0516", "circular-pocket-radius", Error,
         "a Haas G12/G13 circular pocket whose radii cannot be cut",
-        "I (the first circle's radius) must be more than the radius of the tool D selects, and K (the finished radius) must not be less than I.";
+        "I (the first circle's radius) must be more than the radius of the tool D selects, and K (the finished radius), when given, must be more than I.";
     CircularPocketStep = "E0517", "circular-pocket-step", Error,
         "a Haas G12/G13 circular pocket with K but no positive Q",
         "With K the cycle cuts circles from I out to K, Q apart: Q must be given and greater than zero (less than the tool diameter to clear all the material).";

@@ -27,7 +27,9 @@
 //!
 //! Not run: another plane than G17, or cutter compensation already on
 //! (the cycle compensates itself); I not beyond the tool radius, K less
-//! than I, K without a positive Q. Each is an error with its own code.
+//! than or equal to I (the Haas reference: I more than the tool radius,
+//! less than K), K without a positive Q. Each is an error with its own
+//! code.
 
 use super::host::MotionHost;
 use super::machine::pose6;
@@ -152,11 +154,11 @@ fn read(
     }
     let mut radii = vec![i];
     if let Some(k) = k {
-        if k < i {
+        if k <= i {
             return Err(fail(
                 it,
                 Code::CircularPocketRadius,
-                format!("{g}: K{k} is less than I{i}"),
+                format!("{g}: K{k} is not more than I{i}"),
             ));
         }
         let q = match q {
@@ -181,9 +183,7 @@ fn read(
             radii.push(next);
             next += q;
         }
-        if k > i {
-            radii.push(k);
-        }
+        radii.push(k);
     }
     let radii = radii.into_iter().map(|x| x - r).collect();
     let levels = levels(it, g, words, exprs, radii_len(k, i, q))?;
