@@ -425,6 +425,15 @@ codes! {
     PolarAtOrigin = "E0513", "polar-at-origin", Error,
         "incremental polar words (@ ^) at the program origin",
         "Under G91 the polar words add to the current point's distance and angle from the program origin; at the origin that angle is undefined, so LinuxCNC rejects the move (or the canned-cycle repeat). Move off the origin first, or use G90 polar words.";
+    CircularPocketComp = "E0515", "circular-pocket-comp", Error,
+        "a Haas G12/G13 circular pocket with cutter compensation already on",
+        "G12/G13 compensate their circles by the tool radius of their own D word. Cancel G41/G42 with G40 before the cycle, and give the offset with D (D0: the radii are the tool centre's).";
+    CircularPocketRadius = "E0516", "circular-pocket-radius", Error,
+        "a Haas G12/G13 circular pocket whose radii cannot be cut",
+        "I (the first circle's radius) must be more than the radius of the tool D selects, and K (the finished radius), when given, must be more than I.";
+    CircularPocketStep = "E0517", "circular-pocket-step", Error,
+        "a Haas G12/G13 circular pocket with K but no positive Q",
+        "With K the cycle cuts circles from I out to K, Q apart: Q must be given and greater than zero (less than the tool diameter to clear all the material).";
     TncCycleParameterMissing = "E0523", "cycle-parameter-missing-at-run", Error,
         "a Heidenhain cycle called without a Q parameter its run needs",
         "The cycle defined last lacks a Q parameter (E0320 names it where it is defined) and the run cannot go on without its value: the TNC asks for every parameter when the cycle is defined. Add the `Qnnn=value` line to the CYCL DEF.";

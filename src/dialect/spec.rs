@@ -99,6 +99,11 @@ pub enum Capability {
     /// Heidenhain paths: circles round the pole `CC`, polar `LP`/`CP`/`CTP`,
     /// `RND`/`CHF` blocks between elements, cycles by `CYCL DEF` + call.
     PolePaths,
+    /// Haas G12/G13 circular pocket milling (I K Q Z L D), run as a cycle.
+    CircularPocketCycle,
+    /// Haas G150 general pocket milling: read and kept, reported as not
+    /// expanded (W0510) instead of stopping the run.
+    GeneralPocketCycle,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -134,6 +139,8 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ),
     ("semicolon-end-of-block", Capability::SemicolonEndOfBlock),
     ("pole-paths", Capability::PolePaths),
+    ("circular-pocket-cycle", Capability::CircularPocketCycle),
+    ("general-pocket-cycle", Capability::GeneralPocketCycle),
 ];
 
 impl Capability {

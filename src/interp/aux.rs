@@ -139,9 +139,12 @@ pub fn word_or_loose(
     }
 }
 
-/// Aux codes that are motions run in the motion phase (splines, G76).
+/// Aux codes that are motions run in the motion phase (splines, G76,
+/// Haas G12/G13).
 pub fn is_motion_aux(letter: char, code: crate::ir::Decimal) -> bool {
-    super::splines::is_spline(letter, code) || super::threading::is_threading(letter, code)
+    super::splines::is_spline(letter, code)
+        || super::threading::is_threading(letter, code)
+        || super::haas_pocket::is_circular_pocket(letter, code)
 }
 
 /// The value of a loose word (`StmtKind::Word`) of the block, if written.

@@ -155,6 +155,18 @@ fn exec_stmt(
             it.begin_block(block);
             super::threading::exec(it, words, block, exprs)
         }
+        Aux { letter, code, .. } if super::haas_g150::runs(it, *letter, *code) => {
+            it.begin_block(block);
+            super::haas_g150::exec(it)
+        }
+        Aux {
+            letter,
+            code,
+            words,
+        } if super::haas_pocket::runs(it, *letter, *code) => {
+            it.begin_block(block);
+            super::haas_pocket::exec(it, *code, words, block, exprs)
+        }
         Comment { .. }
         | Message(_)
         | FeedMode(_)

@@ -16,6 +16,8 @@ pub mod exec;
 pub mod fanuc_xform;
 pub mod file;
 pub mod flow;
+pub mod haas_g150;
+pub mod haas_pocket;
 pub mod heidenhain;
 pub mod host;
 pub mod index;

@@ -81,6 +81,12 @@ fn collect(p: &Program, from: &DialectSpec) -> Calls {
 }
 
 /// Is `s` part of a cycle (to expand), or its cancel (to drop)?
+/// A Haas G12/G13 circular pocket (kept as an `Aux` code).
+fn is_g12(s: &StmtKind) -> bool {
+    matches!(s, StmtKind::Aux { letter, code, .. }
+        if crate::interp::haas_pocket::is_circular_pocket(*letter, *code))
+}
+
 fn in_cycle(s: &StmtKind, modal: &mut bool) -> bool {
     match s {
         StmtKind::Cycle(_) => {
@@ -112,8 +118,11 @@ pub fn expand_unmappable(
     for mut b in blocks {
         let mut stmts = Vec::new();
         let mut after = Vec::new();
+        // Haas G12/G13: the block's X/Y move is part of the cycle's moves.
+        let g12 = b.stmts.iter().any(|s| is_g12(&s.kind));
         for s in std::mem::take(&mut b.stmts) {
-            if !in_cycle(&s.kind, &mut modal) {
+            let pocket_move = g12 && matches!(s.kind, StmtKind::Motion(_));
+            if !pocket_move && !is_g12(&s.kind) && !in_cycle(&s.kind, &mut modal) {
                 stmts.push(s);
                 continue;
             }

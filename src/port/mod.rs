@@ -36,6 +36,7 @@ pub mod forms;
 mod frame;
 mod from_tnc;
 mod groups;
+mod haas_cycles;
 mod levels;
 mod loops;
 mod pockets;
@@ -74,6 +75,7 @@ pub fn port_program(
 ) -> (Program, Vec<Diagnostic>) {
     let mut out = p.clone();
     let mut diags = Vec::new();
+    haas_cycles::run(p, from, to, opts.expand_cycles, &mut diags);
     if opts.expand_cycles {
         expand::expand_unmappable(&mut out, from, to, &mut diags);
     }

@@ -6,7 +6,7 @@
 
 use super::paths::P2;
 use super::plan::{Item, Step};
-use crate::stepnc::model::FeatureKind;
+use crate::stepnc::model::{FeatureKind, TravelPath};
 
 const EPS: f64 = 1e-6;
 
@@ -14,6 +14,8 @@ const EPS: f64 = 1e-6;
 pub enum Unit<'a, 'p> {
     Item(&'a Item<'p>),
     Holes(Vec<&'a Step<'p>>),
+    /// Consecutive alike slots (same size, depth, tool and operation).
+    Slots(Vec<&'a Step<'p>>),
 }
 
 /// Groups consecutive equal hole operations.
@@ -24,6 +26,13 @@ pub fn units<'a, 'p>(items: &'a [Item<'p>]) -> Vec<Unit<'a, 'p>> {
             out.push(Unit::Item(item));
             continue;
         };
+        if matches!(s.feature.kind, FeatureKind::Slot { .. }) {
+            match out.last_mut() {
+                Some(Unit::Slots(g)) if same_slot_op(g[0], s) => g.push(s),
+                _ => out.push(Unit::Slots(vec![s])),
+            }
+            continue;
+        }
         if !matches!(s.feature.kind, FeatureKind::RoundHole { .. }) {
             out.push(Unit::Item(item));
             continue;
@@ -49,6 +58,36 @@ fn same_hole_op(a: &Step<'_>, b: &Step<'_>) -> bool {
     a.tool_no == b.tool_no
         && blank(a) == blank(b)
         && fa == fb
+        && (a.top - b.top).abs() < EPS
+        && (a.bottom - b.bottom).abs() < EPS
+        && (a.clear - b.clear).abs() < EPS
+}
+
+/// Slots alike but for where they lie (the course of travel's direction
+/// and placement may differ).
+fn same_slot_op(a: &Step<'_>, b: &Step<'_>) -> bool {
+    let size = |s: &Step<'_>| match &s.feature.kind {
+        FeatureKind::Slot {
+            course_of_travel: TravelPath::Linear { distance, .. },
+            swept_shape,
+            end_conditions,
+        } => Some((
+            distance.clone(),
+            swept_shape.clone(),
+            end_conditions.clone(),
+        )),
+        _ => None,
+    };
+    let blank = |s: &Step<'_>| {
+        let mut op = s.op.clone();
+        op.id.clear();
+        op
+    };
+    size(a).is_some()
+        && size(a) == size(b)
+        && a.tool_no == b.tool_no
+        && blank(a) == blank(b)
+        && a.roughed_by == b.roughed_by
         && (a.top - b.top).abs() < EPS
         && (a.bottom - b.bottom).abs() < EPS
         && (a.clear - b.clear).abs() < EPS

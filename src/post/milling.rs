@@ -10,7 +10,10 @@ use super::step::{feed, spindle_rpm};
 use super::{explicit, PostError, Writer};
 use crate::stepnc::model::*;
 
-pub fn write(w: &mut Writer<'_>, s: &Step<'_>) -> Result<(), PostError> {
+/// The workingstep `steps[0]` (several only for alike slots, which are
+/// written together).
+pub fn write(w: &mut Writer<'_>, steps: &[&Step<'_>]) -> Result<(), PostError> {
+    let s = steps[0];
     let (finish, milling, ap, ae, allow_side, allow_bottom) = match &s.op.kind {
         OperationKind::BottomAndSideMilling {
             finish,
@@ -112,7 +115,7 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>) -> Result<(), PostError> {
             if w.post.has("slot.j2") && super::slot_cycle::write(w, s, &cut)? {
                 return Ok(());
             }
-            super::slots::write(w, s, &cut)
+            super::slots::write_group(w, steps, &cut)
         }
         _ => Err(PostError::unsupported(&s.feature.id, "this feature")),
     }

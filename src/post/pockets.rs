@@ -42,6 +42,11 @@ pub fn write(
         r_plane: s.top + s.sdis,
     };
     pocket::check(shape, &pcut).map_err(|e| PostError::geometry(&s.feature.id, e))?;
+    // Haas G12/G13 plunge at the centre: centre-cutting tools only.
+    let g12 = cycles && w.post.has("pocket_circ_g12.j2") && cuts_across_centre(&s.tool.body.kind);
+    if let (true, Shape::Circle { diameter }) = (g12, shape) {
+        return super::pocket_g12::write(w, s, c, *diameter, frame, &pcut);
+    }
     let centre_cutting = cuts_across_centre(&s.tool.body.kind);
     let (centre_cycle, any_cycle) = match shape {
         Shape::Rect(_) => ("pocket_rect.j2", "pocket_rect_any.j2"),
@@ -159,7 +164,7 @@ fn insertion(a: Option<&ApproachRetract>) -> (u32, f64, f64) {
 
 /// End mills cut across their centre; face mills and the rest do not
 /// (ISO 14649-111 has no such attribute: the body type decides).
-fn cuts_across_centre(k: &ToolBodyKind) -> bool {
+pub(super) fn cuts_across_centre(k: &ToolBodyKind) -> bool {
     matches!(
         k,
         ToolBodyKind::Endmill

@@ -5,21 +5,38 @@
 //! from its centre line outwards (a slot as wide as the tool is one pass
 //! per layer along the centre line).
 //!
-//! Not posted as SLOT1/LONGHOLE: those cycles place slots radially on a
-//! circle, and which point of the slot their RAD and LENG refer to is not
-//! confirmed in our references ([?] in dialects.md §1.7). Also uncertain
-//! [?]: whether a radiused slot's course of travel runs between the
-//! centres of its end arcs (read so here: the outline is the travel
+//! Where the target has a slot cycle that fits (840D SLOT1/LONGHOLE,
+//! [`super::slot_cycles`]) the slot is posted as that cycle instead, else
+//! the comment before the moves says why not.
+//! Uncertain [?]: whether a radiused slot's course of travel runs between
+//! the centres of its end arcs (read so here: the outline is the travel
 //! length plus the width) or spans the whole slot.
 
 use super::frame::Frame;
 use super::milling::Cut;
 use super::paths::pocket::{RectPocket, Shape};
 use super::plan::Step;
+use super::slot_cycles::{try_cycle, SlotGeom};
 use super::{PostError, Writer};
 use crate::stepnc::model::*;
 
-pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostError> {
+/// A straight slot read from its feature: where it lies and how it ends.
+pub struct Parts<'p> {
+    pub geom: SlotGeom,
+    pub ends: &'p [SlotEnd],
+    /// The profile has floor fillets (the tool's corner makes them).
+    pub fillets: bool,
+}
+
+impl Parts<'_> {
+    pub fn radiused(&self) -> bool {
+        self.ends.len() == 2 && self.ends.iter().all(|e| matches!(e, SlotEnd::Radiused))
+    }
+}
+
+/// The slot's geometry in workpiece coordinates, or why it cannot be
+/// posted at all.
+pub fn parts<'p>(s: &Step<'p>) -> Result<Parts<'p>, PostError> {
     let FeatureKind::Slot {
         course_of_travel,
         swept_shape,
@@ -45,9 +62,9 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
             "a slot whose course of travel is not a straight path from its origin",
         ));
     };
-    let width = match swept_shape {
+    let (width, fillets) = match swept_shape {
         // The profile's placement only sets the cross-section on the path.
-        OpenProfile::RoundedU { width, .. } => width.nominal,
+        OpenProfile::RoundedU { width, .. } => (width.nominal, false),
         OpenProfile::SquareU {
             width,
             first_radius,
@@ -62,10 +79,10 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
                     "a slot with sloped walls",
                 ));
             }
-            if first_radius.nominal > 0.0 || second_radius.nominal > 0.0 {
-                w.not_carried("the slot's floor fillets: the tool's corner makes them")?;
-            }
-            width.nominal
+            (
+                width.nominal,
+                first_radius.nominal > 0.0 || second_radius.nominal > 0.0,
+            )
         }
         _ => {
             return Err(PostError::unsupported(
@@ -74,8 +91,6 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
             ))
         }
     };
-    let d = s.tool.body.dimension.diameter;
-    let (length, corner) = outline(w, s, end_conditions, distance.nominal, width, d)?;
     let u = direction.ratios;
     let n = (u[0] * u[0] + u[1] * u[1]).sqrt();
     if n < 1e-9 || u[2].abs() > 1e-9 {
@@ -99,14 +114,68 @@ pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostEr
         Some(p) => s.frame.then(&Frame::from_placement(p)),
         None => s.frame,
     };
-    let frame = path.then(&local);
+    Ok(Parts {
+        geom: SlotGeom {
+            frame: path.then(&local),
+            travel: distance.nominal,
+            width,
+        },
+        ends: end_conditions,
+        fillets,
+    })
+}
+
+/// Slots that the grouping found alike (same size, depth and operation):
+/// one SLOT1/LONGHOLE call when they form a circle the cycle places
+/// radially ([`super::slot_circle`]) and the cycle fits, else each slot
+/// on its own.
+pub fn write_group(w: &mut Writer<'_>, steps: &[&Step<'_>], c: &Cut<'_>) -> Result<(), PostError> {
+    if steps.len() > 1 {
+        let all: Result<Vec<Parts<'_>>, PostError> = steps.iter().map(|s| parts(s)).collect();
+        let all = all?;
+        let why = match super::slot_circle::circle(&all) {
+            None => "the slots do not lie radially on one circle".to_string(),
+            Some(circle) => {
+                let first = &all[0];
+                note_fillets(w, first)?;
+                match try_cycle(w, steps[0], c, &first.geom, first.radiused(), Some(&circle))? {
+                    None => return Ok(()),
+                    Some(why) => why,
+                }
+            }
+        };
+        w.comment(&format!("{} alike slots, one by one: {why}", steps.len()))?;
+    }
+    for s in steps {
+        write(w, s, c)?;
+    }
+    Ok(())
+}
+
+fn note_fillets(w: &mut Writer<'_>, p: &Parts<'_>) -> Result<(), PostError> {
+    if p.fillets {
+        w.not_carried("the slot's floor fillets: the tool's corner makes them")?;
+    }
+    Ok(())
+}
+
+pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<(), PostError> {
+    let p = parts(s)?;
+    note_fillets(w, &p)?;
+    let d = s.tool.body.dimension.diameter;
+    let g = &p.geom;
+    let (length, corner) = outline(w, s, p.ends, g.travel, g.width, d)?;
+    let why = match try_cycle(w, s, c, g, p.radiused(), None)? {
+        None => return Ok(()),
+        Some(why) => why,
+    };
     let shape = Shape::Rect(RectPocket {
         length,
-        width,
+        width: g.width,
         corner_radius: corner,
     });
-    w.comment("slot: explicit toolpath")?;
-    super::pockets::write(w, s, c, &shape, &frame, false)
+    w.comment(&format!("slot: explicit toolpath ({why})"))?;
+    super::pockets::write(w, s, c, &shape, &g.frame, false)
 }
 
 /// The outline's length and corner radius from the end conditions.

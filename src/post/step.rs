@@ -23,7 +23,7 @@ pub fn write_program(
     let mut errors = Vec::new();
     for unit in group::units(items) {
         let item = match unit {
-            Unit::Holes(steps) => {
+            Unit::Holes(steps) | Unit::Slots(steps) => {
                 if let Err(e) = write_step(w, project, &steps) {
                     errors.push(e);
                 }
@@ -176,9 +176,10 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
     coolant(w, &s.op.machine_functions)?;
     match &s.feature.kind {
         FeatureKind::RoundHole { .. } => holes::write(w, steps)?,
-        FeatureKind::ClosedPocket { .. }
-        | FeatureKind::PlanarFace { .. }
-        | FeatureKind::Slot { .. } => milling::write(w, s)?,
+        FeatureKind::ClosedPocket { .. } | FeatureKind::PlanarFace { .. } => {
+            milling::write(w, steps)?
+        }
+        FeatureKind::Slot { .. } => milling::write(w, steps)?,
         FeatureKind::OpenPocket { .. }
         | FeatureKind::Step { .. }
         | FeatureKind::GeneralOutsideProfile { .. }
