@@ -82,6 +82,7 @@ pub fn port_program(
     frame::run(&mut out, from, to);
     poles::run(&mut out, from, to, &mut diags);
     to_named::run(&mut out, from, to, &mut diags);
+    to_tnc::named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
     to_tnc::run(&mut out, from, to, &mut diags);
     decls::run(&mut out, to, &mut diags);
@@ -90,6 +91,7 @@ pub fn port_program(
     forms::run(&mut out, from, to, opts, &mut diags);
     groups::run(&mut out, to);
     tool_call::run(&mut out, from, to);
+    to_tnc::subprograms::run(&mut out, from, to, &mut diags);
     out.dialect = to.id.clone();
     (out, diags)
 }
