@@ -22,6 +22,8 @@
 //!   (Q212), a dwell together with pecking, 203 with a dwell, the other
 //!   numbered cycles, `CYCL CALL PAT` and `M89` calls.
 
+mod faces;
+
 use super::levels::Modal;
 use super::{decimal, follow_block};
 use crate::diag::{Code, Diagnostic};
@@ -37,6 +39,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
     if super::to_tnc::q_cycle(to, "drill").is_some() {
         return;
     }
+    faces::run(p, to, diags);
     let mut pass = Pass {
         to,
         modal: Modal::new(from),
