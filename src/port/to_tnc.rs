@@ -52,6 +52,7 @@ use crate::span::Span;
 
 mod faces;
 pub mod named;
+mod osubs;
 pub mod sub_text;
 pub mod subprograms;
 mod values;

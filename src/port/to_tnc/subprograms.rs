@@ -11,6 +11,8 @@
 //!   a section around it, as a TNC programmer writes it: `LBL m`, `CALL
 //!   LBL n`, `CALL LBL m REP k-1/k-1` (m a label the program does not use).
 //!
+//! * LinuxCNC o-word subroutines in the same file: [`super::osubs`].
+//!
 //! The called programs' text is added to the written program by
 //! [`super::sub_text`] (the port of each, with `LBL n` before it).
 
@@ -24,6 +26,9 @@ use crate::span::{Span, Spanned};
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     if to.family != Family::Klartext || from.family == Family::Klartext {
         return;
+    }
+    if from.has(crate::dialect::Capability::OWords) {
+        super::osubs::move_subs(p, diags);
     }
     let mut used: Vec<u32> = called(p);
     let blocks = std::mem::take(&mut p.blocks);
@@ -74,6 +79,12 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
                     out.push(lb);
                     cur.push(section_repeat(p, m, times - 1, span));
                 }
+                StmtKind::Call {
+                    kind: CallKind::OWord,
+                    target,
+                    args,
+                    repeat: None,
+                } => cur.extend(super::osubs::call(target, args, span, diags)),
                 kind => cur.push(Stmt::new(kind, span)),
             }
         }
