@@ -40,6 +40,7 @@ mod levels;
 mod loops;
 mod pockets;
 mod poles;
+mod spf;
 pub mod subload;
 mod tnc_labels;
 pub mod to_named;
@@ -89,6 +90,7 @@ pub fn port_program(
     loops::run(&mut out, to, &mut diags);
     arcs::run(&mut out, from, to);
     forms::run(&mut out, from, to, opts, &mut diags);
+    spf::run(&mut out, from, to);
     groups::run(&mut out, to);
     tool_call::run(&mut out, from, to);
     to_tnc::subprograms::run(&mut out, from, to, &mut diags);

@@ -1,0 +1,104 @@
+//! Subprograms and cycles ported to and from Heidenhain beyond the matrix
+//! cells: the Siemens header of a ported subprogram, refusals with E0617,
+//! and the CYCLE71 stepover carried through Q108.
+
+use std::path::Path;
+use std::process::Command;
+
+fn cncc(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_cncc"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn temp(name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("cncc-tncport-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+#[test]
+fn fanuc_subprogram_to_siemens_is_an_spf() {
+    let sub = "tests/matrix/subprograms/O1000.nc";
+    assert!(Path::new(env!("CARGO_MANIFEST_DIR")).join(sub).exists());
+    let (code, out, err) = cncc(&["port", "--from", "fanuc", "--to", "siemens840d", sub]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("%_N_L1000_SPF"), "{out}");
+    assert!(out.contains("M17"), "{out}");
+    // A main program keeps its _MPF header.
+    let main = "tests/matrix/subprograms/from-fanuc.nc";
+    let (code, out, err) = cncc(&["port", "--from", "fanuc", "--to", "siemens840d", main]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("%_N_O3009_MPF"), "{out}");
+}
+
+#[test]
+fn missing_subprogram_file_is_e0617() {
+    let p = temp(
+        "main.nc",
+        "O1\nG21 G90\nT1 M6\nG0 X0 Y0 Z5.\nM98 P4321\nM30\n",
+    );
+    let p = p.to_string_lossy().into_owned();
+    let (code, _, err) = cncc(&["port", "--from", "fanuc", "--to", "heidenhain", &p]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("[E0617"), "{err}");
+    assert!(err.contains("4321"), "{err}");
+}
+
+#[test]
+fn label_subprogram_to_siemens_is_refused() {
+    let src = "tests/matrix/subprograms/from-heidenhain.h";
+    let (code, _, err) = cncc(&["port", "--from", "heidenhain", "--to", "siemens840d", src]);
+    assert_eq!(code, 1);
+    assert!(err.contains("[E0617"), "{err}");
+}
+
+#[test]
+fn face_with_a_stepover_other_than_the_radius_is_refused_from_heidenhain() {
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/matrix/faces/from-heidenhain.h"),
+    )
+    .unwrap()
+    .replace("Q370=+1 ;", "Q370=+1.6 ;");
+    let p = temp("face.h", &text);
+    let p = p.to_string_lossy().into_owned();
+    let (code, _, err) = cncc(&["port", "--from", "heidenhain", "--to", "siemens840d", &p]);
+    assert_eq!(code, 1);
+    assert!(err.contains("[E0610") && err.contains("Q370"), "{err}");
+}
+
+#[test]
+fn cycle71_stepover_is_a_factor_of_q108() {
+    let src = "tests/matrix/faces/from-siemens840d.mpf";
+    let (code, out, err) = cncc(&[
+        "port",
+        "--from",
+        "siemens840d",
+        "--to",
+        "heidenhain",
+        "--verify",
+        src,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("verify: OK"), "{err}");
+    assert!(out.contains("QL1 = 40 / Q108"), "{out}");
+    assert!(out.contains("Q370=+QL1"), "{out}");
+    // Another strategy than the 1st axis has no 232 form.
+    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(src))
+        .unwrap()
+        .replace(",1000,31,0)", ",1000,41,0)");
+    let p = temp("face.mpf", &text);
+    let p = p.to_string_lossy().into_owned();
+    let (code, _, err) = cncc(&["port", "--from", "siemens840d", "--to", "heidenhain", &p]);
+    assert_eq!(code, 1);
+    assert!(err.contains("[E0610") && err.contains("VARI 41"), "{err}");
+}
