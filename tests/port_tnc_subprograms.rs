@@ -102,3 +102,34 @@ fn cycle71_stepover_is_a_factor_of_q108() {
     assert_eq!(code, 1);
     assert!(err.contains("[E0610") && err.contains("VARI 41"), "{err}");
 }
+
+#[test]
+fn fanuc_tape_with_two_programs_to_heidenhain_labels() {
+    let p = temp(
+        "tape.nc",
+        "%\nO3009 (MAIN)\nG21 G17 G90 G94\nT9 M6\nG0 G43 H9 Z10.\nS3000 M3\nG0 X0 Y0\n\
+         M98 P1000 L3\nG0 Z10.\nM30\nO1000 (SQUARE)\nG1 Z-1. F100.\nX10. F300.\nY10.\n\
+         X0.\nY0.\nG0 Z10.\nM99\n%\n",
+    );
+    let p = p.to_string_lossy().into_owned();
+    let (code, out, err) = cncc(&[
+        "port",
+        "--from",
+        "fanuc",
+        "--to",
+        "heidenhain",
+        "--verify",
+        &p,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("verify: OK"), "{err}");
+    for line in [
+        "LBL 1000 ;SQUARE",
+        "CALL LBL 1000",
+        "CALL LBL 1 REP 2/2",
+        "LBL 0",
+    ] {
+        assert!(out.contains(line), "{line} missing in\n{out}");
+    }
+    assert!(!out.contains("BEGIN PGM 1000"), "{out}");
+}

@@ -11,6 +11,8 @@
 //!   a section around it, as a TNC programmer writes it: `LBL m`, `CALL
 //!   LBL n`, `CALL LBL m REP k-1/k-1` (m a label the program does not use).
 //!
+//! * Programs after the main one in the same file (`O1000` after `M30`)
+//!   are its label subprograms.
 //! * LinuxCNC o-word subroutines in the same file: [`super::osubs`].
 //!
 //! The called programs' text is added to the written program by
@@ -30,6 +32,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
     if from.has(crate::dialect::Capability::OWords) {
         super::osubs::move_subs(p, diags);
     }
+    programs_as_labels(p);
     let mut used: Vec<u32> = called(p);
     let blocks = std::mem::take(&mut p.blocks);
     let mut out = Vec::with_capacity(blocks.len());
@@ -94,6 +97,48 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         }
     }
     p.blocks = out;
+}
+
+/// A file that holds more programs after the main one's end (a Fanuc tape
+/// `O3009 .. M30 O1000 .. M99 %`): each `O n` is the subprogram `LBL n`
+/// (its `M99` is `LBL 0`); the closing `%` goes.
+fn programs_as_labels(p: &mut Program) {
+    let mut ended = false;
+    for b in &mut p.blocks {
+        if ended {
+            let mut label = None;
+            for s in std::mem::take(&mut b.stmts) {
+                match s.kind {
+                    StmtKind::ProgramStart {
+                        number: Some(n),
+                        name,
+                    } => {
+                        label = Some(Spanned {
+                            node: n.to_string(),
+                            span: s.span,
+                        });
+                        // The program's title stays as a comment.
+                        if let Some(text) = name {
+                            let style = crate::ir::CommentStyle::Semicolon;
+                            b.stmts
+                                .push(Stmt::new(StmtKind::Comment { text, style }, s.span));
+                        }
+                    }
+                    StmtKind::Tape => {}
+                    kind => b.stmts.push(Stmt::new(kind, s.span)),
+                }
+            }
+            if label.is_some() && b.label.is_none() {
+                b.label = label;
+            }
+        }
+        ended |= b.stmts.iter().any(|s| {
+            matches!(
+                s.kind,
+                StmtKind::Stop(crate::ir::StopKind::End | crate::ir::StopKind::EndRewind)
+            )
+        });
+    }
 }
 
 /// The numbered programs `p` calls, in order of first call, and the labels it has.
