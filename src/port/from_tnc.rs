@@ -23,7 +23,7 @@
 //!   numbered cycles, `CYCL CALL PAT` and `M89` calls.
 
 mod faces;
-mod subprograms;
+pub(super) mod subprograms;
 
 use super::levels::Modal;
 use super::{decimal, follow_block};
@@ -37,7 +37,7 @@ use crate::ir::{
 use crate::span::Span;
 
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
-    subprograms::run(p, from, to, diags);
+    subprograms::number_main(p, from, to);
     if super::to_tnc::q_cycle(to, "drill").is_some() {
         return;
     }

@@ -81,6 +81,7 @@ pub fn port_program(
     pockets::run(&mut out, from, to, &mut diags);
     from_tnc::run(&mut out, from, to, &mut diags);
     frame::run(&mut out, from, to);
+    from_tnc::subprograms::run(&mut out, from, to, &mut diags);
     poles::run(&mut out, from, to, &mut diags);
     to_named::run(&mut out, from, to, &mut diags);
     to_tnc::named::run(&mut out, from, to, &mut diags);

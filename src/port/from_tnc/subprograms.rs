@@ -4,7 +4,10 @@
 //! `CALL LBL m REP k`: the call made k + 1 times).
 //!
 //! * A target with o-words is served first (LinuxCNC has both).
-//! * A target with numbered programs (Fanuc, Haas): the subprogram is a
+//! * A target with local subprogram calls (Haas): the subprogram stays
+//!   after `M30` as the blocks from `N n` to `M99`, called with `M97 P n`
+//!   (`L k+1` for a section around the call), all in one program.
+//! * A target with numbered programs (Fanuc): the subprogram is a
 //!   program of its own in the same file, `O n` ... `M99` after the main
 //!   program's `M30` (a Fanuc tape holding several programs, as the control
 //!   loads it into memory); `CALL LBL n` is `M98 P n`, and a section that
@@ -18,6 +21,8 @@
 //!   port does not write): E0617.
 //!
 //! Labels must be numbers for these targets; named labels are E0617.
+//! Runs after [`crate::port::frame`] (which drops the Klartext block
+//! numbers, so the Haas `N n` stays).
 
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec, Family};
@@ -31,6 +36,8 @@ use crate::span::Span;
 #[derive(Clone, Copy, PartialEq)]
 enum Form {
     Numbered,
+    /// Haas `M97 P n`: the subprogram at sequence number `N n` in this program.
+    Local,
     OWord,
 }
 
@@ -38,20 +45,13 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
     if from.family != Family::Klartext || to.family == Family::Klartext {
         return;
     }
-    let uses_labels = p.blocks.iter().flat_map(|b| &b.stmts).any(|s| {
-        matches!(
-            s.kind,
-            StmtKind::Call {
-                kind: CallKind::Label,
-                ..
-            } | StmtKind::SectionRepeat { .. }
-        )
-    });
-    if !uses_labels {
+    if !uses_labels(p) {
         return;
     }
     let form = if to.has(Capability::OWords) {
         Form::OWord
+    } else if to.has(Capability::LocalSubprogramCall) {
+        Form::Local
     } else if to.has(Capability::NumberedPrograms) {
         Form::Numbered
     } else {
@@ -66,11 +66,36 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         return;
     };
     repeats(p, form, diags);
-    if form == Form::Numbered {
-        main_number(p);
-    }
     bodies(p, form, diags);
     calls(p, form, diags);
+}
+
+/// Before [`crate::port::frame`] turns `BEGIN PGM 3009` into a comment:
+/// a main program that will share its file with numbered subprograms
+/// (Fanuc) keeps its number.
+pub fn number_main(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
+    let numbered = !to.has(Capability::OWords)
+        && !to.has(Capability::LocalSubprogramCall)
+        && to.has(Capability::NumberedPrograms);
+    if from.family == Family::Klartext
+        && to.family != Family::Klartext
+        && numbered
+        && uses_labels(p)
+    {
+        main_number(p);
+    }
+}
+
+fn uses_labels(p: &Program) -> bool {
+    p.blocks.iter().flat_map(|b| &b.stmts).any(|s| {
+        matches!(
+            s.kind,
+            StmtKind::Call {
+                kind: CallKind::Label,
+                ..
+            } | StmtKind::SectionRepeat { .. }
+        )
+    })
 }
 
 fn refusal(span: Span, msg: String) -> Diagnostic {
@@ -150,7 +175,7 @@ fn repeats(p: &mut Program, form: Form, diags: &mut Vec<Diagnostic>) {
             ),
             _ => false,
         };
-        if only_call && form == Form::Numbered {
+        if only_call && form != Form::OWord {
             let (bi, si) = inside[0];
             p.blocks[i].label = None;
             if let StmtKind::Call { repeat, .. } = &mut p.blocks[bi].stmts[si].kind {
@@ -162,7 +187,7 @@ fn repeats(p: &mut Program, form: Form, diags: &mut Vec<Diagnostic>) {
             }
             continue;
         }
-        if form == Form::Numbered {
+        if form != Form::OWord {
             diags.push(refusal(
                 s.span,
                 "a program-section repeat other than around one subprogram call".into(),
@@ -234,17 +259,26 @@ fn bodies(p: &mut Program, form: Form, diags: &mut Vec<Diagnostic>) {
             };
             let l = b.label.take().expect("checked");
             let start = match form {
-                Form::Numbered => StmtKind::ProgramStart {
+                Form::Numbered => Some(StmtKind::ProgramStart {
                     number: Some(n),
                     name: None,
-                },
-                Form::OWord => StmtKind::SubStart {
+                }),
+                Form::Local => {
+                    b.number = Some(crate::span::Spanned {
+                        node: n,
+                        span: l.span,
+                    });
+                    None
+                }
+                Form::OWord => Some(StmtKind::SubStart {
                     name: n.to_string(),
                     params: Vec::new(),
                     id: FlowId::OWord(n.to_string()),
-                },
+                }),
             };
-            b.stmts.insert(0, Stmt::new(start, l.span));
+            if let Some(start) = start {
+                b.stmts.insert(0, Stmt::new(start, l.span));
+            }
             open = Some(n.to_string());
         }
         for s in &mut b.stmts {
@@ -283,6 +317,7 @@ fn calls(p: &mut Program, form: Form, diags: &mut Vec<Diagnostic>) {
         }
         *kind = match form {
             Form::Numbered => CallKind::Subprogram,
+            Form::Local => CallKind::Local,
             Form::OWord => CallKind::OWord,
         };
     }
