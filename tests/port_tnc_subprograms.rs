@@ -55,11 +55,32 @@ fn missing_subprogram_file_is_e0617() {
 }
 
 #[test]
-fn label_subprogram_to_siemens_is_refused() {
+fn label_subprogram_to_siemens_is_inlined() {
     let src = "tests/matrix/subprograms/from-heidenhain.h";
-    let (code, _, err) = cncc(&["port", "--from", "heidenhain", "--to", "siemens840d", src]);
+    let (code, out, err) = cncc(&[
+        "port",
+        "--from",
+        "heidenhain",
+        "--to",
+        "siemens840d",
+        "--verify",
+        src,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("LBL2:") && out.contains("REPEAT LBL2 P=1"),
+        "{out}"
+    );
+    assert_eq!(out.matches("G1 X10 F300").count(), 1, "{out}");
+    // A call of a label that is no subprogram is refused.
+    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(src))
+        .unwrap()
+        .replace("CALL LBL 1\n", "CALL LBL 7\n");
+    let p = temp("sub.h", &text);
+    let p = p.to_string_lossy().into_owned();
+    let (code, _, err) = cncc(&["port", "--from", "heidenhain", "--to", "siemens840d", &p]);
     assert_eq!(code, 1);
-    assert!(err.contains("[E0617"), "{err}");
+    assert!(err.contains("[E0617") || err.contains("[E0321"), "{err}");
 }
 
 #[test]

@@ -23,6 +23,7 @@
 //!   numbered cycles, `CYCL CALL PAT` and `M89` calls.
 
 mod faces;
+mod inline;
 pub(super) mod subprograms;
 
 use super::levels::Modal;

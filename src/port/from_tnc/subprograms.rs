@@ -17,8 +17,9 @@
 //!   label was (LinuxCNC finds a subroutine defined after `M2`, checked
 //!   with rs274), `CALL LBL n` is `o n call`, and any section repeat is
 //!   `o m repeat [k+1]` ... `o m endrepeat` around the section.
-//! * Others (Siemens keeps subprograms in files of their own, which the
-//!   port does not write): E0617.
+//! * Siemens (which keeps subprograms in files of their own, not written
+//!   by the port): the subprograms are inlined at their calls ([`super::inline`]).
+//! * Others: E0617.
 //!
 //! Labels must be numbers for these targets; named labels are E0617.
 //! Runs after [`crate::port::frame`] (which drops the Klartext block
@@ -54,14 +55,13 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         Form::Local
     } else if to.has(Capability::NumberedPrograms) {
         Form::Numbered
+    } else if to.family == Family::Sinumerik {
+        return super::inline::run(p, diags);
     } else {
         let span = first_call(p);
         diags.push(refusal(
             span,
-            format!(
-                "{} keeps subprograms in files of their own, which the port does not write",
-                to.name
-            ),
+            format!("{} has no subprogram form the port writes", to.name),
         ));
         return;
     };
@@ -98,7 +98,7 @@ fn uses_labels(p: &Program) -> bool {
     })
 }
 
-fn refusal(span: Span, msg: String) -> Diagnostic {
+pub(super) fn refusal(span: Span, msg: String) -> Diagnostic {
     Diagnostic::new(Code::PortSubprogram, msg)
         .primary(span, "here")
         .help("expand the subprogram in the source, or port to a target with local subprograms")
