@@ -24,6 +24,7 @@
 
 mod faces;
 mod inline;
+mod sections;
 pub(super) mod subprograms;
 
 use super::levels::Modal;

@@ -27,10 +27,7 @@
 
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec, Family};
-use crate::ir::{
-    Block, CallArgs, CallKind, CallTarget, Decimal, Expr, ExprKind, FlowId, Program, Stmt,
-    StmtKind, StopKind, Value,
-};
+use crate::ir::{Block, CallArgs, CallKind, CallTarget, FlowId, Program, Stmt, StmtKind, StopKind};
 use crate::span::Span;
 
 /// The target's form of a subprogram.
@@ -65,7 +62,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         ));
         return;
     };
-    repeats(p, form, diags);
+    super::sections::repeats(p, form == Form::OWord, diags);
     bodies(p, form, diags);
     calls(p, form, diags);
 }
@@ -120,98 +117,6 @@ fn first_call(p: &Program) -> Span {
 
 fn label_number(b: &Block) -> Option<u32> {
     b.label.as_ref().and_then(|l| l.node.parse().ok())
-}
-
-/// Section repeats: `LBL m` .. `CALL LBL m REP k`.
-fn repeats(p: &mut Program, form: Form, diags: &mut Vec<Diagnostic>) {
-    let mut j = 0;
-    while j < p.blocks.len() {
-        let found = p.blocks[j].stmts.iter().position(|s| {
-            matches!(
-                s.kind,
-                StmtKind::SectionRepeat {
-                    end: None,
-                    single: false,
-                    ..
-                }
-            )
-        });
-        let Some(k) = found else {
-            j += 1;
-            continue;
-        };
-        let s = p.blocks[j].stmts[k].clone();
-        let StmtKind::SectionRepeat { start, count, .. } = &s.kind else {
-            unreachable!("matched above")
-        };
-        let times = count
-            .and_then(|c| match &p.exprs[c].kind {
-                ExprKind::Number(d) => d.as_int(),
-                _ => None,
-            })
-            .filter(|n| *n >= 0);
-        let first = p.blocks[..j]
-            .iter()
-            .rposition(|b| b.label.as_ref().is_some_and(|l| l.node == *start));
-        let (Some(times), Some(i)) = (times, first) else {
-            diags.push(refusal(
-                s.span,
-                "a section repeat whose label or count is not known here".into(),
-            ));
-            j += 1;
-            continue;
-        };
-        let inside: Vec<(usize, usize)> = (i..=j)
-            .flat_map(|bi| (0..p.blocks[bi].stmts.len()).map(move |si| (bi, si)))
-            .filter(|&(bi, si)| (bi, si) != (j, k))
-            .collect();
-        let only_call = match inside.as_slice() {
-            [(bi, si)] => matches!(
-                p.blocks[*bi].stmts[*si].kind,
-                StmtKind::Call {
-                    kind: CallKind::Label,
-                    ..
-                }
-            ),
-            _ => false,
-        };
-        if only_call && form != Form::OWord {
-            let (bi, si) = inside[0];
-            p.blocks[i].label = None;
-            if let StmtKind::Call { repeat, .. } = &mut p.blocks[bi].stmts[si].kind {
-                *repeat = Some(Value::Number(Decimal::from_int(times + 1)));
-            }
-            p.blocks[j].stmts.remove(k);
-            if p.blocks[j].stmts.is_empty() {
-                p.blocks.remove(j);
-            }
-            continue;
-        }
-        if form != Form::OWord {
-            diags.push(refusal(
-                s.span,
-                "a program-section repeat other than around one subprogram call".into(),
-            ));
-            j += 1;
-            continue;
-        }
-        let id = FlowId::OWord(format!("{}", 9000 + j));
-        let n = p.exprs.alloc(Expr {
-            kind: ExprKind::Number(Decimal::from_int(times + 1)),
-            span: s.span,
-        });
-        let label = p.blocks[i].label.take().expect("found by its label");
-        let open = Stmt::new(
-            StmtKind::Repeat {
-                count: n,
-                id: id.clone(),
-            },
-            label.span,
-        );
-        p.blocks[i].stmts.insert(0, open);
-        p.blocks[j].stmts[k] = Stmt::new(StmtKind::EndRepeat { id }, s.span);
-        j += 1;
-    }
 }
 
 /// The main program of a file that holds several gets its number: `BEGIN
