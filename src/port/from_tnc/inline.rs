@@ -17,11 +17,14 @@ use std::collections::HashMap;
 
 /// How deep inlined subprograms may call others.
 const DEPTH: usize = 8;
+/// How many blocks the inlined subprograms may add in all.
+const MAX_BLOCKS: usize = 100_000;
 
 pub fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
     let subs = take_bodies(p);
     let blocks = std::mem::take(&mut p.blocks);
-    p.blocks = expand(blocks, &subs, 0, diags);
+    let mut budget = MAX_BLOCKS;
+    p.blocks = expand(blocks, &subs, 0, &mut budget, diags);
     let starts: Vec<String> = p
         .blocks
         .iter()
@@ -88,6 +91,7 @@ fn expand(
     blocks: Vec<Block>,
     subs: &HashMap<String, Vec<Block>>,
     depth: usize,
+    budget: &mut usize,
     diags: &mut Vec<Diagnostic>,
 ) -> Vec<Block> {
     let mut out = Vec::with_capacity(blocks.len());
@@ -139,7 +143,7 @@ fn expand(
         if !rest.stmts.is_empty() {
             out.push(rest);
         }
-        body = expand(body, subs, depth + 1, diags);
+        body = expand(body, subs, depth + 1, budget, diags);
         out.extend(body);
     }
     out

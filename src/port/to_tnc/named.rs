@@ -201,7 +201,7 @@ impl Named<'_> {
                 return None;
             };
             params.push(QParam {
-                q: ps.name[1..].parse().ok()?,
+                q: ps.name.get(1..)?.parse().ok()?,
                 value: match v {
                     QVal::Num(v) => Value::Number(decimal(*v)),
                     QVal::PerRadius(w) => {
