@@ -154,3 +154,27 @@ fn fanuc_tape_with_two_programs_to_heidenhain_labels() {
     }
     assert!(!out.contains("BEGIN PGM 1000"), "{out}");
 }
+
+#[test]
+fn heidenhain_face_expands_for_fanuc_only_when_allowed() {
+    let src = "tests/matrix/faces/from-heidenhain.h";
+    let (code, _, err) = cncc(&["port", "--from", "heidenhain", "--to", "fanuc", src]);
+    assert_eq!(code, 1);
+    assert!(err.contains("[E0610"), "{err}");
+    let (code, out, err) = cncc(&[
+        "port",
+        "--from",
+        "heidenhain",
+        "--to",
+        "fanuc",
+        "--verify",
+        "--expand-cycles",
+        src,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("verify: OK"), "{err}");
+    assert!(
+        !out.contains("CYCL") && out.contains("G1 X121.794"),
+        "{out}"
+    );
+}

@@ -16,6 +16,11 @@
 //!   MIDA / Q108 (the active tool radius the TNC sets at `TOOL CALL`),
 //!   computed in a QL parameter just before the definition, because the
 //!   radius is only known on the machine.
+//!
+//! `--verify` runs 232 through the interpreter's CYCLE71 reading, so it
+//! proves the parameters map back exactly; where a real TNC's 232 path
+//! differs from CYCLE71's (approach and lead-out, Q357, Q389 0 vs 1) it
+//! cannot see [?: the cycle geometry is not in our sources].
 
 use super::named::{Args, Named, QVal};
 use crate::ir::{BinaryOp, Expr, ExprKind, Program, QBank, Stmt, StmtKind, Var};
