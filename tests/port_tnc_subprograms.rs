@@ -178,3 +178,28 @@ fn heidenhain_face_expands_for_fanuc_only_when_allowed() {
         "{out}"
     );
 }
+
+#[test]
+fn haas_m97_local_subprogram_to_heidenhain_label() {
+    let p = temp(
+        "haas97.nc",
+        "%\nO3010 (LOCAL SUB)\nG20 G17 G90 G94\nT9 M6\nG0 G43 H9 Z0.5\nS3000 M3\nG0 X0 Y0\n\
+         M97 P100 L3\nG0 Z0.5\nM30\nN100 G1 Z-0.05 F10.\nX0.5 F20.\nY0.5\nX0.\nY0.\n\
+         G0 Z0.5\nM99\n%\n",
+    );
+    let p = p.to_string_lossy().into_owned();
+    let (code, out, err) = cncc(&[
+        "port",
+        "--from",
+        "haas",
+        "--to",
+        "heidenhain",
+        "--verify",
+        &p,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("verify: OK"), "{err}");
+    for line in ["CALL LBL 100", "CALL LBL 1 REP 2/2", "LBL 100", "LBL 0"] {
+        assert!(out.contains(line), "{line} missing in\n{out}");
+    }
+}

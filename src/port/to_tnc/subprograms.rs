@@ -11,6 +11,8 @@
 //!   a section around it, as a TNC programmer writes it: `LBL m`, `CALL
 //!   LBL n`, `CALL LBL m REP k-1/k-1` (m a label the program does not use).
 //!
+//! * Haas `M97 P n` (a local subprogram at `N n` after `M30`) is the same
+//!   `CALL LBL n`, the block `N n` its `LBL n`.
 //! * Programs after the main one in the same file (`O1000` after `M30`)
 //!   are its label subprograms.
 //! * LinuxCNC o-word subroutines in the same file: [`super::osubs`].
@@ -33,6 +35,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         super::osubs::move_subs(p, diags);
     }
     programs_as_labels(p);
+    local_targets_as_labels(p);
     let mut used: Vec<u32> = called(p);
     let blocks = std::mem::take(&mut p.blocks);
     let mut out = Vec::with_capacity(blocks.len());
@@ -42,7 +45,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
             let span = s.span;
             match s.kind {
                 StmtKind::Call {
-                    kind: CallKind::Subprogram,
+                    kind: CallKind::Subprogram | CallKind::Local,
                     target: CallTarget::Number(n),
                     args: CallArgs::None,
                     repeat,
@@ -130,6 +133,41 @@ fn programs_as_labels(p: &mut Program) {
             }
             if label.is_some() && b.label.is_none() {
                 b.label = label;
+            }
+        }
+        ended |= b.stmts.iter().any(|s| {
+            matches!(
+                s.kind,
+                StmtKind::Stop(crate::ir::StopKind::End | crate::ir::StopKind::EndRewind)
+            )
+        });
+    }
+}
+
+/// Haas `M97 P n`: the block `N n` after the program's end starts the
+/// subprogram `LBL n`.
+fn local_targets_as_labels(p: &mut Program) {
+    let targets: Vec<u32> = p
+        .blocks
+        .iter()
+        .flat_map(|b| &b.stmts)
+        .filter_map(|s| match s.kind {
+            StmtKind::Call {
+                kind: CallKind::Local,
+                target: CallTarget::Number(n),
+                ..
+            } => Some(n),
+            _ => None,
+        })
+        .collect();
+    let mut ended = false;
+    for b in &mut p.blocks {
+        if ended && b.label.is_none() {
+            if let Some(n) = b.number.as_ref().filter(|n| targets.contains(&n.node)) {
+                b.label = Some(Spanned {
+                    node: n.node.to_string(),
+                    span: n.span,
+                });
             }
         }
         ended |= b.stmts.iter().any(|s| {
