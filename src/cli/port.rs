@@ -74,6 +74,26 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
             return Ok(EXIT_INPUT_ERRORS);
         }
     };
+    // Subprograms the target keeps in the same file (Heidenhain `LBL`).
+    let out = {
+        let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
+        let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
+        let out = crate::port::to_tnc::sub_text::append(
+            &ported,
+            out,
+            &spec,
+            &target,
+            &opts,
+            &mut loader,
+            &mut diags,
+        );
+        diags.append(&mut loader.diags);
+        out
+    };
+    if diags.iter().any(|d| d.is_error()) {
+        ctx.print(&diags, a.format);
+        return Ok(EXIT_INPUT_ERRORS);
+    }
     if a.verify {
         let name = match a.output {
             Some(p) => p.display().to_string(),

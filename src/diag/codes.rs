@@ -211,6 +211,9 @@ codes! {
     VerifyMismatch = "E0616", "verify-mismatch", Error,
         "the ported program does not cut the same as the source",
         "`cncc port --verify` runs both programs and compares their cutting moves (feed moves and arcs, within 1 micrometre, with their feed rates). The first difference is shown with the statement in each program. Rapids that differ are listed as notes only.";
+    PortSubprogram = "E0617", "port-subprogram", Error,
+        "a subprogram call the port cannot carry to the target",
+        "`cncc port` writes a called subprogram in the target's own form: for Heidenhain `CALL LBL n` with the subprogram as `LBL n` ... `LBL 0` after the main program's end (a repeat count becomes a program-section repeat around the call); from Heidenhain a label subprogram becomes the target's local subprogram. The called program must be found beside the program (`O1000.nc` for `M98 P1000`), be ported itself, and its number and repeat count must be known numbers. Give the count as a number, put the subprogram file beside the program, or expand the call in the source.";
     PortApproximate = "W0610", "port-approximate", Warning,
         "a construct carried to the target with a documented difference",
         "The target's form of this construct does the same cutting but differs in something the port cannot make equal (a spindle orientation, a register the target derives itself, a re-entry distance). Read the message; `--verify` shows whether the cutting moves still match.";

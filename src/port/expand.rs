@@ -102,6 +102,8 @@ fn in_cycle(s: &StmtKind, modal: &mut bool) -> bool {
             true
         }
         StmtKind::Motion(_) => *modal,
+        // Heidenhain: the definition makes no moves, each call makes the cycle's.
+        StmtKind::CycleDef(_) | StmtKind::CycleRun(_) => true,
         _ => false,
     }
 }

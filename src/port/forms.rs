@@ -229,6 +229,10 @@ fn variables(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
 /// direction from where the block is); labels become sequence numbers for
 /// a target without them.
 fn labels(p: &mut Program, to: &DialectSpec) {
+    // Klartext jumps and calls go to its own `LBL`s.
+    if to.family == Family::Klartext {
+        return;
+    }
     if to.has(Capability::StructuredControl) {
         return sequence_jumps_to_labels(p);
     }

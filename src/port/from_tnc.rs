@@ -22,6 +22,11 @@
 //!   (Q212), a dwell together with pecking, 203 with a dwell, the other
 //!   numbered cycles, `CYCL CALL PAT` and `M89` calls.
 
+mod faces;
+mod inline;
+mod sections;
+pub(super) mod subprograms;
+
 use super::levels::Modal;
 use super::{decimal, follow_block};
 use crate::diag::{Code, Diagnostic};
@@ -34,9 +39,11 @@ use crate::ir::{
 use crate::span::Span;
 
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
+    subprograms::number_main(p, from, to);
     if super::to_tnc::q_cycle(to, "drill").is_some() {
         return;
     }
+    faces::run(p, to, diags);
     let mut pass = Pass {
         to,
         modal: Modal::new(from),

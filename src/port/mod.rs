@@ -41,6 +41,7 @@ mod levels;
 mod loops;
 mod pockets;
 mod poles;
+mod spf;
 pub mod subload;
 mod tnc_labels;
 pub mod to_named;
@@ -82,16 +83,20 @@ pub fn port_program(
     pockets::run(&mut out, from, to, &mut diags);
     from_tnc::run(&mut out, from, to, &mut diags);
     frame::run(&mut out, from, to);
+    from_tnc::subprograms::run(&mut out, from, to, &mut diags);
     poles::run(&mut out, from, to, &mut diags);
     to_named::run(&mut out, from, to, &mut diags);
+    to_tnc::named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
     to_tnc::run(&mut out, from, to, &mut diags);
     decls::run(&mut out, to, &mut diags);
     loops::run(&mut out, to, &mut diags);
     arcs::run(&mut out, from, to);
     forms::run(&mut out, from, to, opts, &mut diags);
+    spf::run(&mut out, from, to);
     groups::run(&mut out, to);
     tool_call::run(&mut out, from, to);
+    to_tnc::subprograms::run(&mut out, from, to, &mut diags);
     out.dialect = to.id.clone();
     (out, diags)
 }

@@ -50,6 +50,11 @@ use crate::ir::{
 };
 use crate::span::Span;
 
+mod faces;
+pub mod named;
+mod osubs;
+pub mod sub_text;
+pub mod subprograms;
 mod values;
 
 /// The target's Q-parameter cycle of `kind` (`drill`, `peck`).
@@ -89,6 +94,32 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         pass.block(b, &mut out);
     }
     p.blocks = out;
+}
+
+/// `L X Y R0 FMAX M99`, or `CYCL CALL` where no position is given.
+pub(super) fn hole_stmts(
+    x: Option<crate::ir::Coord>,
+    y: Option<crate::ir::Coord>,
+    span: Span,
+) -> Vec<Stmt> {
+    if x.is_none() && y.is_none() {
+        return vec![Stmt::new(StmtKind::CycleRun(CycleRunKind::Call), span)];
+    }
+    let mut m = Motion::new(MotionKind::Rapid);
+    m.target.x = x;
+    m.target.y = y;
+    vec![
+        Stmt::new(StmtKind::Motion(Box::new(m)), span),
+        Stmt::new(
+            StmtKind::RadiusComp {
+                side: CompSide::Off,
+                register: None,
+                diameter: false,
+            },
+            span,
+        ),
+        Stmt::new(StmtKind::CycleRun(CycleRunKind::Block), span),
+    ]
 }
 
 struct Pass<'a> {
@@ -175,24 +206,7 @@ impl Pass<'_> {
         y: Option<crate::ir::Coord>,
         span: Span,
     ) -> Vec<Stmt> {
-        if x.is_none() && y.is_none() {
-            return vec![Stmt::new(StmtKind::CycleRun(CycleRunKind::Call), span)];
-        }
-        let mut m = Motion::new(MotionKind::Rapid);
-        m.target.x = x;
-        m.target.y = y;
-        vec![
-            Stmt::new(StmtKind::Motion(Box::new(m)), span),
-            Stmt::new(
-                StmtKind::RadiusComp {
-                    side: CompSide::Off,
-                    register: None,
-                    diameter: false,
-                },
-                span,
-            ),
-            Stmt::new(StmtKind::CycleRun(CycleRunKind::Block), span),
-        ]
+        hole_stmts(x, y, span)
     }
 
     fn refuse(&mut self, code: Code, span: Span, msg: &str) {

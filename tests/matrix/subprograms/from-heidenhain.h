@@ -1,0 +1,20 @@
+0 BEGIN PGM 3009 MM
+1 ; a subprogram called twice: a section repeat around the call
+2 TOOL CALL 9 Z S3000
+3 L Z+10 FMAX
+4 M3
+5 L X+0 Y+0 FMAX
+6 LBL 2
+7 CALL LBL 1
+8 CALL LBL 2 REP 1/1
+9 L Z+10 FMAX
+10 M30
+11 LBL 1
+12 L Z-1 F100
+13 L X+10 F300
+14 L Y+10
+15 L X+0
+16 L Y+0
+17 L Z+10 FMAX
+18 LBL 0
+19 END PGM 3009 MM
