@@ -30,6 +30,7 @@ mod pockets;
 pub mod render;
 mod slots;
 mod step;
+mod tapping;
 mod templates;
 pub mod values;
 

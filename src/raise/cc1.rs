@@ -19,7 +19,7 @@
 //! - a comment names the workingstep that follows it.
 
 use super::curves::CurveBuilder;
-use super::holes::{classify, HoleCycle, Item, Pattern};
+use super::holes::{classify, HoleCycle, HoleKind, Item, Pattern};
 use super::ops;
 use super::project::{placement, plane_at, ToolRegistry};
 use super::report::Losses;
@@ -411,6 +411,14 @@ impl Cc1Builder {
         self.add_step(name, fid, &first, tool, toolpaths, kind);
         let op = self.project.operations.last_mut().expect("just added");
         op.retract_plane = Some(h.r_z - top);
+        if let HoleKind::Tapping { left_hand, .. } = h.kind {
+            // The pitch is the feed over the speed (ISO 14649: the spindle
+            // synchronised with the feed); the tool is a tap of that hand.
+            op.technology.synchronize_spindle_with_feed = true;
+            let body = &mut self.project.tools[tool.index()].body;
+            body.kind = ToolBodyKind::Tap;
+            body.hand_of_cut = Some(if left_hand { Hand::Left } else { Hand::Right });
+        }
         self.known = true;
     }
 }

@@ -134,6 +134,14 @@ impl<'f> Rd<'f> {
                 depth_of_testcut: opt_real(a(6)?)?,
                 waiting_position: self.opt_point(a(7)?)?,
             },
+            "TAPPING" => OperationKind::Tapping {
+                drill: self.drill(i)?,
+                compensation_chuck: boolean(a(5)?)?,
+            },
+            "THREAD_DRILLING" => OperationKind::ThreadDrilling {
+                drill: self.drill(i)?,
+                helical_movement_on_forward: boolean(a(5)?)?,
+            },
             _ => return Err(fail(i.entity_span, "not an operation cncc models")),
         })
     }
