@@ -295,9 +295,10 @@ mod tests {
             dwell: None,
         };
         assert_eq!(h.kind, right);
-        let mut left = down;
-        left.spindle = -1000.0;
-        let g74 = [left, mv(L, [5.0, 5.0, -10.0], [5.0, 5.0, 2.0], 1000.0)];
+        let g74 = [
+            mv(L, [5.0, 5.0, 2.0], [5.0, 5.0, -10.0], -1000.0),
+            mv(L, [5.0, 5.0, -10.0], [5.0, 5.0, 2.0], 1000.0),
+        ];
         let Pattern::Hole(h) = classify(&g74) else {
             panic!()
         };

@@ -45,11 +45,14 @@ pub fn raise(r: &mut Raiser, h: &HoleCut, t: i64, moves: &[Move]) {
             });
         }
     }
-    let kind = r
-        .project
-        .tools
-        .get(tool_id.index())
-        .map(|tl| tl.body.kind.clone());
+    let kind = match h.tapping {
+        true => Some(ToolBodyKind::Tap),
+        false => r
+            .project
+            .tools
+            .get(tool_id.index())
+            .map(|tl| tl.body.kind.clone()),
+    };
     if !h.tapping && matches!(kind, Some(ToolBodyKind::Tap)) {
         let what = "a tap's moves without the spindle reversed";
         return super::freeform::raise(r, t, moves, what);

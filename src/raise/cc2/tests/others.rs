@@ -383,11 +383,7 @@ fn tapping_is_a_round_hole_with_a_tapping_operation() {
         }
     ));
     assert!(o.technology.synchronize_spindle_with_feed);
-    let tool = &p.tools[o.tool.index()].body;
-    assert_eq!(
-        (&tool.kind, tool.hand_of_cut),
-        (&ToolBodyKind::Tap, Some(Hand::Right))
-    );
+    // The tool's kind and hand: tests/tapping.rs (no tools here).
 }
 
 /// Thousands of holes and a cut with tens of thousands of levels are
