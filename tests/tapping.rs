@@ -313,3 +313,38 @@ fn tapping_cycles_raise_to_tapping_operations() {
         }
     }
 }
+
+/// CYCL DEF 207 ports to G84/G74 only when the spindle already turns the
+/// way the tap's hand needs, and with a spindle speed known (F = Q239 x S).
+#[test]
+fn cycle_207_against_its_spindle_is_not_ported() {
+    let src = common::root().join("tests/matrix/tapping/from-heidenhain.h");
+    let text = std::fs::read_to_string(&src).unwrap();
+    let cases = [
+        (
+            "wrong-hand.h",
+            text.replace("3 M3\n", "3 M4\n"),
+            "G84 needs M3",
+        ),
+        (
+            "no-speed.h",
+            text.replace("1 TOOL CALL 4 Z S400\n", "1 TOOL CALL 4 Z\n"),
+            "without a spindle speed",
+        ),
+    ];
+    for (name, program, why) in cases {
+        let p = tmp(name);
+        std::fs::write(&p, program).unwrap();
+        let o = common::cncc(&[
+            "port",
+            "--from",
+            "heidenhain",
+            "--to",
+            "fanuc",
+            p.to_str().unwrap(),
+        ]);
+        let err = common::stderr(&o);
+        assert_eq!(o.status.code(), Some(1), "{name}: {err}");
+        assert!(err.contains("E0610") && err.contains(why), "{name}: {err}");
+    }
+}
