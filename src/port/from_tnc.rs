@@ -25,6 +25,8 @@
 //!   runs 207 as CYCLE84 (a rigid tap back to the set-up clearance), G84
 //!   feeds out to the retract level: the same as long as Q204 ≤ Q200
 //!   (G99); a higher Q204 (G98) adds a feed from R up to it.
+//! * 206 TAPPING with a floating holder: G84 under M3, G74 under M4 (the
+//!   hand is the spindle's: 206 has no pitch), F = Q206, P = Q211.
 //! * No equivalent (E0610): a dwell at the top (Q210), a decrement
 //!   (Q212), a dwell together with pecking, 203 with a dwell, the other
 //!   numbered cycles, `CYCL CALL PAT` and `M89` calls.
@@ -249,6 +251,9 @@ impl Pass<'_> {
         if d.number == 207 {
             return self.map_tap(d, span);
         }
+        if d.number == 206 {
+            return self.map_float_tap(d, span);
+        }
         if !matches!(d.number, 200 | 201 | 203) {
             return Err(format!(
                 "cycle {} {} has no canned-cycle equivalent",
@@ -336,6 +341,33 @@ impl Pass<'_> {
             r,
             rtp,
             feed: pitch.abs() * speed,
+        })
+    }
+
+    /// 206 (floating tap holder) → G84 / G74 by the spindle's direction,
+    /// F = Q206, P = Q211.
+    fn map_float_tap(&mut self, d: &CycleDef, span: Span) -> Result<Mapped, String> {
+        let q = |n: u32| d.param(n).and_then(Value::number).map(|v| v.to_f64());
+        let need = |n: u32| q(n).ok_or(format!("Q{n} is not a number known here"));
+        let (top, sdis, depth, feed) = (need(203)?, need(200)?.abs(), need(201)?, need(206)?);
+        let kind = if self.modal.ccw {
+            CycleKind::TapLeft
+        } else {
+            CycleKind::Tap
+        };
+        self.target_has(kind)?;
+        let (r, rtp) = (top + sdis, top + q(204).unwrap_or(0.0).abs());
+        let mut c = plain_cycle(kind, r);
+        c.target.z = Some(coord(top + depth, span));
+        let dwell = q(211).unwrap_or(0.0);
+        if dwell > 0.0 {
+            c.p = Some(Value::Number(self.dwell_word(dwell)?));
+        }
+        Ok(Mapped {
+            cycle: c,
+            r,
+            rtp,
+            feed,
         })
     }
 

@@ -9,7 +9,8 @@
 //!   set-up clearance after each infeed); else CYCLE82/CYCLE81. 203 is
 //!   CYCLE83 with Q212 decrement, Q205 minimum infeed, and chip breaking
 //!   (Q256) when Q213 > 0 [?: the number of breaks before a full retract
-//!   is not modelled]. 201 → CYCLE85, 202 → CYCLE86, 207 → CYCLE84.
+//!   is not modelled]. 201 → CYCLE85, 202 → CYCLE86, 206 → CYCLE840,
+//!   207 → CYCLE84.
 //! * 251 → POCKET1, 252 → POCKET2 about the current position (Q367 = 0);
 //!   stepover and finishing as the Siemens expansion does them [?]; 253
 //!   (slot) → POCKET1 with full-round ends [?]; 232 (face) → CYCLE71.
