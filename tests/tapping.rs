@@ -252,19 +252,60 @@ fn a_tap_against_its_spindle_or_without_a_pitch_is_refused() {
     }
 }
 
+/// A compensating chuck: `CYCLE840` on the 840D, `CYCL DEF 206` on
+/// Heidenhain, named as not posted on Fanuc; each raises back to tapping.
 #[test]
-fn a_compensation_chuck_is_named_as_not_posted() {
+fn a_compensation_chuck_posts_as_the_floating_tap_cycle() {
     let p = variant(
         "chuck.stp",
         "'TAP M8X1.25',3.,$,#72,#81,#85,$,14.,6.8,$,$,$,.F.)",
         "'TAP M8X1.25',3.,$,#72,#81,#85,$,14.,6.8,$,$,$,.T.)",
     );
-    let (_, text) = post("siemens840d", "mpf", &p);
-    assert!(text.contains("NOT POSTED: compensation chuck"), "{text}");
+    let cases = [
+        (
+            "siemens840d",
+            "mpf",
+            "MCALL CYCLE840(20,0,3,-14,,0,0,3,1,,1.25)",
+        ),
+        (
+            "heidenhain",
+            "h",
+            "CYCL DEF 206 TAPPING NEW Q200=3 Q201=-14 Q206=750 Q211=0 Q203=0 Q204=20",
+        ),
+        ("fanuc", "nc", "(NOT POSTED: compensation chuck"),
+    ];
+    for (dialect, ext, want) in cases {
+        let (path, text) = post(dialect, ext, &p);
+        assert!(text.contains(want), "{dialect}: no `{want}` in\n{text}");
+        let o = common::cncc(&["check", "--dialect", dialect, path.to_str().unwrap()]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{dialect}: {}",
+            common::stderr(&o)
+        );
+        let raised = tmp(&format!("chuck-{dialect}.stp"));
+        let o = common::cncc(&[
+            "stepnc",
+            "--cc2",
+            "--dialect",
+            dialect,
+            path.to_str().unwrap(),
+            "-o",
+            raised.to_str().unwrap(),
+        ]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{dialect}: {}",
+            common::stderr(&o)
+        );
+        assert_eq!(taps(&read(&raised)), EXPECTED, "{dialect}");
+    }
 }
 
-/// G84 and G74 (Fanuc), CYCLE84 (840D) and CYCL DEF 207 (Heidenhain)
-/// raise to tapping, in CC1 and CC2.
+/// G84 and G74 (Fanuc), CYCLE84 and CYCLE840 (840D), CYCL DEF 207 and
+/// 206 (Heidenhain) raise to tapping, in CC1 and CC2.
 #[test]
 fn tapping_cycles_raise_to_tapping_operations() {
     let m = common::root().join("tests/matrix/tapping");
@@ -275,7 +316,16 @@ fn tapping_cycles_raise_to_tapping_operations() {
          G98 G74 X10. Y10. Z-8. R2. F300.\nG80\nM30\n",
     )
     .unwrap();
+    let float = tmp("c840.mpf");
+    std::fs::write(
+        &float,
+        "G71 G17 G90 G94\nT4 D1 M6\nG0 Z20\nS400 M4 F400\nG0 X15 Y15\n\
+         MCALL CYCLE840(20,3,0,-12,,0.5,0,3,1,,-1)\nX15 Y15\nMCALL\nG0 Z20\nM30\n",
+    )
+    .unwrap();
     let cases = [
+        (float, "siemens840d", 1.0, true),
+        (m.join("from-heidenhain-float.h"), "heidenhain", 1.25, false),
         (m.join("from-fanuc.nc"), "fanuc", 1.25, false),
         (m.join("from-siemens840d.mpf"), "siemens840d", 1.25, false),
         (

@@ -183,8 +183,9 @@ fn cycle(w: &mut Writer<'_>, s: &Step<'_>) -> Result<&'static str, PostError> {
         } => {
             strategy_notes(w, drill)?;
             let v = super::tapping::values(w, s, base(w, s, drill)?, drill, *compensation_chuck)?;
-            w.emit("tap.j2", v)?;
-            "tap.j2"
+            let name = super::tapping::template(w, *compensation_chuck);
+            w.emit(name, v)?;
+            name
         }
         OperationKind::PlaneMilling { .. }
         | OperationKind::SideMilling { .. }

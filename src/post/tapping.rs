@@ -11,8 +11,10 @@
 //! `g` (84 or 74), `pitch` (unsigned), `spitch` (signed: negative for a
 //! left hand, as CYCLE84's PIT and 207's Q239 take it), `s` (unsigned
 //! rpm), `sdir` (3 or 4: the spindle after the cycle), `dwell_s`,
-//! `dwell_ms`. A compensating chuck is not carried (the cycles tap
-//! rigidly) and is named in a comment.
+//! `dwell_ms`. A compensating chuck is posted with `tap_float.j2` where
+//! the target has it (840D `CYCLE840`, Heidenhain `CYCL DEF 206`); else it
+//! is named in a comment (not carried: G84/G74 are the same cycle; whether
+//! the machine taps rigidly is its own setting [?]).
 
 use super::plan::Step;
 use super::step::{feed, spindle_rpm};
@@ -32,8 +34,10 @@ pub fn values(
     let (pitch, rpm) = pitch_and_rpm(s)?;
     let left = rpm < 0.0;
     check_hand(s, left)?;
-    if compensation_chuck {
-        w.not_carried("compensation chuck (the target's tapping cycle taps rigidly)")?;
+    if compensation_chuck && template(w, true) == "tap.j2" {
+        w.not_carried(
+            "compensation chuck (G84/G74 do not say whether the tap floats: the machine's setting decides)",
+        )?;
     }
     let dwell = drill.dwell_time_bottom.unwrap_or(0.0).max(0.0);
     let takes_dwell = !w.post.ignores("tap.j2", "dwell_s") || !w.post.ignores("tap.j2", "dwell_ms");
@@ -52,6 +56,16 @@ pub fn values(
         .set_derived("sdir", if left { "4" } else { "3" })
         .set("dwell_s", w.fmt.plain(dwell, 3))
         .set("dwell_ms", w.fmt.plain((dwell * 1000.0).round(), 0)))
+}
+
+/// The template: `tap_float.j2` for a compensating chuck where the target
+/// has one (840D `CYCLE840`, Heidenhain `CYCL DEF 206`), else `tap.j2`.
+pub fn template(w: &Writer<'_>, compensation_chuck: bool) -> &'static str {
+    if compensation_chuck && w.post.has("tap_float.j2") {
+        "tap_float.j2"
+    } else {
+        "tap.j2"
+    }
 }
 
 /// The pitch (mm per revolution, positive) and the signed spindle speed.
