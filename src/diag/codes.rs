@@ -422,6 +422,12 @@ codes! {
     MandatoryUnset = "W0803", "mandatory-unset", Warning,
         "a mandatory attribute written `$`",
         "The schema does not make this attribute OPTIONAL, yet the file leaves it unset, as some generators do. cncc reads on and keeps the instance as written; other readers may refuse the file.";
+    TappingWithoutPitch = "W0804", "tapping-without-pitch", Warning,
+        "a TAPPING or THREAD_DRILLING operation whose thread pitch cannot be worked out",
+        "ISO 14649 gives a tapping operation's thread pitch as its technology's feed over its spindle speed, the two synchronised (`synchronize_spindle_with_feed`). This operation lacks a feedrate or a spindle speed (or the speed is 0), or does not synchronise them, so the pitch is unknown or may not be kept. cncc reads on; posting it fails (E0906) until the technology gives both.";
+    TapHandAgainstSpindle = "W0805", "tap-hand-against-spindle", Warning,
+        "a tap whose hand_of_cut disagrees with the spindle direction of its operation",
+        "A right-hand tap cuts turning clockwise (M3; ISO 14649 writes that speed negative), a left-hand tap counter-clockwise (M4; positive in the file). The TAP tool's hand_of_cut and the tapping operation's spindle speed disagree. cncc reads on; posting it fails (E0907) until they agree.";
     KeptRaw = "W0802", "kept-raw", Warning,
         "a value cncc could not read into its model, kept as written",
         "The instance does not have the form ISO 14649 gives it (a mandatory attribute unset, an unexpected entity), so the typed model keeps it as written and carries it to the output unchanged, but it takes no part in checks, differences or posting.";
