@@ -405,3 +405,32 @@ fn cycle_207_against_its_spindle_is_not_ported() {
         assert!(err.contains("E0610") && err.contains(why), "{name}: {err}");
     }
 }
+
+/// `port --features`: a Fanuc tapping program raised to CC2 and posted
+/// with each target's tapping cycle, verified by raising it again.
+#[test]
+fn tapping_ports_by_features_to_every_dialect() {
+    let src = common::root().join("tests/matrix/tapping/from-fanuc.nc");
+    for (dialect, _) in DIALECTS {
+        let o = common::cncc(&[
+            "port",
+            "--features",
+            "--from",
+            "fanuc",
+            "--to",
+            dialect,
+            "--verify",
+            src.to_str().unwrap(),
+        ]);
+        let err = common::stderr(&o);
+        assert_eq!(o.status.code(), Some(0), "{dialect}: {err}");
+        assert!(err.contains("verify: OK"), "{dialect}: {err}");
+        let text = common::stdout(&o);
+        let cycle = match dialect {
+            "siemens840d" => "CYCLE84(",
+            "heidenhain" => "CYCL DEF 207",
+            _ => "G84 ",
+        };
+        assert!(text.contains(cycle), "{dialect}: no {cycle} in\n{text}");
+    }
+}
