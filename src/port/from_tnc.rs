@@ -42,6 +42,8 @@ use crate::ir::{
 };
 use crate::span::Span;
 
+mod tap;
+
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     if super::to_tnc::q_cycle(to, "drill").is_some() {
         return;
@@ -301,78 +303,8 @@ impl Pass<'_> {
         })
     }
 
-    /// 207 → G84 / G74 with F = pitch × S.
-    fn map_tap(&mut self, d: &CycleDef, span: Span) -> Result<Mapped, String> {
-        let q = |n: u32| d.param(n).and_then(Value::number).map(|v| v.to_f64());
-        let need = |n: u32| q(n).ok_or(format!("Q{n} is not a number known here"));
-        let (top, sdis, depth, pitch) = (need(203)?, need(200)?.abs(), need(201)?, need(239)?);
-        if pitch == 0.0 {
-            return Err("a thread pitch Q239 of 0".into());
-        }
-        let speed = self
-            .modal
-            .speed
-            .as_ref()
-            .and_then(Value::number)
-            .map(|v| v.to_f64())
-            .filter(|s| *s > 0.0)
-            .ok_or("tapping without a spindle speed known here (F = Q239 x S)")?;
-        let left = pitch < 0.0;
-        if self.modal.ccw != left {
-            return Err(format!(
-                "a {} tap with the spindle turning {}: {} needs {}",
-                if left { "left-hand" } else { "right-hand" },
-                if self.modal.ccw { "M4" } else { "M3" },
-                if left { "G74" } else { "G84" },
-                if left { "M4" } else { "M3" },
-            ));
-        }
-        let kind = if left {
-            CycleKind::TapLeft
-        } else {
-            CycleKind::Tap
-        };
-        self.target_has(kind)?;
-        let (r, rtp) = (top + sdis, top + q(204).unwrap_or(0.0).abs());
-        let mut c = plain_cycle(kind, r);
-        c.target.z = Some(coord(top + depth, span));
-        Ok(Mapped {
-            cycle: c,
-            r,
-            rtp,
-            feed: pitch.abs() * speed,
-        })
-    }
-
-    /// 206 (floating tap holder) → G84 / G74 by the spindle's direction,
-    /// F = Q206, P = Q211.
-    fn map_float_tap(&mut self, d: &CycleDef, span: Span) -> Result<Mapped, String> {
-        let q = |n: u32| d.param(n).and_then(Value::number).map(|v| v.to_f64());
-        let need = |n: u32| q(n).ok_or(format!("Q{n} is not a number known here"));
-        let (top, sdis, depth, feed) = (need(203)?, need(200)?.abs(), need(201)?, need(206)?);
-        let kind = if self.modal.ccw {
-            CycleKind::TapLeft
-        } else {
-            CycleKind::Tap
-        };
-        self.target_has(kind)?;
-        let (r, rtp) = (top + sdis, top + q(204).unwrap_or(0.0).abs());
-        let mut c = plain_cycle(kind, r);
-        c.target.z = Some(coord(top + depth, span));
-        let dwell = q(211).unwrap_or(0.0);
-        if dwell > 0.0 {
-            c.p = Some(Value::Number(self.dwell_word(dwell)?));
-        }
-        Ok(Mapped {
-            cycle: c,
-            r,
-            rtp,
-            feed,
-        })
-    }
-
     /// Err when the target has no word for the cycle and no named cycles.
-    fn target_has(&self, kind: CycleKind) -> Result<(), String> {
+    pub(super) fn target_has(&self, kind: CycleKind) -> Result<(), String> {
         if self.to.code_for(Meaning::Cycle(kind)).is_none()
             && !self.to.has(crate::dialect::Capability::NamedCycles)
         {
@@ -386,7 +318,7 @@ impl Pass<'_> {
     }
 
     /// A dwell in seconds as the target's P.
-    fn dwell_word(&self, seconds: f64) -> Result<crate::ir::Decimal, String> {
+    pub(super) fn dwell_word(&self, seconds: f64) -> Result<crate::ir::Decimal, String> {
         let ms = self.to.code_for(Meaning::Dwell).is_some_and(|c| {
             c.dwell_units
                 .iter()
