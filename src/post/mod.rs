@@ -11,7 +11,8 @@
 //!
 //! Which cycle a feature becomes is data: the target's template set says
 //! what it has (`pocket_rect.j2` on the 840D, none on Fanuc: explicit
-//! moves). Heidenhain: drilling cycles (CYCL DEF 200/201/202/203) called
+//! moves). Tapping: [`tapping`]. Heidenhain: drilling cycles (CYCL DEF
+//! 200/201/202/203, 206/207 tapping) called
 //! with `L X.. Y.. R0 FMAX M99`, CYCL DEF 251/252 pockets, CYCL DEF 32
 //! tolerance and BLK FORM; its faces are explicit moves so far (no 232).
 

@@ -14,7 +14,9 @@
 //!   workingstep; these workingsteps are tied to one TOOLPATH_FEATURE per
 //!   tool, placed at the workpiece origin;
 //! - a drilling cycle (see [`super::holes`]) becomes a ROUND_HOLE with its
-//!   drilling operation, whose toolpath is the cycle's moves;
+//!   drilling operation, whose toolpath is the cycle's moves; a tapping
+//!   cycle a TAPPING operation (spindle synchronised with the feed: the
+//!   pitch is feed / speed) whose tool becomes a TAP of the spindle's hand;
 //! - a dwell inside a run is a FEEDSTOP; a program stop a PROGRAM_STOP;
 //! - a comment names the workingstep that follows it.
 
