@@ -66,3 +66,64 @@ pub(super) fn run(
     });
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::run_named_drill_cycle;
+    use super::super::testhost::RecHost;
+    use crate::interp::host::SpindleDir;
+
+    fn run(args: &[Option<f64>], spindle: SpindleDir) -> String {
+        let mut h = RecHost::new();
+        h.spindle = spindle;
+        h.pos = [10.0, 20.0, 50.0, 0.0, 0.0, 0.0];
+        match run_named_drill_cycle(&mut h, "CYCLE840", args) {
+            Ok(()) => h.text(),
+            Err(d) => format!("error: {}", d.message),
+        }
+    }
+
+    #[test]
+    fn feeds_in_reverses_and_feeds_out() {
+        // RTP 10, RFP 0, SDIS 2, DP -8, DTB 0.5, SDR 0, SDAC 3, ENC 1.
+        let a = [10.0, 0.0, 2.0, -8.0, 0.0, 0.5, 0.0, 3.0, 1.0].map(Some);
+        let t = run(&a, SpindleDir::Cw);
+        let want = [
+            "STRAIGHT_FEED(10.0000, 20.0000, -8.0000",
+            "DWELL(0.5000)",
+            "STOP_SPINDLE_TURNING",
+            "START_SPINDLE_COUNTERCLOCKWISE",
+            "STRAIGHT_FEED(10.0000, 20.0000, 2.0000",
+            "START_SPINDLE_CLOCKWISE",
+        ];
+        let mut at = 0;
+        for w in want {
+            let i = t[at..]
+                .find(w)
+                .unwrap_or_else(|| panic!("no {w} after {at} in\n{t}"));
+            at += i + w.len();
+        }
+        assert!(!t.contains("SPEED_FEED_SYNC"), "{t}");
+    }
+
+    #[test]
+    fn a_pitch_with_an_encoder_synchronises_and_a_stopped_spindle_is_an_error() {
+        // ENC 0, PIT 1.25.
+        let mut a = vec![
+            Some(10.0),
+            Some(0.0),
+            Some(2.0),
+            Some(-8.0),
+            None,
+            None,
+            None,
+            None,
+        ];
+        a.extend([Some(0.0), None, Some(1.25)]);
+        let t = run(&a, SpindleDir::Cw);
+        assert!(t.contains("START_SPEED_FEED_SYNC(1.2500"), "{t}");
+        assert!(t.contains("STOP_SPEED_FEED_SYNCH()"), "{t}");
+        let t = run(&a, SpindleDir::Stopped);
+        assert!(t.starts_with("error: spindle not turning"), "{t}");
+    }
+}
