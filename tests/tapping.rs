@@ -434,3 +434,31 @@ fn tapping_ports_by_features_to_every_dialect() {
         assert!(text.contains(cycle), "{dialect}: no {cycle} in\n{text}");
     }
 }
+
+/// `cncc query` reaches the TAPPING attributes and `cncc diff` names a
+/// changed one.
+#[test]
+fn query_and_diff_see_tapping_attributes() {
+    let s = sample();
+    let o = common::cncc(&["query", s.to_str().unwrap(), "/tapping/compensation_chuck"]);
+    assert_eq!(common::stdout(&o), ".F.\n.F.\n", "{}", common::stderr(&o));
+    let o = common::cncc(&["query", s.to_str().unwrap(), "/tap/hand_of_cut"]);
+    assert_eq!(
+        common::stdout(&o),
+        ".RIGHT.\n.LEFT.\n",
+        "{}",
+        common::stderr(&o)
+    );
+    let chuck = variant(
+        "diff-chuck.stp",
+        "'TAP M6X1 LH',3.,$,#76,#83,#85,$,12.,5.,$,$,$,.F.)",
+        "'TAP M6X1 LH',3.,$,#76,#83,#85,$,12.,5.,$,$,$,.T.)",
+    );
+    let o = common::cncc(&["diff", s.to_str().unwrap(), chuck.to_str().unwrap()]);
+    let out = common::stdout(&o);
+    assert_eq!(o.status.code(), Some(1), "{out}{}", common::stderr(&o));
+    assert!(
+        out.contains("operation 'TAP M6X1 LH' / compensation_chuck: .F. → .T."),
+        "{out}"
+    );
+}
