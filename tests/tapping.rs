@@ -462,3 +462,21 @@ fn query_and_diff_see_tapping_attributes() {
         "{out}"
     );
 }
+
+/// THREAD_DRILLING reads, but no target has a cycle for it: posting it is
+/// refused (E0900), never dropped.
+#[test]
+fn thread_drilling_is_refused_by_the_post() {
+    let p = variant(
+        "thread-drilling.stp",
+        "#51=TAPPING($,$,'TAP M8X1.25',3.,$,#72,#81,#85,$,14.,6.8,$,$,$,.F.);",
+        "#51=THREAD_DRILLING($,$,'TAP M8X1.25',3.,$,#72,#81,#85,$,14.,6.8,$,$,$,.F.);",
+    );
+    let o = common::cncc(&["post", p.to_str().unwrap(), "--to", "siemens840d"]);
+    let err = common::stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("E0900") && err.contains("thread_drilling"),
+        "{err}"
+    );
+}
