@@ -184,6 +184,12 @@ codes! {
     PostNoTarget = "E0905", "post-no-target", Error,
         "a target dialect with no post-processor templates",
         "`cncc post` writes with the templates in posts/<dialect>/. This dialect has none yet (Heidenhain waits for its front end). Choose siemens840d, fanuc, haas or linuxcnc.";
+    PostTapPitch = "E0906", "post-tap-pitch", Error,
+        "a tapping operation whose thread pitch cannot be worked out",
+        "ISO 14649 gives a TAPPING operation's thread pitch as its technology's feed over its spindle speed (the two synchronised). This operation has no spindle speed, a zero speed, or a feed that gives no positive pitch. Give the MILLING_TECHNOLOGY a feedrate and a spindle speed whose ratio is the pitch (mm per revolution).";
+    PostTapHand = "E0907", "post-tap-hand", Error,
+        "a tap whose hand contradicts the spindle direction",
+        "A right-hand tap cuts turning clockwise (M3, a positive spindle speed in cncc's model; ISO 14649 stores it negative), a left-hand tap counter-clockwise (M4). The TAP tool's hand_of_cut and the operation's spindle speed disagree, so the tapping cycle (G84 or G74, the sign of CYCLE84's PIT or CYCL DEF 207's Q239) cannot be chosen. Make them agree in the STEP-NC file.";
     PostNotCarried = "W0900", "post-not-carried", Warning,
         "a STEP-NC value the target's cycle or toolpath cannot carry",
         "The posted program cannot express this value (a drilling strategy's reduced feeds, a spindle stop at the bottom of a reaming pass...). It is named in a comment in the program at the workingstep it belongs to, so nothing is dropped silently; check whether the machining still meets the plan.";
@@ -419,6 +425,12 @@ codes! {
     MandatoryUnset = "W0803", "mandatory-unset", Warning,
         "a mandatory attribute written `$`",
         "The schema does not make this attribute OPTIONAL, yet the file leaves it unset, as some generators do. cncc reads on and keeps the instance as written; other readers may refuse the file.";
+    TappingWithoutPitch = "W0804", "tapping-without-pitch", Warning,
+        "a TAPPING or THREAD_DRILLING operation whose thread pitch cannot be worked out",
+        "ISO 14649 gives a tapping operation's thread pitch as its technology's feed over its spindle speed, the two synchronised (`synchronize_spindle_with_feed`). This operation lacks a feedrate or a spindle speed (or the speed is 0), or does not synchronise them, so the pitch is unknown or may not be kept. cncc reads on; posting it fails (E0906) until the technology gives both.";
+    TapHandAgainstSpindle = "W0805", "tap-hand-against-spindle", Warning,
+        "a tap whose hand_of_cut disagrees with the spindle direction of its operation",
+        "A right-hand tap cuts turning clockwise (M3; ISO 14649 writes that speed negative), a left-hand tap counter-clockwise (M4; positive in the file). The TAP tool's hand_of_cut and the tapping operation's spindle speed disagree. cncc reads on; posting it fails (E0907) until they agree.";
     KeptRaw = "W0802", "kept-raw", Warning,
         "a value cncc could not read into its model, kept as written",
         "The instance does not have the form ISO 14649 gives it (a mandatory attribute unset, an unexpected entity), so the typed model keeps it as written and carries it to the output unchanged, but it takes no part in checks, differences or posting.";

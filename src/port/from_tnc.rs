@@ -18,6 +18,15 @@
 //!   Q213 > 0 → G73 Q = Q202 (the back-off Q256 is the control's own in
 //!   the target [?]). 201: Q211 = 0 → G85, Q211 > 0 → G89 P; its
 //!   retraction feed Q208 must be 0 or Q206 (G85/G89 feed out at F).
+//! * 207 RIGID TAPPING: Q239 > 0 → G84, Q239 < 0 → G74 (left hand),
+//!   F = |Q239| × S (feed per minute; S must be a number known here, and
+//!   the spindle must already turn the way the hand needs: M3 for G84,
+//!   M4 for G74, since G84/G74 do not set it as 207 does). The interpreter
+//!   runs 207 as CYCLE84 (a rigid tap back to the set-up clearance), G84
+//!   feeds out to the retract level: the same as long as Q204 ≤ Q200
+//!   (G99); a higher Q204 (G98) adds a feed from R up to it.
+//! * 206 TAPPING with a floating holder: G84 under M3, G74 under M4 (the
+//!   hand is the spindle's: 206 has no pitch), F = Q206, P = Q211.
 //! * No equivalent (E0610): a dwell at the top (Q210), a decrement
 //!   (Q212), a dwell together with pecking, 203 with a dwell, the other
 //!   numbered cycles, `CYCL CALL PAT` and `M89` calls.
@@ -37,6 +46,8 @@ use crate::ir::{
     MotionKind, Program, Stmt, StmtKind, Value,
 };
 use crate::span::Span;
+
+mod tap;
 
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     subprograms::number_main(p, from, to);
@@ -246,6 +257,12 @@ impl Pass<'_> {
     fn map(&mut self, d: &CycleDef, span: Span) -> Result<Mapped, String> {
         let q = |n: u32| d.param(n).and_then(Value::number).map(|v| v.to_f64());
         let need = |n: u32| q(n).ok_or(format!("Q{n} is not a number known here"));
+        if d.number == 207 {
+            return self.map_tap(d, span);
+        }
+        if d.number == 206 {
+            return self.map_float_tap(d, span);
+        }
         if !matches!(d.number, 200 | 201 | 203) {
             return Err(format!(
                 "cycle {} {} has no canned-cycle equivalent",
@@ -276,27 +293,9 @@ impl Pass<'_> {
             (_, false, true) => CycleKind::DrillDwell,
             _ => CycleKind::Drill,
         };
-        if self.to.code_for(Meaning::Cycle(kind)).is_none()
-            && !self.to.has(crate::dialect::Capability::NamedCycles)
-        {
-            return Err(format!(
-                "{} has no `{}`",
-                self.to.name,
-                Meaning::Cycle(kind).name()
-            ));
-        }
+        self.target_has(kind)?;
         let (r, rtp) = (top + sdis, top + q(204).unwrap_or(0.0).abs());
-        let mut c = CannedCycle {
-            kind,
-            target: Axes::default(),
-            r: Some(Value::Number(decimal(r))),
-            q: None,
-            p: None,
-            repeat: None,
-            i: None,
-            j: None,
-            k: None,
-        };
+        let mut c = plain_cycle(kind, r);
         c.target.z = Some(coord(top + depth, span));
         if pecking {
             c.q = Some(Value::Number(decimal(peck)));
@@ -311,8 +310,22 @@ impl Pass<'_> {
         })
     }
 
+    /// Err when the target has no word for the cycle and no named cycles.
+    pub(super) fn target_has(&self, kind: CycleKind) -> Result<(), String> {
+        if self.to.code_for(Meaning::Cycle(kind)).is_none()
+            && !self.to.has(crate::dialect::Capability::NamedCycles)
+        {
+            return Err(format!(
+                "{} has no `{}`",
+                self.to.name,
+                Meaning::Cycle(kind).name()
+            ));
+        }
+        Ok(())
+    }
+
     /// A dwell in seconds as the target's P.
-    fn dwell_word(&self, seconds: f64) -> Result<crate::ir::Decimal, String> {
+    pub(super) fn dwell_word(&self, seconds: f64) -> Result<crate::ir::Decimal, String> {
         let ms = self.to.code_for(Meaning::Dwell).is_some_and(|c| {
             c.dwell_units
                 .iter()
@@ -326,6 +339,21 @@ impl Pass<'_> {
             ));
         }
         Ok(d)
+    }
+}
+
+/// A canned cycle with its R level and nothing else yet.
+fn plain_cycle(kind: CycleKind, r: f64) -> CannedCycle {
+    CannedCycle {
+        kind,
+        target: Axes::default(),
+        r: Some(Value::Number(decimal(r))),
+        q: None,
+        p: None,
+        repeat: None,
+        i: None,
+        j: None,
+        k: None,
     }
 }
 

@@ -1,6 +1,7 @@
 //! Round holes: drilling (G81/G82, CYCLE81/82), multistep drilling (G83,
-//! CYCLE83), reaming (G85, CYCLE85) and boring (G86, CYCLE86), at the
-//! hole's position. What a cycle cannot carry is named in a comment.
+//! CYCLE83), reaming (G85, CYCLE85), boring (G86, CYCLE86) and tapping
+//! (G84/G74, CYCLE84, CYCL DEF 207; see [`super::tapping`]), at the hole's
+//! position. What a cycle cannot carry is named in a comment.
 
 use super::group::{self, Pattern};
 use super::names::operation_kind;
@@ -183,10 +184,21 @@ fn cycle(w: &mut Writer<'_>, s: &Step<'_>) -> Result<&'static str, PostError> {
                 "ream.j2"
             }
         }
+        OperationKind::Tapping {
+            drill,
+            compensation_chuck,
+        } => {
+            strategy_notes(w, drill)?;
+            let v = super::tapping::values(w, s, base(w, s, drill)?, drill, *compensation_chuck)?;
+            let name = super::tapping::template(w, *compensation_chuck);
+            w.emit(name, v)?;
+            name
+        }
         OperationKind::PlaneMilling { .. }
         | OperationKind::SideMilling { .. }
         | OperationKind::BottomAndSideMilling { .. }
         | OperationKind::Freeform { .. }
+        | OperationKind::ThreadDrilling { .. }
         | OperationKind::Other(_) => {
             return Err(PostError::unsupported(
                 &s.op.id,
@@ -234,7 +246,7 @@ fn cone_below_depth(s: &Step<'_>) -> f64 {
     }
 }
 
-fn dwell(w: &Writer<'_>, v: Vals, seconds: f64) -> Vals {
+pub(super) fn dwell(w: &Writer<'_>, v: Vals, seconds: f64) -> Vals {
     v.set("dwell_s", w.fmt.plain(seconds, 3))
         .set("dwell_ms", w.fmt.plain((seconds * 1000.0).round(), 0))
 }

@@ -11,11 +11,11 @@
 //!
 //! Which cycle a feature becomes is data: the target's template set says
 //! what it has (`pocket_rect.j2` on the 840D, none on Fanuc: explicit
-//! moves). Heidenhain: drilling cycles (CYCL DEF 200/201/202, 203 or
-//! 205 for pecking: `pecking.rs`) called with `L X.. Y.. R0 FMAX M99` or
-//! `PATTERN DEF` + `CYCL CALL PAT`, CYCL DEF 251/252 pockets, 232 faces,
-//! 253 slots (`slot_cycle.rs`), CYCL DEF 32 tolerance, TOOL DEF and
-//! BLK FORM.
+//! moves). Tapping: [`tapping`]. Heidenhain: drilling cycles (CYCL DEF
+//! 200/201/202, 203 or 205 for pecking: `pecking.rs`, 206/207 tapping)
+//! called with `L X.. Y.. R0 FMAX M99` or `PATTERN DEF` + `CYCL CALL
+//! PAT`, CYCL DEF 251/252 pockets, 232 faces, 253 slots
+//! (`slot_cycle.rs`), CYCL DEF 32 tolerance, TOOL DEF and BLK FORM.
 
 mod explicit;
 mod faces;
@@ -37,6 +37,7 @@ mod slot_cycle;
 mod slot_cycles;
 mod slots;
 mod step;
+mod tapping;
 mod templates;
 pub mod values;
 

@@ -74,6 +74,8 @@ pub fn operation_kind(k: &OperationKind) -> String {
         OperationKind::MultistepDrilling { .. } => "multistep_drilling".into(),
         OperationKind::Boring { reaming: true, .. } => "reaming".into(),
         OperationKind::Boring { reaming: false, .. } => "boring".into(),
+        OperationKind::Tapping { .. } => "tapping".into(),
+        OperationKind::ThreadDrilling { .. } => "thread_drilling".into(),
         OperationKind::Other(r) => r.entity.to_ascii_lowercase(),
     }
 }

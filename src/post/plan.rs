@@ -204,6 +204,8 @@ pub fn is_rough(op: &Operation) -> bool {
         | OperationKind::CounterSinking(_)
         | OperationKind::MultistepDrilling { .. }
         | OperationKind::Boring { .. }
+        | OperationKind::Tapping { .. }
+        | OperationKind::ThreadDrilling { .. }
         | OperationKind::Other(_) => false,
     }
 }

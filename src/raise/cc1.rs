@@ -14,12 +14,14 @@
 //!   workingstep; these workingsteps are tied to one TOOLPATH_FEATURE per
 //!   tool, placed at the workpiece origin;
 //! - a drilling cycle (see [`super::holes`]) becomes a ROUND_HOLE with its
-//!   drilling operation, whose toolpath is the cycle's moves;
+//!   drilling operation, whose toolpath is the cycle's moves; a tapping
+//!   cycle a TAPPING operation (spindle synchronised with the feed: the
+//!   pitch is feed / speed) whose tool becomes a TAP of the spindle's hand;
 //! - a dwell inside a run is a FEEDSTOP; a program stop a PROGRAM_STOP;
 //! - a comment names the workingstep that follows it.
 
 use super::curves::CurveBuilder;
-use super::holes::{classify, HoleCycle, Item, Pattern};
+use super::holes::{classify, HoleCycle, HoleKind, Item, Pattern};
 use super::ops;
 use super::project::{placement, plane_at, ToolRegistry};
 use super::report::Losses;
@@ -411,6 +413,14 @@ impl Cc1Builder {
         self.add_step(name, fid, &first, tool, toolpaths, kind);
         let op = self.project.operations.last_mut().expect("just added");
         op.retract_plane = Some(h.r_z - top);
+        if let HoleKind::Tapping { left_hand, .. } = h.kind {
+            // The pitch is the feed over the speed (ISO 14649: the spindle
+            // synchronised with the feed); the tool is a tap of that hand.
+            op.technology.synchronize_spindle_with_feed = true;
+            let body = &mut self.project.tools[tool.index()].body;
+            body.kind = ToolBodyKind::Tap;
+            body.hand_of_cut = Some(if left_hand { Hand::Left } else { Hand::Right });
+        }
         self.known = true;
     }
 }

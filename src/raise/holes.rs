@@ -20,8 +20,12 @@
 //! - one feed down, the spindle stopped before a rapid out (G86) → BORING
 //!   with `spindle_stop_at_bottom`;
 //! - one feed down, rapid out (G81; G82 with its dwell) → DRILLING;
-//! - the spindle reversed on the way out (tapping, G84/G74) or anything
-//!   else (back boring G87, G88's stop) → not a hole: [`Pattern::Other`].
+//! - one feed down, then a feed out with the spindle turning the other
+//!   way (G84/G74, and the rigid taps CYCLE84 / CYCLE DEF 207 / G33.1,
+//!   whose way out the toolpath gives reversed) → TAPPING; the spindle's
+//!   direction on the way down gives the hand (M4: left hand);
+//! - anything else (back boring G87, G88's stop) → not a hole:
+//!   [`Pattern::Other`].
 
 use crate::toolpath::{Move, MoveKind, P3};
 
@@ -66,6 +70,12 @@ pub enum HoleKind {
         dwell: Option<f64>,
         /// The feed out as a ratio of the feed in.
         feed_on_retract: Option<f64>,
+    },
+    /// Fed in, spindle reversed, fed out.
+    Tapping {
+        /// The spindle turned counter-clockwise (M4) on the way in.
+        left_hand: bool,
+        dwell: Option<f64>,
     },
 }
 
@@ -147,13 +157,13 @@ fn hole_kind(body: &[Item], spindle: f64) -> Option<HoleKind> {
             Item::Dwell(_) => None,
         })
         .collect();
-    if moves.iter().any(|m| m.spindle * spindle < 0.0) {
-        return None; // reversed: tapping
-    }
     let dwell = body.iter().find_map(|i| match i {
         Item::Dwell(s) if *s > 0.0 => Some(*s),
         _ => None,
     });
+    if moves.iter().any(|m| m.spindle * spindle < 0.0) {
+        return tapping(&moves, spindle, dwell);
+    }
     let downs: Vec<&&Move> = moves.iter().filter(|m| is_feed_down(m)).collect();
     if downs.len() >= 2 {
         let first_bottom = downs[0].to[2];
@@ -191,6 +201,22 @@ fn hole_kind(body: &[Item], spindle: f64) -> Option<HoleKind> {
         MoveKind::Rapid => Some(HoleKind::Drilling { dwell }),
         MoveKind::Line | MoveKind::Arc(_) | MoveKind::Probe => None,
     }
+}
+
+/// One feed down, then the feed out with the spindle reversed (and
+/// nothing else reversed after it).
+fn tapping(moves: &[&Move], spindle: f64, dwell: Option<f64>) -> Option<HoleKind> {
+    let out = moves.get(1)?;
+    let out_reversed =
+        out.kind == MoveKind::Line && out.to[2] > out.from[2] + EPS && out.spindle * spindle < 0.0;
+    let downs = moves.iter().filter(|m| is_feed_down(m)).count();
+    let later_reversed = moves[2..]
+        .iter()
+        .any(|m| m.is_feed() && m.spindle * spindle < 0.0);
+    (out_reversed && downs == 1 && !later_reversed).then_some(HoleKind::Tapping {
+        left_hand: spindle < 0.0,
+        dwell,
+    })
 }
 
 #[cfg(test)]
@@ -257,8 +283,38 @@ mod tests {
                 ..
             }
         ));
-        let tap = [down, mv(L, [5.0, 5.0, -10.0], [5.0, 5.0, 2.0], -1000.0)];
-        assert_eq!(classify(&tap), Pattern::Other);
+        let tap = [
+            down.clone(),
+            mv(L, [5.0, 5.0, -10.0], [5.0, 5.0, 2.0], -1000.0),
+        ];
+        let Pattern::Hole(h) = classify(&tap) else {
+            panic!()
+        };
+        let right = HoleKind::Tapping {
+            left_hand: false,
+            dwell: None,
+        };
+        assert_eq!(h.kind, right);
+        let g74 = [
+            mv(L, [5.0, 5.0, 2.0], [5.0, 5.0, -10.0], -1000.0),
+            mv(L, [5.0, 5.0, -10.0], [5.0, 5.0, 2.0], 1000.0),
+        ];
+        let Pattern::Hole(h) = classify(&g74) else {
+            panic!()
+        };
+        assert!(matches!(
+            h.kind,
+            HoleKind::Tapping {
+                left_hand: true,
+                ..
+            }
+        ));
+        // Reversed on a rapid out is no tapping.
+        let odd = [
+            mv(L, [5.0, 5.0, 2.0], [5.0, 5.0, -10.0], 1000.0),
+            mv(R, [5.0, 5.0, -10.0], [5.0, 5.0, 2.0], -1000.0),
+        ];
+        assert_eq!(classify(&odd), Pattern::Other);
     }
 
     #[test]

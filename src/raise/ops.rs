@@ -115,7 +115,7 @@ pub fn hole_geometry(
             };
             (top, (tip_depth - cone).max(0.0), bottom)
         }
-        HoleKind::Boring { .. } => (top, tip_depth, HoleBottom::Flat),
+        HoleKind::Boring { .. } | HoleKind::Tapping { .. } => (top, tip_depth, HoleBottom::Flat),
     }
 }
 
@@ -177,6 +177,11 @@ pub fn hole_operation_kind(h: &HoleCycle, top: f64) -> OperationKind {
             depth_of_testcut: None,
             waiting_position: None,
         },
+        // Fed by the canon's rigid tap or G84: no compensating chuck.
+        HoleKind::Tapping { dwell, .. } => OperationKind::Tapping {
+            drill: common(dwell, None),
+            compensation_chuck: false,
+        },
     }
 }
 
@@ -200,6 +205,8 @@ pub fn operation_name(k: &OperationKind) -> &'static str {
         OperationKind::MultistepDrilling { .. } => "MULTISTEP_DRILLING",
         OperationKind::Boring { reaming: true, .. } => "REAMING",
         OperationKind::Boring { reaming: false, .. } => "BORING",
+        OperationKind::Tapping { .. } => "TAPPING",
+        OperationKind::ThreadDrilling { .. } => "THREAD_DRILLING",
         OperationKind::Other(_) => "OTHER",
     }
 }

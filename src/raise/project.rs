@@ -220,7 +220,7 @@ impl ToolRegistry {
     pub fn settle_kinds(&self, project: &mut Project) {
         for (i, tool) in project.tools.iter_mut().enumerate() {
             let comment = tool.id.split_once(' ').map(|(_, c)| c).unwrap_or("");
-            if kind_from_comment(comment).is_some() {
+            if kind_from_comment(comment).is_some() || tool.body.kind == ToolBodyKind::Tap {
                 continue;
             }
             let (drilling, other) = self.uses[i];

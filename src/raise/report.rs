@@ -60,7 +60,7 @@ impl Losses {
             &self.cycles,
             Code::RaiseCycleAsToolpath,
             "canned cycle(s) kept as explicit toolpaths, not as hole features",
-            "tapping and back-boring cycles have no hole operation in cncc's STEP-NC model yet",
+            "back-boring cycles (and other unrecognised vertical runs) have no hole operation in cncc's STEP-NC model yet",
         );
         out
     }

@@ -215,6 +215,22 @@ fn operation(op: &Operation) -> String {
                 n(*retract_distance)
             );
         }
+        OperationKind::Tapping {
+            drill,
+            compensation_chuck,
+        } => {
+            let _ = write!(
+                s,
+                " depth {} pitch {}{}",
+                d(drill.cutting_depth),
+                d(op.thread_pitch()),
+                if *compensation_chuck {
+                    " compensation chuck"
+                } else {
+                    ""
+                }
+            );
+        }
         _ => {}
     }
     if let OperationKind::Boring {

@@ -504,7 +504,40 @@ pub enum OperationKind {
         depth_of_testcut: Option<f64>,
         waiting_position: Option<Point>,
     },
+    /// TAPPING (ISO 14649-11): a tap fed in and out with the spindle
+    /// synchronised to the feed. The thread pitch is the technology's
+    /// feed over its spindle speed (`synchronize_spindle_with_feed` set),
+    /// see [`Operation::thread_pitch`]; the hand is the spindle's sign
+    /// (negative = M4 = left-hand thread) and the TAP body's `hand_of_cut`.
+    Tapping {
+        drill: DrillCommon,
+        /// True: the tap sits in a floating (compensating) chuck, so the
+        /// controller need not synchronise the spindle exactly.
+        compensation_chuck: bool,
+    },
+    /// THREAD_DRILLING (ISO 14649-11): drilling and threading in one tool.
+    ThreadDrilling {
+        drill: DrillCommon,
+        helical_movement_on_forward: bool,
+    },
     Other(Raw),
+}
+
+impl Operation {
+    /// The thread pitch of a tapping operation, mm per revolution: the
+    /// feed over the spindle speed (ISO 14649 has no pitch attribute on the
+    /// TAP body in the schema we follow: `machinetool_resource_schema9`
+    /// gives TAP only the five milling_machine_tool_body attributes).
+    pub fn thread_pitch(&self) -> Option<f64> {
+        match self.kind {
+            OperationKind::Tapping { .. } | OperationKind::ThreadDrilling { .. } => {
+                let feed = self.technology.feed?;
+                let rpm = self.technology.spindle?.abs();
+                (rpm > 0.0).then(|| feed / rpm)
+            }
+            _ => None,
+        }
+    }
 }
 
 /// What every two5D milling operation has beyond the machining operation.

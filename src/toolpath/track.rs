@@ -172,11 +172,16 @@ impl Tracker {
                 return Some(self.make(MoveKind::Probe, self.to_work([p[0], p[1], p[2]]), span))
             }
             RigidTap { x, y, z } => {
-                // Down to the point and back out along the same line.
+                // Down to the point and back out along the same line,
+                // the spindle reversed on the way out (as the tap turns).
                 let start = self.pos;
                 let down = self.to_work([*x, *y, *z]);
                 emit(self.make(MoveKind::Line, down, span));
-                return Some(self.make(MoveKind::Line, start, span));
+                let mut out = self.make(MoveKind::Line, start, span);
+                if let Event::Move(m) = &mut out {
+                    m.spindle = -m.spindle;
+                }
+                return Some(out);
             }
             ArcFeed {
                 first_end,

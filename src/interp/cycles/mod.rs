@@ -14,6 +14,7 @@
 //! * [`pattern_positions`]: Siemens HOLES1, HOLES2, CYCLE801.
 
 mod body;
+mod float_tap;
 mod frame;
 mod memory;
 mod patterns;

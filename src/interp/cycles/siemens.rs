@@ -83,6 +83,12 @@ pub fn run_named_drill_cycle(
         }
         "CYCLE83" => deep_hole(host, &h, &a)?,
         "CYCLE84" => rigid_tap(host, &h, &a)?,
+        "CYCLE840" => {
+            let pitch = a(10)
+                .filter(|p| *p != 0.0)
+                .or_else(|| a(9).and_then(|m| metric_pitch(m.abs()).map(|p| p.copysign(m))));
+            super::float_tap::run(host, f, h.at, h.safe, h.depth, &a, pitch)?
+        }
         "CYCLE85" => bore_feed_out(host, &h, a(5), a(6), a(7)),
         "CYCLE86" => bore_oriented(host, &h, &a),
         "CYCLE87" | "CYCLE88" => bore_manual(host, &h, &a, upper == "CYCLE88"),

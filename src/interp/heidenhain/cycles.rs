@@ -11,7 +11,8 @@
 //!   infeed [?: the Q212 decrement is not modelled]; chip breaking
 //!   (backing off Q256) when 203's Q213 > 0 or after every Q257 of 205
 //!   [?: the number of breaks before a full retract is not modelled].
-//!   201 → CYCLE85, 202 → CYCLE86, 207 → CYCLE84.
+//!   201 → CYCLE85, 202 → CYCLE86, 206 → CYCLE840,
+//!   207 → CYCLE84.
 //! * 251 → POCKET1, 252 → POCKET2 about the current position (Q367 = 0),
 //!   Q215 as their VARI (0 rough + finish, 1 rough, 2 finish); stepover
 //!   and finishing as the Siemens expansion does them [?]; 253

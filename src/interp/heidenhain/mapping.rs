@@ -133,6 +133,12 @@ pub(super) fn numbered(
             a.extend([q(211), Some(3.0), None, None, None, q(336)]);
             "CYCLE86"
         }
+        // Floating chuck: CYCLE840 at the feed Q206 (ENC 1: no encoder),
+        // dwell Q211, automatic reversal (SDR 0).
+        206 => {
+            a.extend([q(211), Some(0.0), None, Some(1.0)]);
+            "CYCLE840"
+        }
         207 => {
             a.extend([None, None, None, q(239), None, Some(it.state.speed.abs())]);
             "CYCLE84"

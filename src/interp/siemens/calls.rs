@@ -33,7 +33,7 @@ enum Kind {
 fn kind(it: &Interp<'_, '_>, name: &str) -> Kind {
     match name {
         "CYCLE81" | "CYCLE82" | "CYCLE83" | "CYCLE84" | "CYCLE85" | "CYCLE86" | "CYCLE87"
-        | "CYCLE88" | "CYCLE89" => Kind::Drill,
+        | "CYCLE88" | "CYCLE89" | "CYCLE840" => Kind::Drill,
         "HOLES1" | "HOLES2" | "CYCLE801" => Kind::Pattern,
         "CYCLE832" => Kind::Tolerance,
         _ if milling::expands(name) => Kind::Milling,

@@ -205,7 +205,7 @@ fn program_mcall_and_patterns() {
 fn program_cycle832_and_unexpanded() {
     let out = drive::run(
         "CYCLE832(0.05,112001)\nCYCLE832()\nCYCLE800(4,\"TC1\",200000,57,0,0,0,0,0,0,0,0,0,1,,1)\n\
-         MCALL CYCLE840(10,0,2,-5,0,0,0,3,0,0,1)\nG0 X1 Y1\nG0 X2 Y2\nMCALL\nM30\n",
+         MCALL CYCLE77(10,0,2,-5,0,0,0,3,0,0,1)\nG0 X1 Y1\nG0 X2 Y2\nMCALL\nM30\n",
     );
     insta::assert_snapshot!("program_cycle832_and_unexpanded", out);
 }

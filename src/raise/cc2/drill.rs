@@ -33,13 +33,28 @@ pub fn raise(r: &mut Raiser, h: &HoleCut, t: i64, moves: &[Move]) {
     let Some(rad) = r.radius(t) else {
         return super::freeform::raise(r, t, moves, "the tool's diameter is unknown; the hole");
     };
-    let kind = r
-        .project
-        .tools
-        .get((r.tool)(t).index())
-        .map(|tl| tl.body.kind.clone());
-    if h.tapping || matches!(kind, Some(ToolBodyKind::Tap)) {
-        let what = "tapping moves (the model has no TAPPING operation yet)";
+    let tool_id = (r.tool)(t);
+    if h.tapping {
+        // A tool that taps is a tap, of the hand its spindle turned in.
+        if let Some(tl) = r.project.tools.get_mut(tool_id.index()) {
+            tl.body.kind = ToolBodyKind::Tap;
+            tl.body.hand_of_cut = Some(if h.spindle < 0.0 {
+                Hand::Left
+            } else {
+                Hand::Right
+            });
+        }
+    }
+    let kind = match h.tapping {
+        true => Some(ToolBodyKind::Tap),
+        false => r
+            .project
+            .tools
+            .get(tool_id.index())
+            .map(|tl| tl.body.kind.clone()),
+    };
+    if !h.tapping && matches!(kind, Some(ToolBodyKind::Tap)) {
+        let what = "a tap's moves without the spindle reversed";
         return super::freeform::raise(r, t, moves, what);
     }
     // Holes by position on a 1 µm grid: programs drill thousands.
@@ -65,6 +80,9 @@ pub fn raise(r: &mut Raiser, h: &HoleCut, t: i64, moves: &[Move]) {
     };
     let (op_kind, verb) = operation(h, kind.as_ref());
     let cuts: Vec<&Move> = moves.iter().filter(|m| m.is_feed()).collect();
+    let mut technology = technology(&cuts[..1]);
+    // Tapping: the pitch is the feed over the speed, the two synchronised.
+    technology.synchronize_spindle_with_feed = h.tapping;
     let op = Operation {
         id: format!("{verb} {name}"),
         toolpath: None,
@@ -72,7 +90,7 @@ pub fn raise(r: &mut Raiser, h: &HoleCut, t: i64, moves: &[Move]) {
         retract_plane: Some(r6(h.start_z - surface_at(r, h.xy))),
         start_point: None,
         tool: (r.tool)(t),
-        technology: technology(&cuts[..1]),
+        technology,
         machine_functions: machine_functions(&cuts),
         overcut_length: None,
         kind: op_kind,
@@ -225,6 +243,17 @@ fn operation(h: &HoleCut, kind: Option<&ToolBodyKind>) -> (OperationKind, &'stat
         depth_of_testcut: None,
         waiting_position: None,
     };
+    if h.tapping {
+        let drill = DrillCommon {
+            feed_on_retract: None,
+            ..drill
+        };
+        let op = OperationKind::Tapping {
+            drill,
+            compensation_chuck: false,
+        };
+        return (op, "TAP");
+    }
     match kind {
         Some(ToolBodyKind::CenterDrill | ToolBodyKind::Spotdrill) => {
             return (OperationKind::CenterDrilling(drill), "CENTER DRILL")

@@ -13,8 +13,8 @@
 //! * spindle stopped at the bottom then rapid out: BORING with
 //!   `spindle_stop_at_bottom` (G86, CYCLE86).
 //!
-//! * fed out with the spindle reversed: tapping, which the model has no
-//!   operation for yet: the hole stays a toolpath feature (W0870).
+//! * fed out with the spindle reversed: TAPPING (G84, G74, CYCLE84,
+//!   CYCL DEF 207, G33.1), the tool a TAP of the spindle's hand.
 //!
 //! The tool's kind, when the project knows it, wins: a reamer reams, a
 //! centre or spot drill centre-drills, a countersink countersinks.

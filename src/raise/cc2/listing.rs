@@ -259,6 +259,13 @@ fn op_kind(k: &OperationKind) -> String {
         ),
         OperationKind::Drilling(d) => format!("DRILLING dwell {}", opt(d.dwell_time_bottom)),
         OperationKind::CenterDrilling(_) => "CENTER_DRILLING".into(),
+        OperationKind::Tapping {
+            compensation_chuck, ..
+        } => format!("TAPPING compensation chuck {compensation_chuck}"),
+        OperationKind::ThreadDrilling {
+            helical_movement_on_forward,
+            ..
+        } => format!("THREAD_DRILLING helical {helical_movement_on_forward}"),
         OperationKind::CounterSinking(_) => "COUNTER_SINKING".into(),
         OperationKind::Freeform { .. } => "FREEFORM_OPERATION (explicit toolpath)".into(),
         OperationKind::Other(r) => r.entity.clone(),

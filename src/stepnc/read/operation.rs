@@ -26,11 +26,54 @@ impl<'f> Rd<'f> {
             ));
         }
         let o = self.operation_body(i)?;
+        self.check_tapping(&o, i);
         self.ids.push((o.id.clone(), "operation", i.span));
         let id = OperationId(self.p.operations.len() as u32);
         self.p.operations.push(o);
         self.operations.insert(i.id, id);
         Ok(id)
+    }
+
+    /// A tapping operation needs a pitch (feed over speed, synchronised)
+    /// and a tap of the spindle's hand: warnings W0804, W0805.
+    fn check_tapping(&mut self, o: &Operation, i: &'f Instance) {
+        if !matches!(
+            o.kind,
+            OperationKind::Tapping { .. } | OperationKind::ThreadDrilling { .. }
+        ) {
+            return;
+        }
+        if o.thread_pitch().is_none() || !o.technology.synchronize_spindle_with_feed {
+            self.diags.push(
+                Diagnostic::new(
+                    Code::TappingWithoutPitch,
+                    format!("{} '{}' gives no thread pitch", i.entity, o.id),
+                )
+                .primary(i.span, "its technology needs a feedrate and a spindle speed, synchronised")
+                .help("the pitch is the feed over the spindle speed: give both and set synchronize_spindle_with_feed to .T."),
+            );
+        }
+        let hand = self
+            .p
+            .tools
+            .get(o.tool.index())
+            .and_then(|t| t.body.hand_of_cut);
+        let left = o.technology.spindle.is_some_and(|s| s < 0.0);
+        let clash = match hand {
+            Some(Hand::Left) => o.technology.spindle.is_some() && !left,
+            Some(Hand::Right) => left,
+            Some(Hand::Neutral) | None => false,
+        };
+        if clash {
+            self.diags.push(
+                Diagnostic::new(
+                    Code::TapHandAgainstSpindle,
+                    format!("{} '{}': the tap's hand_of_cut disagrees with the spindle direction", i.entity, o.id),
+                )
+                .primary(i.span, "the spindle turns the other way than the tap cuts")
+                .help("a right-hand tap turns clockwise (a negative speed in the file), a left-hand tap counter-clockwise"),
+            );
+        }
     }
 
     fn operation_body(&mut self, i: &'f Instance) -> R<Operation> {
@@ -133,6 +176,14 @@ impl<'f> Rd<'f> {
                 spindle_stop_at_bottom: boolean(a(5)?)?,
                 depth_of_testcut: opt_real(a(6)?)?,
                 waiting_position: self.opt_point(a(7)?)?,
+            },
+            "TAPPING" => OperationKind::Tapping {
+                drill: self.drill(i)?,
+                compensation_chuck: boolean(a(5)?)?,
+            },
+            "THREAD_DRILLING" => OperationKind::ThreadDrilling {
+                drill: self.drill(i)?,
+                helical_movement_on_forward: boolean(a(5)?)?,
             },
             _ => return Err(fail(i.entity_span, "not an operation cncc models")),
         })

@@ -129,6 +129,22 @@ impl<'p> W<'p> {
                 out.push(self.opt_point(waiting_position));
                 if *reaming { "REAMING" } else { "BORING" }.into()
             }
+            OperationKind::Tapping {
+                drill,
+                compensation_chuck,
+            } => {
+                self.drill(drill, out);
+                out.push(bool_value(*compensation_chuck));
+                "TAPPING".into()
+            }
+            OperationKind::ThreadDrilling {
+                drill,
+                helical_movement_on_forward,
+            } => {
+                self.drill(drill, out);
+                out.push(bool_value(*helical_movement_on_forward));
+                "THREAD_DRILLING".into()
+            }
             OperationKind::Other(raw) => {
                 for v in &raw.params {
                     let v = self.raw_value(v);

@@ -356,7 +356,7 @@ fn spindle_stopped_at_the_bottom_is_boring_a_dwell_and_rapid_out_is_drilling() {
 }
 
 #[test]
-fn tapping_stays_a_toolpath_feature() {
+fn tapping_is_a_round_hole_with_a_tapping_operation() {
     let mut ev = path(
         &[z(5.0, 5.0, 2.0), z(5.0, 5.0, -10.0), z(5.0, 5.0, 2.0)],
         &[false, false],
@@ -366,8 +366,24 @@ fn tapping_stays_a_toolpath_feature() {
         m.spindle = -m.spindle;
     }
     let (p, notes) = run(&ev, 6.0, None);
-    assert_eq!(notes, 1);
-    assert_eq!(p.features[0].kind, FeatureKind::ToolpathFeature);
+    assert_eq!(notes, 0);
+    let FeatureKind::RoundHole {
+        diameter, bottom, ..
+    } = &p.features[0].kind
+    else {
+        panic!("{:?}", p.features[0].kind)
+    };
+    assert_eq!((diameter.nominal, bottom), (6.0, &HoleBottom::Flat));
+    let o = op(&p, 0, 0);
+    assert!(matches!(
+        o.kind,
+        OperationKind::Tapping {
+            compensation_chuck: false,
+            ..
+        }
+    ));
+    assert!(o.technology.synchronize_spindle_with_feed);
+    // The tool's kind and hand: tests/tapping.rs (no tools here).
 }
 
 /// Thousands of holes and a cut with tens of thousands of levels are
