@@ -232,7 +232,7 @@ fn open_ends_stay_explicit_moves_and_say_why() {
 #[test]
 fn other_targets_keep_explicit_moves() {
     let p = with_slot(24.0, [1.0, 0.0, 0.0], radiused());
-    for id in ["fanuc", "haas", "linuxcnc", "heidenhain"] {
+    for id in ["fanuc", "haas", "linuxcnc"] {
         let text = post(&p, &builtin::builtin(id).unwrap()).unwrap().text;
         let part = slot_part(&text);
         assert!(
@@ -240,6 +240,14 @@ fn other_targets_keep_explicit_moves() {
             "{id}: {part}"
         );
     }
+    // Heidenhain has its own slot cycle (tests/post_heidenhain.rs).
+    let text = post(&p, &builtin::builtin("heidenhain").unwrap())
+        .unwrap()
+        .text;
+    assert!(
+        slot_part(&text).contains("CYCL DEF 253 SLOT MILLING"),
+        "{text}"
+    );
 }
 
 /// `cncc port --features --to siemens840d` of the CC2 test part: its

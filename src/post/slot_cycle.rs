@@ -16,15 +16,31 @@ use super::values::Vals;
 use super::{PostError, Writer};
 use crate::stepnc::model::*;
 
-/// Writes the slot cycle; `Ok(false)` when the slot is not one it makes.
+/// Why the slot cycle does not make this slot; None when it does.
+pub fn why_not(s: &Step<'_>) -> Option<&'static str> {
+    let Some((_, _, width)) = geometry(s) else {
+        return Some(
+            "the slot cycle cuts straight slots with both ends radiused, square to the tool",
+        );
+    };
+    if width <= s.tool.body.dimension.diameter + 1e-9 {
+        return Some("the slot cycle needs a slot wider than the tool");
+    }
+    if !matches!(s.op.kind, OperationKind::BottomAndSideMilling { .. }) {
+        return Some("the slot cycle is posted for bottom and side milling only");
+    }
+    None
+}
+
+/// Writes the slot cycle; `Ok(false)` when the slot is not one it makes
+/// ([`why_not`] says why).
 pub fn write(w: &mut Writer<'_>, s: &Step<'_>, c: &Cut<'_>) -> Result<bool, PostError> {
+    if why_not(s).is_some() {
+        return Ok(false);
+    }
     let Some((frame, length, width)) = geometry(s) else {
         return Ok(false);
     };
-    let d = s.tool.body.dimension.diameter;
-    if width <= d + 1e-9 || !matches!(s.op.kind, OperationKind::BottomAndSideMilling { .. }) {
-        return Ok(false);
-    }
     let (fal, fald) = match (c.finish, s.roughed_by) {
         (false, _) => (c.allow_side, c.allow_bottom),
         (true, Some(r)) => left_by(r),

@@ -51,6 +51,10 @@ pub fn try_cycle(
     let has_slot1 = w.post.has("slot1.j2");
     let has_longhole = w.post.has("slot_longhole.j2");
     if !has_slot1 && !has_longhole {
+        if w.post.has("slot.j2") {
+            let why = super::slot_cycle::why_not(s);
+            return Ok(Some(why.unwrap_or("the slot cycle was not used").into()));
+        }
         return Ok(Some("the target has no slot cycle".into()));
     }
     if !radiused {
