@@ -390,7 +390,7 @@ fn cc2part_raised_and_posted_back_gives_the_same_features() {
     assert!(text.contains("BLK FORM 0.1 Z X0 Y0 Z-20\nBLK FORM 0.2 X120 Y80 Z1\n"));
     assert!(text
         .contains("CYCL DEF 232 FACE MILLING Q389=0 Q225=0 Q226=0 Q227=1 Q386=0 Q218=120 Q219=80"));
-    assert!(text.contains("CYCL DEF 205 UNIVERSAL PECKING"));
+    assert!(text.contains("CYCL DEF 203 UNIVERSAL DRILLING"), "{text}");
     insta::assert_snapshot!("cc2part_heidenhain", text);
     let back = save("cc2part-back.h", &text);
     checks_and_runs(&back, "heidenhain");

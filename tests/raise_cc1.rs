@@ -198,7 +198,8 @@ fn fanuc_holes_are_round_holes_with_their_operation() {
     };
     assert_eq!(
         (*first_depth, *depth_of_step, drill.cutting_depth),
-        (6.0, 6.0, Some(25.0))
+        (4.0, 6.0, Some(25.0)),
+        "G83 R2 Q6: the first peck ends at Z-4, 4 below the top at 0"
     );
     assert_eq!(op.retract_plane, Some(2.0));
     assert_eq!(op.technology.feed, Some(100.0));
@@ -255,7 +256,7 @@ fn siemens_part_gives_the_same_holes_and_cuts() {
     else {
         panic!()
     };
-    assert_eq!(*first_depth, 8.0, "CYCLE83 FDEP -6 from the R plane at 2");
+    assert_eq!(*first_depth, 6.0, "CYCLE83 FDEP -6: 6 below the top at 0");
 }
 
 #[test]

@@ -174,9 +174,10 @@ fn fanuc_and_siemens_programs_give_the_same_features_and_operations() {
 /// by CYCL DEF 200 called at each hole (M99, CYCL CALL), the pocket, face
 /// and slot by explicit L moves. It gives the same features, workplan and
 /// operations as the Fanuc program except, legitimately, the pecked
-/// hole's `first_depth` and `retract_distance` (both from the R plane):
-/// G83's Q4 counts the first peck from R (R2: to Z-2), cycle 200's Q202=4
-/// from the surface (Q203=0: to Z-4).
+/// hole's `first_depth` (from the hole's top) and `retract_distance`
+/// (from the first peck's bottom up to the R plane): G83's Q4 counts the
+/// first peck from R (R2: to Z-2), cycle 200's Q202=4 from the surface
+/// (Q203=0: to Z-4).
 #[test]
 fn fanuc_and_heidenhain_programs_give_the_same_features_and_operations() {
     let fanuc = raise("cc2part.nc", "fanuc");
@@ -188,7 +189,7 @@ fn fanuc_and_heidenhain_programs_give_the_same_features_and_operations() {
     assert_eq!(
         report.lines,
         [
-            "~ operation 'PECK DRILL HOLE4' / first_depth: 4. → 6.",
+            "~ operation 'PECK DRILL HOLE4' / first_depth: 2. → 4.",
             "~ operation 'PECK DRILL HOLE4' / retract_distance: 4. → 6."
         ],
         "{}",
@@ -426,7 +427,8 @@ fn peck_hole(f: &Feature, p: &Project) {
     };
     assert_eq!(
         (*first_depth, *depth_of_step, *retract_distance),
-        (4.0, 4.0, 4.0)
+        (2.0, 4.0, 4.0),
+        "G83 R2 Q4: the first peck ends at Z-2, 2 below the top at 0"
     );
 }
 

@@ -231,8 +231,9 @@ fn raise_cc2(file: &str, dialect: &str, extra: &[&str]) -> String {
 /// why: the peck depths of the pecked hole. Fanuc G83's Q counts the first
 /// peck from the R plane (R2 Q5: to Z-3), TNC cycle 200's Q202 from the
 /// surface (Q203=0 Q202=5: to Z-5), so MULTISTEP_DRILLING's `first_depth`
-/// and `retract_distance` (both measured from the R plane) legitimately
-/// differ; the hole, its depth and everything else must not.
+/// (from the hole's top: 3 and 5) and `retract_distance` (from the first
+/// peck's bottom back up to the R plane: 5 and 7) legitimately differ;
+/// the hole, its depth and everything else must not.
 #[test]
 fn fanuc_and_heidenhain_give_the_same_cc2_features() {
     let fanuc = raise_cc2("part.nc", "fanuc", &["--stock", "100x50x20"]);
@@ -252,7 +253,7 @@ fn fanuc_and_heidenhain_give_the_same_cc2_features() {
     assert_eq!(
         differences,
         [
-            "~ operation 'PECK DRILL HOLE4' / first_depth: 5. → 7.",
+            "~ operation 'PECK DRILL HOLE4' / first_depth: 3. → 5.",
             "~ operation 'PECK DRILL HOLE4' / retract_distance: 5. → 7."
         ],
         "{out}"

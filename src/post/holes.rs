@@ -142,10 +142,15 @@ fn cycle(w: &mut Writer<'_>, s: &Step<'_>) -> Result<&'static str, PostError> {
             if dwell_time_step.is_some_and(|t| t > 0.0) {
                 w.not_carried("dwell time between steps")?;
             }
-            if w.post.ignores("peck.j2", "first") && (first_depth - depth_of_step).abs() > 1e-9 {
+            // A peck.j2 without `first` pecks evenly from the R plane
+            // (G83's Q): its first step ends Q below R. `first_depth` is
+            // measured from the hole's top.
+            let first_from_r = first_depth + s.sdis;
+            if w.post.ignores("peck.j2", "first") && (first_from_r - depth_of_step).abs() > 1e-6 {
                 w.not_carried(&format!(
-                    "first depth {} mm (the target's cycle pecks evenly)",
-                    w.fmt.plain(*first_depth, 3)
+                    "first depth {} mm below the top (the target's cycle pecks evenly from the R plane, {} mm above the top)",
+                    w.fmt.plain(*first_depth, 3),
+                    w.fmt.plain(s.sdis, 3)
                 ))?;
             }
             let v = base(w, s, drill)?

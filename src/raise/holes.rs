@@ -59,6 +59,7 @@ pub enum HoleKind {
         dwell: Option<f64>,
     },
     Multistep {
+        /// Below where the first feed starts (the R plane).
         first_depth: f64,
         depth_of_step: f64,
         retract_distance: f64,

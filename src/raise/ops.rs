@@ -161,7 +161,9 @@ pub fn hole_operation_kind(h: &HoleCycle, top: f64) -> OperationKind {
         } => OperationKind::MultistepDrilling {
             drill: common(None, None),
             retract_distance,
-            first_depth,
+            // Measured from the feature's top, as the posts read it
+            // (the recogniser measures from where the first feed starts).
+            first_depth: first_depth + (top - h.r_z),
             depth_of_step,
             dwell_time_step: dwell,
         },

@@ -78,7 +78,7 @@ pub fn raise(r: &mut Raiser, h: &HoleCut, t: i64, moves: &[Move]) {
             (f, name)
         }
     };
-    let (op_kind, verb) = operation(h, kind.as_ref());
+    let (op_kind, verb) = operation(h, kind.as_ref(), surface_at(r, h.xy));
     let cuts: Vec<&Move> = moves.iter().filter(|m| m.is_feed()).collect();
     let mut technology = technology(&cuts[..1]);
     // Tapping: the pitch is the feed over the speed, the two synchronised.
@@ -230,7 +230,13 @@ fn deepen(
     }
 }
 
-fn operation(h: &HoleCut, kind: Option<&ToolBodyKind>) -> (OperationKind, &'static str) {
+/// `surface`: the hole's top, from which MULTISTEP_DRILLING's
+/// `first_depth` is measured (as the posts read it).
+fn operation(
+    h: &HoleCut,
+    kind: Option<&ToolBodyKind>,
+    surface: f64,
+) -> (OperationKind, &'static str) {
     let drill = DrillCommon {
         dwell_time_bottom: h.dwell_bottom,
         feed_on_retract: h.feed_out.then_some(1.0),
@@ -275,7 +281,7 @@ fn operation(h: &HoleCut, kind: Option<&ToolBodyKind>) -> (OperationKind, &'stat
             let op = OperationKind::MultistepDrilling {
                 drill,
                 retract_distance: r6(h.first_retract_to.unwrap_or(p0) - p0),
-                first_depth: r6(h.start_z - p0),
+                first_depth: r6(surface - p0),
                 depth_of_step: r6(p0 - p1),
                 dwell_time_step: None,
             };
