@@ -211,6 +211,12 @@ codes! {
     VerifyMismatch = "E0616", "verify-mismatch", Error,
         "the ported program does not cut the same as the source",
         "`cncc port --verify` runs both programs and compares their cutting moves (feed moves and arcs, within 1 micrometre, with their feed rates). The first difference is shown with the statement in each program. Rapids that differ are listed as notes only.";
+    PortQParameter = "E0621", "port-q-parameter", Error,
+        "a variable with no Heidenhain Q parameter, or a Q parameter with no variable in the target",
+        "Porting to Klartext, numbered variables take fixed Q numbers (`#0..#99` and `R0..R99` to `Q0..Q99`, `#100..#499` and `R100..R499` to `Q1600..Q1999`, the user ranges) and named or declared variables take local `QL` parameters. Porting from Klartext, `Q0..Q99` and `Q1600..Q1999` go back to those numbers and `QL` parameters to free variables of the target. Other numbers (Fanuc `#500` up, the control's own `Q100..Q199`), indirect and system variables and arrays have no counterpart: renumber them in the source.";
+    PortJump = "E0622", "port-jump", Error,
+        "a condition or jump that has no form in the target",
+        "Porting to Klartext, loops and conditionals become labels and the conditional jumps `FN 9..12` (EQU, NE, GT, LT; the others as two jumps), combined with AND, OR and NOT. A condition of another kind (bitwise operators, a computed jump target, CASE) has no such form. Porting from Klartext to a target without jumps (LinuxCNC), a backward conditional jump becomes a `do`/`while` loop and a forward one an `if` block only when the jumps nest like loops and conditionals do; rewrite the others.";
     PortApproximate = "W0610", "port-approximate", Warning,
         "a construct carried to the target with a documented difference",
         "The target's form of this construct does the same cutting but differs in something the port cannot make equal (a spindle orientation, a register the target derives itself, a re-entry distance). Read the message; `--verify` shows whether the cutting moves still match.";

@@ -84,6 +84,7 @@ pub fn port_program(
     to_named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
     to_tnc::run(&mut out, from, to, &mut diags);
+    to_tnc::variables_and_flow(&mut out, to, &mut diags);
     decls::run(&mut out, to, &mut diags);
     loops::run(&mut out, to, &mut diags);
     arcs::run(&mut out, from, to);

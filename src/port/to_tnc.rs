@@ -50,7 +50,20 @@ use crate::ir::{
 };
 use crate::span::Span;
 
+mod flow;
+mod jumps;
+mod labels;
+mod loops;
 mod values;
+pub mod vars;
+
+/// Variables, loops and jumps in Klartext's forms (Q parameters, `LBL`,
+/// `FN 9..12`), for a Klartext target: see [`flow`].
+pub(super) fn variables_and_flow(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
+    if to.family == crate::dialect::Family::Klartext {
+        flow::run(p, diags);
+    }
+}
 
 /// The target's Q-parameter cycle of `kind` (`drill`, `peck`).
 pub(super) fn q_cycle<'a>(to: &'a DialectSpec, kind: &str) -> Option<&'a crate::dialect::CycleSig> {
