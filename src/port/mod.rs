@@ -35,6 +35,7 @@ mod flow_ids;
 pub mod forms;
 mod frame;
 mod from_tnc;
+mod from_tnc_flow;
 mod groups;
 mod levels;
 mod loops;
@@ -85,6 +86,7 @@ pub fn port_program(
     to_word::run(&mut out, from, to, &mut diags);
     to_tnc::run(&mut out, from, to, &mut diags);
     to_tnc::variables_and_flow(&mut out, to, &mut diags);
+    from_tnc_flow::run(&mut out, from, to, &mut diags);
     decls::run(&mut out, to, &mut diags);
     loops::run(&mut out, to, &mut diags);
     arcs::run(&mut out, from, to);

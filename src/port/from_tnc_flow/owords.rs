@@ -1,0 +1,228 @@
+//! Klartext jumps for a target that has loops and conditionals but no
+//! jumps (LinuxCNC o-words):
+//!
+//! * a jump back to a label (`LBL 1` ... `FN 12: IF +Q1 LT +3 GOTO LBL 1`)
+//!   → `o1001 do` at the label, `o1001 while [#1 LT 3]` at the jump;
+//! * a jump forward (`FN 9: IF +Q1 EQU +2 GOTO LBL 2` ... `LBL 2`) →
+//!   `o1002 if [#1 NE 2]` at the jump, `o1002 endif` at the label.
+//!
+//! An unconditional jump makes `while [1]` / `if [0]`. The structures must
+//! nest (a jump into or out of another loop's body cannot be written this
+//! way: E0622). Labels that only these jumps used go; those a `CALL LBL`
+//! uses stay.
+
+use crate::diag::{Code, Diagnostic};
+use crate::ir::{
+    BinaryOp, Block, CallKind, CallTarget, Decimal, Expr, ExprId, ExprKind, FlowId, JumpTarget,
+    Program, Stmt, StmtKind, UnaryOp,
+};
+use crate::span::Span;
+use std::collections::{HashMap, HashSet};
+
+/// One jump and the structure it becomes; positions count gaps before
+/// block k as 2k and the jump in block j as 2j + 1.
+struct Jump {
+    block: usize,
+    stmt: usize,
+    target: usize,
+    cond: Option<ExprId>,
+    span: Span,
+}
+
+impl Jump {
+    fn back(&self) -> bool {
+        self.target <= self.block
+    }
+    fn open(&self) -> usize {
+        if self.back() {
+            2 * self.target
+        } else {
+            2 * self.block + 1
+        }
+    }
+    fn close(&self) -> usize {
+        if self.back() {
+            2 * self.block + 1
+        } else {
+            2 * self.target
+        }
+    }
+}
+
+pub fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
+    let mut at = HashMap::new();
+    for (i, b) in p.blocks.iter().enumerate() {
+        if let Some(l) = &b.label {
+            at.entry(l.node.to_ascii_uppercase()).or_insert(i);
+        }
+    }
+    let mut jumps = Vec::new();
+    for (bi, b) in p.blocks.iter().enumerate() {
+        for (si, s) in b.stmts.iter().enumerate() {
+            if let StmtKind::Goto {
+                target: JumpTarget::Label(l),
+                cond,
+                ..
+            } = &s.kind
+            {
+                if let Some(&t) = at.get(&l.to_ascii_uppercase()) {
+                    jumps.push(Jump {
+                        block: bi,
+                        stmt: si,
+                        target: t,
+                        cond: *cond,
+                        span: s.span,
+                    });
+                }
+            }
+        }
+    }
+    if jumps.is_empty() {
+        return;
+    }
+    // Outer structures first: by opening, the longer first.
+    jumps.sort_by_key(|j| (j.open(), std::cmp::Reverse(j.close())));
+    if let Some(bad) = crossing(&jumps) {
+        diags.push(
+            Diagnostic::new(
+                Code::PortJump,
+                "this jump crosses the loop or conditional another jump makes; the target has no jumps",
+            )
+            .primary(jumps[bad].span, "this jump")
+            .help("make jumps nest like loops and conditionals, or choose a target with jumps"),
+        );
+        return;
+    }
+    rebuild(p, &jumps);
+}
+
+/// The first structure that overlaps another without nesting in it.
+fn crossing(jumps: &[Jump]) -> Option<usize> {
+    let mut open: Vec<usize> = Vec::new();
+    for (i, j) in jumps.iter().enumerate() {
+        while open.last().is_some_and(|&c| c <= j.open()) {
+            open.pop();
+        }
+        if open.last().is_some_and(|&c| j.close() > c) {
+            return Some(i);
+        }
+        open.push(j.close());
+    }
+    None
+}
+
+fn labels_called(p: &Program) -> HashSet<String> {
+    let mut out = HashSet::new();
+    for s in p.blocks.iter().flat_map(|b| b.stmts.iter()) {
+        match &s.kind {
+            StmtKind::Call {
+                kind: CallKind::Label,
+                target,
+                ..
+            } => match target {
+                CallTarget::Number(n) => {
+                    out.insert(n.to_string());
+                }
+                CallTarget::Name(n) => {
+                    out.insert(n.to_ascii_uppercase());
+                }
+                CallTarget::Computed(_) => {}
+            },
+            StmtKind::SectionRepeat { start, end, .. } => {
+                out.insert(start.to_ascii_uppercase());
+                out.extend(end.iter().map(|e| e.to_ascii_uppercase()));
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+fn number(p: &mut Program, v: i64, span: Span) -> ExprId {
+    p.exprs.alloc(Expr {
+        kind: ExprKind::Number(Decimal::from_int(v)),
+        span,
+    })
+}
+
+/// `cond` as a while condition, or its negation as an if condition.
+fn condition(p: &mut Program, j: &Jump) -> ExprId {
+    let Some(c) = j.cond else {
+        return number(p, if j.back() { 1 } else { 0 }, j.span);
+    };
+    if j.back() {
+        return c;
+    }
+    let kind = match p.exprs[c].kind {
+        ExprKind::Binary(op, a, b) if op.is_comparison() => {
+            let neg = match op {
+                BinaryOp::Eq => BinaryOp::Ne,
+                BinaryOp::Ne => BinaryOp::Eq,
+                BinaryOp::Lt => BinaryOp::Ge,
+                BinaryOp::Ge => BinaryOp::Lt,
+                BinaryOp::Gt => BinaryOp::Le,
+                _ => BinaryOp::Gt,
+            };
+            ExprKind::Binary(neg, a, b)
+        }
+        _ => ExprKind::Unary(UnaryOp::Not, c),
+    };
+    p.exprs.alloc(Expr { kind, span: j.span })
+}
+
+fn rebuild(p: &mut Program, jumps: &[Jump]) {
+    let called = labels_called(p);
+    let ids: Vec<FlowId> = (0..jumps.len())
+        .map(|k| FlowId::OWord((1001 + k).to_string()))
+        .collect();
+    let mut at_stmt: HashMap<(usize, usize), StmtKind> = HashMap::new();
+    for (j, id) in jumps.iter().zip(&ids) {
+        let cond = condition(p, j);
+        let id = id.clone();
+        let kind = if j.back() {
+            StmtKind::DoWhile { cond, id }
+        } else {
+            StmtKind::If { cond, id }
+        };
+        at_stmt.insert((j.block, j.stmt), kind);
+    }
+    let blocks = std::mem::take(&mut p.blocks);
+    let mut out = Vec::with_capacity(blocks.len() + jumps.len());
+    for (k, mut b) in blocks.into_iter().enumerate() {
+        let gap = 2 * k;
+        // Closers first (inner: opened later), then openers (outer first).
+        let mut closing: Vec<usize> = (0..jumps.len())
+            .filter(|&i| jumps[i].close() == gap)
+            .collect();
+        closing.sort_by_key(|&i| std::cmp::Reverse(jumps[i].open()));
+        for i in closing {
+            let s = Stmt::new(StmtKind::EndIf { id: ids[i].clone() }, b.span);
+            out.push(piece(&b, s));
+        }
+        for (i, j) in jumps.iter().enumerate() {
+            if j.open() == gap {
+                let s = Stmt::new(StmtKind::Do { id: ids[i].clone() }, b.span);
+                out.push(piece(&b, s));
+            }
+        }
+        if b.label
+            .as_ref()
+            .is_some_and(|l| !called.contains(&l.node.to_ascii_uppercase()))
+        {
+            b.label = None;
+        }
+        for (si, s) in b.stmts.iter_mut().enumerate() {
+            if let Some(kind) = at_stmt.remove(&(k, si)) {
+                s.kind = kind;
+            }
+        }
+        if !b.stmts.is_empty() || b.label.is_some() || b.number.is_some() {
+            out.push(b);
+        }
+    }
+    p.blocks = out;
+}
+
+fn piece(like: &Block, s: Stmt) -> Block {
+    crate::port::follow_block(like, vec![s])
+}
