@@ -6,7 +6,11 @@
 //! * a jump forward (`FN 9: IF +Q1 EQU +2 GOTO LBL 2` ... `LBL 2`) →
 //!   `o1002 if [#1 NE 2]` at the jump, `o1002 endif` at the label.
 //!
-//! An unconditional jump makes `while [1]` / `if [0]`. The structures must
+//! * a jump forward to the block just after such a loop, from inside it
+//!   (and no other loop), → `o1003 if [c]` `o1001 break` `o1003 endif`
+//!   (the form a WHILE ported to Klartext takes).
+//!
+//! An unconditional jump makes `while [1]` / `if [0]` / a plain `break`. The structures must
 //! nest (a jump into or out of another loop's body cannot be written this
 //! way: E0622). Labels that only these jumps used go; those a `CALL LBL`
 //! uses stay.
@@ -82,6 +86,25 @@ pub fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
     }
     // Outer structures first: by opening, the longer first.
     jumps.sort_by_key(|j| (j.open(), std::cmp::Reverse(j.close())));
+    let exits = loop_exits(&jumps);
+    let mut kept = Vec::new();
+    let mut new_index = vec![None; jumps.len()];
+    let mut exit_of = Vec::new();
+    for (i, (j, e)) in jumps.into_iter().zip(exits).enumerate() {
+        match e {
+            None => {
+                new_index[i] = Some(kept.len());
+                kept.push(j);
+            }
+            Some(l) => exit_of.push((j, l)),
+        }
+    }
+    // Loops are kept, so each exit's loop has its new index.
+    let breaks: Vec<(Jump, usize)> = exit_of
+        .into_iter()
+        .filter_map(|(j, l)| new_index[l].map(|n| (j, n)))
+        .collect();
+    let jumps = kept;
     if let Some(bad) = crossing(&jumps) {
         diags.push(
             Diagnostic::new(
@@ -93,7 +116,28 @@ pub fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
         );
         return;
     }
-    rebuild(p, &jumps);
+    rebuild(p, &jumps, breaks);
+}
+
+/// For each jump, the loop (its index among `jumps`) it leaves when it
+/// goes to the block after that loop from inside it and no inner loop.
+fn loop_exits(jumps: &[Jump]) -> Vec<Option<usize>> {
+    let inside = |l: &Jump, at: usize| l.back() && l.open() < at && at < l.close();
+    jumps
+        .iter()
+        .map(|j| {
+            if j.back() {
+                return None;
+            }
+            let l = jumps
+                .iter()
+                .position(|l| l.back() && l.block + 1 == j.target && inside(l, j.open()))?;
+            let inner = jumps.iter().any(|m| {
+                inside(m, j.open()) && m.close() < jumps[l].close() && m.open() >= jumps[l].open()
+            });
+            (!inner).then_some(l)
+        })
+        .collect()
 }
 
 /// The first structure that overlaps another without nesting in it.
@@ -170,11 +214,30 @@ fn condition(p: &mut Program, j: &Jump) -> ExprId {
     p.exprs.alloc(Expr { kind, span: j.span })
 }
 
-fn rebuild(p: &mut Program, jumps: &[Jump]) {
+fn rebuild(p: &mut Program, jumps: &[Jump], breaks: Vec<(Jump, usize)>) {
     let called = labels_called(p);
-    let ids: Vec<FlowId> = (0..jumps.len())
+    let ids: Vec<FlowId> = (0..jumps.len() + breaks.len())
         .map(|k| FlowId::OWord((1001 + k).to_string()))
         .collect();
+    let mut exits: HashMap<(usize, usize), Vec<StmtKind>> = HashMap::new();
+    for (n, (j, l)) in breaks.into_iter().enumerate() {
+        let stop = StmtKind::Break { id: ids[l].clone() };
+        let kinds = match j.cond {
+            None => vec![stop],
+            Some(cond) => {
+                let id = ids[jumps.len() + n].clone();
+                vec![
+                    StmtKind::If {
+                        cond,
+                        id: id.clone(),
+                    },
+                    stop,
+                    StmtKind::EndIf { id },
+                ]
+            }
+        };
+        exits.insert((j.block, j.stmt), kinds);
+    }
     let mut at_stmt: HashMap<(usize, usize), StmtKind> = HashMap::new();
     for (j, id) in jumps.iter().zip(&ids) {
         let cond = condition(p, j);
@@ -214,6 +277,16 @@ fn rebuild(p: &mut Program, jumps: &[Jump]) {
         for (si, s) in b.stmts.iter_mut().enumerate() {
             if let Some(kind) = at_stmt.remove(&(k, si)) {
                 s.kind = kind;
+            }
+        }
+        for (si, s) in std::mem::take(&mut b.stmts).into_iter().enumerate() {
+            match exits.remove(&(k, si)) {
+                Some(kinds) => {
+                    for kind in kinds {
+                        out.push(piece(&b, Stmt::new(kind, s.span)));
+                    }
+                }
+                None => b.stmts.push(s),
             }
         }
         if !b.stmts.is_empty() || b.label.is_some() || b.number.is_some() {
