@@ -13,7 +13,9 @@
 //!   of LinuxCNC does not take): the jumps become loops and
 //!   conditionals ([`owords`]).
 
+mod conds;
 mod owords;
+mod shape;
 mod vars;
 
 use crate::diag::Diagnostic;

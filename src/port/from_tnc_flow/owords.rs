@@ -15,45 +15,17 @@
 //! way: E0622). Labels that only these jumps used go; those a `CALL LBL`
 //! uses stay.
 
+use super::shape::{crossing, intervals, loop_exits, pair_else, Jump};
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{
-    BinaryOp, Block, CallKind, CallTarget, Decimal, Expr, ExprId, ExprKind, FlowId, JumpTarget,
-    Program, Stmt, StmtKind, UnaryOp,
+    Block, CallKind, CallTarget, Decimal, Expr, ExprId, ExprKind, FlowId, JumpTarget, Program,
+    Stmt, StmtKind,
 };
 use crate::span::Span;
 use std::collections::{HashMap, HashSet};
 
-/// One jump and the structure it becomes; positions count gaps before
-/// block k as 2k and the jump in block j as 2j + 1.
-struct Jump {
-    block: usize,
-    stmt: usize,
-    target: usize,
-    cond: Option<ExprId>,
-    span: Span,
-}
-
-impl Jump {
-    fn back(&self) -> bool {
-        self.target <= self.block
-    }
-    fn open(&self) -> usize {
-        if self.back() {
-            2 * self.target
-        } else {
-            2 * self.block + 1
-        }
-    }
-    fn close(&self) -> usize {
-        if self.back() {
-            2 * self.block + 1
-        } else {
-            2 * self.target
-        }
-    }
-}
-
 pub fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
+    super::conds::merge_runs(p);
     let mut at = HashMap::new();
     for (i, b) in p.blocks.iter().enumerate() {
         if let Some(l) = &b.label {
@@ -76,6 +48,7 @@ pub fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
                         target: t,
                         cond: *cond,
                         span: s.span,
+                        join: None,
                     });
                 }
             }
@@ -104,55 +77,19 @@ pub fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
         .into_iter()
         .filter_map(|(j, l)| new_index[l].map(|n| (j, n)))
         .collect();
-    let jumps = kept;
-    if let Some(bad) = crossing(&jumps) {
+    let (jumps, elses) = pair_else(kept);
+    if let Some(bad) = crossing(&intervals(&jumps, &elses)) {
         diags.push(
             Diagnostic::new(
                 Code::PortJump,
                 "this jump crosses the loop or conditional another jump makes; the target has no jumps",
             )
-            .primary(jumps[bad].span, "this jump")
+            .primary(bad, "this jump")
             .help("make jumps nest like loops and conditionals, or choose a target with jumps"),
         );
         return;
     }
-    rebuild(p, &jumps, breaks);
-}
-
-/// For each jump, the loop (its index among `jumps`) it leaves when it
-/// goes to the block after that loop from inside it and no inner loop.
-fn loop_exits(jumps: &[Jump]) -> Vec<Option<usize>> {
-    let inside = |l: &Jump, at: usize| l.back() && l.open() < at && at < l.close();
-    jumps
-        .iter()
-        .map(|j| {
-            if j.back() {
-                return None;
-            }
-            let l = jumps
-                .iter()
-                .position(|l| l.back() && l.block + 1 == j.target && inside(l, j.open()))?;
-            let inner = jumps.iter().any(|m| {
-                inside(m, j.open()) && m.close() < jumps[l].close() && m.open() >= jumps[l].open()
-            });
-            (!inner).then_some(l)
-        })
-        .collect()
-}
-
-/// The first structure that overlaps another without nesting in it.
-fn crossing(jumps: &[Jump]) -> Option<usize> {
-    let mut open: Vec<usize> = Vec::new();
-    for (i, j) in jumps.iter().enumerate() {
-        while open.last().is_some_and(|&c| c <= j.open()) {
-            open.pop();
-        }
-        if open.last().is_some_and(|&c| j.close() > c) {
-            return Some(i);
-        }
-        open.push(j.close());
-    }
-    None
+    rebuild(p, &jumps, breaks, elses);
 }
 
 fn labels_called(p: &Program) -> HashSet<String> {
@@ -197,24 +134,15 @@ fn condition(p: &mut Program, j: &Jump) -> ExprId {
     if j.back() {
         return c;
     }
-    let kind = match p.exprs[c].kind {
-        ExprKind::Binary(op, a, b) if op.is_comparison() => {
-            let neg = match op {
-                BinaryOp::Eq => BinaryOp::Ne,
-                BinaryOp::Ne => BinaryOp::Eq,
-                BinaryOp::Lt => BinaryOp::Ge,
-                BinaryOp::Ge => BinaryOp::Lt,
-                BinaryOp::Gt => BinaryOp::Le,
-                _ => BinaryOp::Gt,
-            };
-            ExprKind::Binary(neg, a, b)
-        }
-        _ => ExprKind::Unary(UnaryOp::Not, c),
-    };
-    p.exprs.alloc(Expr { kind, span: j.span })
+    super::conds::negate(p, c)
 }
 
-fn rebuild(p: &mut Program, jumps: &[Jump], breaks: Vec<(Jump, usize)>) {
+fn rebuild(
+    p: &mut Program,
+    jumps: &[Jump],
+    breaks: Vec<(Jump, usize)>,
+    elses: Vec<(usize, usize, usize)>,
+) {
     let called = labels_called(p);
     let ids: Vec<FlowId> = (0..jumps.len() + breaks.len())
         .map(|k| FlowId::OWord((1001 + k).to_string()))
@@ -248,6 +176,10 @@ fn rebuild(p: &mut Program, jumps: &[Jump], breaks: Vec<(Jump, usize)>) {
             StmtKind::If { cond, id }
         };
         at_stmt.insert((j.block, j.stmt), kind);
+    }
+    for (block, stmt, of) in elses {
+        let id = ids[of].clone();
+        at_stmt.insert((block, stmt), StmtKind::Else { id });
     }
     let blocks = std::mem::take(&mut p.blocks);
     let mut out = Vec::with_capacity(blocks.len() + jumps.len());
