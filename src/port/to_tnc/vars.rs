@@ -99,16 +99,22 @@ pub(super) fn run(p: &mut Program, alloc: &mut Alloc, diags: &mut Vec<Diagnostic
     }
     for b in &mut p.blocks {
         for s in &mut b.stmts {
-            let var = match &mut s.kind {
-                StmtKind::Assign { var, .. } | StmtKind::For { var, .. } => var,
-                _ => continue,
-            };
-            match alloc.map(var) {
-                Ok(Some(q)) => *var = q,
-                Ok(None) => {}
-                Err(what) => refuse(diags, s.span, &what),
-            }
+            assigned(s, alloc, diags);
         }
+    }
+}
+
+/// The variable a statement sets (also in `IF [c] THEN #1=..`).
+fn assigned(s: &mut Stmt, alloc: &mut Alloc, diags: &mut Vec<Diagnostic>) {
+    let var = match &mut s.kind {
+        StmtKind::Assign { var, .. } | StmtKind::For { var, .. } => var,
+        StmtKind::IfThen { then, .. } => return assigned(then, alloc, diags),
+        _ => return,
+    };
+    match alloc.map(var) {
+        Ok(Some(q)) => *var = q,
+        Ok(None) => {}
+        Err(what) => refuse(diags, s.span, &what),
     }
 }
 
