@@ -3,7 +3,9 @@
 //! other comparisons and their negations take two jumps (`a LE b`: LT,
 //! then EQU), `AND`/`OR`/`NOT` become sequences of jumps with a label to
 //! skip to, and a plain value counts as true when it is not 0 (LinuxCNC
-//! `o1 if [#1]`). Bitwise operators and strings have no form: E0622.
+//! `o1 if [#1]`). An operand that is a formula is computed into a `QL`
+//! parameter just before the jump. Bitwise operators and strings have no
+//! form: E0622.
 
 use super::flow::Flow;
 use crate::diag::{Code, Diagnostic};
@@ -48,6 +50,7 @@ impl Flow<'_> {
         let kind = self.p.exprs[cond].kind.clone();
         match kind {
             ExprKind::Binary(op, a, b) if op.is_comparison() => {
+                let (a, b) = (self.operand(a, span), self.operand(b, span));
                 for &o in fn_ops(op, neg) {
                     let c = self.expr(ExprKind::Binary(o, a, b), span);
                     self.goto(Some(c), target, span);
@@ -87,6 +90,7 @@ impl Flow<'_> {
                 BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul | BinaryOp::Div | BinaryOp::Pow,
                 ..,
             ) => {
+                let cond = self.operand(cond, span);
                 let zero = self.expr(ExprKind::Number(Decimal::from_int(0)), span);
                 for &o in fn_ops(BinaryOp::Ne, neg) {
                     let c = self.expr(ExprKind::Binary(o, cond, zero), span);
@@ -110,6 +114,24 @@ impl Flow<'_> {
                 );
             }
         }
+    }
+
+    /// An operand an FN jump takes as it is (a number, a parameter, either
+    /// negated), or a local parameter computed just before the jump: the
+    /// TNC manuals show FN operands as signed numbers and parameters only,
+    /// a formula in parentheses there is accepted by newer controls [?].
+    fn operand(&mut self, e: ExprId, span: Span) -> ExprId {
+        let simple = |k: &ExprKind| matches!(k, ExprKind::Number(_) | ExprKind::Var(_));
+        let kind = &self.p.exprs[e].kind;
+        let plain = simple(kind)
+            || matches!(kind, ExprKind::Unary(UnaryOp::Neg | UnaryOp::Plus, x)
+                if simple(&self.p.exprs[*x].kind));
+        if plain {
+            return e;
+        }
+        let q = self.alloc.scratch();
+        self.assign(q.clone(), e, span);
+        self.expr(ExprKind::Var(q), span)
     }
 
     /// `FN 9..12: IF .. GOTO LBL target`, or the unconditional form.
