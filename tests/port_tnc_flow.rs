@@ -252,3 +252,18 @@ fn klartext_local_and_system_parameters() {
     let system = src.replace("QL5 = 2", "QL5 = Q108");
     refused("q.h", &system, "siemens840d", "E0621");
 }
+
+#[test]
+fn sequence_numbers_beyond_label_range_get_a_fresh_label() {
+    let src = "O1
+G21 G90
+#1=0
+N1000 #1=#1+1
+G1 X#1 F100.
+IF [#1 LT 2] GOTO 1000
+M30
+";
+    let h = verified("n.nc", src, "heidenhain");
+    assert!(h.contains("LBL 1\n"), "{h}");
+    assert!(h.contains("FN 12: IF +Q1 LT +2 GOTO LBL 1\n"), "{h}");
+}

@@ -1,8 +1,8 @@
 //! Label numbers for the Klartext forms of loops and jumps.
 //!
 //! * `GOTO 10` (a jump to sequence number N10) becomes a jump to `LBL 10`
-//!   on that block, when the number is free as a label (else the next free
-//!   number); a computed target (`GOTO #1`) or a number no block (or more
+//!   on that block, when the number is free as a label and in 1..999
+//!   (else the next free number); a computed target (`GOTO #1`) or a number no block (or more
 //!   than one block) carries is E0622.
 //! * The labels the loop forms need are numbered from 1 up, skipping the
 //!   numbers the program already uses (its `LBL`s, `CALL LBL`s and the
@@ -65,10 +65,11 @@ impl Labels {
         }
     }
 
-    /// `n` itself when free, else a fresh number.
+    /// `n` itself when free and a label number every control takes
+    /// (1..999; `LBL 0` ends a subprogram), else a fresh number.
     fn claim(&mut self, n: i64) -> String {
         let l = n.to_string();
-        if self.used.insert(l.clone()) {
+        if (1..=999).contains(&n) && self.used.insert(l.clone()) {
             l
         } else {
             self.fresh()
