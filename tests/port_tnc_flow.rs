@@ -267,3 +267,31 @@ M30
     assert!(h.contains("LBL 1\n"), "{h}");
     assert!(h.contains("FN 12: IF +Q1 LT +2 GOTO LBL 1\n"), "{h}");
 }
+
+#[test]
+fn functions_through_the_formula_form_or_e0623() {
+    let src = "O1
+G21 G90
+#1=ATAN[1]/[2]
+#2=POW[2,3]
+#3=SQRT[#2*2]+ABS[-1]
+G1 X#1 Y#2 Z#3 F100.
+M30
+";
+    let h = verified("fn.nc", src, "heidenhain");
+    for line in [
+        "FN 13: Q1 = +2 ANG +1",
+        "Q2 = 2 ^ 3",
+        "Q3 = SQRT (Q2 * 2) + ABS (-1)",
+    ] {
+        assert!(h.contains(line), "{line}\n{h}");
+    }
+    let bad = "O1
+G21 G90
+#1=FIX[2.5]+ATAN[1]/[2]
+G1 X#1 F100.
+M30
+";
+    let err = refused("fn2.nc", bad, "heidenhain", "E0623");
+    assert!(err.contains("FIX") && err.contains("arc tangent"), "{err}");
+}

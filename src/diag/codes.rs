@@ -217,6 +217,9 @@ codes! {
     PortJump = "E0622", "port-jump", Error,
         "a condition or jump that has no form in the target",
         "Porting to Klartext, loops and conditionals become labels and the conditional jumps `FN 9..12` (EQU, NE, GT, LT; the others as two jumps), combined with AND, OR and NOT. A condition of another kind (bitwise operators, a computed jump target, CASE) has no such form. Porting from Klartext to a target without jumps (LinuxCNC), a backward conditional jump becomes a `do`/`while` loop and a forward one an `if` block only when the jumps nest like loops and conditionals do; rewrite the others.";
+    PortTncFormula = "E0623", "port-tnc-formula", Error,
+        "a function or expression Klartext formulas have no counterpart for",
+        "A Klartext Q parameter formula has + - * / ^ and SIN COS TAN ASIN ACOS ATAN SQRT SQ ABS INT LN EXP; the angle of two values is `FN 13`, an assignment of its own. `cncc port` writes POW as `^` and an ATAN of two values that is a whole assignment as FN 13; ROUND, FIX, FUP, MIN, MAX, BIN, BCD and an ATAN of two values inside a larger formula have no counterpart. Rewrite them in the source.";
     PortApproximate = "W0610", "port-approximate", Warning,
         "a construct carried to the target with a documented difference",
         "The target's form of this construct does the same cutting but differs in something the port cannot make equal (a spindle orientation, a register the target derives itself, a re-entry distance). Read the message; `--verify` shows whether the cutting moves still match.";

@@ -51,6 +51,7 @@ use crate::ir::{
 use crate::span::Span;
 
 mod flow;
+mod formulas;
 mod jumps;
 mod labels;
 mod loops;
@@ -61,6 +62,7 @@ pub mod vars;
 /// `FN 9..12`), for a Klartext target: see [`flow`].
 pub(super) fn variables_and_flow(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     if to.family == crate::dialect::Family::Klartext {
+        formulas::run(p, diags);
         flow::run(p, diags);
     }
 }
