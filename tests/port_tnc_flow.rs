@@ -295,3 +295,38 @@ M30
     let err = refused("fn2.nc", bad, "heidenhain", "E0623");
     assert!(err.contains("FIX") && err.contains("arc tangent"), "{err}");
 }
+
+/// A WHILE with CONTINUE to Klartext and back to LinuxCNC: `break` at the
+/// top, `continue` for the jump back. With a BREAK after the CONTINUE the
+/// port is refused: rs274 runs `o1 continue` as the next `o1` line, which
+/// would be that `o1 break` (probed with the oracle).
+#[test]
+fn continue_back_to_linuxcnc_unless_a_break_follows() {
+    let src = "G21 G17 G90 G94
+T1 M6
+G43 H1 G0 Z10
+S3000 M3
+#2=0
+o3 while [#2 LT 6]
+  #2=[#2+1]
+  o7 if [#2 EQ 2 OR #2 EQ 4]
+    o3 continue
+  o7 endif
+  G1 Y[#2] F100
+o3 endwhile
+G0 Z10
+M2
+";
+    let h = verified("c.ngc", src, "heidenhain");
+    let back = verified("c.h", &h, "linuxcnc");
+    assert!(
+        back.contains(" continue\n") && back.contains(" break\n"),
+        "{back}"
+    );
+    let with_break = src.replace(
+        "  G1 Y[#2] F100\n",
+        "  o8 if [#2 GT 4]\n    o3 break\n  o8 endif\n  G1 Y[#2] F100\n",
+    );
+    let h = verified("cb.ngc", &with_break, "heidenhain");
+    refused("cb.h", &h, "linuxcnc", "E0622");
+}

@@ -1,7 +1,8 @@
 //! Conditions of Klartext jumps for structured targets: a run of jumps to
 //! the same label (how a Klartext program, or our port to Klartext, writes
-//! `a LE b` or an AND) becomes one jump on the OR of their conditions, and
-//! a condition is negated operator by operator (LinuxCNC has no NOT).
+//! `a LE b` or an AND) becomes one jump on the OR of their conditions, a
+//! jump over a jump (an OR) one jump on an AND, and a condition is negated
+//! operator by operator (LinuxCNC has no NOT).
 
 use crate::ir::{BinaryOp, Expr, ExprId, ExprKind, JumpTarget, Program, StmtKind, UnaryOp};
 
@@ -14,6 +15,21 @@ fn lone_jump(b: &crate::ir::Block) -> Option<(String, ExprId)> {
                 cond: Some(c),
                 ..
             } => Some((l.to_ascii_uppercase(), *c)),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// The label and condition (None: always) of a block that is one jump.
+fn any_jump(b: &crate::ir::Block) -> Option<(String, Option<ExprId>)> {
+    match b.stmts.as_slice() {
+        [s] => match &s.kind {
+            StmtKind::Goto {
+                target: JumpTarget::Label(l),
+                cond,
+                ..
+            } => Some((l.to_ascii_uppercase(), *cond)),
             _ => None,
         },
         _ => None,
@@ -74,4 +90,81 @@ pub(super) fn negate(p: &mut Program, c: ExprId) -> ExprId {
         _ => ExprKind::Unary(UnaryOp::Not, c),
     };
     p.exprs.alloc(Expr { kind, span })
+}
+
+/// `FN ..: IF a GOTO LBL s`, `FN ..: IF c GOTO LBL n`, `LBL s` (how an OR
+/// is written with jumps) as one jump on `NOT a AND c` to `n` (`NOT a`
+/// when the second jump always jumps), when no other jump goes to `s`.
+/// Returns whether it merged any.
+pub(super) fn merge_skips(p: &mut Program) -> bool {
+    let mut count: std::collections::HashMap<String, usize> = Default::default();
+    for s in p.blocks.iter().flat_map(|b| b.stmts.iter()) {
+        if let StmtKind::Goto {
+            target: JumpTarget::Label(l),
+            ..
+        } = &s.kind
+        {
+            *count.entry(l.to_ascii_uppercase()).or_default() += 1;
+        }
+    }
+    let mut drop = vec![false; p.blocks.len()];
+    let mut i = 0;
+    while i + 2 < p.blocks.len() {
+        let (first, second) = (lone_jump(&p.blocks[i]), any_jump(&p.blocks[i + 1]));
+        let skip_to = p.blocks[i + 2]
+            .label
+            .as_ref()
+            .map(|l| l.node.to_ascii_uppercase());
+        if let (Some((l1, c1)), Some((l2, c2)), None, Some(s)) =
+            (first, second, &p.blocks[i + 1].label, skip_to)
+        {
+            if l1 == s && l1 != l2 && count.get(&l1) == Some(&1) && !drop[i] {
+                let not_a = negate(p, c1);
+                let and = match c2 {
+                    Some(c2) => p.exprs.alloc(Expr {
+                        kind: ExprKind::Binary(BinaryOp::And, not_a, c2),
+                        span: p.exprs[c2].span,
+                    }),
+                    None => not_a,
+                };
+                if let Some(StmtKind::Goto { cond, .. }) =
+                    p.blocks[i + 1].stmts.first_mut().map(|s| &mut s.kind)
+                {
+                    *cond = Some(and);
+                }
+                drop[i] = true;
+                i += 2;
+                continue;
+            }
+        }
+        i += 1;
+    }
+    let merged = drop.contains(&true);
+    let mut k = 0;
+    p.blocks.retain(|_| {
+        k += 1;
+        !drop[k - 1]
+    });
+    merged
+}
+
+/// Blocks that are only a label no jump goes to and nothing calls.
+pub(super) fn drop_unused_labels(p: &mut Program, called: &std::collections::HashSet<String>) {
+    let mut used: std::collections::HashSet<String> = called.clone();
+    for s in p.blocks.iter().flat_map(|b| b.stmts.iter()) {
+        if let StmtKind::Goto {
+            target: JumpTarget::Label(l),
+            ..
+        } = &s.kind
+        {
+            used.insert(l.to_ascii_uppercase());
+        }
+    }
+    p.blocks.retain(|b| {
+        !(b.stmts.is_empty()
+            && b.number.is_none()
+            && b.label
+                .as_ref()
+                .is_some_and(|l| !used.contains(&l.node.to_ascii_uppercase())))
+    });
 }

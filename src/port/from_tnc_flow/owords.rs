@@ -26,6 +26,15 @@ use std::collections::{HashMap, HashSet};
 
 pub fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
     super::conds::merge_runs(p);
+    let called = labels_called(p);
+    // Each round merges at least one pair; a few rounds reach the
+    // patterns one merge uncovers (an OR inside a CONTINUE).
+    for _ in 0..16 {
+        if !super::conds::merge_skips(p) {
+            break;
+        }
+        super::conds::drop_unused_labels(p, &called);
+    }
     let mut at = HashMap::new();
     for (i, b) in p.blocks.iter().enumerate() {
         if let Some(l) = &b.label {
@@ -69,13 +78,13 @@ pub fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
                 new_index[i] = Some(kept.len());
                 kept.push(j);
             }
-            Some(l) => exit_of.push((j, l)),
+            Some((l, cont)) => exit_of.push((j, l, cont)),
         }
     }
     // Loops are kept, so each exit's loop has its new index.
-    let breaks: Vec<(Jump, usize)> = exit_of
+    let breaks: Vec<(Jump, usize, bool)> = exit_of
         .into_iter()
-        .filter_map(|(j, l)| new_index[l].map(|n| (j, n)))
+        .filter_map(|(j, l, cont)| new_index[l].map(|n| (j, n, cont)))
         .collect();
     let (jumps, elses) = pair_else(kept);
     if let Some(bad) = crossing(&intervals(&jumps, &elses)) {
@@ -140,7 +149,7 @@ fn condition(p: &mut Program, j: &Jump) -> ExprId {
 fn rebuild(
     p: &mut Program,
     jumps: &[Jump],
-    breaks: Vec<(Jump, usize)>,
+    breaks: Vec<(Jump, usize, bool)>,
     elses: Vec<(usize, usize, usize)>,
 ) {
     let called = labels_called(p);
@@ -148,8 +157,13 @@ fn rebuild(
         .map(|k| FlowId::OWord((1001 + k).to_string()))
         .collect();
     let mut exits: HashMap<(usize, usize), Vec<StmtKind>> = HashMap::new();
-    for (n, (j, l)) in breaks.into_iter().enumerate() {
-        let stop = StmtKind::Break { id: ids[l].clone() };
+    for (n, (j, l, cont)) in breaks.into_iter().enumerate() {
+        let id = ids[l].clone();
+        let stop = if cont {
+            StmtKind::Continue { id }
+        } else {
+            StmtKind::Break { id }
+        };
         let kinds = match j.cond {
             None => vec![stop],
             Some(cond) => {

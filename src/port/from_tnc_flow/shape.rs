@@ -41,25 +41,70 @@ impl Jump {
     }
 }
 
-/// For each jump, the loop (its index among `jumps`) it leaves when it
-/// goes to the block after that loop from inside it and no inner loop.
-pub(super) fn loop_exits(jumps: &[Jump]) -> Vec<Option<usize>> {
+/// For each jump, the loop (its index among `jumps`) it leaves
+/// (`false`: break) or starts again (`true`: continue), from inside it and
+/// no inner loop:
+///
+/// * break: a jump to the block after the loop;
+/// * continue: a jump back to the loop's top when the loop's own jump back
+///   is unconditional (the outermost one to that top), so that `continue`
+///   (which tests the loop's condition) starts it again as the jump did.
+pub(super) fn loop_exits(jumps: &[Jump]) -> Vec<Option<(usize, bool)>> {
     let inside = |l: &Jump, at: usize| l.back() && l.open() < at && at < l.close();
-    jumps
-        .iter()
-        .map(|j| {
-            if j.back() {
-                return None;
-            }
+    let at = |j: &Jump| 2 * j.block + 1;
+    // The loop each jump would leave or start again.
+    let candidate = |j: &Jump| -> Option<(usize, bool)> {
+        if j.back() {
+            let (l, _) = jumps
+                .iter()
+                .enumerate()
+                .filter(|(_, l)| l.cond.is_none() && l.target == j.target && l.block > j.block)
+                .max_by_key(|(_, l)| l.block)?;
+            Some((l, true))
+        } else {
             let l = jumps
                 .iter()
-                .position(|l| l.back() && l.block + 1 == j.target && inside(l, j.open()))?;
-            let inner = jumps.iter().any(|m| {
-                inside(m, j.open()) && m.close() < jumps[l].close() && m.open() >= jumps[l].open()
-            });
-            (!inner).then_some(l)
+                .position(|l| l.back() && l.block + 1 == j.target && inside(l, at(j)))?;
+            Some((l, false))
+        }
+    };
+    let mut exits: Vec<_> = jumps.iter().map(candidate).collect();
+    // rs274 runs `oN continue` as the next `oN` line after it: a later
+    // `oN break` would then leave the loop (probed with the oracle). Such
+    // a jump stays a loop of its own.
+    let leaves: Vec<(usize, usize)> = exits
+        .iter()
+        .zip(jumps)
+        .filter_map(|(e, j)| match e {
+            Some((l, false)) => Some((*l, j.block)),
+            _ => None,
         })
-        .collect()
+        .collect();
+    for (e, j) in exits.iter_mut().zip(jumps) {
+        if let Some((l, true)) = *e {
+            if leaves.iter().any(|&(bl, b)| bl == l && b > j.block) {
+                *e = None;
+            }
+        }
+    }
+    // Only from the loop itself, not from a loop inside it.
+    let is_continue: Vec<bool> = exits.iter().map(|e| matches!(e, Some((_, true)))).collect();
+    for (i, j) in jumps.iter().enumerate() {
+        let Some((l, _)) = exits[i] else { continue };
+        let outer = &jumps[l];
+        let inner = jumps.iter().enumerate().any(|(k, m)| {
+            k != i
+                && k != l
+                && !is_continue[k]
+                && inside(m, at(j))
+                && m.close() <= outer.close()
+                && m.open() >= outer.open()
+        });
+        if inner {
+            exits[i] = None;
+        }
+    }
+    exits
 }
 
 /// The first structure that overlaps another without nesting in it.
