@@ -86,13 +86,28 @@ fn siemens_name(l: &str) -> String {
     }
 }
 
-/// Labels as Siemens names, jumps with their direction.
+/// The labels jumps go to as Siemens names (the labels of `CALL LBL`
+/// subprograms are left to that mapping), jumps with their direction.
 fn named_labels(p: &mut Program) {
+    let jumped: std::collections::HashSet<String> = p
+        .blocks
+        .iter()
+        .flat_map(|b| b.stmts.iter())
+        .filter_map(|s| match &s.kind {
+            StmtKind::Goto {
+                target: JumpTarget::Label(l),
+                ..
+            } => Some(l.to_ascii_uppercase()),
+            _ => None,
+        })
+        .collect();
     let mut at: HashMap<String, usize> = HashMap::new();
     for (i, b) in p.blocks.iter_mut().enumerate() {
         if let Some(l) = &mut b.label {
-            l.node = siemens_name(&l.node);
-            at.insert(l.node.to_ascii_uppercase(), i);
+            if jumped.contains(&l.node.to_ascii_uppercase()) {
+                l.node = siemens_name(&l.node);
+                at.insert(l.node.to_ascii_uppercase(), i);
+            }
         }
     }
     for (i, b) in p.blocks.iter_mut().enumerate() {
