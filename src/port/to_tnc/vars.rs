@@ -18,6 +18,8 @@
 //!   `#[e]`/`R[e]`, arrays and system variables: E0621.
 //!
 //! A `DEF REAL|INT` becomes the assignment of its initial value, or of 0.
+//! An INT is not rounded on assignment as Siemens rounds it: the port
+//! keeps the value as computed (as [`crate::port`]'s `decls` does).
 
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{Decimal, Expr, ExprKind, Program, QBank, Stmt, StmtKind, Var, VarType};
