@@ -24,6 +24,9 @@ use crate::ir::{
 use crate::span::Span;
 use std::collections::{HashMap, HashSet};
 
+/// The shapes are matched pair by pair: a bound keeps that quick.
+const MAX_JUMPS: usize = 4000;
+
 pub fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
     super::conds::merge_runs(p);
     let called = labels_called(p);
@@ -64,6 +67,17 @@ pub fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
         }
     }
     if jumps.is_empty() {
+        return;
+    }
+    if jumps.len() > MAX_JUMPS {
+        diags.push(
+            Diagnostic::new(
+                Code::PortJump,
+                format!("more than {MAX_JUMPS} jumps to turn into loops and conditionals"),
+            )
+            .primary(jumps[MAX_JUMPS].span, "this jump")
+            .help("split the program, or choose a target with jumps"),
+        );
         return;
     }
     // Outer structures first: by opening, the longer first.
@@ -195,24 +209,32 @@ fn rebuild(
         let id = ids[of].clone();
         at_stmt.insert((block, stmt), StmtKind::Else { id });
     }
+    // Gap → the structures that close there and those that open there.
+    let mut closing: HashMap<usize, Vec<usize>> = HashMap::new();
+    let mut opening: HashMap<usize, Vec<usize>> = HashMap::new();
+    for (i, j) in jumps.iter().enumerate() {
+        if j.close() % 2 == 0 {
+            closing.entry(j.close()).or_default().push(i);
+        }
+        if j.open() % 2 == 0 {
+            opening.entry(j.open()).or_default().push(i);
+        }
+    }
     let blocks = std::mem::take(&mut p.blocks);
     let mut out = Vec::with_capacity(blocks.len() + jumps.len());
     for (k, mut b) in blocks.into_iter().enumerate() {
         let gap = 2 * k;
-        // Closers first (inner: opened later), then openers (outer first).
-        let mut closing: Vec<usize> = (0..jumps.len())
-            .filter(|&i| jumps[i].close() == gap)
-            .collect();
-        closing.sort_by_key(|&i| std::cmp::Reverse(jumps[i].open()));
-        for i in closing {
+        // Closers first (inner: opened later), then openers (outer first,
+        // as `jumps` is sorted).
+        let mut ends = closing.remove(&gap).unwrap_or_default();
+        ends.sort_by_key(|&i| std::cmp::Reverse(jumps[i].open()));
+        for i in ends {
             let s = Stmt::new(StmtKind::EndIf { id: ids[i].clone() }, b.span);
             out.push(piece(&b, s));
         }
-        for (i, j) in jumps.iter().enumerate() {
-            if j.open() == gap {
-                let s = Stmt::new(StmtKind::Do { id: ids[i].clone() }, b.span);
-                out.push(piece(&b, s));
-            }
+        for i in opening.remove(&gap).unwrap_or_default() {
+            let s = Stmt::new(StmtKind::Do { id: ids[i].clone() }, b.span);
+            out.push(piece(&b, s));
         }
         if b.label
             .as_ref()

@@ -106,14 +106,14 @@ pub(super) fn sequence_jumps(p: &mut Program, labels: &mut Labels, diags: &mut V
             }
         }
     }
+    let mut numbered: std::collections::HashMap<i64, Vec<usize>> = Default::default();
+    for (i, b) in p.blocks.iter().enumerate() {
+        if let Some(x) = &b.number {
+            numbered.entry(x.node as i64).or_default().push(i);
+        }
+    }
     for (bi, si, n) in wanted {
-        let hits: Vec<usize> = p
-            .blocks
-            .iter()
-            .enumerate()
-            .filter(|(_, b)| b.number.as_ref().is_some_and(|x| x.node as i64 == n))
-            .map(|(i, _)| i)
-            .collect();
+        let hits = numbered.get(&n).cloned().unwrap_or_default();
         let span = p.blocks[bi].stmts[si].span;
         let [ti] = hits[..] else {
             let why = if hits.is_empty() {
