@@ -14,6 +14,10 @@
 //!   CYCLE8x through [`to_word`], → `CYCL DEF 200/203` + `L X Y R0 FMAX
 //!   M99`), [`frame`] (`BEGIN`/`END PGM`, block numbers, D1), [`poles`]
 //!   (`CC` + `C` → G2/G3 with I J) and [`tool_call`] (`TOOL CALL n Z S`).
+//! * Klartext variables and loops: [`to_tnc`] (`variables_and_flow`:
+//!   `#n`/`Rn`/named → Q/QL parameters, loops and jumps → `LBL` + `FN
+//!   9..12`) and `from_tnc_flow` (back: `#n`/`Rn`/named, `IF .. GOTO`,
+//!   `GOTOB`/`GOTOF`, o-word `do`/`if`/`break`).
 //! * [`forms`]: numbered variables (`#n` ↔ `Rn`), loop and conditional
 //!   forms (Fanuc DO ids, Siemens nesting, LinuxCNC o-words), labels to
 //!   sequence numbers, tool length (G43 H / G49 ↔ D / D0), and the tool map.
@@ -26,7 +30,8 @@
 //!   as the moves the interpreter makes for it.
 //!
 //! What the target cannot express is an error naming the construct and
-//! where it is (E0601, E0610..E0614); the writer reports the rest.
+//! where it is (E0601, E0610..E0614, E0621..E0623); the writer reports
+//! the rest.
 
 mod arcs;
 mod decls;

@@ -1,6 +1,6 @@
 //! Variables of a word-address or Sinumerik program as Heidenhain Q
 //! parameters. The allocation (the same both ways, see
-//! [`crate::port::from_tnc_flow`]):
+//! `port::from_tnc_flow`):
 //!
 //! * `#0..#99` and `R0..R99` → `Q0..Q99`, the same number (the user range
 //!   the control leaves free when no SL cycle runs).
