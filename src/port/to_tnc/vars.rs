@@ -10,7 +10,7 @@
 //!   other user range.
 //! * Named (`#<depth>`) and declared (`DEF REAL DEPTH`) variables take
 //!   local parameters `QL1`, `QL2`, ... in the order they first appear,
-//!   and so do the counters the loop forms need ([`Alloc::scratch`]). `QL`
+//!   and so do the counters the loop forms need (`Alloc::scratch`). `QL`
 //!   is local to the program, as LinuxCNC named parameters and Siemens
 //!   `DEF` data are, and no cycle reads or writes it; older controls
 //!   (TNC 426/430) have no `QL` [?].
