@@ -56,7 +56,7 @@ mod jumps;
 mod labels;
 mod loops;
 mod values;
-pub mod vars;
+mod vars;
 
 /// Variables, loops and jumps in Klartext's forms (Q parameters, `LBL`,
 /// `FN 9..12`), for a Klartext target: see [`flow`].
