@@ -107,7 +107,9 @@ fn while_if_else_back_from_klartext_to_linuxcnc() {
     let src: String = LINUXCNC.split("#<n>=0").next().unwrap().to_string() + "G0 Z10\nM2\n";
     let h = verified("w.ngc", &src, "heidenhain");
     let back = verified("w.h", &h, "linuxcnc");
-    for line in ["do", "break", "else", "endif", "while [1]"] {
+    // The guard before the loop and the test at its end: an if around a
+    // do/while.
+    for line in ["do\n", " else\n", " endif\n", " while [#1 LT 4]\n"] {
         assert!(back.contains(line), "{line}\n{back}");
     }
     assert!(!back.contains("GOTO"), "{back}");
@@ -296,12 +298,11 @@ M30
     assert!(err.contains("FIX") && err.contains("arc tangent"), "{err}");
 }
 
-/// A WHILE with CONTINUE to Klartext and back to LinuxCNC: `break` at the
-/// top, `continue` for the jump back. With a BREAK after the CONTINUE the
-/// port is refused: rs274 runs `o1 continue` as the next `o1` line, which
-/// would be that `o1 break` (probed with the oracle).
+/// A WHILE with CONTINUE (and BREAK) to Klartext and back to LinuxCNC:
+/// CONTINUE is a jump to the test at the loop's end, which comes back as
+/// an if around the rest of the body; BREAK comes back as `break`.
 #[test]
-fn continue_back_to_linuxcnc_unless_a_break_follows() {
+fn continue_and_break_back_to_linuxcnc() {
     let src = "G21 G17 G90 G94
 T1 M6
 G43 H1 G0 Z10
@@ -319,8 +320,9 @@ M2
 ";
     let h = verified("c.ngc", src, "heidenhain");
     let back = verified("c.h", &h, "linuxcnc");
+    assert!(back.contains(" if [[#2 NE 2] AND [#2 NE 4]]\n"), "{back}");
     assert!(
-        back.contains(" continue\n") && back.contains(" break\n"),
+        !back.contains("continue") && !back.contains("GOTO"),
         "{back}"
     );
     let with_break = src.replace(
@@ -328,5 +330,35 @@ M2
         "  o8 if [#2 GT 4]\n    o3 break\n  o8 endif\n  G1 Y[#2] F100\n",
     );
     let h = verified("cb.ngc", &with_break, "heidenhain");
-    refused("cb.h", &h, "linuxcnc", "E0622");
+    let back = verified("cb.h", &h, "linuxcnc");
+    assert!(back.contains(" break\n"), "{back}");
+}
+
+/// Klartext jumps back to a loop's top from its middle: `continue` when
+/// the loop's own jump back is unconditional, unless a jump out of the
+/// loop (`break`) follows it: rs274 runs `o1 continue` as the next `o1`
+/// line, which would be that `o1 break` (probed with the oracle); then
+/// the jump back becomes a loop of its own.
+#[test]
+fn klartext_jump_to_the_top_as_continue_only_before_any_break() {
+    let program = |body: &str| {
+        format!(
+            "0 BEGIN PGM K MM\n1 TOOL CALL 1 Z S3000\n2 Q1 = 0\n3 LBL 1\n4 Q1 = Q1 + 1\n{body}7 L X+Q1 F100\n8 FN 9: IF +0 EQU +0 GOTO LBL 1\n9 LBL 2\n10 M30\n11 END PGM K MM\n"
+        )
+    };
+    let leave = "FN 11: IF +Q1 GT +4 GOTO LBL 2\n";
+    let again = "FN 9: IF +Q1 EQU +2 GOTO LBL 1\n";
+    let first = program(&format!("5 {leave}6 {again}"));
+    let back = verified("k1.h", &first, "linuxcnc");
+    assert!(
+        back.contains(" continue\n") && back.contains(" break\n"),
+        "{back}"
+    );
+    let second = program(&format!("5 {again}6 {leave}"));
+    let back = verified("k2.h", &second, "linuxcnc");
+    assert!(
+        !back.contains("continue") && back.contains(" break\n"),
+        "{back}"
+    );
+    assert!(back.contains(" while [#1 EQ 2]\n"), "{back}");
 }

@@ -2,14 +2,16 @@
 //! program in Klartext's forms: Q parameters ([`super::vars`]) and labels
 //! with the conditional jumps `FN 9..12` ([`super::jumps`]).
 //!
-//! * `WHILE c` → `LBL top`, a jump to `LBL end` when c fails; the end → a
-//!   jump to `LBL top`, `LBL end`.
+//! * `WHILE c` → a jump past the loop when c fails, `LBL top`, the body,
+//!   and at the end a jump back to `LBL top` while c holds (one jump per
+//!   pass: `FN 12: IF +Q1 LT +3 GOTO LBL 1`).
 //! * `FOR v=a TO b` → `v = a` (and the bound in a `QL` when it is not a
 //!   number: FOR evaluates it once), then as WHILE `v <= b` with
-//!   `v = v + 1` before the jump back.
-//! * LinuxCNC `repeat [n]` → a `QL` counter tested and counted down at the
-//!   top; `do` ... `while [c]` and Siemens `REPEAT` ... `UNTIL c` →
-//!   `LBL top` and a jump back at the end; `LOOP` → an unconditional one.
+//!   `v = v + 1` before the test at the end.
+//! * LinuxCNC `repeat [n]` → a `QL` counter, as WHILE counter > 0, counted
+//!   down at the top; `do` ... `while [c]` and Siemens `REPEAT` ...
+//!   `UNTIL c` → `LBL top` and a jump back at the end; `LOOP` → an
+//!   unconditional one.
 //! * `IF c` / `ELSE IF` / `ELSE` / `ENDIF` → jumps around the branches;
 //!   Fanuc `IF [c] THEN stmt` → a jump around the statement.
 //! * `BREAK`/`CONTINUE` → jumps to the loop's end or its next pass.
@@ -27,10 +29,15 @@ use crate::span::{Span, Spanned};
 
 /// How an open loop ends.
 pub(super) enum LoopEnd {
-    /// Jump back to the top (WHILE, FOR, repeat, LOOP), after `step`.
-    Back { step: Option<(Var, ExprId)> },
-    /// Jump back while (or, `until`, until) a condition holds.
-    Test { until: bool },
+    /// Jump back to the top (LOOP).
+    Forever,
+    /// After `step`, jump back while (`until`: until) the condition holds:
+    /// `cond`, or the closing statement's (DO ... WHILE, REPEAT ... UNTIL).
+    Test {
+        cond: Option<ExprId>,
+        until: bool,
+        step: Option<(Var, ExprId)>,
+    },
 }
 
 pub(super) enum Open {
@@ -186,30 +193,24 @@ impl Flow<'_> {
                     }
                 }
             }
-            K::While { cond, .. } => {
-                let (top, end) = (self.labels.fresh(), self.labels.fresh());
-                self.label(top.clone(), span);
-                self.jump_if(cond, true, &end, span);
-                self.open_loop(top, Some(end), LoopEnd::Back { step: None });
-            }
+            K::While { cond, .. } => self.guarded_loop(cond, None, span),
             K::For { var, from, to } => self.for_loop(var, from, to, span),
             K::Repeat { count, .. } => {
+                // A counter tested before the loop and at its end, counted
+                // down at its top.
                 let n = self.alloc.scratch();
                 self.assign(n.clone(), count, span);
-                let (top, end) = (self.labels.fresh(), self.labels.fresh());
-                self.label(top.clone(), span);
                 let v = self.expr(ExprKind::Var(n.clone()), span);
                 let zero = self.expr(ExprKind::Number(Decimal::from_int(0)), span);
                 let test = self.expr(ExprKind::Binary(BinaryOp::Gt, v, zero), span);
-                self.jump_if(test, true, &end, span);
+                self.guarded_loop(test, None, span);
                 let one = self.expr(ExprKind::Number(Decimal::from_int(1)), span);
                 let down = self.expr(ExprKind::Binary(BinaryOp::Sub, v, one), span);
                 self.assign(n, down, span);
-                self.open_loop(top, Some(end), LoopEnd::Back { step: None });
             }
-            K::Loop => self.top_loop(LoopEnd::Back { step: None }, span),
-            K::Do { .. } => self.top_loop(LoopEnd::Test { until: false }, span),
-            K::RepeatUntil => self.top_loop(LoopEnd::Test { until: true }, span),
+            K::Loop => self.top_loop(LoopEnd::Forever, span),
+            K::Do { .. } => self.top_loop(test_at_end(false), span),
+            K::RepeatUntil => self.top_loop(test_at_end(true), span),
             K::EndWhile { .. } | K::EndRepeat { .. } | K::EndFor | K::EndLoop => {
                 self.close_loop(None, span)
             }
@@ -239,6 +240,15 @@ impl Flow<'_> {
             }
             kind => cur.push(Stmt::new(kind, span)),
         }
+    }
+}
+
+/// A loop tested by its closing statement.
+fn test_at_end(until: bool) -> LoopEnd {
+    LoopEnd::Test {
+        cond: None,
+        until,
+        step: None,
     }
 }
 

@@ -36,15 +36,20 @@ impl Flow<'_> {
         if let Some(c) = cont {
             self.label(c, span);
         }
-        match (at_end, cond) {
-            (LoopEnd::Back { step }, _) => {
+        match at_end {
+            LoopEnd::Forever => self.goto(None, &top, span),
+            LoopEnd::Test {
+                cond: own,
+                until,
+                step,
+            } => {
                 if let Some((v, e)) = step {
                     self.assign(v, e, span);
                 }
-                self.goto(None, &top, span);
+                if let Some(c) = own.or(cond) {
+                    self.jump_if(c, until, &top, span);
+                }
             }
-            (LoopEnd::Test { until }, Some(c)) => self.jump_if(c, until, &top, span),
-            (LoopEnd::Test { .. }, None) => {}
         }
         if let Some(e) = end {
             self.label(e, span);
@@ -62,11 +67,25 @@ impl Flow<'_> {
                 cont,
                 at_end,
             } => Some(match (next, at_end) {
-                (true, LoopEnd::Back { step: None }) => top.clone(),
+                (true, LoopEnd::Forever) => top.clone(),
                 (true, _) => cont.get_or_insert_with(|| labels.fresh()).clone(),
                 (false, _) => end.get_or_insert_with(|| labels.fresh()).clone(),
             }),
         })
+    }
+
+    /// A loop entered only when `cond` holds, tested again at its end
+    /// (after `step`).
+    pub(super) fn guarded_loop(&mut self, cond: ExprId, step: Option<(Var, ExprId)>, span: Span) {
+        let (top, end) = (self.labels.fresh(), self.labels.fresh());
+        self.jump_if(cond, true, &end, span);
+        self.label(top.clone(), span);
+        let at_end = LoopEnd::Test {
+            cond: Some(cond),
+            until: false,
+            step,
+        };
+        self.open_loop(top, Some(end), at_end);
     }
 
     /// `FOR v=a TO b`: `v = a`, the bound kept when it is computed, and a
@@ -80,20 +99,11 @@ impl Flow<'_> {
             self.assign(b.clone(), to, span);
             self.expr(ExprKind::Var(b), span)
         };
-        let (top, end) = (self.labels.fresh(), self.labels.fresh());
-        self.label(top.clone(), span);
         let v = self.expr(ExprKind::Var(var.clone()), span);
         let test = self.expr(ExprKind::Binary(BinaryOp::Le, v, bound), span);
-        self.jump_if(test, true, &end, span);
         let one = self.expr(ExprKind::Number(Decimal::from_int(1)), span);
         let step = self.expr(ExprKind::Binary(BinaryOp::Add, v, one), span);
-        self.open_loop(
-            top,
-            Some(end),
-            LoopEnd::Back {
-                step: Some((var, step)),
-            },
-        );
+        self.guarded_loop(test, Some((var, step)), span);
     }
 
     /// The end of an IF branch: a jump to the structure's end and the label
