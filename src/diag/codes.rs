@@ -220,6 +220,15 @@ codes! {
     PortSubprogram = "E0617", "port-subprogram", Error,
         "a subprogram call the port cannot carry to the target",
         "`cncc port` writes a called subprogram in the target's own form: for Heidenhain `CALL LBL n` with the subprogram as `LBL n` ... `LBL 0` after the main program's end (a repeat count becomes a program-section repeat around the call); from Heidenhain a label subprogram becomes the target's local subprogram. The called program must be found beside the program (`O1000.nc` for `M98 P1000`), be ported itself, and its number and repeat count must be known numbers. Give the count as a number, put the subprogram file beside the program, or expand the call in the source.";
+    PortQParameter = "E0621", "port-q-parameter", Error,
+        "a variable with no Heidenhain Q parameter, or a Q parameter with no variable in the target",
+        "Porting to Klartext, numbered variables take fixed Q numbers (`#0..#99` and `R0..R99` to `Q0..Q99`, `#100..#499` and `R100..R499` to `Q1600..Q1999`, the user ranges) and named or declared variables take local `QL` parameters. Porting from Klartext, `Q0..Q99` and `Q1600..Q1999` go back to those numbers and `QL` parameters to free variables of the target. Other numbers (Fanuc `#500` up, the control's own `Q100..Q199`), indirect and system variables and arrays have no counterpart: renumber them in the source.";
+    PortJump = "E0622", "port-jump", Error,
+        "a condition or jump that has no form in the target",
+        "Porting to Klartext, loops and conditionals become labels and the conditional jumps `FN 9..12` (EQU, NE, GT, LT; the others as two jumps), combined with AND, OR and NOT. A condition of another kind (bitwise operators, a computed jump target, CASE) has no such form. Porting from Klartext to a target without jumps (LinuxCNC), a backward conditional jump becomes a `do`/`while` loop and a forward one an `if` block only when the jumps nest like loops and conditionals do; rewrite the others.";
+    PortTncFormula = "E0623", "port-tnc-formula", Error,
+        "a function or expression Klartext formulas have no counterpart for",
+        "A Klartext Q parameter formula has + - * / ^ and SIN COS TAN ASIN ACOS ATAN SQRT SQ ABS INT LN EXP; the angle of two values is `FN 13`, an assignment of its own. `cncc port` writes POW as `^` and an ATAN of two values that is a whole assignment as FN 13; ROUND, FIX, FUP, MIN, MAX, BIN, BCD and an ATAN of two values inside a larger formula have no counterpart. Rewrite them in the source.";
     PortApproximate = "W0610", "port-approximate", Warning,
         "a construct carried to the target with a documented difference",
         "The target's form of this construct does the same cutting but differs in something the port cannot make equal (a spindle orientation, a register the target derives itself, a re-entry distance). Read the message; `--verify` shows whether the cutting moves still match.";

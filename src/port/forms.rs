@@ -236,6 +236,9 @@ fn labels(p: &mut Program, to: &DialectSpec) {
     if to.has(Capability::StructuredControl) {
         return sequence_jumps_to_labels(p);
     }
+    if to.family == Family::Klartext {
+        return; // jumps go to `LBL`s (see `to_tnc::flow`)
+    }
     if p.blocks.iter().all(|b| b.label.is_none()) {
         return;
     }

@@ -14,6 +14,10 @@
 //!   CYCLE8x through [`to_word`], → `CYCL DEF 200/203` + `L X Y R0 FMAX
 //!   M99`), [`frame`] (`BEGIN`/`END PGM`, block numbers, D1), [`poles`]
 //!   (`CC` + `C` → G2/G3 with I J) and [`tool_call`] (`TOOL CALL n Z S`).
+//! * Klartext variables and loops: [`to_tnc`] (`variables_and_flow`:
+//!   `#n`/`Rn`/named → Q/QL parameters, loops and jumps → `LBL` + `FN
+//!   9..12`) and `from_tnc_flow` (back: `#n`/`Rn`/named, `IF .. GOTO`,
+//!   `GOTOB`/`GOTOF`, o-word `do`/`if`/`break`).
 //! * [`forms`]: numbered variables (`#n` ↔ `Rn`), loop and conditional
 //!   forms (Fanuc DO ids, Siemens nesting, LinuxCNC o-words), labels to
 //!   sequence numbers, tool length (G43 H / G49 ↔ D / D0), and the tool map.
@@ -26,7 +30,8 @@
 //!   as the moves the interpreter makes for it.
 //!
 //! What the target cannot express is an error naming the construct and
-//! where it is (E0601, E0610..E0614); the writer reports the rest.
+//! where it is (E0601, E0610..E0614, E0621..E0623); the writer reports
+//! the rest.
 
 mod arcs;
 mod decls;
@@ -35,6 +40,7 @@ mod flow_ids;
 pub mod forms;
 mod frame;
 mod from_tnc;
+mod from_tnc_flow;
 mod groups;
 mod haas_cycles;
 mod levels;
@@ -89,6 +95,8 @@ pub fn port_program(
     to_tnc::named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
     to_tnc::run(&mut out, from, to, &mut diags);
+    to_tnc::variables_and_flow(&mut out, to, &mut diags);
+    from_tnc_flow::run(&mut out, from, to, &mut diags);
     decls::run(&mut out, to, &mut diags);
     loops::run(&mut out, to, &mut diags);
     arcs::run(&mut out, from, to);

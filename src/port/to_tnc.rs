@@ -51,11 +51,26 @@ use crate::ir::{
 use crate::span::Span;
 
 mod faces;
+mod flow;
+mod formulas;
+mod jumps;
+mod labels;
+mod loops;
 pub mod named;
 mod osubs;
 pub mod sub_text;
 pub mod subprograms;
 mod values;
+mod vars;
+
+/// Variables, loops and jumps in Klartext's forms (Q parameters, `LBL`,
+/// `FN 9..12`), for a Klartext target: see [`flow`].
+pub(super) fn variables_and_flow(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
+    if to.family == crate::dialect::Family::Klartext {
+        formulas::run(p, diags);
+        flow::run(p, diags);
+    }
+}
 
 /// The target's Q-parameter cycle of `kind` (`drill`, `peck`).
 pub(super) fn q_cycle<'a>(to: &'a DialectSpec, kind: &str) -> Option<&'a crate::dialect::CycleSig> {

@@ -1,1 +1,0 @@
-port: R/DEF variables, FOR/labels to Q parameters and FN jumps not mapped yet (E0613)
