@@ -12,8 +12,10 @@
 mod approach;
 mod corner;
 mod cycles;
+mod functions;
 mod mapping;
 mod paths;
+mod tooldelta;
 
 use super::{Interp, Stop};
 use crate::diag::Code;
@@ -21,6 +23,7 @@ use crate::ir::{Arena, Block, Expr, Stmt, StmtKind};
 
 pub use corner::{flush, flush_before};
 pub use paths::motion;
+pub use tooldelta::tool_change;
 
 /// The Heidenhain part of the machine state.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -50,6 +53,9 @@ pub struct HeidenhainState {
     /// The compensation side of the last APPR (DEP leaves on that side
     /// even when its own R0 has already switched compensation off).
     pub side: Option<crate::ir::CompSide>,
+    /// `DL`/`DR` of the last TOOL CALL (mm): added to the tool's length
+    /// offset and compensation radius.
+    pub oversize: [f64; 2],
 }
 
 /// `TOOL DEF 5 L+50 R+3`: the tool's radius (and length) in the run's
@@ -114,10 +120,11 @@ fn tool_def(
     Ok(())
 }
 
-/// After `TOOL CALL`: Q108 holds the active tool radius [K: TNC system
-/// parameter], as programs such as corpus `Plan.h` expect.
+/// After `TOOL CALL`: Q108 holds the active tool radius with the DR of
+/// the call [K: TNC system parameter], as programs such as corpus
+/// `Plan.h` expect.
 pub fn tool_called(it: &mut Interp<'_, '_>) {
-    let r = mapping::tool_radius(it);
+    let r = mapping::tool_radius(it) + it.state.to_prog(it.heidenhain.oversize[1]);
     it.params.set_q(crate::ir::QBank::Q, 108, r);
 }
 
@@ -148,9 +155,10 @@ pub fn exec(
             length,
             radius,
         } => tool_def(it, tool, length, radius, exprs),
-        // The blank says nothing the run uses; oversizes DL/DR are not
-        // applied [?].
-        StmtKind::Stock { .. } | StmtKind::ToolOversize { .. } => Ok(()),
+        // The blank says nothing the run uses.
+        StmtKind::Stock { .. } => Ok(()),
+        StmtKind::ToolOversize { .. } => tooldelta::oversize_alone(it, block, exprs),
+        StmtKind::TncFunction(f) => functions::exec(it, f, s.span, exprs),
         StmtKind::ProgramEnd { .. } => {
             corner::flush(it)?;
             super::machine::program_end(it, true)

@@ -40,6 +40,7 @@ mod build;
 mod cycles;
 mod fast;
 mod flow;
+mod functions;
 mod lexer;
 mod nodes;
 mod path;

@@ -3,7 +3,7 @@
 
 use super::build::{Ctx, Node};
 use super::token::Tok;
-use super::{cycles, flow, path, program};
+use super::{cycles, flow, functions, path, program};
 use crate::diag::{Code, Diagnostic};
 use crate::span::Span;
 use crate::syntax::Item;
@@ -24,12 +24,19 @@ pub(super) fn items(ctx: &mut Ctx<'_>, node: Node, l: usize, r: usize) -> Vec<It
         Node::CallPgm(at) => flow::call_pgm(ctx, at, l, r),
         Node::FnAssign(n, (var, ..), rhs) => flow::fn_assign(ctx, n, var, &rhs, l, r),
         Node::FnIf(n, a, op, b, id, ..) => flow::fn_if(ctx, n, &a, &op, &b, id, l, r),
-        Node::FnOther(_, _) => flow::fn_other(ctx, l, r),
+        Node::FnOther(n, at) => functions::fn_other(ctx, n, at, l, r),
         Node::Formula((var, ..), e) => flow::formula(ctx, var, e, l, r),
         Node::CyclDef(at) => cycles::cycl_def(ctx, at, l, r),
         Node::CyclCall(w) => cycles::cycl_call(ctx, &w, l, r),
         Node::PatternDef(at) => cycles::pattern_def(ctx, at, l, r),
         Node::Stop(w) => program::stop(ctx, &w, l, r),
+        Node::Words(w)
+            if w.first().is_some_and(|f| {
+                f.name == "PLANE" || functions::FREE_CONTOUR.contains(&f.name.as_str())
+            }) =>
+        {
+            functions::word_block(ctx, &w, l, r)
+        }
         Node::Words(w) => program::bare(ctx, &w),
     }
 }
