@@ -77,7 +77,7 @@ pub fn exec_block(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -
     // written order (no allocation, as a stable sort would give).
     let late = it.spec.has(crate::dialect::Capability::PolePaths);
     if late {
-        super::heidenhain::flush_before(it, block)?;
+        super::heidenhain::flush_before(it, block, exprs)?;
     }
     let phase = |k: &StmtKind| phase_of(k, late);
     let mut present = 0u32;

@@ -37,6 +37,9 @@ pub enum TncFunctionKind {
     MachineOnly(u32),
     /// `PLANE RESET` / `PLANE SPATIAL SPA+0 SPB+0 SPC+0 TURN ..`.
     Plane(Box<TiltPlane>),
+    /// `R+` / `R-` in `L X+10 R+`: the one-axis move is lengthened
+    /// (`true`) or shortened by the tool radius (paraxial compensation).
+    Paraxial(bool),
     /// `FL`, `FC`, `FPOL`, `FSELECT` ...: FK free contour programming,
     /// which is kept but not interpreted; the block's keyword.
     FreeContour(String),
@@ -72,6 +75,7 @@ impl TncFunctionKind {
             TncFunctionKind::SysRead { .. } => "sysread",
             TncFunctionKind::MachineOnly(_) => "machine-only",
             TncFunctionKind::Plane(_) => "plane",
+            TncFunctionKind::Paraxial(_) => "paraxial",
             TncFunctionKind::FreeContour(_) => "free-contour",
         }
     }

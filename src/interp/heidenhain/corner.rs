@@ -25,7 +25,12 @@ pub struct Held {
 
 /// Before a block runs: a held line is sent unless the block is a corner
 /// or only control flow.
-pub fn flush_before(it: &mut Interp<'_, '_>, block: &Block) -> Result<(), Stop> {
+pub fn flush_before(
+    it: &mut Interp<'_, '_>,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    super::approach::depart_before_comp_off(it, block, exprs)?;
     if let Some(ap) = &it.heidenhain.approach {
         let machine = block.stmts.iter().any(|s| phase(&s.kind) > 1);
         let moves = block

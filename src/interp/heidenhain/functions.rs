@@ -97,6 +97,8 @@ pub fn exec(
             Ok(())
         }
         TncFunctionKind::Plane(p) => plane(it, p, span, exprs),
+        // Applied to the block's move (see `paraxial`).
+        TncFunctionKind::Paraxial(_) => Ok(()),
         TncFunctionKind::FreeContour(k) => Err(Stop::Error(
             Diagnostic::new(
                 Code::UnsupportedHere,

@@ -10,10 +10,12 @@
 //! Sources: `reference/dialects.md` §2; assumptions are marked `[?]`.
 
 mod approach;
+mod approach_arc;
 mod corner;
 mod cycles;
 mod functions;
 mod mapping;
+mod paraxial;
 mod paths;
 mod tooldelta;
 
@@ -56,6 +58,9 @@ pub struct HeidenhainState {
     /// `DL`/`DR` of the last TOOL CALL (mm): added to the tool's length
     /// offset and compensation radius.
     pub oversize: [f64; 2],
+    /// A `DEP CT`/`LCT` already run before its block's `R0` (see
+    /// [`approach::depart_before_comp_off`]).
+    pub departed: bool,
 }
 
 /// `TOOL DEF 5 L+50 R+3`: the tool's radius (and length) in the run's

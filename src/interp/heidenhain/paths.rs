@@ -23,7 +23,7 @@ fn num(v: f64, it: &Interp<'_, '_>) -> Value {
     Value::Number(Decimal::from_f64(it.state.to_prog(v), 6))
 }
 
-fn abs_coord(v: f64, it: &Interp<'_, '_>, span: Span) -> Coord {
+pub(super) fn abs_coord(v: f64, it: &Interp<'_, '_>, span: Span) -> Coord {
     Coord {
         value: num(v, it),
         dim: Some(DimMode::Absolute),
@@ -140,12 +140,13 @@ pub fn motion(
         return Ok(());
     }
     let m2 = rewrite(it, m, exprs)?;
+    let m2 = super::paraxial::apply(it, block, m2, exprs)?;
     let line = m2.kind == MotionKind::Linear;
     if let Some(ap) = it.heidenhain.approach.take() {
         if !line {
             return Err(super::approach::no_direction(
                 ap.span,
-                "APPR LT/LN needs a straight feed line after it [?]",
+                "APPR needs a straight feed line after it [?: the TNC also approaches arcs]",
             ));
         }
         let to = target(it, &m2.target, exprs, Frame::Program)?;

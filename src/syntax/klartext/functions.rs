@@ -27,6 +27,11 @@ use crate::syntax::Item;
 /// The FK free contour keywords.
 pub(super) const FREE_CONTOUR: [&str; 7] = ["FL", "FLT", "FC", "FCT", "FPOL", "FSELECT", "FLN"];
 
+/// `PLANE` and the FK keywords start blocks the grammar reads as words.
+pub(super) fn starts_block(name: &str) -> bool {
+    name == "PLANE" || FREE_CONTOUR.contains(&name)
+}
+
 fn item(ctx: &Ctx<'_>, kind: TncFunctionKind, l: usize, r: usize) -> Item {
     let text = ctx.slice(l, r).trim().to_string();
     let f = TncFunction { text, kind };

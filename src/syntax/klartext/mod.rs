@@ -308,7 +308,7 @@ fn body(
         used_comments: Vec::new(),
     };
     if let Some((a, Tok::Name(n), b)) = toks.first() {
-        if n != "M" {
+        if n != "M" && !functions::starts_block(n) {
             let mut w = vec![build::WordNode::new(n.clone(), None, None, *a, *b)];
             // The next name too: `CYCLE DEF` gets its own message.
             if let Some((a, Tok::Name(n), b)) = toks.get(1) {

@@ -30,11 +30,7 @@ pub(super) fn items(ctx: &mut Ctx<'_>, node: Node, l: usize, r: usize) -> Vec<It
         Node::CyclCall(w) => cycles::cycl_call(ctx, &w, l, r),
         Node::PatternDef(at) => cycles::pattern_def(ctx, at, l, r),
         Node::Stop(w) => program::stop(ctx, &w, l, r),
-        Node::Words(w)
-            if w.first().is_some_and(|f| {
-                f.name == "PLANE" || functions::FREE_CONTOUR.contains(&f.name.as_str())
-            }) =>
-        {
+        Node::Words(w) if w.first().is_some_and(|f| functions::starts_block(&f.name)) => {
             functions::word_block(ctx, &w, l, r)
         }
         Node::Words(w) => program::bare(ctx, &w),

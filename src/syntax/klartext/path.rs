@@ -99,6 +99,15 @@ fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said, radius_ok: bool)
             s.items.push(ctx.stmt(comp(CompSide::Off), l, r))
         }
         ("R", Some(v)) if radius_ok => s.radius = Some(v),
+        // `R+`/`R-`: paraxial (the block's axis checked in [`path`]).
+        ("R", None) if w.sign.is_some() && !radius_ok => {
+            let f = crate::ir::TncFunction {
+                text: format!("R{}", w.sign.unwrap_or('+')),
+                kind: crate::ir::TncFunctionKind::Paraxial(w.sign == Some('+')),
+            };
+            s.items
+                .push(ctx.stmt(StmtKind::TncFunction(Box::new(f)), l, r))
+        }
         ("R", Some(_)) => ctx.error(
             Code::KlartextWordNotAllowed,
             l,
@@ -223,6 +232,9 @@ pub fn path(ctx: &mut Ctx<'_>, kw: Kw, words: &[WordNode], l: usize, r: usize) -
     };
     let mut s = read_words(ctx, words, allowed, axes_ok);
     let mut out = std::mem::take(&mut s.items);
+    if !paraxial_fits(ctx, kw, &s.axes, &out, l, r) {
+        return Vec::new();
+    }
     let need = |ctx: &mut Ctx<'_>, what: &str, help: &str| {
         ctx.error(Code::KlartextMissingWord, l, r, what.to_string(), help)
     };
@@ -323,6 +335,22 @@ pub fn approach(
         );
         return out;
     };
+    let needs: &[(&str, bool)] = match kind {
+        ApproachKind::ArcTangent => &[("R", s.radius.is_some()), ("CCA", s.cca.is_some())],
+        ApproachKind::LineArcTangent => &[("R", s.radius.is_some())],
+        ApproachKind::LineTangent | ApproachKind::LineNormal => &[],
+    };
+    for (word, given) in needs {
+        if !given {
+            ctx.error(
+                Code::KlartextMissingWord,
+                l,
+                r,
+                format!("APPR/DEP CT and LCT need the arc's {word}"),
+                "write e.g. `APPR CT X+10 Y+20 CCA180 R+10 RR` or `DEP LCT X+0 Y+0 R8`",
+            );
+        }
+    }
     let a = Approach {
         depart,
         kind,
@@ -333,4 +361,36 @@ pub fn approach(
     };
     out.insert(0, ctx.stmt(StmtKind::Approach(Box::new(a)), l, r));
     out
+}
+
+/// `R+`/`R-` (paraxial) only in an `L` block moving one axis, without
+/// RL/RR; E0128 otherwise.
+fn paraxial_fits(ctx: &mut Ctx<'_>, kw: Kw, axes: &Axes, out: &[Item], l: usize, r: usize) -> bool {
+    let is = |k: &StmtKind| matches!(k, StmtKind::TncFunction(f) if matches!(f.kind, crate::ir::TncFunctionKind::Paraxial(_)));
+    let stmts = || {
+        out.iter().filter_map(|i| match i {
+            Item::Stmt(s) => Some(&s.kind),
+            _ => None,
+        })
+    };
+    if !stmts().any(is) {
+        return true;
+    }
+    let comp =
+        stmts().any(|k| matches!(k, StmtKind::RadiusComp { side, .. } if *side != CompSide::Off));
+    let linear = axes
+        .iter()
+        .filter(|(a, _)| matches!(a, 'X' | 'Y' | 'Z'))
+        .count();
+    if kw == Kw::L && linear == 1 && axes.iter().count() == 1 && !comp {
+        return true;
+    }
+    ctx.error(
+        Code::KlartextBadParaxial,
+        l,
+        r,
+        "R+/R- (paraxial) needs an L block moving exactly one axis, without RL/RR",
+        "write e.g. `L X+10 R+`, or use RL/RR radius compensation",
+    );
+    false
 }
