@@ -178,6 +178,10 @@ fn exec_stmt(
             tools::exec(it, s, block, exprs)?;
             super::heidenhain::tool_change(it, block, exprs)
         }
+        // Heidenhain RL/RR: the radius with the TOOL CALL's DR.
+        RadiusComp { .. } if it.spec.has(crate::dialect::Capability::PolePaths) => {
+            super::heidenhain::radius_comp(it, s, block, exprs)
+        }
         ToolSelect(_)
         | ToolChange
         | RadiusComp { .. }

@@ -25,7 +25,7 @@ use crate::ir::{Arena, Block, Expr, Stmt, StmtKind};
 
 pub use corner::{flush, flush_before};
 pub use paths::motion;
-pub use tooldelta::tool_change;
+pub use tooldelta::{radius_comp, tool_change};
 
 /// The Heidenhain part of the machine state.
 #[derive(Clone, Debug, Default, PartialEq)]

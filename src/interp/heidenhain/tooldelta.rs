@@ -8,11 +8,11 @@
 //! A `TOOL CALL` without a tool number but with DL/DR changes the
 //! oversizes of the tool in the spindle.
 
-use super::super::{Interp, Stop};
+use super::super::{tools, Interp, Stop};
 use crate::canon::Canon;
 use crate::diag::Code;
 use crate::interp::state::{State, MM_PER_INCH};
-use crate::ir::{Arena, Block, Expr, LengthUnit, StmtKind};
+use crate::ir::{Arena, Block, CompSide, Decimal, Expr, LengthUnit, Stmt, StmtKind, Value};
 
 /// The block's `DL`/`DR` in mm (0 when not given).
 fn oversize_in(
@@ -99,4 +99,33 @@ fn activate(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
     let printed = it.state.pose_to_prog(&offset);
     it.emit(Canon::UseToolLengthOffset(printed));
     Ok(())
+}
+
+/// `RL`/`RR`: compensation by the table radius plus the TOOL CALL's DR
+/// (run as LinuxCNC's G41.1/G42.1 with that diameter, which offsets by
+/// the same radius); without DR, as G41/G42.
+pub fn radius_comp(
+    it: &mut Interp<'_, '_>,
+    s: &Stmt,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    let dr = it.heidenhain.oversize[1];
+    let tool = it.state.tool_in_spindle;
+    match &s.kind {
+        StmtKind::RadiusComp {
+            side: side @ (CompSide::Left | CompSide::Right),
+            register: None,
+            diameter: false,
+        } if dr != 0.0 && tool != 0 && it.tool_table.get(tool).is_some() => {
+            let r = super::mapping::tool_radius(it) + it.state.to_prog(dr);
+            let kind = StmtKind::RadiusComp {
+                side: *side,
+                register: Some(Value::Number(Decimal::from_f64(2.0 * r, 6))),
+                diameter: true,
+            };
+            tools::exec(it, &Stmt::new(kind, s.span), block, exprs)
+        }
+        _ => tools::exec(it, s, block, exprs),
+    }
 }
