@@ -30,7 +30,14 @@ fn meta_model_of_the_functions() {
 #[test]
 fn written_back_as_read() {
     let spec = builtin("heidenhain").unwrap();
-    for name in ["functions", "apprarc", "paraxial", "freecontour", "tilt"] {
+    for name in [
+        "functions",
+        "apprarc",
+        "paraxial",
+        "freecontour",
+        "tilt",
+        "roundarc",
+    ] {
         let f = path(name);
         let text = std::fs::read_to_string(root().join(&f)).unwrap();
         let mut sm = SourceMap::new();
@@ -45,8 +52,8 @@ fn written_back_as_read() {
 }
 
 #[test]
-fn canonical_calls_of_approach_arcs_and_paraxial_moves() {
-    for name in ["apprarc", "paraxial"] {
+fn canonical_calls_of_approach_arcs_paraxial_moves_and_roundings() {
+    for name in ["apprarc", "paraxial", "roundarc"] {
         let o = cncc(&["canon", "--dialect", "heidenhain", &path(name)]);
         assert_eq!(o.status.code(), Some(0), "{name}: {}", stderr(&o));
         assert_eq!(stderr(&o), "", "{name}");
@@ -68,9 +75,19 @@ fn functions_run_until_the_programs_own_error() {
 
 #[test]
 fn what_the_run_cannot_do_is_reported() {
-    for name in ["tilt", "freecontour", "sysread", "badfunctions"] {
+    for name in [
+        "tilt",
+        "freecontour",
+        "sysread",
+        "badfunctions",
+        "roundafterarc",
+    ] {
         let o = cncc(&["check", "--dialect", "heidenhain", &path(name)]);
-        let code = if name == "freecontour" { 0 } else { 1 };
+        let code = if matches!(name, "freecontour" | "roundafterarc") {
+            0
+        } else {
+            1
+        };
         assert_eq!(o.status.code(), Some(code), "{name}: {}", stderr(&o));
         insta::assert_snapshot!(format!("tncfn_check_{name}"), stderr(&o));
     }

@@ -1,10 +1,12 @@
-//! `RND`/`CHF` corners between two straight lines.
+//! `RND`/`CHF` corners between two straight lines (a rounding from a
+//! line into an arc: [`super::corner_arc`]).
 //!
 //! A straight feed move is held back until the next block that does
 //! something on the machine: if that block is a `RND`/`CHF`, the corner is
 //! cut between the held line and the next one (shortening both);
-//! otherwise the held line is sent as it was. A corner next to an arc is
-//! reported (E0561) [?: the TNC also rounds between lines and arcs].
+//! otherwise the held line is sent as it was. A chamfer next to an arc is
+//! E0561 (it joins two lines); a rounding after an arc is reported as not
+//! run yet [?: the TNC rounds there too].
 
 use super::super::comp::MoveKind;
 use super::super::machine::pose6;
@@ -56,7 +58,12 @@ pub fn flush_before(
         .stmts
         .iter()
         .any(|s| matches!(s.kind, StmtKind::Motion(_)));
-    if machine && !corner && !moves {
+    // `CC` between a corner and the arc after it moves nothing.
+    let pole_only = block
+        .stmts
+        .iter()
+        .all(|s| phase(&s.kind) <= 1 || matches!(s.kind, StmtKind::Pole(_)));
+    if machine && !corner && !moves && !pole_only {
         return flush(it);
     }
     if moves {
@@ -109,7 +116,7 @@ pub(super) fn no_fit(it: &Interp<'_, '_>, span: Span, why: &str) -> Stop {
     Stop::Error(
         Diagnostic::new(Code::KlartextCornerCannotFit, why.to_string())
             .primary(span, "this corner")
-            .help("a rounding or chamfer joins two straight lines in the working plane and must fit on both"),
+            .help("a rounding joins two lines, or a line and the arc after it, and a chamfer two lines, in the working plane; each must fit on both elements"),
     )
 }
 
@@ -128,6 +135,14 @@ pub fn corner(
             h.corner = Some((kind, v, span));
             Ok(())
         }
+        None if it.heidenhain.after_arc && matches!(kind, CornerKind::Round | CornerKind::RoundModal) => Err(Stop::Error(
+            Diagnostic::new(
+                Code::UnsupportedHere,
+                "a rounding after an arc (arc-line, arc-arc) is not run yet",
+            )
+            .primary(span, "this corner")
+            .help("cncc rounds between two lines and from a line into a C, CR or CP arc; program the rounding as its own arc"),
+        )),
         _ => Err(no_fit(
             it,
             span,

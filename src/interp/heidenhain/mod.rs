@@ -12,6 +12,7 @@
 mod approach;
 mod approach_arc;
 mod corner;
+mod corner_arc;
 mod cycles;
 mod functions;
 mod mapping;
@@ -61,6 +62,8 @@ pub struct HeidenhainState {
     /// A `DEP CT`/`LCT` already run before its block's `R0` (see
     /// [`approach::depart_before_comp_off`]).
     pub departed: bool,
+    /// The last path element was an arc (a rounding after it is not run).
+    pub after_arc: bool,
 }
 
 /// `TOOL DEF 5 L+50 R+3`: the tool's radius (and length) in the run's

@@ -3,7 +3,7 @@
 
 use super::super::target::{target, Frame};
 use super::super::{exec::phase, motion as core_motion, siemens, Interp, Stop};
-use super::corner::{corner_join, no_fit, send_line, Held};
+use super::corner::{corner_join, send_line, Held};
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{
     Arena, Axes, Block, Coord, Decimal, DimMode, Expr, ExprKind, Motion, MotionKind, Stmt,
@@ -152,6 +152,7 @@ pub fn motion(
         let to = target(it, &m2.target, exprs, Frame::Program)?;
         super::approach::before_line(it, ap, &to)?;
     }
+    it.heidenhain.after_arc = !line && m2.kind != MotionKind::Rapid;
     if line {
         let to = target(it, &m2.target, exprs, Frame::Program)?;
         let from = it.state.pos;
@@ -186,8 +187,9 @@ pub fn motion(
         return after(it, s, block, exprs);
     }
     if let Some(h) = it.heidenhain.held.take() {
-        if let Some((_, _, span)) = h.corner {
-            return Err(no_fit(it, span, "RND/CHF between a line and an arc is not supported here [?]; the element after it must be a straight line"));
+        if h.corner.is_some() {
+            super::corner_arc::line_then_arc(it, h, &m2, block, exprs)?;
+            return after(it, s, block, exprs);
         }
         send_line(it, &h.from, &h.to, h.span)?;
     }
