@@ -1,7 +1,9 @@
 //! Heidenhain Klartext semantics in the interpreter: the pole (`CC`), arcs
 //! round it (`C`, `CP`), polar lines (`LP`), `RND`/`CHF` corners, cycle
 //! definitions and calls, old-style cycles (1 pecking, 7 datum shift,
-//! 8 mirror, 9 dwell, 10 rotation, 11 scaling), `END PGM`.
+//! 8 mirror, 9 dwell, 10 rotation, 11 scaling), `END PGM`; `APPR`/`DEP`
+//! (LT, LN, CT, LCT), paraxial `R+`/`R-`, `TOOL CALL` DL/DR, and the
+//! function blocks FN 14..20, `PLANE`, FK ([`functions`]).
 //!
 //! Arcs, `CT` and the coordinate transformations go through the Siemens
 //! machinery (capability `frame-arcs`): a `C` block becomes an arc with an

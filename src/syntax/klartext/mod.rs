@@ -35,6 +35,11 @@
 //!   `SubReturn`); `CALL LBL n` a `Call` of kind `Label`; `CALL LBL n REP m`
 //!   a `SectionRepeat` from the label to the call; `FN 9..12` a `Goto`
 //!   with a condition; Q parameters are [`Var::Q`](crate::ir::Var::Q).
+//! * `FN 14` ERROR, `FN 15/16` PRINT/F-PRINT, `FN 18` SYSREAD, `FN 17/19/20`
+//!   (SYSWRITE, PLC, WAIT FOR), `PLANE ...`, the FK blocks (`FL`, `FC`,
+//!   `FPOL` ...) and the paraxial `R+`/`R-` of an `L` block are
+//!   [`StmtKind::TncFunction`]: what they ask and their text as written,
+//!   which the Klartext writer writes back ([`functions`]).
 
 mod build;
 mod cycles;
