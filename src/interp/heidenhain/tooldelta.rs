@@ -1,10 +1,10 @@
 //! `TOOL CALL 1 Z S3000 DL+0.1 DR-0.05`: the tool's length and radius
 //! from the tool table, with the call's oversizes added.
 //!
-//! The length offset becomes the table length + DL (one
+//! The length offset becomes the table length plus DL (one
 //! `USE_TOOL_LENGTH_OFFSET`, as LinuxCNC prints for G43 with a tool table
 //! that holds that length), and the compensation radius the table radius
-//! + DR (what RL/RR offset by, as LinuxCNC does with that table diameter).
+//! plus DR (what RL/RR offset by, as LinuxCNC does with that diameter).
 //! A `TOOL CALL` without a tool number but with DL/DR changes the
 //! oversizes of the tool in the spindle.
 
