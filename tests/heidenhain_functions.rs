@@ -80,10 +80,10 @@ fn what_the_run_cannot_do_is_reported() {
         "freecontour",
         "sysread",
         "badfunctions",
-        "roundafterarc",
+        "roundarcs",
     ] {
         let o = cncc(&["check", "--dialect", "heidenhain", &path(name)]);
-        let code = if matches!(name, "freecontour" | "roundafterarc") {
+        let code = if matches!(name, "freecontour" | "roundarcs") {
             0
         } else {
             1

@@ -1,12 +1,12 @@
-//! `RND`/`CHF` corners between two straight lines (a rounding from a
-//! line into an arc: [`super::corner_arc`]).
+//! `RND`/`CHF` corners between two straight lines (a rounding between a
+//! line and an arc: [`super::corner_arc`]).
 //!
 //! A straight feed move is held back until the next block that does
 //! something on the machine: if that block is a `RND`/`CHF`, the corner is
 //! cut between the held line and the next one (shortening both);
 //! otherwise the held line is sent as it was. A chamfer next to an arc is
-//! E0561 (it joins two lines); a rounding after an arc is reported as not
-//! run yet [?: the TNC rounds there too].
+//! E0561 (it joins two lines); a rounding after an arc that is not held
+//! (CT, helix) is reported as not run yet [?: the TNC rounds there too].
 
 use super::super::comp::MoveKind;
 use super::super::machine::pose6;
@@ -23,6 +23,16 @@ pub struct Held {
     pub to: [f64; 9],
     pub span: Span,
     pub corner: Option<(CornerKind, f64, Span)>,
+    /// An arc (centre in base mm, counterclockwise?) rather than a line.
+    pub arc: Option<((f64, f64), bool)>,
+}
+
+/// Sends a held element as it was.
+pub(super) fn send_held(it: &mut Interp<'_, '_>, h: &Held) -> Result<(), Stop> {
+    match h.arc {
+        Some((c, ccw)) => super::corner_arc::send_arc(it, &h.from, &h.to, c, ccw, h.span),
+        None => send_line(it, &h.from, &h.to, h.span),
+    }
 }
 
 /// Before a block runs: a held line is sent unless the block is a corner
@@ -92,7 +102,7 @@ pub fn flush(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
             "RND/CHF needs a straight line after it in the working plane",
         ));
     }
-    send_line(it, &h.from, &h.to, h.span)
+    send_held(it, &h)
 }
 
 pub(super) fn send_line(
@@ -138,10 +148,10 @@ pub fn corner(
         None if it.heidenhain.after_arc && matches!(kind, CornerKind::Round | CornerKind::RoundModal) => Err(Stop::Error(
             Diagnostic::new(
                 Code::UnsupportedHere,
-                "a rounding after an arc (arc-line, arc-arc) is not run yet",
+                "a rounding after this arc (CT, a helix, a tilted or mirrored frame) is not run yet",
             )
             .primary(span, "this corner")
-            .help("cncc rounds between two lines and from a line into a C, CR or CP arc; program the rounding as its own arc"),
+            .help("cncc rounds between lines and plain C, CR or CP arcs in the XY plane (not between two arcs); program the rounding as its own arc"),
         )),
         _ => Err(no_fit(
             it,
@@ -159,6 +169,9 @@ pub(super) fn corner_join(
     h: Held,
     to: &[f64; 9],
 ) -> Result<[f64; 9], Stop> {
+    if h.arc.is_some() {
+        return super::corner_arc::arc_then_line(it, h, to);
+    }
     let Some((kind, size, cspan)) = h.corner else {
         send_line(it, &h.from, &h.to, h.span)?;
         return Ok(h.to);

@@ -3,7 +3,7 @@
 
 use super::super::target::{target, Frame};
 use super::super::{exec::phase, motion as core_motion, siemens, Interp, Stop};
-use super::corner::{corner_join, send_line, Held};
+use super::corner::{corner_join, send_held, send_line, Held};
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{
     Arena, Axes, Block, Coord, Decimal, DimMode, Expr, ExprKind, Motion, MotionKind, Stmt,
@@ -179,6 +179,7 @@ pub fn motion(
                 to,
                 span: it.span,
                 corner: None,
+                arc: None,
             });
             return Ok(());
         }
@@ -186,12 +187,19 @@ pub fn motion(
         siemens::arcs::note_straight(it, start);
         return after(it, s, block, exprs);
     }
+    let holdable = block
+        .stmts
+        .iter()
+        .all(|x| phase(&x.kind) <= 20 && !after_move(&x.kind));
     if let Some(h) = it.heidenhain.held.take() {
         if h.corner.is_some() {
-            super::corner_arc::line_then_arc(it, h, &m2, block, exprs)?;
+            super::corner_arc::line_then_arc(it, h, &m2, block, exprs, holdable)?;
             return after(it, s, block, exprs);
         }
-        send_line(it, &h.from, &h.to, h.span)?;
+        send_held(it, &h)?;
+    }
+    if holdable && super::corner_arc::hold_arc(it, &m2, block, exprs)? {
+        return Ok(());
     }
     if m2.kind == MotionKind::ArcTangent && it.siemens.tangent.is_none() {
         return Err(super::approach::no_direction(

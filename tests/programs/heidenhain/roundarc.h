@@ -11,5 +11,8 @@
 10 RND R2
 11 CC X+20 Y-15
 12 C X+15 Y-15 DR+
-13 L Z+10 FMAX
-14 END PGM ROUNDARC MM
+13 ; out of that arc (heading -Y at (15, -15)), round R1 into a line along -X
+14 RND R1
+15 L X+0
+16 L Z+10 FMAX
+17 END PGM ROUNDARC MM
