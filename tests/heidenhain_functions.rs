@@ -53,7 +53,7 @@ fn written_back_as_read() {
 
 #[test]
 fn canonical_calls_of_approach_arcs_paraxial_moves_and_roundings() {
-    for name in ["apprarc", "paraxial", "roundarc"] {
+    for name in ["apprarc", "paraxial", "roundarc", "roundarcs"] {
         let o = cncc(&["canon", "--dialect", "heidenhain", &path(name)]);
         assert_eq!(o.status.code(), Some(0), "{name}: {}", stderr(&o));
         assert_eq!(stderr(&o), "", "{name}");
@@ -75,15 +75,9 @@ fn functions_run_until_the_programs_own_error() {
 
 #[test]
 fn what_the_run_cannot_do_is_reported() {
-    for name in [
-        "tilt",
-        "freecontour",
-        "sysread",
-        "badfunctions",
-        "roundarcs",
-    ] {
+    for name in ["tilt", "freecontour", "sysread", "badfunctions", "roundct"] {
         let o = cncc(&["check", "--dialect", "heidenhain", &path(name)]);
-        let code = if matches!(name, "freecontour" | "roundarcs") {
+        let code = if matches!(name, "freecontour" | "roundct") {
             0
         } else {
             1

@@ -151,7 +151,7 @@ pub fn corner(
                 "a rounding after this arc (CT, a helix, a tilted or mirrored frame) is not run yet",
             )
             .primary(span, "this corner")
-            .help("cncc rounds between lines and plain C, CR or CP arcs in the XY plane (not between two arcs); program the rounding as its own arc"),
+            .help("cncc rounds between lines and plain C, CR or CP arcs in the XY plane; program the rounding as its own arc"),
         )),
         _ => Err(no_fit(
             it,

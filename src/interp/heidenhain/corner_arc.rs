@@ -1,4 +1,5 @@
-//! `RND` between a straight line and an arc (`C`, `CR`, `CP`), either way.
+//! `RND` between a straight line and an arc (`C`, `CR`, `CP`), either way,
+//! and between two arcs ([`super::corner_arcs`]).
 //!
 //! Plain arcs in the XY plane (no helix, no turns, no inverse-time feed,
 //! a frame that only shifts) are held back like straight lines, in case a
@@ -12,8 +13,7 @@
 //! arc goes on from there to its end. The solution nearest the corner
 //! that lies on both elements is taken.
 //!
-//! Not done [?]: a rounding between two arcs, after a `CT` or a helix, a
-//! `CT` after the rounding, chamfers next to arcs, and frames that rotate
+//! Not done [?]: a rounding after a `CT` or a helix, a `CT` after it, chamfers next to arcs, and frames that rotate
 //! or mirror: reported as not supported.
 
 use super::super::machine::pose6;
@@ -32,7 +32,7 @@ fn unsupported(span: Span, what: &str) -> Stop {
     Stop::Error(
         Diagnostic::new(Code::UnsupportedHere, format!("{what} is not run yet"))
             .primary(span, "this corner")
-            .help("cncc rounds between lines and plain C, CR or CP arcs in the XY plane (not between two arcs); program the rounding as its own arc"),
+            .help("cncc rounds between lines and plain C, CR or CP arcs in the XY plane; program the rounding as its own arc"),
     )
 }
 
@@ -136,8 +136,8 @@ fn fillet(p0: P2, p1: P2, c: P2, ccw: bool, r: f64, e: P2) -> Result<Fillet, &'s
         .ok_or("the rounding does not fit between the line and the arc")
 }
 
-/// The held line, the rounding waiting on it, then the arc `m` (already
-/// rewritten: pole as centre, polar end as cartesian).
+/// The held line or arc, the rounding waiting on it, then the arc `m`
+/// (already rewritten: pole as centre, polar end as cartesian).
 pub fn line_then_arc(
     it: &mut Interp<'_, '_>,
     h: Held,
@@ -149,9 +149,6 @@ pub fn line_then_arc(
     let Some((kind, size, cspan)) = h.corner else {
         return super::corner::send_held(it, &h);
     };
-    if h.arc.is_some() {
-        return Err(unsupported(cspan, "a rounding between two arcs"));
-    }
     if matches!(kind, CornerKind::Chamfer | CornerKind::ChamferLeg) {
         return Err(no_fit(
             it,
@@ -185,14 +182,17 @@ pub fn line_then_arc(
             "the arc after RND has no centre that reaches its end point",
         ));
     };
-    let (f, t1, t2, left) =
-        fillet(p0, p1, c, ccw, size, e).map_err(|why| no_fit(it, cspan, why))?;
+    let found = match h.arc {
+        None => fillet(p0, p1, c, ccw, size, e),
+        Some(first) => super::corner_arcs::fillet(p0, p1, first, (c, ccw), e, size),
+    };
+    let (f, t1, t2, left) = found.map_err(|why| no_fit(it, cspan, why))?;
     let mut q1 = h.to;
     (q1[0], q1[1]) = t1;
-    if (t1.0 - p0.0).hypot(t1.1 - p0.1) > 1e-9 {
-        send_line(it, &h.from, &q1, h.span)?;
-    } else {
-        it.state.pos = q1;
+    match h.arc {
+        _ if (t1.0 - p0.0).hypot(t1.1 - p0.1) <= 1e-9 => it.state.pos = q1,
+        Some((c1, ccw1)) => send_arc(it, &h.from, &q1, c1, ccw1, h.span)?,
+        None => send_line(it, &h.from, &q1, h.span)?,
     }
     let mut q2 = h.to;
     (q2[0], q2[1]) = t2;

@@ -15,6 +15,7 @@ mod approach;
 mod approach_arc;
 mod corner;
 mod corner_arc;
+mod corner_arcs;
 mod cycles;
 mod functions;
 mod mapping;
