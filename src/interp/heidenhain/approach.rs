@@ -1,8 +1,8 @@
 //! `APPR`/`DEP`: approaching and leaving the contour.
 //!
 //! `APPR` needs the direction of the first contour element, so the
-//! approach waits for the next block (a straight line [?: the TNC also
-//! approaches arcs]): the tool goes from where it is to the auxiliary
+//! approach waits for the next block (a straight line, or a `C`/`CR`/`CP`
+//! arc: its tangent at PA): the tool goes from where it is to the auxiliary
 //! point PH, then to the first contour point PA. LT: PH lies `LEN` before
 //! PA on the line's extension; LN: `LEN` off PA at right angles, on the
 //! side the radius compensation puts the tool (left for RL and R0 [?]);
@@ -106,7 +106,13 @@ pub fn before_line(
             "the element after APPR has no direction in the plane",
         ));
     }
-    let d = (dx / l, dy / l);
+    before_dir(it, ap, (dx / l, dy / l))
+}
+
+/// Sends the approach to a first contour element leaving PA along `d`
+/// (unit, base frame).
+pub fn before_dir(it: &mut Interp<'_, '_>, ap: PendingApproach, d: (f64, f64)) -> Result<(), Stop> {
+    let pa = ap.contour;
     if let Some(a) = ap.arc {
         return before_line_arc(it, ap, a, d);
     }

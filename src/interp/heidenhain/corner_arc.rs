@@ -226,6 +226,30 @@ pub fn line_then_arc(
     arc_to(it, &e3, c, ccw)
 }
 
+/// The direction (unit, base) in which the arc `m` leaves `from`, for
+/// an approach to it; `None` when it is not a C, CR or CP arc with a centre.
+pub fn start_direction(
+    it: &mut Interp<'_, '_>,
+    m: &Motion,
+    from: &[f64; 9],
+    exprs: &Arena<Expr>,
+) -> Result<Option<P2>, Stop> {
+    if !shift_only(it) {
+        return Ok(None);
+    }
+    let e3 = target(it, &m.target, exprs, Frame::Program)?;
+    let (s, e) = ((from[0], from[1]), (e3[0], e3[1]));
+    let Some((c, ccw)) = arc_centre(it, m, s, e, exprs)? else {
+        return Ok(None);
+    };
+    let r = (s.0 - c.0).hypot(s.1 - c.1);
+    if r < 1e-9 {
+        return Ok(None);
+    }
+    let (x, y) = ((s.0 - c.0) / r, (s.1 - c.1) / r);
+    Ok(Some(if ccw { (-y, x) } else { (y, -x) }))
+}
+
 /// Holds the arc `m` (already rewritten) when it is a plain arc in the XY
 /// plane; `false`: the core runs it.
 pub fn hold_arc(

@@ -143,14 +143,18 @@ pub fn motion(
     let m2 = super::paraxial::apply(it, block, m2, exprs)?;
     let line = m2.kind == MotionKind::Linear;
     if let Some(ap) = it.heidenhain.approach.take() {
-        if !line {
-            return Err(super::approach::no_direction(
-                ap.span,
-                "APPR needs a straight feed line after it [?: the TNC also approaches arcs]",
-            ));
+        if line {
+            let to = target(it, &m2.target, exprs, Frame::Program)?;
+            super::approach::before_line(it, ap, &to)?;
+        } else {
+            let Some(d) = super::corner_arc::start_direction(it, &m2, &ap.contour, exprs)? else {
+                return Err(super::approach::no_direction(
+                    ap.span,
+                    "APPR needs a straight feed line or a C, CR or CP arc after it",
+                ));
+            };
+            super::approach::before_dir(it, ap, d)?;
         }
-        let to = target(it, &m2.target, exprs, Frame::Program)?;
-        super::approach::before_line(it, ap, &to)?;
     }
     it.heidenhain.after_arc = !line && m2.kind != MotionKind::Rapid;
     if line {
