@@ -30,7 +30,7 @@ pub struct Held {
 /// Sends a held element as it was.
 pub(super) fn send_held(it: &mut Interp<'_, '_>, h: &Held) -> Result<(), Stop> {
     match h.arc {
-        Some((c, ccw)) => super::corner_arc::send_arc(it, &h.from, &h.to, c, ccw, h.span),
+        Some((c, ccw)) => super::held_arc::send_arc(it, &h.from, &h.to, c, ccw, h.span),
         None => send_line(it, &h.from, &h.to, h.span),
     }
 }
@@ -42,7 +42,7 @@ pub fn flush_before(
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    super::approach::depart_before_comp_off(it, block, exprs)?;
+    super::depart::depart_before_comp_off(it, block, exprs)?;
     if let Some(ap) = &it.heidenhain.approach {
         let machine = block.stmts.iter().any(|s| phase(&s.kind) > 1);
         let moves = block
@@ -170,7 +170,7 @@ pub(super) fn corner_join(
     to: &[f64; 9],
 ) -> Result<[f64; 9], Stop> {
     if h.arc.is_some() {
-        return super::corner_arc::arc_then_line(it, h, to);
+        return super::held_arc::arc_then_line(it, h, to);
     }
     let Some((kind, size, cspan)) = h.corner else {
         send_line(it, &h.from, &h.to, h.span)?;

@@ -147,7 +147,7 @@ pub fn motion(
             let to = target(it, &m2.target, exprs, Frame::Program)?;
             super::approach::before_line(it, ap, &to)?;
         } else {
-            let Some(d) = super::corner_arc::start_direction(it, &m2, &ap.contour, exprs)? else {
+            let Some(d) = super::held_arc::start_direction(it, &m2, &ap.contour, exprs)? else {
                 return Err(super::approach::no_direction(
                     ap.span,
                     "APPR needs a straight feed line or a C, CR or CP arc after it",
@@ -202,7 +202,7 @@ pub fn motion(
         }
         send_held(it, &h)?;
     }
-    if holdable && super::corner_arc::hold_arc(it, &m2, block, exprs)? {
+    if holdable && super::held_arc::hold_arc(it, &m2, block, exprs)? {
         return Ok(());
     }
     if m2.kind == MotionKind::ArcTangent && it.siemens.tangent.is_none() {

@@ -41,6 +41,7 @@
 //!   [`StmtKind::TncFunction`]: what they ask and their text as written,
 //!   which the Klartext writer writes back ([`functions`]).
 
+mod approach;
 mod build;
 mod cycles;
 mod fast;
@@ -48,6 +49,7 @@ mod flow;
 mod functions;
 mod lexer;
 mod nodes;
+mod paraxial;
 mod path;
 mod program;
 mod token;

@@ -3,7 +3,7 @@
 
 use super::build::{Ctx, Node};
 use super::token::Tok;
-use super::{cycles, flow, functions, path, program};
+use super::{approach, cycles, flow, functions, path, program};
 use crate::diag::{Code, Diagnostic};
 use crate::span::Span;
 use crate::syntax::Item;
@@ -18,7 +18,7 @@ pub(super) fn items(ctx: &mut Ctx<'_>, node: Node, l: usize, r: usize) -> Vec<It
         Node::ToolCall(t, w) => program::tool_call(ctx, t, &w, l, r),
         Node::Path(k, w) => path::path(ctx, k, &w, l, r),
         Node::Chamfer(s, w) => path::chamfer(ctx, &s, &w, l, r),
-        Node::Approach(dep, w) => path::approach(ctx, dep, &w, l, r),
+        Node::Approach(dep, w) => approach::approach(ctx, dep, &w, l, r),
         Node::Label(id, il, ir) => flow::label(ctx, id, il, ir, l, r),
         Node::CallLabel(at) => flow::call_label(ctx, at, l, r),
         Node::CallPgm(at) => flow::call_pgm(ctx, at, l, r),

@@ -12,8 +12,8 @@ use super::build::{Ctx, Signed, WordNode};
 use super::token::Kw;
 use crate::diag::Code;
 use crate::ir::{
-    Approach, ApproachKind, ArcDir, Axes, CompSide, Coord, CornerKind, CycleRunKind, DimMode,
-    ExprKind, Motion, MotionKind, SpindleState, StmtKind, Value,
+    ApproachKind, ArcDir, Axes, CompSide, Coord, CornerKind, CycleRunKind, DimMode, ExprKind,
+    Motion, MotionKind, SpindleState, StmtKind, Value,
 };
 use crate::syntax::Item;
 
@@ -25,12 +25,12 @@ pub(super) struct Said {
     pub(super) axes: Axes,
     rapid: bool,
     dir: Option<ArcDir>,
-    radius: Option<Value>,
+    pub(super) radius: Option<Value>,
     polar_r: Option<Value>,
     polar_a: Option<Value>,
-    len: Option<Value>,
-    cca: Option<Value>,
-    kind: Option<ApproachKind>,
+    pub(super) len: Option<Value>,
+    pub(super) cca: Option<Value>,
+    pub(super) kind: Option<ApproachKind>,
     pos: bool,
     pat: bool,
     pub(super) items: Vec<Item>,
@@ -232,7 +232,7 @@ pub fn path(ctx: &mut Ctx<'_>, kw: Kw, words: &[WordNode], l: usize, r: usize) -
     };
     let mut s = read_words(ctx, words, allowed, axes_ok);
     let mut out = std::mem::take(&mut s.items);
-    if !paraxial_fits(ctx, kw, &s.axes, &out, l, r) {
+    if !super::paraxial::fits(ctx, kw, &s.axes, &out, l, r) {
         return Vec::new();
     }
     let need = |ctx: &mut Ctx<'_>, what: &str, help: &str| {
@@ -310,87 +310,4 @@ pub fn chamfer(
     };
     out.insert(0, ctx.stmt(kind, l, r));
     out
-}
-
-/// `APPR LT X.. Y.. LEN10 RR F300`, `DEP CT CCA90 R+5 F..`.
-pub fn approach(
-    ctx: &mut Ctx<'_>,
-    depart: bool,
-    words: &[WordNode],
-    l: usize,
-    r: usize,
-) -> Vec<Item> {
-    let allowed = [
-        "LT", "LN", "CT", "LCT", "LEN", "CCA", "R", "R0", "RL", "RR", "F", "FMAX", "M",
-    ];
-    let mut s = read_words(ctx, words, &allowed, true);
-    let mut out = std::mem::take(&mut s.items);
-    let Some(kind) = s.kind else {
-        ctx.error(
-            Code::KlartextMissingWord,
-            l,
-            r,
-            "APPR/DEP needs its kind: LT, LN, CT or LCT",
-            "write e.g. `APPR LT X+0 Y+0 LEN10 RL`",
-        );
-        return out;
-    };
-    let needs: &[(&str, bool)] = match kind {
-        ApproachKind::ArcTangent => &[("R", s.radius.is_some()), ("CCA", s.cca.is_some())],
-        ApproachKind::LineArcTangent => &[("R", s.radius.is_some())],
-        ApproachKind::LineTangent | ApproachKind::LineNormal => &[],
-    };
-    for (word, given) in needs {
-        if !given {
-            ctx.error(
-                Code::KlartextMissingWord,
-                l,
-                r,
-                format!("APPR/DEP CT and LCT need the arc's {word}"),
-                "write e.g. `APPR CT X+10 Y+20 CCA180 R+10 RR` or `DEP LCT X+0 Y+0 R8`",
-            );
-        }
-    }
-    let a = Approach {
-        depart,
-        kind,
-        target: s.axes,
-        len: s.len,
-        radius: s.radius,
-        angle: s.cca,
-    };
-    out.insert(0, ctx.stmt(StmtKind::Approach(Box::new(a)), l, r));
-    out
-}
-
-/// `R+`/`R-` (paraxial) only in an `L` block moving one axis, without
-/// RL/RR; E0128 otherwise.
-fn paraxial_fits(ctx: &mut Ctx<'_>, kw: Kw, axes: &Axes, out: &[Item], l: usize, r: usize) -> bool {
-    let is = |k: &StmtKind| matches!(k, StmtKind::TncFunction(f) if matches!(f.kind, crate::ir::TncFunctionKind::Paraxial(_)));
-    let stmts = || {
-        out.iter().filter_map(|i| match i {
-            Item::Stmt(s) => Some(&s.kind),
-            _ => None,
-        })
-    };
-    if !stmts().any(is) {
-        return true;
-    }
-    let comp =
-        stmts().any(|k| matches!(k, StmtKind::RadiusComp { side, .. } if *side != CompSide::Off));
-    let linear = axes
-        .iter()
-        .filter(|(a, _)| matches!(a, 'X' | 'Y' | 'Z'))
-        .count();
-    if kw == Kw::L && linear == 1 && axes.iter().count() == 1 && !comp {
-        return true;
-    }
-    ctx.error(
-        Code::KlartextBadParaxial,
-        l,
-        r,
-        "R+/R- (paraxial) needs an L block moving exactly one axis, without RL/RR",
-        "write e.g. `L X+10 R+`, or use RL/RR radius compensation",
-    );
-    false
 }
