@@ -148,7 +148,7 @@ pub fn corner(
         None if it.heidenhain.after_arc && matches!(kind, CornerKind::Round | CornerKind::RoundModal) => Err(Stop::Error(
             Diagnostic::new(
                 Code::UnsupportedHere,
-                "a rounding after this arc (CT, a helix, a tilted or mirrored frame) is not run yet",
+                "a rounding after this arc (a helix, a straight CT, a tilted or mirrored frame) is not run yet",
             )
             .primary(span, "this corner")
             .help("cncc rounds between lines and plain C, CR or CP arcs in the XY plane; program the rounding as its own arc"),

@@ -11,7 +11,7 @@
 //! arc goes on from there to its end. The solution nearest the corner
 //! that lies on both elements is taken.
 //!
-//! Not done [?]: a rounding after a `CT` or a helix, a `CT` after it, chamfers next to arcs, and frames that rotate
+//! Not done [?]: a rounding next to a helix, a `CT` after it, chamfers next to arcs, and frames that rotate
 //! or mirror: reported as not supported.
 
 use super::super::machine::pose6;

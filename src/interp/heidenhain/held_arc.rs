@@ -1,5 +1,5 @@
 //! Plain arcs held back like straight lines, in case a rounding follows:
-//! `C`, `CR` and `CP` arcs in the XY plane (no helix, no turns, no
+//! `C`, `CR`, `CP` and `CT` arcs in the XY plane (no helix, no turns, no
 //! inverse-time feed, a frame that only shifts) are sent as the core would
 //! send them (`ARC_FEED` round their centre) when the next block shows no
 //! `RND`; with one, the arc is cut short for the rounding
@@ -49,7 +49,7 @@ pub fn hold_arc(
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<bool, Stop> {
-    let plain = matches!(m.kind, MotionKind::Arc(_))
+    let plain = matches!(m.kind, MotionKind::Arc(_) | MotionKind::ArcTangent)
         && m.arc.turns.is_none()
         && !it.heidenhain.modal_call
         && it.state.plane == CanonPlane::XY
@@ -65,7 +65,16 @@ pub fn hold_arc(
         return Ok(false);
     }
     let (s, e) = ((s3[0], s3[1]), (e3[0], e3[1]));
-    let Some((c, ccw)) = arc_centre(it, m, s, e, exprs)? else {
+    let found = match m.kind {
+        // CT: the circle through both ends tangent to the last direction
+        // (a straight CT, along that direction, is left to the core).
+        MotionKind::ArcTangent => it
+            .siemens
+            .tangent
+            .and_then(|t| siemens::arcs::tangent_circle(s, (t[0], t[1]), e)),
+        _ => arc_centre(it, m, s, e, exprs)?,
+    };
+    let Some((c, ccw)) = found else {
         return Ok(false);
     };
     let (rs, re) = ((s.0 - c.0).hypot(s.1 - c.1), (e.0 - c.0).hypot(e.1 - c.1));
