@@ -189,3 +189,50 @@ fn without_block_numbers(f: &str) -> String {
         .collect::<Vec<_>>()
         .join("\n")
 }
+
+/// Heidenhain programs that stop on purpose: the program's own
+/// `FN 14: ERROR=` (its input check fails with the Q parameters at 0).
+const STOP_ON_OWN_ERROR: &[(&str, &str)] = &[(
+    "heidenhain/Plan.h",
+    // Q1840 (the number of passes) is 0: `FN 12: IF +Q1840 LT +1 GOTO
+    // LBL "1042"` reaches `FN 14: ERROR= 1042`.
+    "the program stopped with its error 1042",
+)];
+
+/// Every accepted Heidenhain program runs (`cncc canon`) to its end, or
+/// to the error it raises itself; none stops on something cncc cannot run.
+#[test]
+fn heidenhain_corpus_programs_run_to_their_end() {
+    let mut failures = Vec::new();
+    let mut ran = 0;
+    for (dialect, path) in corpus_files() {
+        let name = rel(&dialect, &path);
+        if dialect != "heidenhain" || REJECTED.iter().any(|(f, _)| *f == name) {
+            continue;
+        }
+        let o = cncc(&["canon", "--dialect", "heidenhain", path.to_str().unwrap()]);
+        let (out, err) = (stdout(&o), stderr(&o));
+        let calls = out.lines().count();
+        match STOP_ON_OWN_ERROR.iter().find(|(f, _)| *f == name) {
+            Some((_, why)) => {
+                if o.status.code() != Some(1) || !err.contains("E0519") || !err.contains(why) {
+                    failures.push(format!("{name}: expected E0519 `{why}`:\n{err}"));
+                }
+            }
+            None => {
+                let ended = out.lines().any(|l| l == "PROGRAM_END()");
+                if o.status.code() != Some(0) || !ended || err.contains("error[") {
+                    failures.push(format!("{name}: did not run to its end:\n{err}"));
+                }
+            }
+        }
+        eprintln!("{name}: {calls} calls");
+        ran += 1;
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    if shared().is_some() {
+        assert_eq!(ran, 7, "the accepted Heidenhain corpus programs");
+    } else {
+        eprintln!("note: ../shared/corpus is absent; Heidenhain corpus runs skipped");
+    }
+}

@@ -349,6 +349,15 @@ codes! {
     KlartextContinuationAtEnd = "E0125", "klartext-continuation-at-end", Error,
         "a block continued with `~` at the end of the file",
         "A trailing `~` says the block goes on in the next line, but the file ends. Complete the block or remove the `~`.";
+    KlartextBadFunction = "E0126", "klartext-bad-function", Error,
+        "an FN 14..20 function block that cannot be read",
+        "FN 14 is `FN 14: ERROR= n`; FN 15 `FN 15: PRINT` followed by Q parameters, numbers or quoted texts; FN 16 `FN 16: F-PRINT mask/output`; FN 18 `FN 18: SYSREAD Qn = IDg NRn IDXi` (IDX optional); FN 17/19/20 are `SYSWRITE`, `PLC`, `WAIT FOR`. Check the keyword after the colon and the words after it.";
+    KlartextBadPlane = "E0127", "klartext-bad-plane", Error,
+        "a PLANE block that cannot be read",
+        "A PLANE block names how the plane is defined (RESET, SPATIAL, PROJECTED, EULER, VECTOR, POINTS, RELATIV, AXIAL), then its angles or vector components (`SPA+0 SPB+45 SPC+0`) and how the rotary axes go (MOVE, TURN, STAY), with optional MB, FMAX, F, DIST, SEQ, TABLE ROT/COORD ROT. Check the words.";
+    KlartextBadParaxial = "E0128", "klartext-bad-paraxial", Error,
+        "a paraxial R+/R- block with other than one axis",
+        "`L X+10 R+` moves along one axis with the path lengthened (R+) or shortened (R-) by the tool radius. It takes exactly one axis word of the working plane and no RL/RR. Split the move, or use RL/RR radius compensation.";
     KlartextCycleMissingParameter = "E0320", "cycle-missing-parameter", Error,
         "a Heidenhain cycle without a Q parameter it needs",
         "Each numbered cycle needs its parameters (for 200 DRILLING: Q200 set-up clearance, Q201 depth, Q206 feed, Q202 plunging depth, Q203 surface, Q204 2nd set-up clearance ...). Add the missing `Qnnn=value` line to the CYCL DEF.";
@@ -364,6 +373,21 @@ codes! {
     KlartextTangentUndefined = "E0562", "tangent-undefined", Error,
         "a tangential element with no direction to be tangent to",
         "CT, CTP and APPR/DEP need a path element before them (in the working plane) whose direction they continue. Program a straight line or an arc first.";
+    KlartextProgramError = "E0519", "program-raised-error", Error,
+        "the program stopped itself with FN 14: ERROR",
+        "`FN 14: ERROR= n` stops the program run with the control's error number n (the program's own check failed: an input parameter out of range, a missing tool ...). The run stops here as the control's would. Read the program's comments near the block for what the number means, and correct the input it checks.";
+    KlartextUnknownSystemDatum = "E0520", "unknown-system-datum", Error,
+        "FN 18: SYSREAD of a system datum the run does not know",
+        "The run knows these FN 18 data (numbers from the TNC system data table, values in mm): ID10 NR1 (program unit, 0 mm / 1 inch) and NR3 (active cycle), ID20 NR1 (active tool), NR3 (tool axis, 0 X 1 Y 2 Z), NR4 (spindle speed) and NR9 (feed), ID50 NR1/NR2 IDXt (length/radius of tool t in the table), ID60 NR1 (tool called), NR4/NR5 (its DL/DR), ID200 NR1/NR2 (active radius/length with the oversizes), ID270 NR1 IDX1..9 (position in the active coordinate system). Any other datum depends on the machine: the run stops there.";
+    TiltNeedsRotaryAxes = "E0521", "tilt-needs-rotary-axes", Error,
+        "a tilted working plane on a 3-axis run",
+        "PLANE SPATIAL/PROJECTED/EULER/VECTOR/POINTS/RELATIV/AXIAL with a non-zero tilt turns the working plane with the machine's rotary axes (or the tilting head). cncc runs programs on a 3-axis machine, as LinuxCNC's canonical calls describe it, so the tilt cannot be made. PLANE RESET and a zero tilt run. Machine the feature in the untilted plane or run the program on a 5-axis control.";
+    FormattedPrintNotRead = "W0512", "formatted-print-not-read", Warning,
+        "FN 16: F-PRINT whose mask file is not read",
+        "FN 16 writes Q parameter values formatted by a mask file on the control. cncc does not read the mask: the run shows a MESSAGE naming the mask and the output and goes on.";
+    MachineFunctionNotRun = "W0513", "machine-function-not-run", Warning,
+        "an FN function that talks to the machine (PLC, SYSWRITE, WAIT FOR) is not run",
+        "FN 17 SYSWRITE, FN 19 PLC and FN 20 WAIT FOR act on the machine's own data, PLC or synchronisation, which a canonical run does not have. The block is reported and skipped; the run goes on. Check what the program expects of it.";
     CompExitArc = "E0555", "comp-exit-arc", Error,
         "an arc as the first move after G40",
         "The move after cancelling compensation with G40 takes the tool off the compensated path and must be a straight line.";

@@ -127,6 +127,7 @@ pub(super) fn foreign(w: &mut Writer<'_>, s: &Stmt, words: &mut Vec<String>) {
         K::CycleLine(_) => "an old-style Heidenhain cycle (`CYCL DEF n.m`)",
         K::CycleRun(_) => "a Heidenhain cycle call",
         K::PatternDef(_) => "a point pattern (`PATTERN DEF`)",
+        K::TncFunction(_) => "a Heidenhain function (FN 14..20, `PLANE`, FK)",
         _ => return,
     };
     w.cannot(

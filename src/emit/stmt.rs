@@ -39,7 +39,8 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
         | K::CycleDef(_)
         | K::CycleLine(_)
         | K::CycleRun(_)
-        | K::PatternDef(_) => super::klartext::foreign(w, s, words),
+        | K::PatternDef(_)
+        | K::TncFunction(_) => super::klartext::foreign(w, s, words),
         K::Word(word) => w.push_words(words, std::slice::from_ref(word)),
         K::Units { unit, with_feeds } => {
             w.push_code(

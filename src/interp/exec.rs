@@ -34,7 +34,7 @@ pub fn phase(kind: &StmtKind) -> u8 {
         SetData { .. } | RefReturn { .. } | CoordShift { .. } | MachineCoords | Transform(_) => 19,
         Motion(_) | Cycle(_) | CycleCancel | CycleCall(_) | ModalCallCancel => 20,
         Pole(_) | Corner { .. } | Approach(_) | CycleDef(_) | CycleLine(_) | PatternDef(_) => 20,
-        CycleRun(_) => 20,
+        CycleRun(_) | TncFunction(_) => 20,
         Stop(_) | ProgramEnd { .. } => 21,
         // Program content and control flow: the program walker runs these.
         Tape | ProgramStart { .. } | Raw { .. } | Word(_) | Command { .. } => 0,
@@ -77,7 +77,7 @@ pub fn exec_block(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -
     // written order (no allocation, as a stable sort would give).
     let late = it.spec.has(crate::dialect::Capability::PolePaths);
     if late {
-        super::heidenhain::flush_before(it, block)?;
+        super::heidenhain::flush_before(it, block, exprs)?;
     }
     let phase = |k: &StmtKind| phase_of(k, late);
     let mut present = 0u32;
@@ -188,9 +188,11 @@ fn exec_stmt(
         // Heidenhain TOOL CALL: the new tool's length (and radius) are active.
         ToolChange if it.spec.has(crate::dialect::Capability::PolePaths) => {
             tools::exec(it, s, block, exprs)?;
-            siemens::activate_edge(it, 1)?;
-            super::heidenhain::tool_called(it);
-            Ok(())
+            super::heidenhain::tool_change(it, block, exprs)
+        }
+        // Heidenhain RL/RR: the radius with the TOOL CALL's DR.
+        RadiusComp { .. } if it.spec.has(crate::dialect::Capability::PolePaths) => {
+            super::heidenhain::radius_comp(it, s, block, exprs)
         }
         ToolSelect(_)
         | ToolChange
@@ -224,7 +226,8 @@ fn exec_stmt(
         | CycleDef(_)
         | CycleLine(_)
         | CycleRun(_)
-        | PatternDef(_) => super::heidenhain::exec(it, s, block, exprs),
+        | PatternDef(_)
+        | TncFunction(_) => super::heidenhain::exec(it, s, block, exprs),
         // Run by the program walker (phase 0), never here.
         _ => Ok(()),
     }

@@ -12,9 +12,11 @@ pub mod num;
 pub mod print;
 pub mod program;
 pub mod stmt;
+pub mod tnc;
 
 pub use arena::{Arena, Handle};
 pub use expr::*;
 pub use num::Decimal;
 pub use program::Program;
 pub use stmt::*;
+pub use tnc::*;

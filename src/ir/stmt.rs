@@ -844,6 +844,8 @@ pub enum StmtKind {
     CycleRun(CycleRunKind),
     /// Heidenhain `PATTERN DEF`.
     PatternDef(Vec<PatternItem>),
+    /// Heidenhain FN 14..20, `PLANE`, FK blocks (see [`super::tnc`]).
+    TncFunction(Box<super::tnc::TncFunction>),
     Cycle(Box<CannedCycle>),
     /// G80.
     CycleCancel,

@@ -91,6 +91,9 @@ fn sort<'p>(w: &mut Writer<'_>, out: &mut Out, s: &'p Stmt, parts: &mut Parts<'p
             parts.main = Some(s)
         }
         K::CycleRun(CycleRunKind::Block) => parts.mods.push("M99".into()),
+        K::TncFunction(f) if matches!(f.kind, crate::ir::TncFunctionKind::Paraxial(_)) => {
+            parts.mods.push(f.text.clone())
+        }
         K::CycleRun(CycleRunKind::Modal) => parts.mods.push("M89".into()),
         K::ToolSelect(_)
         | K::ToolChange

@@ -117,6 +117,7 @@ pub(super) fn other(w: &mut Writer<'_>, out: &mut Out, s: &Stmt) {
             Some(l)
         }
         K::Raw { dialect, text } if w.spec.answers_to(dialect) => Some(text.clone()),
+        K::TncFunction(f) => Some(f.text.clone()),
         K::Assign { var: v, value } if super::expr::is_angle(w, *value) => {
             super::expr::fn13(w, v, *value, span)
         }

@@ -1,19 +1,20 @@
 //! `APPR`/`DEP`: approaching and leaving the contour.
 //!
-//! `APPR LT` and `APPR LN` need the direction of the first contour element,
-//! so the approach waits for the next block (a straight line [?: the TNC
-//! also approaches arcs]): the tool goes from where it is to the auxiliary
+//! `APPR` needs the direction of the first contour element, so the
+//! approach waits for the next block (a straight line, or a `C`/`CR`/`CP`
+//! arc: its tangent at PA): the tool goes from where it is to the auxiliary
 //! point PH, then to the first contour point PA. LT: PH lies `LEN` before
 //! PA on the line's extension; LN: `LEN` off PA at right angles, on the
-//! side the radius compensation puts the tool (left for RL and R0 [?]).
+//! side the radius compensation puts the tool (left for RL and R0 [?]);
+//! CT/LCT: PH and the arc to PA as [`super::approach_arc`] says.
 //! `DEP LT` leaves along the last element's direction by `LEN`; `DEP LN`
-//! at right angles to it. CT and LCT (arcs) are not simulated yet.
-//! Source: `reference/dialects.md` §2.3 and the corpus `PROFILE.h`.
+//! at right angles to it; `DEP CT`/`LCT` on a tangent arc.
+//! Source: `reference/dialects.md` §2.3, the corpus `PROFILE.h`, the TNC
+//! user manuals (approach and departure).
 
-use super::super::comp::MoveKind;
-use super::super::machine::pose6;
 use super::super::target::{target, Frame};
 use super::super::{siemens, Interp, Stop};
+use super::approach_arc::{self as arc, ArcPart};
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{Approach, ApproachKind, Arena, CompSide, Expr};
 use crate::span::Span;
@@ -22,21 +23,12 @@ use crate::span::Span;
 #[derive(Clone, Debug, PartialEq)]
 pub struct PendingApproach {
     pub normal: bool,
+    /// CT/LCT: the arc into PA.
+    pub arc: Option<ArcPart>,
     pub start: [f64; 9],
     pub contour: [f64; 9],
     pub len: f64,
     pub span: Span,
-}
-
-fn unsupported(span: Span, what: &str) -> Stop {
-    Stop::Error(
-        Diagnostic::new(
-            Code::UnsupportedHere,
-            format!("{what} is not simulated yet"),
-        )
-        .primary(span, "here")
-        .help("APPR/DEP LT and LN are run; use them, or program the approach with L/CT blocks"),
-    )
 }
 
 pub fn no_direction(span: Span, why: &str) -> Stop {
@@ -54,6 +46,9 @@ pub fn exec(
     span: Span,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
+    if a.depart && std::mem::take(&mut it.heidenhain.departed) {
+        return Ok(());
+    }
     super::corner::flush(it)?;
     let len = match &a.len {
         Some(v) => {
@@ -62,23 +57,19 @@ pub fn exec(
         }
         None => 0.0,
     };
-    let normal = match a.kind {
-        ApproachKind::LineTangent => false,
-        ApproachKind::LineNormal => true,
-        ApproachKind::ArcTangent | ApproachKind::LineArcTangent => {
-            return Err(unsupported(
-                span,
-                "an approach or departure on an arc (CT, LCT)",
-            ))
-        }
-    };
+    let normal = a.kind == ApproachKind::LineNormal;
+    let arc = arc_part(it, a, span, exprs)?;
     if a.depart {
-        return depart(it, normal, len, span);
+        return match arc {
+            Some(arc) => super::depart::depart_arc(it, arc, a, span, exprs),
+            None => depart(it, normal, len, span),
+        };
     }
     it.heidenhain.side = Some(it.state.comp_side);
     let contour = target(it, &a.target, exprs, Frame::Program)?;
     it.heidenhain.approach = Some(PendingApproach {
         normal,
+        arc,
         start: it.state.pos,
         contour,
         len,
@@ -115,7 +106,16 @@ pub fn before_line(
             "the element after APPR has no direction in the plane",
         ));
     }
-    let d = (dx / l, dy / l);
+    before_dir(it, ap, (dx / l, dy / l))
+}
+
+/// Sends the approach to a first contour element leaving PA along `d`
+/// (unit, base frame).
+pub fn before_dir(it: &mut Interp<'_, '_>, ap: PendingApproach, d: (f64, f64)) -> Result<(), Stop> {
+    let pa = ap.contour;
+    if let Some(a) = ap.arc {
+        return before_line_arc(it, ap, a, d);
+    }
     let off = if ap.normal {
         side_normal(it, d)
     } else {
@@ -128,19 +128,11 @@ pub fn before_line(
     it.span = ap.span;
     it.state.pos = ap.start;
     it.comp_block(ap.span);
-    let r = feed_to(it, &ph).and_then(|_| feed_to(it, &pa));
+    let r = arc::line_to(it, &ph).and_then(|_| arc::line_to(it, &pa));
     it.span = saved;
     r?;
     siemens::arcs::note_straight(it, ph);
     Ok(())
-}
-
-fn feed_to(it: &mut Interp<'_, '_>, p: &[f64; 9]) -> Result<(), Stop> {
-    if *p == it.state.pos {
-        return Ok(());
-    }
-    let pose = pose6(&it.state, p);
-    it.straight_move(MoveKind::Feed, pose)
 }
 
 /// `DEP LT LEN..` / `DEP LN LEN..` from where the contour ended.
@@ -165,5 +157,78 @@ fn depart(it: &mut Interp<'_, '_>, normal: bool, len: f64, span: Span) -> Result
     let end = siemens::to_base(it, [prog[0] + off.0 * len, prog[1] + off.1 * len, prog[2]]);
     let mut to = p;
     to[..3].copy_from_slice(&end);
-    feed_to(it, &to)
+    arc::line_to(it, &to)
+}
+
+/// The arc part of a CT/LCT approach or departure (mm, degrees).
+fn arc_part(
+    it: &mut Interp<'_, '_>,
+    a: &Approach,
+    span: Span,
+    exprs: &Arena<Expr>,
+) -> Result<Option<ArcPart>, Stop> {
+    if !matches!(
+        a.kind,
+        ApproachKind::ArcTangent | ApproachKind::LineArcTangent
+    ) {
+        return Ok(None);
+    }
+    let radius = match &a.radius {
+        Some(v) => {
+            let r = it.value(v, exprs)?;
+            it.state.to_mm(r)
+        }
+        None => 0.0,
+    };
+    if radius.abs() < 1e-9 {
+        return Err(no_direction(
+            span,
+            "the arc of APPR/DEP CT or LCT needs a radius R",
+        ));
+    }
+    let angle = match (&a.angle, a.kind) {
+        (Some(v), ApproachKind::ArcTangent) => Some(it.value(v, exprs)?.abs()),
+        (None, ApproachKind::ArcTangent) => Some(0.0),
+        _ => None,
+    };
+    Ok(Some(ArcPart { radius, angle }))
+}
+
+/// The compensation side the approach or departure turns by.
+pub(super) fn side(it: &Interp<'_, '_>) -> CompSide {
+    match it.state.comp_side {
+        CompSide::Off => it.heidenhain.side.unwrap_or(CompSide::Off),
+        s => s,
+    }
+}
+
+/// APPR CT/LCT before the first contour line (direction `d` at PA).
+fn before_line_arc(
+    it: &mut Interp<'_, '_>,
+    ap: PendingApproach,
+    a: ArcPart,
+    d: (f64, f64),
+) -> Result<(), Stop> {
+    let (ps, pa) = (ap.start, ap.contour);
+    let s = arc::turn(side(it), a.radius);
+    let Some(h) = arc::approach_point((ps[0], ps[1]), (pa[0], pa[1]), d, a, s) else {
+        return Err(super::corner::no_fit(
+            it,
+            ap.span,
+            "APPR LCT starts inside the approach arc: no straight line can touch it",
+        ));
+    };
+    let mut ph = pa;
+    ph[0] = h.0;
+    ph[1] = h.1;
+    let c = arc::centre((pa[0], pa[1]), d, a.radius.abs(), s);
+    let saved = it.span;
+    it.span = ap.span;
+    it.state.pos = ap.start;
+    it.comp_block(ap.span);
+    let r = arc::line_to(it, &ph).and_then(|_| arc::arc_to(it, &pa, c, s));
+    it.span = saved;
+    r?;
+    siemens::arcs::note_straight(it, ph);
+    Ok(())
 }

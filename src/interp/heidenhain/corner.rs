@@ -1,10 +1,12 @@
-//! `RND`/`CHF` corners between two straight lines.
+//! `RND`/`CHF` corners between two straight lines (a rounding between a
+//! line and an arc: [`super::corner_arc`]).
 //!
 //! A straight feed move is held back until the next block that does
 //! something on the machine: if that block is a `RND`/`CHF`, the corner is
 //! cut between the held line and the next one (shortening both);
-//! otherwise the held line is sent as it was. A corner next to an arc is
-//! reported (E0561) [?: the TNC also rounds between lines and arcs].
+//! otherwise the held line is sent as it was. A chamfer next to an arc is
+//! E0561 (it joins two lines); a rounding after an arc that is not held
+//! (CT, helix) is reported as not run yet [?: the TNC rounds there too].
 
 use super::super::comp::MoveKind;
 use super::super::machine::pose6;
@@ -21,11 +23,26 @@ pub struct Held {
     pub to: [f64; 9],
     pub span: Span,
     pub corner: Option<(CornerKind, f64, Span)>,
+    /// An arc (centre in base mm, counterclockwise?) rather than a line.
+    pub arc: Option<((f64, f64), bool)>,
+}
+
+/// Sends a held element as it was.
+pub(super) fn send_held(it: &mut Interp<'_, '_>, h: &Held) -> Result<(), Stop> {
+    match h.arc {
+        Some((c, ccw)) => super::held_arc::send_arc(it, &h.from, &h.to, c, ccw, h.span),
+        None => send_line(it, &h.from, &h.to, h.span),
+    }
 }
 
 /// Before a block runs: a held line is sent unless the block is a corner
 /// or only control flow.
-pub fn flush_before(it: &mut Interp<'_, '_>, block: &Block) -> Result<(), Stop> {
+pub fn flush_before(
+    it: &mut Interp<'_, '_>,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    super::depart::depart_before_comp_off(it, block, exprs)?;
     if let Some(ap) = &it.heidenhain.approach {
         let machine = block.stmts.iter().any(|s| phase(&s.kind) > 1);
         let moves = block
@@ -51,7 +68,12 @@ pub fn flush_before(it: &mut Interp<'_, '_>, block: &Block) -> Result<(), Stop> 
         .stmts
         .iter()
         .any(|s| matches!(s.kind, StmtKind::Motion(_)));
-    if machine && !corner && !moves {
+    // `CC` between a corner and the arc after it moves nothing.
+    let pole_only = block
+        .stmts
+        .iter()
+        .all(|s| phase(&s.kind) <= 1 || matches!(s.kind, StmtKind::Pole(_)));
+    if machine && !corner && !moves && !pole_only {
         return flush(it);
     }
     if moves {
@@ -80,7 +102,7 @@ pub fn flush(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
             "RND/CHF needs a straight line after it in the working plane",
         ));
     }
-    send_line(it, &h.from, &h.to, h.span)
+    send_held(it, &h)
 }
 
 pub(super) fn send_line(
@@ -104,7 +126,7 @@ pub(super) fn no_fit(it: &Interp<'_, '_>, span: Span, why: &str) -> Stop {
     Stop::Error(
         Diagnostic::new(Code::KlartextCornerCannotFit, why.to_string())
             .primary(span, "this corner")
-            .help("a rounding or chamfer joins two straight lines in the working plane and must fit on both"),
+            .help("a rounding joins two lines, or a line and the arc after it, and a chamfer two lines, in the working plane; each must fit on both elements"),
     )
 }
 
@@ -123,6 +145,14 @@ pub fn corner(
             h.corner = Some((kind, v, span));
             Ok(())
         }
+        None if it.heidenhain.after_arc && matches!(kind, CornerKind::Round | CornerKind::RoundModal) => Err(Stop::Error(
+            Diagnostic::new(
+                Code::UnsupportedHere,
+                "a rounding after this arc (a helix, a straight CT, a tilted or mirrored frame) is not run yet",
+            )
+            .primary(span, "this corner")
+            .help("cncc rounds between lines and plain C, CR or CP arcs in the XY plane; program the rounding as its own arc"),
+        )),
         _ => Err(no_fit(
             it,
             span,
@@ -139,6 +169,9 @@ pub(super) fn corner_join(
     h: Held,
     to: &[f64; 9],
 ) -> Result<[f64; 9], Stop> {
+    if h.arc.is_some() {
+        return super::held_arc::arc_then_line(it, h, to);
+    }
     let Some((kind, size, cspan)) = h.corner else {
         send_line(it, &h.from, &h.to, h.span)?;
         return Ok(h.to);

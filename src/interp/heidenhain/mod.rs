@@ -1,7 +1,9 @@
 //! Heidenhain Klartext semantics in the interpreter: the pole (`CC`), arcs
 //! round it (`C`, `CP`), polar lines (`LP`), `RND`/`CHF` corners, cycle
 //! definitions and calls, old-style cycles (1 pecking, 7 datum shift,
-//! 8 mirror, 9 dwell, 10 rotation, 11 scaling), `END PGM`.
+//! 8 mirror, 9 dwell, 10 rotation, 11 scaling), `END PGM`; `APPR`/`DEP`
+//! (LT, LN, CT, LCT), paraxial `R+`/`R-`, `TOOL CALL` DL/DR, and the
+//! function blocks FN 14..20, `PLANE`, FK ([`functions`]).
 //!
 //! Arcs, `CT` and the coordinate transformations go through the Siemens
 //! machinery (capability `frame-arcs`): a `C` block becomes an arc with an
@@ -10,7 +12,10 @@
 //! Sources: `reference/dialects.md` §2; assumptions are marked `[?]`.
 
 mod approach;
+mod approach_arc;
 mod corner;
+mod corner_arc;
+mod corner_arcs;
 mod cycles;
 mod cycles_bore;
 mod cycles_geom;
@@ -18,9 +23,14 @@ mod cycles_helix;
 mod cycles_old;
 mod cycles_run;
 mod cycles_slot;
+mod depart;
+mod functions;
+mod held_arc;
 mod mapping;
+mod paraxial;
 mod paths;
 mod pattern;
+mod tooldelta;
 
 use super::{Interp, Stop};
 use crate::diag::Code;
@@ -28,6 +38,7 @@ use crate::ir::{Arena, Block, Expr, Stmt, StmtKind};
 
 pub use corner::{flush, flush_before};
 pub use paths::motion;
+pub use tooldelta::{radius_comp, tool_change};
 
 /// The Heidenhain part of the machine state.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -57,6 +68,14 @@ pub struct HeidenhainState {
     /// The compensation side of the last APPR (DEP leaves on that side
     /// even when its own R0 has already switched compensation off).
     pub side: Option<crate::ir::CompSide>,
+    /// `DL`/`DR` of the last TOOL CALL (mm): added to the tool's length
+    /// offset and compensation radius.
+    pub oversize: [f64; 2],
+    /// A `DEP CT`/`LCT` already run before its block's `R0` (see
+    /// [`approach::depart_before_comp_off`]).
+    pub departed: bool,
+    /// The last path element was an arc (a rounding after it is not run).
+    pub after_arc: bool,
 }
 
 /// `TOOL DEF 5 L+50 R+3`: the tool's radius (and length) in the run's
@@ -121,10 +140,11 @@ fn tool_def(
     Ok(())
 }
 
-/// After `TOOL CALL`: Q108 holds the active tool radius [K: TNC system
-/// parameter], as programs such as corpus `Plan.h` expect.
+/// After `TOOL CALL`: Q108 holds the active tool radius with the DR of
+/// the call [K: TNC system parameter], as programs such as corpus
+/// `Plan.h` expect.
 pub fn tool_called(it: &mut Interp<'_, '_>) {
-    let r = mapping::tool_radius(it);
+    let r = mapping::tool_radius(it) + it.state.to_prog(it.heidenhain.oversize[1]);
     it.params.set_q(crate::ir::QBank::Q, 108, r);
 }
 
@@ -155,9 +175,10 @@ pub fn exec(
             length,
             radius,
         } => tool_def(it, tool, length, radius, exprs),
-        // The blank says nothing the run uses; oversizes DL/DR are not
-        // applied [?].
-        StmtKind::Stock { .. } | StmtKind::ToolOversize { .. } => Ok(()),
+        // The blank says nothing the run uses.
+        StmtKind::Stock { .. } => Ok(()),
+        StmtKind::ToolOversize { .. } => tooldelta::oversize_alone(it, block, exprs),
+        StmtKind::TncFunction(f) => functions::exec(it, f, s.span, exprs),
         StmtKind::ProgramEnd { .. } => {
             corner::flush(it)?;
             super::machine::program_end(it, true)

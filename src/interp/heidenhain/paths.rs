@@ -3,7 +3,7 @@
 
 use super::super::target::{target, Frame};
 use super::super::{exec::phase, motion as core_motion, siemens, Interp, Stop};
-use super::corner::{corner_join, no_fit, send_line, Held};
+use super::corner::{corner_join, send_held, send_line, Held};
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{
     Arena, Axes, Block, Coord, Decimal, DimMode, Expr, ExprKind, Motion, MotionKind, Stmt,
@@ -23,7 +23,7 @@ fn num(v: f64, it: &Interp<'_, '_>) -> Value {
     Value::Number(Decimal::from_f64(it.state.to_prog(v), 6))
 }
 
-fn abs_coord(v: f64, it: &Interp<'_, '_>, span: Span) -> Coord {
+pub(super) fn abs_coord(v: f64, it: &Interp<'_, '_>, span: Span) -> Coord {
     Coord {
         value: num(v, it),
         dim: Some(DimMode::Absolute),
@@ -140,17 +140,23 @@ pub fn motion(
         return Ok(());
     }
     let m2 = rewrite(it, m, exprs)?;
+    let m2 = super::paraxial::apply(it, block, m2, exprs)?;
     let line = m2.kind == MotionKind::Linear;
     if let Some(ap) = it.heidenhain.approach.take() {
-        if !line {
-            return Err(super::approach::no_direction(
-                ap.span,
-                "APPR LT/LN needs a straight feed line after it [?]",
-            ));
+        if line {
+            let to = target(it, &m2.target, exprs, Frame::Program)?;
+            super::approach::before_line(it, ap, &to)?;
+        } else {
+            let Some(d) = super::held_arc::start_direction(it, &m2, &ap.contour, exprs)? else {
+                return Err(super::approach::no_direction(
+                    ap.span,
+                    "APPR needs a straight feed line or a C, CR or CP arc after it",
+                ));
+            };
+            super::approach::before_dir(it, ap, d)?;
         }
-        let to = target(it, &m2.target, exprs, Frame::Program)?;
-        super::approach::before_line(it, ap, &to)?;
     }
+    it.heidenhain.after_arc = !line && m2.kind != MotionKind::Rapid;
     if line {
         let to = target(it, &m2.target, exprs, Frame::Program)?;
         let from = it.state.pos;
@@ -177,6 +183,7 @@ pub fn motion(
                 to,
                 span: it.span,
                 corner: None,
+                arc: None,
             });
             return Ok(());
         }
@@ -184,11 +191,19 @@ pub fn motion(
         siemens::arcs::note_straight(it, start);
         return after(it, s, block, exprs);
     }
+    let holdable = block
+        .stmts
+        .iter()
+        .all(|x| phase(&x.kind) <= 20 && !after_move(&x.kind));
     if let Some(h) = it.heidenhain.held.take() {
-        if let Some((_, _, span)) = h.corner {
-            return Err(no_fit(it, span, "RND/CHF between a line and an arc is not supported here [?]; the element after it must be a straight line"));
+        if h.corner.is_some() {
+            super::corner_arc::line_then_arc(it, h, &m2, block, exprs, holdable)?;
+            return after(it, s, block, exprs);
         }
-        send_line(it, &h.from, &h.to, h.span)?;
+        send_held(it, &h)?;
+    }
+    if holdable && super::held_arc::hold_arc(it, &m2, block, exprs)? {
+        return Ok(());
     }
     if m2.kind == MotionKind::ArcTangent && it.siemens.tangent.is_none() {
         return Err(super::approach::no_direction(

@@ -23,6 +23,7 @@ impl Printer<'_> {
                 s
             }
             K::Raw { dialect, text } => format!("raw {dialect} {text:?}"),
+            K::TncFunction(f) => format!("tnc-function {} {:?}", f.kind.name(), f.text),
             K::ProgramEnd { name: n } => match n {
                 Some(n) => format!("program-end name={n:?}"),
                 None => "program-end".into(),

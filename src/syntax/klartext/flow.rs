@@ -3,11 +3,10 @@
 //!
 //! FN 0..8 and 13 become assignments (FN 8 `a LEN b` = √(a²+b²), FN 13
 //! `a ANG b` = the angle of (a, b)); FN 9..12 conditional jumps to a label;
-//! the other FN functions (14 ERROR, 18 SYSREAD, ...) are kept as text
-//! with a W0005 warning.
+//! FN 14..20 are read in [`super::functions`]; other FN functions (table
+//! access 26..28 ...) are kept as text with a W0005 warning.
 
 use super::build::{Ctx, Signed};
-use super::cycles::kept;
 use super::lexer::Spanned3;
 use super::token::Tok;
 use crate::diag::Code;
@@ -225,11 +224,6 @@ pub fn fn_if(
         cond: Some(cond),
     };
     vec![ctx.stmt(k, l, r)]
-}
-
-/// FN 14 and later (ERROR, PRINT, SYSREAD, ...): kept as text.
-pub fn fn_other(ctx: &mut Ctx<'_>, l: usize, r: usize) -> Vec<Item> {
-    vec![kept(ctx, l, r)]
 }
 
 /// `Q1 = Q2 * 3`.

@@ -35,13 +35,21 @@
 //!   `SubReturn`); `CALL LBL n` a `Call` of kind `Label`; `CALL LBL n REP m`
 //!   a `SectionRepeat` from the label to the call; `FN 9..12` a `Goto`
 //!   with a condition; Q parameters are [`Var::Q`](crate::ir::Var::Q).
+//! * `FN 14` ERROR, `FN 15/16` PRINT/F-PRINT, `FN 18` SYSREAD, `FN 17/19/20`
+//!   (SYSWRITE, PLC, WAIT FOR), `PLANE ...`, the FK blocks (`FL`, `FC`,
+//!   `FPOL` ...) and the paraxial `R+`/`R-` of an `L` block are
+//!   [`StmtKind::TncFunction`]: what they ask and their text as written,
+//!   which the Klartext writer writes back ([`functions`]).
 
+mod approach;
 mod build;
 mod cycles;
 mod fast;
 mod flow;
+mod functions;
 mod lexer;
 mod nodes;
+mod paraxial;
 mod path;
 mod program;
 mod token;
@@ -307,7 +315,7 @@ fn body(
         used_comments: Vec::new(),
     };
     if let Some((a, Tok::Name(n), b)) = toks.first() {
-        if n != "M" {
+        if n != "M" && !functions::starts_block(n) {
             let mut w = vec![build::WordNode::new(n.clone(), None, None, *a, *b)];
             // The next name too: `CYCLE DEF` gets its own message.
             if let Some((a, Tok::Name(n), b)) = toks.get(1) {

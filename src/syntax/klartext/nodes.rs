@@ -3,7 +3,7 @@
 
 use super::build::{Ctx, Node};
 use super::token::Tok;
-use super::{cycles, flow, path, program};
+use super::{approach, cycles, flow, functions, path, program};
 use crate::diag::{Code, Diagnostic};
 use crate::span::Span;
 use crate::syntax::Item;
@@ -18,18 +18,21 @@ pub(super) fn items(ctx: &mut Ctx<'_>, node: Node, l: usize, r: usize) -> Vec<It
         Node::ToolCall(t, w) => program::tool_call(ctx, t, &w, l, r),
         Node::Path(k, w) => path::path(ctx, k, &w, l, r),
         Node::Chamfer(s, w) => path::chamfer(ctx, &s, &w, l, r),
-        Node::Approach(dep, w) => path::approach(ctx, dep, &w, l, r),
+        Node::Approach(dep, w) => approach::approach(ctx, dep, &w, l, r),
         Node::Label(id, il, ir) => flow::label(ctx, id, il, ir, l, r),
         Node::CallLabel(at) => flow::call_label(ctx, at, l, r),
         Node::CallPgm(at) => flow::call_pgm(ctx, at, l, r),
         Node::FnAssign(n, (var, ..), rhs) => flow::fn_assign(ctx, n, var, &rhs, l, r),
         Node::FnIf(n, a, op, b, id, ..) => flow::fn_if(ctx, n, &a, &op, &b, id, l, r),
-        Node::FnOther(_, _) => flow::fn_other(ctx, l, r),
+        Node::FnOther(n, at) => functions::fn_other(ctx, n, at, l, r),
         Node::Formula((var, ..), e) => flow::formula(ctx, var, e, l, r),
         Node::CyclDef(at) => cycles::cycl_def(ctx, at, l, r),
         Node::CyclCall(w) => cycles::cycl_call(ctx, &w, l, r),
         Node::PatternDef(at) => cycles::pattern_def(ctx, at, l, r),
         Node::Stop(w) => program::stop(ctx, &w, l, r),
+        Node::Words(w) if w.first().is_some_and(|f| functions::starts_block(&f.name)) => {
+            functions::word_block(ctx, &w, l, r)
+        }
         Node::Words(w) => program::bare(ctx, &w),
     }
 }

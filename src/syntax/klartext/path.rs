@@ -12,8 +12,8 @@ use super::build::{Ctx, Signed, WordNode};
 use super::token::Kw;
 use crate::diag::Code;
 use crate::ir::{
-    Approach, ApproachKind, ArcDir, Axes, CompSide, Coord, CornerKind, CycleRunKind, DimMode,
-    ExprKind, Motion, MotionKind, SpindleState, StmtKind, Value,
+    ApproachKind, ArcDir, Axes, CompSide, Coord, CornerKind, CycleRunKind, DimMode, ExprKind,
+    Motion, MotionKind, SpindleState, StmtKind, Value,
 };
 use crate::syntax::Item;
 
@@ -25,12 +25,12 @@ pub(super) struct Said {
     pub(super) axes: Axes,
     rapid: bool,
     dir: Option<ArcDir>,
-    radius: Option<Value>,
+    pub(super) radius: Option<Value>,
     polar_r: Option<Value>,
     polar_a: Option<Value>,
-    len: Option<Value>,
-    cca: Option<Value>,
-    kind: Option<ApproachKind>,
+    pub(super) len: Option<Value>,
+    pub(super) cca: Option<Value>,
+    pub(super) kind: Option<ApproachKind>,
     pos: bool,
     pat: bool,
     pub(super) items: Vec<Item>,
@@ -99,6 +99,15 @@ fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said, radius_ok: bool)
             s.items.push(ctx.stmt(comp(CompSide::Off), l, r))
         }
         ("R", Some(v)) if radius_ok => s.radius = Some(v),
+        // `R+`/`R-`: paraxial (the block's axis checked in [`path`]).
+        ("R", None) if w.sign.is_some() && !radius_ok => {
+            let f = crate::ir::TncFunction {
+                text: format!("R{}", w.sign.unwrap_or('+')),
+                kind: crate::ir::TncFunctionKind::Paraxial(w.sign == Some('+')),
+            };
+            s.items
+                .push(ctx.stmt(StmtKind::TncFunction(Box::new(f)), l, r))
+        }
         ("R", Some(_)) => ctx.error(
             Code::KlartextWordNotAllowed,
             l,
@@ -223,6 +232,9 @@ pub fn path(ctx: &mut Ctx<'_>, kw: Kw, words: &[WordNode], l: usize, r: usize) -
     };
     let mut s = read_words(ctx, words, allowed, axes_ok);
     let mut out = std::mem::take(&mut s.items);
+    if !super::paraxial::fits(ctx, kw, &s.axes, &out, l, r) {
+        return Vec::new();
+    }
     let need = |ctx: &mut Ctx<'_>, what: &str, help: &str| {
         ctx.error(Code::KlartextMissingWord, l, r, what.to_string(), help)
     };
@@ -297,40 +309,5 @@ pub fn chamfer(
         size,
     };
     out.insert(0, ctx.stmt(kind, l, r));
-    out
-}
-
-/// `APPR LT X.. Y.. LEN10 RR F300`, `DEP CT CCA90 R+5 F..`.
-pub fn approach(
-    ctx: &mut Ctx<'_>,
-    depart: bool,
-    words: &[WordNode],
-    l: usize,
-    r: usize,
-) -> Vec<Item> {
-    let allowed = [
-        "LT", "LN", "CT", "LCT", "LEN", "CCA", "R", "R0", "RL", "RR", "F", "FMAX", "M",
-    ];
-    let mut s = read_words(ctx, words, &allowed, true);
-    let mut out = std::mem::take(&mut s.items);
-    let Some(kind) = s.kind else {
-        ctx.error(
-            Code::KlartextMissingWord,
-            l,
-            r,
-            "APPR/DEP needs its kind: LT, LN, CT or LCT",
-            "write e.g. `APPR LT X+0 Y+0 LEN10 RL`",
-        );
-        return out;
-    };
-    let a = Approach {
-        depart,
-        kind,
-        target: s.axes,
-        len: s.len,
-        radius: s.radius,
-        angle: s.cca,
-    };
-    out.insert(0, ctx.stmt(StmtKind::Approach(Box::new(a)), l, r));
     out
 }

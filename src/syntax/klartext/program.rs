@@ -191,10 +191,11 @@ pub fn bare(ctx: &mut Ctx<'_>, words: &[WordNode]) -> Vec<Item> {
 fn suggestion(name: &str) -> String {
     const KNOWN: &[&str] = &[
         "CYCL", "TOOL", "CALL", "LBL", "BLK", "PATTERN", "APPR", "DEP", "STOP", "RND", "CHF",
+        "PLANE",
     ];
     match KNOWN.iter().find(|k| name.starts_with(*k) || k.starts_with(name)) {
         Some(k) => format!("did you mean `{k}`?"),
-        None => "a block starts with L, C, CC, CR, CT, LP, CP, CTP, RND, CHF, APPR, DEP, LBL, CALL, FN, CYCL, TOOL, BLK FORM, PATTERN DEF, STOP, Qn = or M".into(),
+        None => "a block starts with L, C, CC, CR, CT, LP, CP, CTP, RND, CHF, APPR, DEP, LBL, CALL, FN, CYCL, TOOL, BLK FORM, PATTERN DEF, PLANE, STOP, an FK function (FL, FC, FPOL ...), Qn = or M".into(),
     }
 }
 

@@ -1,0 +1,206 @@
+//! Running the Heidenhain function blocks ([`TncFunction`]): FN 14 stops
+//! the run with the program's own error (E0519); FN 15/16 print a
+//! `MESSAGE`; FN 18 reads the system data the run knows (E0520 for the
+//! others); FN 17/19/20 are reported (W0513) and skipped; `PLANE` runs when
+//! it tilts nothing (E0521 otherwise); FK blocks stop the run (not
+//! interpreted).
+//!
+//! FN 18 data numbers are those of the TNC system data table (technical
+//! manuals TNC 426/430, iTNC 530); the values are metric as the TNC 7
+//! manual says SYSREAD always gives them [?: older controls may give
+//! program units].
+
+use super::super::{siemens, Interp, Stop};
+use crate::canon::Canon;
+use crate::canon::CanonPlane;
+use crate::diag::{Code, Diagnostic};
+use crate::ir::{Arena, Expr, PrintItem, TiltPlane, TncFunction, TncFunctionKind, Var};
+use crate::span::Span;
+
+/// Runs one function block.
+pub fn exec(
+    it: &mut Interp<'_, '_>,
+    f: &TncFunction,
+    span: Span,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    match &f.kind {
+        TncFunctionKind::Error(v) => {
+            let n = it.value(v, exprs)?;
+            Err(Stop::Error(
+                Diagnostic::new(
+                    Code::KlartextProgramError,
+                    format!("the program stopped with its error {}", number(n)),
+                )
+                .primary(span, "FN 14 raises the program's own error here")
+                .help("the program's own check failed; see the comments near this block for what the number means"),
+            ))
+        }
+        TncFunctionKind::Print(items) => {
+            let mut text = String::new();
+            for i in items {
+                match i {
+                    PrintItem::Text(t) => text.push_str(t),
+                    PrintItem::Value(v) => text.push_str(&number(it.value(v, exprs)?)),
+                }
+            }
+            it.out(Canon::Message(text));
+            Ok(())
+        }
+        TncFunctionKind::FormattedPrint { spec } => {
+            it.diags.push(
+                Diagnostic::new(
+                    Code::FormattedPrintNotRead,
+                    "FN 16: F-PRINT: the mask file is not read",
+                )
+                .primary(span, "shown as a MESSAGE naming the mask and the output")
+                .help("the values the mask would format are not printed"),
+            );
+            it.out(Canon::Message(format!("F-PRINT {spec}")));
+            Ok(())
+        }
+        TncFunctionKind::SysRead { var, id, nr, idx } => {
+            let i = match idx {
+                Some(v) => Some(it.value(v, exprs)?.round() as i64),
+                None => None,
+            };
+            let Some(value) = system_datum(it, *id, *nr, i) else {
+                let at = match i {
+                    Some(i) => format!("ID{id} NR{nr} IDX{i}"),
+                    None => format!("ID{id} NR{nr}"),
+                };
+                return Err(Stop::Error(
+                    Diagnostic::new(
+                        Code::KlartextUnknownSystemDatum,
+                        format!("FN 18: the system datum {at} is not known to the run"),
+                    )
+                    .primary(span, "read here")
+                    .help("cncc knows ID10 NR1/3, ID20 NR1/3/4/9, ID50 NR1/2, ID60 NR1/4/5, ID200 NR1/2 and ID270 NR1 IDX1..9 (see `cncc explain E0520`)"),
+                ));
+            };
+            if let Var::Q(bank, n) = var {
+                it.params.set_q(*bank, *n, value);
+            }
+            Ok(())
+        }
+        TncFunctionKind::MachineOnly(n) => {
+            let what = match n {
+                17 => "FN 17: SYSWRITE writes machine data",
+                19 => "FN 19: PLC sends values to the PLC",
+                _ => "FN 20: WAIT FOR waits for the PLC or a synchronisation",
+            };
+            it.diags.push(
+                Diagnostic::new(Code::MachineFunctionNotRun, format!("{what}: not run"))
+                    .primary(span, "skipped")
+                    .help("the run has no machine data or PLC; check what the program expects of this block"),
+            );
+            Ok(())
+        }
+        TncFunctionKind::Plane(p) => plane(it, p, span, exprs),
+        // Applied to the block's move (see `paraxial`).
+        TncFunctionKind::Paraxial(_) => Ok(()),
+        TncFunctionKind::FreeContour(k) => Err(Stop::Error(
+            Diagnostic::new(
+                Code::UnsupportedHere,
+                format!("FK free contour programming (`{k}`) is not interpreted"),
+            )
+            .primary(span, "an FK block")
+            .help("the block is kept and written back to Heidenhain; to run or port the program, program the contour with L, C, CR and CT blocks"),
+        )),
+    }
+}
+
+/// A value as the TNC shows it: up to four decimals.
+fn number(v: f64) -> String {
+    let s = format!("{v:.4}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.to_string()
+    }
+}
+
+/// The system data the run knows (mm, as FN 18 gives them).
+fn system_datum(it: &Interp<'_, '_>, id: u32, nr: u32, idx: Option<i64>) -> Option<f64> {
+    let tool = it.state.tool_in_spindle;
+    let tool_axis = match it.state.plane {
+        CanonPlane::YZ => 0.0,
+        CanonPlane::XZ => 1.0,
+        _ => 2.0,
+    };
+    let table = |t: i64| it.tool_table.get(t);
+    let inch = matches!(it.opts.machine_units, crate::ir::LengthUnit::Inch);
+    let machine_mm = |v: f64| if inch { v * 25.4 } else { v };
+    Some(match (id, nr) {
+        (10, 1) => match it.state.units {
+            crate::ir::LengthUnit::Mm => 0.0,
+            crate::ir::LengthUnit::Inch => 1.0,
+        },
+        (10, 3) => it
+            .heidenhain
+            .cycle
+            .as_ref()
+            .map_or(0.0, |c| c.number as f64),
+        (20, 1) => tool as f64,
+        (20, 3) => tool_axis,
+        (20, 4) => it.state.speed,
+        (20, 9) => it.state.to_mm(it.state.feed),
+        (50, 1) => machine_mm(table(idx.unwrap_or(tool))?.offset[2]),
+        (50, 2) => machine_mm(table(idx.unwrap_or(tool))?.diameter / 2.0),
+        (60, 1) => tool as f64,
+        (60, 4) => it.heidenhain.oversize[0],
+        (60, 5) => it.heidenhain.oversize[1],
+        (200, 1) => it.state.comp_radius,
+        (200, 2) => it.state.tool_offset[tool_axis as usize],
+        (270, 1) => {
+            let i = usize::try_from(idx?).ok().filter(|i| (1..=9).contains(i))?;
+            let p = it.state.pos;
+            if i <= 3 {
+                siemens::from_base(it, [p[0], p[1], p[2]])[i - 1]
+            } else {
+                p[i - 1]
+            }
+        }
+        _ => return None,
+    })
+}
+
+/// `PLANE`: RESET and a plane that tilts nothing run; a tilt is E0521.
+fn plane(
+    it: &mut Interp<'_, '_>,
+    p: &TiltPlane,
+    span: Span,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    let mut vals = Vec::with_capacity(p.values.len());
+    for (name, v) in &p.values {
+        vals.push((name.as_str(), it.value(v, exprs)?));
+    }
+    let get = |n: &str| vals.iter().find(|(k, _)| *k == n).map_or(0.0, |(_, v)| *v);
+    let flat = match p.how.as_str() {
+        "RESET" => true,
+        // The base vector along +X and the normal along +Z: no tilt.
+        "VECTOR" => {
+            get("NX").abs() < 1e-9
+                && get("NY").abs() < 1e-9
+                && get("NZ") > 0.0
+                && get("BY").abs() < 1e-9
+                && get("BX") > 0.0
+        }
+        // [?] the three points are not kept: any POINTS plane is a tilt.
+        "POINTS" => false,
+        _ => vals.iter().all(|(_, v)| v.abs() < 1e-9),
+    };
+    if flat {
+        return Ok(());
+    }
+    Err(Stop::Error(
+        Diagnostic::new(
+            Code::TiltNeedsRotaryAxes,
+            format!("PLANE {} tilts the working plane: that needs rotary axes", p.how),
+        )
+        .primary(span, "this tilt")
+        .help("cncc runs programs on a 3-axis machine; PLANE RESET and a zero tilt run, a tilt does not"),
+    ))
+}
