@@ -73,7 +73,16 @@ pub(super) fn other(w: &mut Writer<'_>, out: &mut Out, s: &Stmt) {
     let line = match &s.kind {
         K::ProgramStart { number, name } => {
             let n = super::program_name(*number, name.as_deref()).unwrap_or_else(|| "PGM".into());
-            Some(format!("BEGIN PGM {n} {}", unit_word(out.unit)))
+            out.lines
+                .push(format!("BEGIN PGM {n} {}", unit_word(out.unit)));
+            // What the name after BEGIN PGM cannot hold stays as a comment.
+            if let Some(text) = name.as_deref().filter(|t| *t != n) {
+                out.lines.push(format!("; {text}"));
+            }
+            if let Some(num) = number.filter(|k| k.to_string() != n) {
+                out.lines.push(format!("; program number {num}"));
+            }
+            None
         }
         K::ProgramEnd { name } => Some(format!(
             "END PGM {} {}",
