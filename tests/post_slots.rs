@@ -111,7 +111,10 @@ fn save(name: &str, text: &str) -> PathBuf {
 /// text.
 fn check_and_raise(name: &str, text: &str, dialect: &str) -> String {
     let path = save(name, text);
-    let table = save("ex1.tbl", "T1 P1 D18 Z80\nT2 P2 D20 Z90\nT3 P3 D22 Z100\n");
+    let table = save(
+        &format!("{name}.tbl"),
+        "T1 P1 D18 Z80\nT2 P2 D20 Z90\nT3 P3 D22 Z100\n",
+    );
     let path = path.to_str().unwrap();
     let o = common::cncc(&["check", "--dialect", dialect, path]);
     let err = common::stderr(&o);

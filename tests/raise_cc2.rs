@@ -835,3 +835,32 @@ fn cli_part21_snapshot() {
     let data = &text[text.find("DATA;").expect("a DATA section")..];
     insta::assert_snapshot!("cc2part_part21", data);
 }
+
+/// The same command without `--machine-units mm`: the table is read in
+/// inches (LinuxCNC's default), its 20 mm face mill would be 508 mm
+/// across, and W0864 says so on the table's line; with mm it is silent.
+#[test]
+fn a_metric_table_read_in_inches_is_named() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/programs/raise2");
+    let run = |units: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_cncc"))
+            .args(["stepnc", "--cc2", "--stock", "120x80x21+0+0-20"])
+            .args(units)
+            .arg("--tool-table")
+            .arg(dir.join("cc2part.tbl"))
+            .arg(dir.join("cc2part.nc"))
+            .env("NO_COLOR", "1")
+            .output()
+            .expect("cncc runs")
+    };
+    let inch = run(&[]);
+    let err = String::from_utf8_lossy(&inch.stderr);
+    assert_eq!(inch.status.code(), Some(0), "{err}");
+    assert!(err.contains("warning[W0864 tool-table-units]"), "{err}");
+    assert!(err.contains("tool 1 is 508.0 mm across"), "{err}");
+    assert!(err.contains("cc2part.tbl:1:1"), "{err}");
+    assert!(err.contains("--machine-units mm"), "{err}");
+    let mm = run(&["--machine-units", "mm"]);
+    let err = String::from_utf8_lossy(&mm.stderr);
+    assert!(!err.contains("W0864"), "{err}");
+}

@@ -16,6 +16,7 @@ pub mod query;
 pub mod raise;
 pub mod stats;
 pub mod stepnc;
+pub mod tool_table;
 
 use args::{Cli, Command, Format};
 use context::{Context, Failure, EXIT_USAGE};

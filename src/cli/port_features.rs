@@ -8,8 +8,9 @@
 use crate::cli::check::{keep_lines, read_head};
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::cli::port::PortArgs;
+use crate::cli::tool_table;
 use crate::diag::Diagnostic;
-use crate::interp::{tooltable::ToolTable, Options};
+use crate::interp::Options;
 use crate::post::features::{mismatch, verify_features};
 use crate::raise::{raise_file, Level, RaiseOptions, Stock};
 use std::path::Path;
@@ -46,8 +47,7 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
     }
     let mut diags = Vec::new();
     if let Some(t) = f.tool_table {
-        let (tid, ttext) = ctx.add_file(t)?;
-        let (table, d) = ToolTable::parse(&ttext, tid);
+        let (table, d) = tool_table::load(ctx, t, f.options.machine_units)?;
         diags.extend(d);
         f.options.tool_table = table;
     }

@@ -7,7 +7,8 @@ use crate::cli::args::Format;
 use crate::cli::check::{keep_lines, read_head};
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::cli::output::{emit_output, emit_output_with};
-use crate::interp::{tooltable::ToolTable, Options};
+use crate::cli::tool_table;
+use crate::interp::Options;
 use crate::raise::{raise_file, summary::summary, Level, RaiseOptions, Stock};
 use std::path::Path;
 
@@ -35,8 +36,7 @@ pub fn run(ctx: &mut Context, mut a: RaiseArgs<'_>) -> Result<i32, Failure> {
     }
     let mut diags = Vec::new();
     if let Some(t) = a.tool_table {
-        let (tid, ttext) = ctx.add_file(t)?;
-        let (table, d) = ToolTable::parse(&ttext, tid);
+        let (table, d) = tool_table::load(ctx, t, a.options.machine_units)?;
         diags.extend(d);
         a.options.tool_table = table;
     }

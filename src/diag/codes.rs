@@ -406,6 +406,9 @@ codes! {
     RaiseCycleAsToolpath = "W0863", "raise-cycle-as-toolpath", Warning,
         "a canned cycle kept as explicit toolpaths, not as a hole",
         "Drilling, peck drilling, boring and reaming cycles become ROUND_HOLE features with their operation. A cycle whose moves match none of them (tapping, back boring, a cycle that is not vertical) is kept as the explicit toolpath of a freeform operation, so nothing is lost, but it is not a hole feature.";
+    RaiseTableLooksMetric = "W0864", "tool-table-units", Warning,
+        "a tool table read in inches whose sizes look like millimetres",
+        "LinuxCNC tool tables carry no units: their numbers are in machine units, inches unless `--machine-units mm` is given (as in LinuxCNC's standalone interpreter). Read in inches, a tool in this table is over 300 mm across, which is more likely a metric table. Pass `--machine-units mm` if its numbers are millimetres.";
     ArcBadWords = "E0512", "arc-bad-words", Error,
         "an arc without a centre or radius, or with both",
         "G2/G3 need either the centre words (I J K for the active plane) or R, not both and not neither. A full circle needs the centre words.";
