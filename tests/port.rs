@@ -79,6 +79,48 @@ fn demo_to_siemens_and_back_verifies() {
         "{fanuc}"
     );
     assert!(fanuc.contains("G80"), "{fanuc}");
+    // The tape frame and the reference return in Siemens' own forms.
+    assert!(siemens.starts_with("%_N_O2000_MPF"), "{siemens}");
+    assert!(!siemens.lines().any(|l| l == "%"), "{siemens}");
+    assert!(siemens.contains("\nG91 G74 Z1=0\nM30"), "{siemens}");
+    assert!(fanuc.contains("\nG91 G28 Z0.\nM30"), "{fanuc}");
+}
+
+/// Siemens `G74` names machine axes and goes straight home: it runs as
+/// that (Z alone, no intermediate move), reads without warnings, and
+/// ports to `G91 G28 Z0` with `G90` after it when the program was
+/// absolute; a Fanuc return through a point of its own is refused.
+#[test]
+fn reference_returns_between_g28_and_g74() {
+    let dir = tempfile::tempdir().unwrap();
+    let mpf = dir.path().join("home.mpf");
+    std::fs::write(&mpf, "G90 G0 X10 Y20 Z10\nG74 Z1=0\nG1 X5 F100\nM30\n").unwrap();
+    let mpf_s = mpf.display().to_string();
+    let check = cncc(&["check", &mpf_s]);
+    assert_eq!(check.status.code(), Some(0));
+    assert!(text(&check.stderr).is_empty(), "{}", text(&check.stderr));
+    let canon = text(&cncc(&["canon", &mpf_s]).stdout);
+    let moves: Vec<&str> = canon
+        .lines()
+        .filter(|l| l.starts_with("STRAIGHT"))
+        .collect();
+    assert_eq!(
+        moves,
+        [
+            "STRAIGHT_TRAVERSE(10.0000, 20.0000, 10.0000, 0.0000, 0.0000, 0.0000)",
+            "STRAIGHT_TRAVERSE(10.0000, 20.0000, 0.0000, 0.0000, 0.0000, 0.0000)",
+            "STRAIGHT_FEED(5.0000, 20.0000, 0.0000, 0.0000, 0.0000, 0.0000)",
+        ]
+    );
+    let fanuc = port_verified(&mpf_s, "siemens840d", "fanuc", &dir.path().join("home.nc"));
+    assert!(fanuc.contains("G91 G28 Z0.\nG90\nG1 X5. F100"), "{fanuc}");
+    let nc = dir.path().join("through.nc");
+    std::fs::write(&nc, "G21 G90\nG0 X1. Y1. Z5.\nG28 Z5.\nM30\n").unwrap();
+    let out = cncc(&["port", &nc.display().to_string(), "--to", "siemens840d"]);
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(err.contains("error[E0601 cannot-express]"), "{err}");
+    assert!(err.contains("not through a point"), "{err}");
 }
 
 #[test]

@@ -41,9 +41,12 @@ pub enum Meaning {
     MachineCoords,
     CoordShift(CoordShift),
     SetData,
+    /// `direct`: straight to the reference point along the named machine
+    /// axes (Siemens `G74 Z1=0`), no intermediate point.
     RefReturn {
         index: u8,
         store: bool,
+        direct: bool,
     },
     PathMode(PathMode),
     /// G98 = true (initial level), G99 = false (R plane).
@@ -197,6 +200,7 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
         M::RefReturn {
             index: 1,
             store: false,
+            direct: false,
         },
     ),
     (
@@ -204,6 +208,15 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
         M::RefReturn {
             index: 2,
             store: false,
+            direct: false,
+        },
+    ),
+    (
+        "ref-return.machine-axes",
+        M::RefReturn {
+            index: 1,
+            store: false,
+            direct: true,
         },
     ),
     (
@@ -211,6 +224,7 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
         M::RefReturn {
             index: 1,
             store: true,
+            direct: false,
         },
     ),
     (
@@ -218,6 +232,7 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
         M::RefReturn {
             index: 2,
             store: true,
+            direct: false,
         },
     ),
     ("path.exact-stop", M::PathMode(PathMode::ExactStop)),

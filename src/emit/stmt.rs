@@ -128,16 +128,26 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
             w.push_word(words, "L", l, NumKind::Int, span);
             w.push_words(words, list);
         }
-        K::RefReturn { index, axes, store } => {
+        K::RefReturn {
+            index,
+            axes,
+            store,
+            direct,
+        } => {
             w.push_code(
                 words,
                 Meaning::RefReturn {
                     index: *index,
                     store: *store,
+                    direct: *direct,
                 },
                 span,
             );
-            w.push_axes(words, axes);
+            if *direct {
+                w.push_machine_axes(words, axes);
+            } else {
+                w.push_axes(words, axes);
+            }
         }
         K::PathMode { mode, words: list } => {
             w.push_code(words, Meaning::PathMode(*mode), span);

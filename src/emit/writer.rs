@@ -184,6 +184,15 @@ impl<'a> Writer<'a> {
         }
     }
 
+    /// The axes a direct reference return names, as machine axes `Z1=0`.
+    pub fn push_machine_axes(&mut self, words: &mut Vec<String>, axes: &Axes) {
+        for (letter, c) in axes.iter() {
+            if let Some(w) = self.coord(&format!("{letter}1"), c, NumKind::Plain) {
+                words.push(w);
+            }
+        }
+    }
+
     /// Kept letter-value words, lengths by the target's address table.
     pub fn push_words(&mut self, words: &mut Vec<String>, list: &[Word]) {
         for w in list {

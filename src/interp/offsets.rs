@@ -38,9 +38,12 @@ pub fn exec(
             let l = it.value(l, exprs)?;
             set_data(it, l, words, exprs)
         }
-        StmtKind::RefReturn { index, axes, store } => {
-            ref_return(it, *index, axes, *store, block, exprs)
-        }
+        StmtKind::RefReturn {
+            index,
+            axes,
+            store,
+            direct,
+        } => ref_return(it, *index, axes, (*store, *direct), block, exprs),
         StmtKind::Transform(t) => super::fanuc_xform::exec(it, t, exprs),
         _ => Err(it.error_at(
             s.span,
@@ -364,7 +367,7 @@ fn ref_return(
     it: &mut Interp<'_, '_>,
     index: u8,
     axes: &Axes,
-    store: bool,
+    (store, direct): (bool, bool),
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
@@ -388,11 +391,18 @@ fn ref_return(
     } else {
         super::target::Frame::Program
     };
-    let via = super::target::target(it, axes, exprs, frame)?;
-    it.comp_block(block.span);
-    let via_pose = pose6(&it.state, &via);
-    it.straight_move(super::comp::MoveKind::Rapid, via_pose)?;
     let given = written(it, axes, exprs)?;
+    let via = if direct {
+        // Siemens G74: no intermediate point; the words only name axes.
+        it.comp_block(block.span);
+        it.state.pos
+    } else {
+        let via = super::target::target(it, axes, exprs, frame)?;
+        it.comp_block(block.span);
+        let via_pose = pose6(&it.state, &via);
+        it.straight_move(super::comp::MoveKind::Rapid, via_pose)?;
+        via
+    };
     let all = given.iter().all(|g| g.is_none());
     let mut home = via;
     for i in 0..6 {

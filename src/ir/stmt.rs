@@ -784,10 +784,13 @@ pub enum StmtKind {
         words: Vec<Word>,
     },
     /// G28/G30 (index 1/2) return via the given axes; `store` for G28.1/G30.1.
+    /// `direct`: Siemens `G74 Z1=0`, straight home along the named machine
+    /// axes (their values are not read).
     RefReturn {
         index: u8,
         axes: Box<Axes>,
         store: bool,
+        direct: bool,
     },
     PathMode {
         mode: PathMode,

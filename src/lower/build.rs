@@ -83,10 +83,19 @@ pub(super) fn code_stmt(
             axes: Box::new(words.take_axes()),
         },
         M::SetData => set_data(cw, words, ctx),
-        M::RefReturn { index, store } => StmtKind::RefReturn {
+        M::RefReturn {
             index,
             store,
-            axes: Box::new(words.take_axes()),
+            direct,
+        } => StmtKind::RefReturn {
+            index,
+            store,
+            direct,
+            axes: Box::new(if direct {
+                words.take_machine_axes()
+            } else {
+                words.take_axes()
+            }),
         },
         M::PathMode(mode) => StmtKind::PathMode {
             mode,

@@ -378,7 +378,7 @@ fn non_modal_codes_take_the_axes() {
     let o = run(&fanuc(), "G91 G28 Z0");
     assert_eq!(kinds(&o).len(), 2, "no implicit move");
     assert!(
-        matches!(kinds(&o)[1], StmtKind::RefReturn { index: 1, store: false, axes } if axes.z.is_some())
+        matches!(kinds(&o)[1], StmtKind::RefReturn { index: 1, store: false, direct: false, axes } if axes.z.is_some())
     );
     let o = run(&fanuc(), "G10 L2 P1 X-100. Y0");
     let StmtKind::SetData { l, words } = kinds(&o)[0] else {

@@ -235,6 +235,33 @@ impl Words {
         axes
     }
 
+    /// Takes the machine-axis words `X1=`..`C1=` (Siemens `G74 Z1=0`) as
+    /// the axes they name.
+    pub fn take_machine_axes(&mut self) -> Axes {
+        let mut axes = Axes::default();
+        for a in AXIS_LETTERS {
+            let mut name = [0u8; 2];
+            name[0] = a as u8;
+            name[1] = b'1';
+            let Ok(addr) = std::str::from_utf8(&name) else {
+                continue;
+            };
+            let Some(i) = self.find(addr) else { continue };
+            let e = &mut self.list[i];
+            if e.used {
+                continue;
+            }
+            e.used = true;
+            self.free -= 1;
+            if let Some(slot) = axes.slot_mut(a) {
+                put_coord(slot, &e.w);
+            }
+            let span = e.w.span;
+            self.mark_taken(span);
+        }
+        axes
+    }
+
     /// Takes the axis words into `axes` (which is left as it was for the others).
     pub fn take_axes_into(&mut self, axes: &mut Axes) {
         for a in AXIS_LETTERS {

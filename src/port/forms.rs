@@ -29,6 +29,7 @@ pub fn run(
 ) {
     cycle_dwells(p, from, to);
     program_name(p, to);
+    archive_frame(p, to);
     variables(p, to, diags);
     super::flow_ids::run(p, to, diags);
     labels(p, to);
@@ -66,6 +67,37 @@ fn program_name(p: &mut Program, to: &DialectSpec) {
             }
         }
         b.stmts.extend(titles);
+    }
+}
+
+/// Siemens programs are framed by their archive header `%_N_NAME_MPF`
+/// alone: the bare `%` tape marks of a word-address tape around it are
+/// not Siemens text, so they go once the program has its header (they
+/// carry nothing but the frame).
+fn archive_frame(p: &mut Program, to: &DialectSpec) {
+    if to.family != Family::Sinumerik {
+        return;
+    }
+    let named = p.blocks.iter().flat_map(|b| &b.stmts).any(|s| {
+        matches!(&s.kind, StmtKind::ProgramStart { name: Some(n), .. } if !n.is_empty())
+            || matches!(
+                &s.kind,
+                StmtKind::ProgramStart {
+                    number: Some(_),
+                    ..
+                }
+            )
+    });
+    if !named {
+        return;
+    }
+    let tape_only = |b: &crate::ir::Block| {
+        !b.stmts.is_empty() && b.stmts.iter().all(|s| matches!(s.kind, StmtKind::Tape))
+    };
+    p.blocks
+        .retain(|b| !tape_only(b) || b.number.is_some() || b.label.is_some());
+    for b in &mut p.blocks {
+        b.stmts.retain(|s| !matches!(s.kind, StmtKind::Tape));
     }
 }
 

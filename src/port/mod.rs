@@ -26,6 +26,7 @@
 //! * [`groups`]: a code moved to its own block where the target puts it in
 //!   the modal group of another code in the block (`G80` with `G0`).
 //! * [`arcs`]: Siemens `CIP` arcs as `G2`/`G3` with their centre.
+//! * [`ref_return`]: `G91 G28 Z0` ↔ Siemens `G74 Z1=0`.
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
 //!   as the moves the interpreter makes for it.
 //!
@@ -47,6 +48,7 @@ mod levels;
 mod loops;
 mod pockets;
 mod poles;
+mod ref_return;
 mod spf;
 pub mod subload;
 mod tnc_labels;
@@ -100,6 +102,7 @@ pub fn port_program(
     decls::run(&mut out, to, &mut diags);
     loops::run(&mut out, to, &mut diags);
     arcs::run(&mut out, from, to);
+    ref_return::run(&mut out, from, to, &mut diags);
     forms::run(&mut out, from, to, opts, &mut diags);
     spf::run(&mut out, from, to);
     groups::run(&mut out, to);

@@ -196,6 +196,7 @@ fn word_common(b: &mut Builder) {
             index: 1,
             axes: Box::new(axes(&[('Z', "0")])),
             store: false,
+            direct: false,
         },
         K::MachineCoords,
     ]);

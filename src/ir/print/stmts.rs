@@ -115,8 +115,17 @@ impl Printer<'_> {
                 format!("coord-shift {}{}", name(kind), self.axes(axes))
             }
             K::SetData { l, words } => format!("set-data L={}{}", self.value(l), self.words(words)),
-            K::RefReturn { index, axes, store } => {
-                let st = if *store { " store" } else { "" };
+            K::RefReturn {
+                index,
+                axes,
+                store,
+                direct,
+            } => {
+                let st = match (*store, *direct) {
+                    (true, _) => " store",
+                    (false, true) => " direct",
+                    (false, false) => "",
+                };
                 format!("ref-return {index}{st}{}", self.axes(axes))
             }
             K::PathMode { mode, words } => format!("path {}{}", name(mode), self.words(words)),
