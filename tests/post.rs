@@ -630,3 +630,104 @@ fn heidenhain_blk_form_comes_from_the_workpiece_block() {
     let siemens = post(&p, &builtin("siemens840d").unwrap()).unwrap().text;
     assert_eq!(siemens, posted("siemens840d").text);
 }
+
+/// Explicit (CC1) toolpaths post as they are: the CC2 test part raised
+/// with `--cc1` (freeform operations of polylines and arcs, rapid
+/// movements with their own paths, drilling as holes) posts to every
+/// dialect, each output checks clean, and `cncc diff` finds it cuts what
+/// the source program cuts, feeds included. The LinuxCNC output also
+/// runs in rs274.
+#[test]
+fn explicit_toolpaths_post_and_cut_what_the_source_cuts() {
+    let dir = common::root().join("tests/programs/raise2");
+    let src = dir.join("cc2part.nc");
+    let o = common::cncc(&[
+        "stepnc",
+        "--cc1",
+        "--machine-units",
+        "mm",
+        "--tool-table",
+        dir.join("cc2part.tbl").to_str().unwrap(),
+        src.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", common::stderr(&o));
+    let stp = save("cc1-part.stp", &common::stdout(&o));
+    assert!(common::stdout(&o).contains("FREEFORM_OPERATION"));
+    for (d, ext) in [
+        ("fanuc", "nc"),
+        ("haas", "nc"),
+        ("linuxcnc", "ngc"),
+        ("siemens840d", "mpf"),
+        ("heidenhain", "h"),
+    ] {
+        // Not `.ngc`: `runs_in_rs274` copies the file to that name.
+        let out = common::root().join(format!("target/tmp/post-tests/cc1-part-{d}.{ext}.txt"));
+        let o = common::cncc(&[
+            "post",
+            stp.to_str().unwrap(),
+            "--to",
+            d,
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{d}: {}", common::stderr(&o));
+        check_clean(&out, d);
+        let o = common::cncc(&[
+            "diff",
+            "--dialect-a",
+            "fanuc",
+            "--dialect-b",
+            d,
+            src.to_str().unwrap(),
+            out.to_str().unwrap(),
+        ]);
+        let said = common::stdout(&o);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{d}: {said}{}",
+            common::stderr(&o)
+        );
+        assert!(
+            said.contains("same: the programs cut the same"),
+            "{d}: {said}"
+        );
+        if d == "linuxcnc" {
+            runs_in_rs274(&out);
+        }
+    }
+}
+
+/// ISO 14649 Example 1 in explicit form (NIST's ex1E) uses HELIX curves,
+/// which are not modelled, and a trimmed line whose sense contradicts its
+/// direction: the post refuses those operations by name, writes nothing,
+/// and its rapid movements no longer stop it.
+#[test]
+fn ex1e_names_the_toolpaths_it_cannot_post() {
+    let Some(shared) = common::shared() else {
+        return;
+    };
+    let out = common::root().join("target/tmp/post-tests/ex1e.nc");
+    let _ = std::fs::remove_file(&out);
+    let stp = shared.join("stepnc-samples/ex1E.stp");
+    let o = common::cncc(&[
+        "post",
+        stp.to_str().unwrap(),
+        "--to",
+        "fanuc",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    let err = common::stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("`REAM HOLE1`: a toolpath curve TRIMMED_CURVE cannot be posted"),
+        "{err}"
+    );
+    assert!(
+        err.contains("`ROUGH POCKET1 A`: a toolpath curve TRIMMED_CURVE"),
+        "{err}"
+    );
+    assert!(!err.contains("rapid movement"), "{err}");
+    assert!(!out.exists());
+}

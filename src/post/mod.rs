@@ -39,6 +39,7 @@ mod slots;
 mod step;
 mod tapping;
 mod templates;
+pub mod toolpaths;
 pub mod values;
 
 use crate::diag::{Code, Diagnostic};

@@ -45,8 +45,15 @@ pub struct Step<'p> {
 /// Anything else in the workplan, in order.
 pub enum Item<'p> {
     Step(Box<Step<'p>>),
-    Stop { optional: bool },
+    Stop {
+        optional: bool,
+    },
     Message(&'p str),
+    /// A `RAPID_MOVEMENT` with its own toolpath, in workpiece coordinates.
+    Rapid {
+        id: &'p str,
+        moves: Vec<super::toolpaths::PathMove>,
+    },
 }
 
 /// Walks the main workplan (and nested workplans) into items.
@@ -108,16 +115,15 @@ fn walk<'p>(
             Executable::ProgramStop { .. } => out.push(Item::Stop { optional: false }),
             Executable::OptionalStop { .. } => out.push(Item::Stop { optional: true }),
             Executable::DisplayMessage { text, .. } => out.push(Item::Message(text)),
-            Executable::Rapid(r) => {
-                if r.toolpath.is_some() {
-                    errors.push(PostError::unsupported(
-                        &r.id,
-                        "a rapid movement with its own toolpath",
-                    ));
-                }
+            Executable::Rapid(r) => match r.toolpath.as_deref() {
+                Some(paths) => match super::toolpaths::moves(base, paths, None, true, &r.id) {
+                    Ok(moves) => out.push(Item::Rapid { id: &r.id, moves }),
+                    Err(e) => errors.push(e),
+                },
                 // Without a toolpath it is the move via the security plane
                 // that every posted workingstep already starts with.
-            }
+                None => {}
+            },
             Executable::Other(raw) => {
                 errors.push(PostError::unsupported(&raw.entity, "this executable"))
             }

@@ -38,6 +38,7 @@ pub fn write_program(
                 Vals::new().set("m", if *optional { "1" } else { "0" }),
             ),
             Item::Message(text) => w.comment(&format!("MESSAGE: {text}")),
+            Item::Rapid { id, moves } => rapid(w, id, moves),
         };
         if let Err(e) = r {
             errors.push(e);
@@ -47,6 +48,20 @@ pub fn write_program(
         return Err(errors);
     }
     one(w.emit("end.j2", Vals::new()))
+}
+
+/// A `RAPID_MOVEMENT` with its own toolpath: its moves as rapids from its
+/// first point, where the path says the tool is.
+fn rapid(
+    w: &mut Writer<'_>,
+    id: &str,
+    moves: &[super::toolpaths::PathMove],
+) -> Result<(), PostError> {
+    w.comment(&format!("RAPID {id}"))?;
+    let Some(first) = super::toolpaths::first_point(moves) else {
+        return Ok(());
+    };
+    super::toolpaths::write(w, moves, first).map(|_| ())
 }
 
 /// The workpiece's block (`BLK FORM` on Heidenhain), when the project
@@ -156,7 +171,21 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
             )?;
         }
     }
-    let at = s.frame.origin;
+    // An operation with its own toolpath is posted as that path (CC1).
+    let explicit = match s.op.toolpath.as_deref() {
+        Some(paths) if !paths.is_empty() => Some(super::toolpaths::moves(
+            &s.frame,
+            paths,
+            feed(s).ok(),
+            false,
+            &s.op.id,
+        )?),
+        _ => None,
+    };
+    let at = explicit
+        .as_deref()
+        .and_then(super::toolpaths::first_point)
+        .unwrap_or(s.frame.origin);
     w.emit(
         "approach.j2",
         Vals::new()
@@ -174,6 +203,10 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
             .set_derived("tool_called", if tool_called { "1" } else { "" }),
     )?;
     coolant(w, &s.op.machine_functions)?;
+    if let Some(moves) = &explicit {
+        super::toolpaths::write(w, moves, [at[0], at[1], s.clear])?;
+        return w.emit("retract.j2", Vals::new().set("z", w.fmt.len(s.clear)));
+    }
     match &s.feature.kind {
         FeatureKind::RoundHole { .. } => holes::write(w, steps)?,
         FeatureKind::ClosedPocket { .. } | FeatureKind::PlanarFace { .. } => {

@@ -1,0 +1,229 @@
+//! Explicit (CC1) toolpaths posted as they are: an operation's
+//! `its_toolpath` (a `FREEFORM_OPERATION` of a `TOOLPATH_FEATURE`, or any
+//! operation that carries its own path) and a `RAPID_MOVEMENT` with a
+//! toolpath become the target's rapid, line and arc blocks through
+//! `rapid.j2`, `line.j2` and `arc.j2`.
+//!
+//! Trajectories whose speed is `SPEED_NAME(.RAPID.)` are rapids; the others
+//! feed at the operation's feed times their `POSITIVE_RATIO_MEASURE` (or at
+//! their own technology's feed). Curves are polylines, trimmed lines,
+//! arcs of circles about the tool axis (in one plane: a helix cannot go
+//! through the XY arc template) and composite curves of those. Points are
+//! in the feature's frame (ISO 14649: a workingstep tied to a feature).
+//! What cannot be posted (a dwell `FEEDSTOP`, a tool axis or surface
+//! normal curve: 3-axis posts; other curves) is an error naming the
+//! toolpath's operation.
+
+use super::frame::Frame;
+use super::values::Vals;
+use super::{PostError, Writer};
+use crate::stepnc::model::{Curve, Point, Toolpath, ToolpathSpeed};
+
+/// One move of an explicit toolpath in workpiece coordinates; `feed` is
+/// None for a rapid.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PathMove {
+    Straight {
+        to: [f64; 3],
+        feed: Option<f64>,
+    },
+    Arc {
+        to: [f64; 3],
+        centre: [f64; 2],
+        ccw: bool,
+        feed: f64,
+    },
+}
+
+/// Points closer than this (mm) are one point: repeated polyline points
+/// make no move.
+const SAME: f64 = 1e-9;
+
+/// The moves of `paths` placed by `frame`, fed at `feed` (mm/min) unless a
+/// trajectory says otherwise; `rapid_only` for a `RAPID_MOVEMENT`.
+pub fn moves(
+    frame: &Frame,
+    paths: &[Toolpath],
+    feed: Option<f64>,
+    rapid_only: bool,
+    owner: &str,
+) -> Result<Vec<PathMove>, PostError> {
+    let mut out = Vec::new();
+    for p in paths {
+        let (base, curve, extra) = match p {
+            Toolpath::CutterLocation {
+                base,
+                basic_curve,
+                tool_axis,
+                surface_normal,
+                ..
+            } => (
+                base,
+                basic_curve,
+                tool_axis.is_some() || surface_normal.is_some(),
+            ),
+            Toolpath::Feedstop { .. } => {
+                return Err(PostError::unsupported(
+                    owner,
+                    "a dwell (FEEDSTOP) in an explicit toolpath",
+                ))
+            }
+            Toolpath::Other(raw) => {
+                return Err(PostError::unsupported(
+                    owner,
+                    &format!("a toolpath {}", raw.entity),
+                ))
+            }
+        };
+        if extra {
+            return Err(PostError::unsupported(
+                owner,
+                "a toolpath with its own tool axis or surface normal (3-axis posts only)",
+            ));
+        }
+        let rapid =
+            rapid_only || matches!(&base.speed, Some(ToolpathSpeed::Named(n)) if n == "RAPID");
+        let speed = if rapid {
+            None
+        } else {
+            let f = base.technology.as_ref().and_then(|t| t.feed).or(feed);
+            let ratio = match &base.speed {
+                Some(ToolpathSpeed::Ratio(r)) => *r,
+                _ => 1.0,
+            };
+            Some(
+                f.map(|f| f * ratio)
+                    .ok_or_else(|| PostError::broken(owner, "its technology gives no feed"))?,
+            )
+        };
+        curve_moves(frame, curve, speed, owner, &mut out)?;
+    }
+    // The path starts at its first point: the tool gets there by
+    // positioning, not by cutting.
+    if let Some(PathMove::Straight { feed, .. }) = out.first_mut() {
+        *feed = None;
+    }
+    Ok(out)
+}
+
+fn curve_moves(
+    frame: &Frame,
+    curve: &Curve,
+    feed: Option<f64>,
+    owner: &str,
+    out: &mut Vec<PathMove>,
+) -> Result<(), PostError> {
+    let at = |p: &Point| frame.apply(p.xyz);
+    match curve {
+        Curve::Polyline { points, .. } => {
+            for p in points {
+                out.push(PathMove::Straight { to: at(p), feed });
+            }
+        }
+        Curve::Line { start, end, .. } => {
+            out.push(PathMove::Straight {
+                to: at(start),
+                feed,
+            });
+            out.push(PathMove::Straight { to: at(end), feed });
+        }
+        Curve::Arc {
+            circle,
+            start,
+            end,
+            sense,
+            ..
+        } => {
+            let Some(f) = feed else {
+                return Err(PostError::unsupported(owner, "a rapid along an arc"));
+            };
+            let (s, e) = (at(start), at(end));
+            let axis = circle.axis.as_ref().map_or([0.0, 0.0, 1.0], |d| d.ratios);
+            let normal = frame.rotate(axis);
+            if normal[0].abs() > 1e-9 || normal[1].abs() > 1e-9 || (s[2] - e[2]).abs() > 1e-6 {
+                return Err(PostError::unsupported(
+                    owner,
+                    "an arc outside the XY plane or a helix in an explicit toolpath",
+                ));
+            }
+            let c = frame.apply(circle.location.xyz);
+            out.push(PathMove::Straight { to: s, feed });
+            out.push(PathMove::Arc {
+                to: e,
+                centre: [c[0], c[1]],
+                ccw: *sense == (normal[2] > 0.0),
+                feed: f,
+            });
+        }
+        Curve::Composite { segments, .. } => {
+            for seg in segments {
+                if !seg.same_sense {
+                    return Err(PostError::unsupported(
+                        owner,
+                        "a composite curve segment run against its sense",
+                    ));
+                }
+                curve_moves(frame, &seg.curve, feed, owner, out)?;
+            }
+        }
+        Curve::Other(raw) => {
+            return Err(PostError::unsupported(
+                owner,
+                &format!("a toolpath curve {}", raw.entity),
+            ))
+        }
+    }
+    Ok(())
+}
+
+/// The first point a list of moves goes to.
+pub fn first_point(moves: &[PathMove]) -> Option<[f64; 3]> {
+    moves.first().map(|m| match m {
+        PathMove::Straight { to, .. } | PathMove::Arc { to, .. } => *to,
+    })
+}
+
+/// Writes the moves from `from` (where the tool is), leaving out those
+/// that go nowhere; returns where the tool ends.
+pub(crate) fn write(
+    w: &mut Writer<'_>,
+    moves: &[PathMove],
+    from: [f64; 3],
+) -> Result<[f64; 3], PostError> {
+    let mut at = from;
+    for m in moves {
+        match m {
+            PathMove::Straight { to, feed } => {
+                if (0..3).all(|i| (to[i] - at[i]).abs() < SAME) {
+                    continue;
+                }
+                let v = Vals::new()
+                    .set("x", w.fmt.len(to[0]))
+                    .set("y", w.fmt.len(to[1]))
+                    .set("z", w.fmt.len(to[2]));
+                match feed {
+                    None => w.emit("rapid.j2", v)?,
+                    Some(f) => w.emit("line.j2", v.set("f", w.fmt.feed(*f)))?,
+                }
+                at = *to;
+            }
+            PathMove::Arc {
+                to,
+                centre,
+                ccw,
+                feed,
+            } => {
+                let v = Vals::new()
+                    .set("g", if *ccw { "3" } else { "2" })
+                    .set("x", w.fmt.len(to[0]))
+                    .set("y", w.fmt.len(to[1]))
+                    .set("i", w.fmt.len(centre[0] - at[0]))
+                    .set("j", w.fmt.len(centre[1] - at[1]))
+                    .set("f", w.fmt.feed(*feed));
+                w.emit("arc.j2", v)?;
+                at = *to;
+            }
+        }
+    }
+    Ok(at)
+}
