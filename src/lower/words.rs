@@ -239,33 +239,19 @@ impl Words {
     /// the axes they name.
     pub fn take_machine_axes(&mut self) -> Axes {
         let mut axes = Axes::default();
-        for a in AXIS_LETTERS {
-            let mut name = [0u8; 2];
-            name[0] = a as u8;
-            name[1] = b'1';
-            let Ok(addr) = std::str::from_utf8(&name) else {
-                continue;
-            };
-            let Some(i) = self.find(addr) else { continue };
-            let e = &mut self.list[i];
-            if e.used {
-                continue;
-            }
-            e.used = true;
-            self.free -= 1;
-            if let Some(slot) = axes.slot_mut(a) {
-                put_coord(slot, &e.w);
-            }
-            let span = e.w.span;
-            self.mark_taken(span);
-        }
+        self.take_axis_words(&mut axes, |w, a| w.find(format!("{a}1").as_str()));
         axes
     }
 
     /// Takes the axis words into `axes` (which is left as it was for the others).
     pub fn take_axes_into(&mut self, axes: &mut Axes) {
+        self.take_axis_words(axes, |w, a| w.find(a));
+    }
+
+    /// Takes, for each axis letter, the free word `find` gives for it.
+    fn take_axis_words(&mut self, axes: &mut Axes, find: impl Fn(&Self, char) -> Option<usize>) {
         for a in AXIS_LETTERS {
-            let Some(i) = self.find(a) else { continue };
+            let Some(i) = find(self, a) else { continue };
             let e = &mut self.list[i];
             if e.used {
                 continue;
