@@ -328,3 +328,49 @@ fn siemens_pocket1_to_cycl_def_251_and_back_verifies() {
         "{back}"
     );
 }
+
+/// LinuxCNC o-word subroutines to Fanuc: `O n` .. `M99` after the main
+/// program (numbered O1 when it has no number), `G65 P n` with Fanuc's
+/// argument letters for `#1` `#2` `#3` `#4` (A B C I), numbers or
+/// expressions; verified. A named subroutine and an argument no letter reaches (#10)
+/// are refused.
+#[test]
+fn oword_subroutines_become_g65_programs() {
+    let dir = tempfile::tempdir().unwrap();
+    let ngc = dir.path().join("subs.ngc");
+    std::fs::write(
+        &ngc,
+        "o200 sub\n  G1 X[#1] Y[#2] Z[#4] F300\no200 endsub\nG21 G17 G90 G94\nG0 X0 Y0 Z1\nG1 Z-1 F100\no200 call [20] [5] [0] [-1]\n#3 = 2\no200 call [30] [#3 * 5] [0] [-2]\nG0 Z10\nM2\n",
+    )
+    .unwrap();
+    let fanuc = port_verified(
+        &ngc.display().to_string(),
+        "linuxcnc",
+        "fanuc",
+        &dir.path().join("subs.nc"),
+    );
+    assert!(fanuc.starts_with("O0001\n"), "{fanuc}");
+    assert!(fanuc.contains("\nG65 P200 A20. B5. C0. I-1.\n"), "{fanuc}");
+    assert!(
+        fanuc.contains("\nG65 P200 A30. B[#3*5] C0. I-2.\n"),
+        "{fanuc}"
+    );
+    assert!(fanuc.contains("\nM2\nO0200\n"), "{fanuc}");
+    assert!(fanuc.trim_end().ends_with("M99"), "{fanuc}");
+    assert_eq!(fanuc.matches("M99").count(), 1, "{fanuc}");
+    for (program, why) in [
+        ("o<side> sub\nG1 X1 F100\no<side> endsub\no<side> call\nM2\n", "the subroutine `o<side>`"),
+        (
+            "o300 sub\nG1 X[#10] F100\no300 endsub\no300 call [1] [2] [3] [4] [5] [6] [7] [8] [9] [10]\nM2\n",
+            "the argument #10",
+        ),
+    ] {
+        let bad = dir.path().join("bad.ngc");
+        std::fs::write(&bad, program).unwrap();
+        let out = cncc(&["port", &bad.display().to_string(), "--to", "fanuc"]);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{err}");
+        assert!(err.contains("E0617"), "{err}");
+        assert!(err.contains(why), "{err}");
+    }
+}

@@ -194,13 +194,11 @@ fn letter_args(w: &mut Writer<'_>, args: &CallArgs, span: Span, words: &mut Vec<
             "pass values in #-variables or use G65 letter arguments",
         ),
         CallArgs::Letters(list) => {
+            // Every argument with its point, as a length: a Fanuc control
+            // reads an argument written without one in the address's
+            // least input increment (`A20` can be 0.020), `A20.` is 20.
             for (letter, v) in list {
-                let kind = if w.spec.is_length_address(*letter) {
-                    NumKind::Length
-                } else {
-                    NumKind::Plain
-                };
-                w.push_word(words, &letter.to_string(), v, kind, span);
+                w.push_word(words, &letter.to_string(), v, NumKind::Length, span);
             }
         }
     }

@@ -27,6 +27,8 @@
 //!   the modal group of another code in the block (`G80` with `G0`).
 //! * [`arcs`]: Siemens `CIP` arcs as `G2`/`G3` with their centre.
 //! * [`ref_return`]: `G91 G28 Z0` ↔ Siemens `G74 Z1=0`.
+//! * [`osubs`]: LinuxCNC o-word subroutines as `O n` .. `M99` programs
+//!   called with `G65 P n` and argument letters (Fanuc, Haas).
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
 //!   as the moves the interpreter makes for it.
 //!
@@ -46,6 +48,7 @@ mod groups;
 mod haas_cycles;
 mod levels;
 mod loops;
+mod osubs;
 mod pockets;
 mod poles;
 mod ref_return;
@@ -103,6 +106,7 @@ pub fn port_program(
     loops::run(&mut out, to, &mut diags);
     arcs::run(&mut out, from, to);
     ref_return::run(&mut out, from, to, &mut diags);
+    osubs::run(&mut out, from, to, &mut diags);
     forms::run(&mut out, from, to, opts, &mut diags);
     spf::run(&mut out, from, to);
     groups::run(&mut out, to);
