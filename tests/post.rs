@@ -698,36 +698,59 @@ fn explicit_toolpaths_post_and_cut_what_the_source_cuts() {
     }
 }
 
-/// ISO 14649 Example 1 in explicit form (NIST's ex1E) uses HELIX curves,
-/// which are not modelled, and a trimmed line whose sense contradicts its
-/// direction: the post refuses those operations by name, writes nothing,
-/// and its rapid movements no longer stop it.
+/// ISO 14649 Example 1 in explicit form (NIST's ex1E): its helical ramps
+/// (NIST `HELIX` curves, kept raw by the reader) post as pieces of at
+/// most half a turn (`G2 .. Z..` / `CP IPA.. IZ..`), the reamer's way out
+/// (a trimmed line whose sense contradicts its direction) from one trim to
+/// the other. Every output checks clean, all five cut the same, and
+/// rs274 runs the LinuxCNC one.
 #[test]
-fn ex1e_names_the_toolpaths_it_cannot_post() {
+fn ex1e_posts_to_every_dialect_and_all_cut_the_same() {
     let Some(shared) = common::shared() else {
         return;
     };
-    let out = common::root().join("target/tmp/post-tests/ex1e.nc");
-    let _ = std::fs::remove_file(&out);
     let stp = shared.join("stepnc-samples/ex1E.stp");
-    let o = common::cncc(&[
-        "post",
-        stp.to_str().unwrap(),
-        "--to",
-        "fanuc",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    let err = common::stderr(&o);
-    assert_eq!(o.status.code(), Some(1), "{err}");
+    let out = |d: &str| common::root().join(format!("target/tmp/post-tests/ex1e-{d}.txt"));
+    for d in ["fanuc", "haas", "linuxcnc", "siemens840d", "heidenhain"] {
+        let o = common::cncc(&[
+            "post",
+            stp.to_str().unwrap(),
+            "--to",
+            d,
+            "-o",
+            out(d).to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{d}: {}", common::stderr(&o));
+        check_clean(&out(d), d);
+        if d != "fanuc" {
+            let o = common::cncc(&[
+                "diff",
+                "--dialect-a",
+                "fanuc",
+                "--dialect-b",
+                d,
+                out("fanuc").to_str().unwrap(),
+                out(d).to_str().unwrap(),
+            ]);
+            assert_eq!(o.status.code(), Some(0), "{d}: {}", common::stdout(&o));
+        }
+    }
+    let fanuc = std::fs::read_to_string(out("fanuc")).unwrap();
+    // The first ramp: 2.62 turns from z 15 down to z -5.9 about the pocket
+    // centre (70, 55) in six pieces, the start point's offset to the
+    // centre from the written start.
     assert!(
-        err.contains("`REAM HOLE1`: a toolpath curve TRIMMED_CURVE cannot be posted"),
-        "{err}"
+        fanuc.contains("G0 X64.754 Y50.069 Z15.\nG2 X72.926 Y61.579 Z11.517 I5.246 J4.931 F2400\n"),
+        "{fanuc}"
     );
     assert!(
-        err.contains("`ROUGH POCKET1 A`: a toolpath curve TRIMMED_CURVE"),
-        "{err}"
+        fanuc.contains("G2 X77.2 Y55. Z-5.9 I6.638 J-2.79 F2400\n"),
+        "{fanuc}"
     );
-    assert!(!err.contains("rapid movement"), "{err}");
-    assert!(!out.exists());
+    let tnc = std::fs::read_to_string(out("heidenhain")).unwrap();
+    assert!(
+        tnc.contains("CP IPA-157.205 IZ-3.4833 DR- R0 F2400"),
+        "{tnc}"
+    );
+    runs_in_rs274(&out("linuxcnc"));
 }

@@ -168,7 +168,7 @@ codes! {
         "The value has more decimal places than the target writes (its least input increment), or a conversion (such as a dwell from seconds to whole milliseconds) would not be exact. cncc never rounds silently: round the value in the source, or choose a target spec with more places.";
     PostUnsupported = "E0900", "post-unsupported", Error,
         "a STEP-NC feature, operation or executable the post cannot write for this target",
-        "The post-processor has no cycle and no explicit toolpath generator for this combination of feature and operation on the target dialect (or the workplan holds an executable it cannot post). Explicit toolpaths are posted as they are, except helices, dwells (FEEDSTOP), tool-axis curves and curves the reader kept raw. Choose another target, or change the feature or operation in the STEP-NC file.";
+        "The post-processor has no cycle and no explicit toolpath generator for this combination of feature and operation on the target dialect (or the workplan holds an executable it cannot post). Explicit toolpaths are posted as they are (NIST helices about the tool axis included), except dwells (FEEDSTOP), tool-axis curves and other curves the reader kept raw. Choose another target, or change the feature or operation in the STEP-NC file.";
     PostBadProject = "E0901", "post-bad-project", Error,
         "a STEP-NC project that lacks what posting needs",
         "Posting needs, for each machining workingstep, its feature, operation and tool, a feed and a spindle speed (or what they can be computed from), and planes in a sensible order. The message names the entity and what is missing or inconsistent.";

@@ -31,6 +31,7 @@ mod pecking;
 pub mod plan;
 mod pocket_g12;
 mod pockets;
+mod raw_curves;
 pub mod render;
 mod slot_circle;
 mod slot_cycle;

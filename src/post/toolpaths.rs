@@ -1,15 +1,16 @@
 //! Explicit (CC1) toolpaths posted as they are: an operation's
 //! `its_toolpath` (a `FREEFORM_OPERATION` of a `TOOLPATH_FEATURE`, or any
 //! operation that carries its own path) and a `RAPID_MOVEMENT` with a
-//! toolpath become the target's rapid, line and arc blocks through
-//! `rapid.j2`, `line.j2` and `arc.j2`.
+//! toolpath become the target's rapid, line, arc and helix blocks through
+//! `rapid.j2`, `line.j2`, `arc.j2` and `helix.j2`.
 //!
 //! Trajectories whose speed is `SPEED_NAME(.RAPID.)` are rapids; the others
 //! feed at the operation's feed times their `POSITIVE_RATIO_MEASURE` (or at
 //! their own technology's feed). Curves are polylines, trimmed lines,
-//! arcs of circles about the tool axis (in one plane: a helix cannot go
-//! through the XY arc template) and composite curves of those. Points are
-//! in the feature's frame (ISO 14649: a workingstep tied to a feature).
+//! arcs of circles about the tool axis (in the XY plane), composite curves
+//! of those, and the curves the reader keeps raw that [`super::raw_curves`]
+//! reads (NIST `HELIX`, a trimmed line with a contradictory sense). Points
+//! are in the feature's frame (ISO 14649: a workingstep tied to a feature).
 //! What cannot be posted (a dwell `FEEDSTOP`, a tool axis or surface
 //! normal curve: 3-axis posts; other curves) is an error naming the
 //! toolpath's operation.
@@ -20,7 +21,8 @@ use super::{PostError, Writer};
 use crate::stepnc::model::{Curve, Point, Toolpath, ToolpathSpeed};
 
 /// One move of an explicit toolpath in workpiece coordinates; `feed` is
-/// None for a rapid.
+/// None for a rapid. An arc whose end z differs from its start is one
+/// piece (at most half a turn) of a helix, written through `helix.j2`.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PathMove {
     Straight {
@@ -166,14 +168,37 @@ fn curve_moves(
                 curve_moves(frame, &seg.curve, feed, owner, out)?;
             }
         }
-        Curve::Other(raw) => {
-            return Err(PostError::unsupported(
-                owner,
-                &format!("a toolpath curve {}", raw.entity),
-            ))
-        }
+        Curve::Other(raw) => super::raw_curves::moves(frame, raw, feed, owner, out)?,
     }
     Ok(())
+}
+
+/// The centre's offset from the arc's start as the target writes it: the
+/// difference of the two written (rounded) values, so the centre the
+/// program states is the centre rounded, wherever the start was rounded.
+fn offset(w: &Writer<'_>, centre: f64, start: f64) -> String {
+    let written = |v: f64| w.fmt.len(v).parse::<f64>().unwrap_or(v);
+    w.fmt.len(written(centre) - written(start))
+}
+
+/// The signed angle (degrees, + counter-clockwise) an arc about `centre`
+/// turns from `from` to `to` in its direction, in (0, 360].
+fn turn_deg(centre: &[f64; 2], from: [f64; 3], to: [f64; 3], ccw: bool) -> f64 {
+    let a0 = (from[1] - centre[1]).atan2(from[0] - centre[0]);
+    let a1 = (to[1] - centre[1]).atan2(to[0] - centre[0]);
+    let mut d = if ccw { a1 - a0 } else { a0 - a1 };
+    while d <= 1e-12 {
+        d += std::f64::consts::TAU;
+    }
+    while d > std::f64::consts::TAU {
+        d -= std::f64::consts::TAU;
+    }
+    let deg = d.to_degrees();
+    if ccw {
+        deg
+    } else {
+        -deg
+    }
 }
 
 /// The first point a list of moves goes to.
@@ -217,10 +242,19 @@ pub(crate) fn write(
                     .set("g", if *ccw { "3" } else { "2" })
                     .set("x", w.fmt.len(to[0]))
                     .set("y", w.fmt.len(to[1]))
-                    .set("i", w.fmt.len(centre[0] - at[0]))
-                    .set("j", w.fmt.len(centre[1] - at[1]))
+                    .set("i", offset(w, centre[0], at[0]))
+                    .set("j", offset(w, centre[1], at[1]))
                     .set("f", w.fmt.feed(*feed));
-                w.emit("arc.j2", v)?;
+                if (to[2] - at[2]).abs() < SAME {
+                    w.emit("arc.j2", v)?;
+                } else {
+                    let turn = turn_deg(centre, at, *to, *ccw);
+                    let v = v
+                        .set("z", w.fmt.len(to[2]))
+                        .set("ipa", w.fmt.angle(turn))
+                        .set("iz", w.fmt.len(to[2] - at[2]));
+                    w.emit("helix.j2", v)?;
+                }
                 at = *to;
             }
         }
