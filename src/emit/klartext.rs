@@ -33,6 +33,10 @@ pub(super) struct Out {
     pub unit: Option<LengthUnit>,
     /// The motion line being written is a rapid (`FMAX`).
     pub rapid: bool,
+    /// A feed set in a rapid block (`G81 .. F100` as `L .. FMAX M99`):
+    /// FMAX and F cannot share a block, so it goes on the next feed move
+    /// that has no feed of its own.
+    pub pending_feed: Option<String>,
     /// G90.1: arc centres I J K are absolute.
     pub arc_absolute: bool,
 }

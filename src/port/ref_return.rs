@@ -12,6 +12,12 @@
 //! Back, `G74 Z1=0` becomes `G91 G28 Z0`, followed by `G90` when the
 //! program was in absolute mode (a straight walk of the blocks, as
 //! [`super::levels`] follows them).
+//!
+//! A target with neither form but with moves in machine coordinates
+//! (Heidenhain `M91`) gets a rapid to the machine datum on the named axes:
+//! `G91 G28 Z0` is `L Z+0 R0 FMAX M91`. That takes the reference position
+//! to be the machine zero, as the interpreter does (#5161.. start at 0)
+//! and as a Fanuc reference position usually is [?: a machine parameter].
 
 use super::follow_block;
 use super::levels::Modal;
@@ -29,6 +35,9 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         .is_some()
     };
     let (via, direct) = (has(false), has(true));
+    if !via && !direct && to.code_for(Meaning::MachineCoords).is_some() {
+        return machine_datum(p, from, to, diags);
+    }
     if via == direct {
         return;
     }
@@ -79,6 +88,50 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         let after = follow_block(&b, vec![g90]);
         p.blocks.push(b);
         p.blocks.push(after);
+    }
+}
+
+/// `G28` / `G74` as a rapid to the machine datum on the named axes, in
+/// machine coordinates (the G28 through a point of its own refused).
+fn machine_datum(
+    p: &mut Program,
+    from: &DialectSpec,
+    to: &DialectSpec,
+    diags: &mut Vec<Diagnostic>,
+) {
+    let mut modal = Modal::new(from);
+    for b in &mut p.blocks {
+        let mut i = 0;
+        while i < b.stmts.len() {
+            modal.see(&b.stmts[i]);
+            let s = &b.stmts[i];
+            let StmtKind::RefReturn {
+                index: 1,
+                store: false,
+                direct,
+                axes,
+            } = &s.kind
+            else {
+                i += 1;
+                continue;
+            };
+            if !*direct && !stays_put(axes, modal.absolute) {
+                diags.push(through_a_point(s.span, to));
+            }
+            let mut target = (**axes).clone();
+            zero(&mut target);
+            for a in crate::ir::AXIS_LETTERS {
+                if let Some(Some(c)) = target.slot_mut(a) {
+                    c.dim = Some(DimMode::Absolute);
+                }
+            }
+            let mut rapid = crate::ir::Motion::new(crate::ir::MotionKind::Rapid);
+            rapid.target = target;
+            let span = s.span;
+            b.stmts[i] = Stmt::new(StmtKind::Motion(Box::new(rapid)), span);
+            b.stmts.insert(i, Stmt::new(StmtKind::MachineCoords, span));
+            i += 2;
+        }
     }
 }
 

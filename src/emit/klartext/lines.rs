@@ -201,7 +201,10 @@ fn push_mods(line: &mut String, parts: &Parts<'_>) {
 pub(super) fn axes(w: &mut Writer<'_>, out: &Out, a: &Axes) -> Option<String> {
     let mut s = String::new();
     for (letter, c) in a.iter() {
-        let inc = out.incremental || c.dim == Some(crate::ir::DimMode::Incremental);
+        let inc = match c.dim {
+            Some(d) => d == crate::ir::DimMode::Incremental,
+            None => out.incremental,
+        };
         let kind = if "ABC".contains(letter) {
             NumKind::Angle
         } else {
@@ -271,16 +274,26 @@ fn main_line(w: &mut Writer<'_>, out: &mut Out, s: &Stmt, parts: &Parts<'_>) -> 
         _ => "CYCL CALL".into(),
     };
     if std::mem::take(&mut out.rapid) {
-        let mut p = Parts {
+        let p = Parts {
             mods: parts.mods.clone(),
             feed: Some("FMAX".into()),
             ..Parts::default()
         };
         if let Some(f) = &parts.feed {
-            p.mods.push(f.clone());
+            out.pending_feed = Some(f.clone());
         }
         push_mods(&mut line, &p);
+    } else if parts.feed.is_none() && matches!(s.kind, K::Motion(_)) {
+        let p = Parts {
+            mods: parts.mods.clone(),
+            feed: out.pending_feed.take(),
+            ..Parts::default()
+        };
+        push_mods(&mut line, &p);
     } else {
+        if parts.feed.is_some() {
+            out.pending_feed = None;
+        }
         push_mods(&mut line, parts);
     }
     Some(line)
