@@ -20,6 +20,10 @@ use std::f64::consts::{PI, TAU};
 /// How far (mm) a trim point may be off the helix it trims.
 const ON_CURVE: f64 = 1e-3;
 
+/// The most turns a posted helix may make (a tiny pitch must not write
+/// an endless program).
+const MAX_TURNS: f64 = 1000.0;
+
 /// The moves of a raw curve, or E0900 naming it.
 pub fn moves(
     frame: &Frame,
@@ -121,6 +125,12 @@ impl Helix {
         };
         base = base.rem_euclid(TAU);
         let turns = dz.abs() / self.pitch.abs();
+        if !turns.is_finite() || turns > MAX_TURNS {
+            return Err(PostError::unsupported(
+                owner,
+                &format!("a helix of more than {MAX_TURNS} turns"),
+            ));
+        }
         let full = ((turns * TAU - base) / TAU).round().max(0.0);
         let sweep = base + full * TAU;
         if sweep < 1e-9 || (sweep - turns * TAU).abs() * self.radius > ON_CURVE * 10.0 {
