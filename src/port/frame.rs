@@ -1,6 +1,10 @@
 //! The program frame of a Klartext source for a target of another family:
 //!
-//! * `TOOL CALL` gets `D1` for a Siemens target (the tool's edge).
+//! * `TOOL CALL` gets `D1` for a Siemens target (the tool's edge), and
+//!   `G43 H<tool>` for a target with length-offset codes (Fanuc, Haas,
+//!   LinuxCNC), on the first move in Z after the call (`G0 Z20. G43 H5`),
+//!   as Fanuc programs apply it: `TOOL CALL` applies the tool's length,
+//!   and G43 alone would move Z by the offset where the tool stands.
 //! * Block numbers go (every Klartext block has one; jumps use labels).
 //! * `BEGIN PGM name` is a program known only by name; a target that
 //!   numbers its programs (capability `numbered-programs`) gets the name
@@ -68,7 +72,54 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
             }
         }
     }
+    length_offsets(p, to);
     // Blocks left empty (`END PGM`, a cycle definition mapped away) go.
     p.blocks
         .retain(|b| !b.stmts.is_empty() || b.label.is_some());
+}
+
+/// `G43 H<tool>` on the first Z move after each `TOOL CALL` (a target
+/// with the length-offset code and no Siemens edge `D1`).
+fn length_offsets(p: &mut Program, to: &DialectSpec) {
+    let g43 = Meaning::LengthComp(crate::ir::LengthComp::Positive);
+    if to.family == Family::Sinumerik || to.code_for(g43).is_none() {
+        return;
+    }
+    let mut pending: Option<crate::ir::Value> = None;
+    for b in &mut p.blocks {
+        for s in &b.stmts {
+            if let StmtKind::ToolSelect(crate::ir::ToolRef::Number(v)) = &s.kind {
+                pending = Some(v.clone());
+            }
+        }
+        if b.stmts
+            .iter()
+            .any(|s| matches!(s.kind, StmtKind::LengthComp { .. }))
+        {
+            pending = None;
+            continue;
+        }
+        let Some(at) = b
+            .stmts
+            .iter()
+            .position(|s| matches!(&s.kind, StmtKind::Motion(m) if m.target.z.is_some()))
+        else {
+            continue;
+        };
+        let Some(register) = pending.take() else {
+            continue;
+        };
+        let span = b.stmts[at].span;
+        b.stmts.insert(
+            at,
+            crate::ir::Stmt::new(
+                StmtKind::LengthComp {
+                    mode: crate::ir::LengthComp::Positive,
+                    register: Some(register),
+                    axes: Box::default(),
+                },
+                span,
+            ),
+        );
+    }
 }
