@@ -374,3 +374,40 @@ fn oword_subroutines_become_g65_programs() {
         assert!(err.contains(why), "{err}");
     }
 }
+
+/// The same subroutines for Siemens (subprograms live in `.SPF` files the
+/// port does not write): each call inlined with its arguments set in R
+/// parameters first, nested calls too; verified. A subroutine that reads
+/// its own #1 after calling another is refused (the callee's arguments
+/// would overwrite it).
+#[test]
+fn oword_subroutines_are_inlined_for_siemens() {
+    let dir = tempfile::tempdir().unwrap();
+    let ngc = dir.path().join("nested.ngc");
+    std::fs::write(
+        &ngc,
+        "o200 sub\n  G1 X[#1] Y[#2] F300\n  o201 call [3]\no200 endsub\no201 sub\n  G1 Z[-#1]\no201 endsub\nG21 G17 G90 G94\nG0 X0 Y0 Z1\nG1 Z-1 F100\no200 call [20] [5]\no200 call [30] [10]\nG0 Z10\nM2\n",
+    )
+    .unwrap();
+    let mpf = port_verified(
+        &ngc.display().to_string(),
+        "linuxcnc",
+        "siemens840d",
+        &dir.path().join("nested.mpf"),
+    );
+    assert!(
+        mpf.contains("R1=20 R2=5\nG1 X=R1 Y=R2 F300\nR1=3\nG1 Z=-R1\nR1=30 R2=10\n"),
+        "{mpf}"
+    );
+    let bad = dir.path().join("after.ngc");
+    std::fs::write(
+        &bad,
+        "o200 sub\n  o201 call [3]\n  G1 X[#1] F300\no200 endsub\no201 sub\n  G1 Z[-#1]\no201 endsub\nG0 X0 Y0 Z1\no200 call [20]\nM2\n",
+    )
+    .unwrap();
+    let out = cncc(&["port", &bad.display().to_string(), "--to", "siemens840d"]);
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(err.contains("E0617"), "{err}");
+    assert!(err.contains("read after it calls another"), "{err}");
+}

@@ -32,7 +32,7 @@
 //!   numbered cycles, `CYCL CALL PAT` and `M89` calls.
 
 mod faces;
-mod inline;
+pub(super) mod inline;
 mod sections;
 pub(super) mod subprograms;
 

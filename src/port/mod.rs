@@ -28,7 +28,8 @@
 //! * [`arcs`]: Siemens `CIP` arcs as `G2`/`G3` with their centre.
 //! * [`ref_return`]: `G91 G28 Z0` ↔ Siemens `G74 Z1=0`.
 //! * [`osubs`]: LinuxCNC o-word subroutines as `O n` .. `M99` programs
-//!   called with `G65 P n` and argument letters (Fanuc, Haas).
+//!   called with `G65 P n` and argument letters (Fanuc, Haas), inlined
+//!   with their arguments in R parameters (Siemens).
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
 //!   as the moves the interpreter makes for it.
 //!

@@ -18,6 +18,14 @@
 //! numbered), numbers above 9999, returning a value, computed calls, and
 //! an argument in `#10`, `#12`, `#14`, `#15`, `#16` or above `#26` (no
 //! letter reaches them).
+//!
+//! For Siemens, which keeps subprograms in `.SPF` files of their own (not
+//! written by the port), each call is replaced by the subroutine's blocks,
+//! its arguments first set in `R1`.. (`#1 = 20` before the body, which
+//! [`super::forms`] writes `R1=20`), as Heidenhain label subprograms are
+//! ([`super::from_tnc::inline`]). R parameters are global where o-word
+//! locals are not, so a main program that uses `#1`..`#30` itself, an
+//! argument that reads them, and an early `return` are refused (E0617).
 
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec, Family, Meaning};
@@ -59,6 +67,9 @@ const LETTERS: [Option<char>; 26] = [
 const MAX_PROGRAM: u32 = 9999;
 
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
+    if from.has(Capability::OWords) && to.family == Family::Sinumerik && has_subs(p) {
+        return inline(p, diags);
+    }
     let applies = from.has(Capability::OWords)
         && !to.has(Capability::OWords)
         && to.family != Family::Klartext
@@ -219,4 +230,215 @@ fn number_main(p: &mut Program, used: &[u32]) {
         None => return,
     };
     p.blocks.insert(at, block);
+}
+
+fn inline_refusal(span: Span, what: &str) -> Diagnostic {
+    Diagnostic::new(
+        Code::PortSubprogram,
+        format!("{what} cannot be carried into a Siemens program with the subroutines inlined"),
+    )
+    .primary(span, "here")
+    .help("Siemens keeps subprograms in .SPF files of their own; write this one as a PROC by hand, or simplify it in the source")
+}
+
+/// The highest o-word argument (`#30`).
+const ARGS: u32 = 30;
+
+/// Siemens: the subroutines as label subprograms after the end, their
+/// calls as argument assignments and a label call, then inlined.
+fn inline(p: &mut Program, diags: &mut Vec<Diagnostic>) {
+    let mut main = Vec::new();
+    let mut subs = Vec::new();
+    let mut open = false;
+    for mut b in std::mem::take(&mut p.blocks) {
+        let mut into_sub = open;
+        for s in &mut b.stmts {
+            match &s.kind {
+                StmtKind::SubStart { name, .. } if !open => {
+                    open = true;
+                    into_sub = true;
+                    b.label = Some(crate::span::Spanned {
+                        node: name.clone(),
+                        span: s.span,
+                    });
+                }
+                StmtKind::SubEnd { value, .. } if open => {
+                    if value.is_some() {
+                        diags.push(inline_refusal(s.span, "a subroutine that returns a value"));
+                    }
+                    open = false;
+                    s.kind = StmtKind::SubReturn { to: None };
+                }
+                StmtKind::Return { .. } if open => {
+                    diags.push(inline_refusal(
+                        s.span,
+                        "a return before the subroutine's end",
+                    ));
+                }
+                _ => {}
+            }
+        }
+        b.stmts
+            .retain(|s| !matches!(s.kind, StmtKind::SubStart { .. }));
+        if into_sub {
+            subs.push(b);
+        } else {
+            main.push(b);
+        }
+    }
+    let sub_spans: Vec<Span> = subs.iter().map(|b| b.span).collect();
+    main_locals(p, &sub_spans, diags);
+    locals_after_calls(p, &subs, diags);
+    p.blocks = main;
+    p.blocks.extend(subs);
+    let blocks = std::mem::take(&mut p.blocks);
+    for mut b in blocks {
+        let mut stmts = Vec::with_capacity(b.stmts.len());
+        for s in std::mem::take(&mut b.stmts) {
+            stmts.extend(label_call(s, &p.exprs, diags));
+        }
+        b.stmts = stmts;
+        p.blocks.push(b);
+    }
+    super::from_tnc::inline::run(p, diags);
+}
+
+/// `o100 call [a] [b]` → `#1 = a`, `#2 = b`, `CALL LBL 100`.
+fn label_call(
+    s: Stmt,
+    exprs: &crate::ir::Arena<crate::ir::Expr>,
+    diags: &mut Vec<Diagnostic>,
+) -> Vec<Stmt> {
+    let StmtKind::Call {
+        kind: CallKind::OWord,
+        target,
+        args,
+        repeat: None,
+    } = &s.kind
+    else {
+        return vec![s];
+    };
+    if matches!(target, CallTarget::Computed(_)) {
+        diags.push(inline_refusal(s.span, "a call of a computed subroutine"));
+        return vec![s];
+    }
+    let mut out = Vec::new();
+    if let CallArgs::Positional(list) = args {
+        for (i, a) in list.iter().enumerate() {
+            let Some(value) = a else { continue };
+            let n = i as u32 + 1;
+            if n > ARGS || reads_locals(*value, exprs) {
+                diags.push(inline_refusal(
+                    s.span,
+                    &format!("the argument #{n}, which reads the caller's #1..#30,"),
+                ));
+                return vec![s];
+            }
+            // At the argument's place: the inliner takes the call's span
+            // to find the call.
+            out.push(Stmt::new(
+                StmtKind::Assign {
+                    var: crate::ir::Var::Numbered(n),
+                    value: *value,
+                },
+                exprs[*value].span,
+            ));
+        }
+    }
+    out.push(Stmt::new(
+        StmtKind::Call {
+            kind: CallKind::Label,
+            target: target.clone(),
+            args: CallArgs::None,
+            repeat: None,
+        },
+        s.span,
+    ));
+    out
+}
+
+/// Whether an expression reads `#1`..`#30`.
+fn reads_locals(e: crate::ir::ExprId, exprs: &crate::ir::Arena<crate::ir::Expr>) -> bool {
+    let mut stack = vec![e];
+    while let Some(e) = stack.pop() {
+        use crate::ir::Var;
+        match &exprs[e].kind {
+            ExprKind::Var(Var::Numbered(n)) if (1..=ARGS).contains(n) => return true,
+            ExprKind::Var(Var::Indirect(i) | Var::RIndirect(i)) => stack.push(*i),
+            ExprKind::Var(Var::User(_, idx)) => stack.extend(idx),
+            ExprKind::Unary(_, a) | ExprKind::Dimension(_, a) => stack.push(*a),
+            ExprKind::Binary(_, a, b) | ExprKind::AtanSlash(a, b) => stack.extend([*a, *b]),
+            ExprKind::Call(_, args) => stack.extend(args),
+            ExprKind::Number(_)
+            | ExprKind::Str(_)
+            | ExprKind::Bool(_)
+            | ExprKind::Var(_)
+            | ExprKind::Exists(_) => {}
+        }
+    }
+    false
+}
+
+/// The main program's own `#1`..`#30` (outside the subroutines' blocks)
+/// would share `R1`..`R30` with the arguments.
+fn main_locals(p: &Program, subs: &[Span], diags: &mut Vec<Diagnostic>) {
+    let inside = |sp: Span| {
+        subs.iter()
+            .any(|b| sp.file == b.file && sp.start >= b.start && sp.end <= b.end)
+    };
+    for (_, e) in p.exprs.iter() {
+        if let ExprKind::Var(crate::ir::Var::Numbered(n)) = e.kind {
+            if (1..=ARGS).contains(&n) && !inside(e.span) {
+                diags.push(inline_refusal(
+                    e.span,
+                    "a main program's own #1..#30 next to subroutine arguments in R1..R30",
+                ));
+                return;
+            }
+        }
+    }
+}
+
+/// A subroutine that calls another and reads `#1`..`#30` after the call:
+/// inlined, the callee's arguments would overwrite them (they are one set
+/// of R parameters).
+fn locals_after_calls(p: &Program, subs: &[Block], diags: &mut Vec<Diagnostic>) {
+    let mut start = 0;
+    while start < subs.len() {
+        let end = subs[start + 1..]
+            .iter()
+            .position(|b| b.label.is_some())
+            .map_or(subs.len(), |k| start + 1 + k);
+        let body = &subs[start..end];
+        start = end;
+        let call = body
+            .iter()
+            .flat_map(|b| &b.stmts)
+            .find_map(|s| match s.kind {
+                StmtKind::Call {
+                    kind: CallKind::OWord,
+                    ..
+                } => Some(s.span),
+                _ => None,
+            });
+        let Some(call) = call else { continue };
+        let last = body.last().map_or(call, |b| b.span);
+        let read = p.exprs.iter().find_map(|(_, e)| match e.kind {
+            ExprKind::Var(crate::ir::Var::Numbered(n))
+                if (1..=ARGS).contains(&n)
+                    && e.span.file == call.file
+                    && e.span.start >= call.end
+                    && e.span.end <= last.end =>
+            {
+                Some(e.span)
+            }
+            _ => None,
+        });
+        if let Some(span) = read {
+            diags.push(inline_refusal(
+                span,
+                "a subroutine's own #1..#30 read after it calls another",
+            ));
+        }
+    }
 }
