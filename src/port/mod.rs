@@ -49,7 +49,7 @@ mod groups;
 mod haas_cycles;
 mod levels;
 mod loops;
-mod osubs;
+pub(crate) mod osubs;
 mod pockets;
 mod poles;
 mod ref_return;

@@ -104,51 +104,42 @@ fn refusal(span: Span, what: &str) -> Diagnostic {
     .help("number the subroutine (o100 sub) and pass at most the arguments #1..#9, #11, #13, #17..#26")
 }
 
-/// The main program's blocks and the subroutines' (as `O n` .. `M99`).
-fn split(
-    p: &mut Program,
-    numbers: &mut Vec<u32>,
-    diags: &mut Vec<Diagnostic>,
+/// A statement of a subroutine, as [`split_subs`] hands it over.
+pub(super) struct SubStmt<'a> {
+    pub stmt: &'a mut Stmt,
+    /// The block's label (a label subprogram's name goes there).
+    pub label: &'a mut Option<crate::span::Spanned<String>>,
+    pub block: Span,
+}
+
+/// Splits the blocks into the main program's and the subroutines' (each
+/// from its `o.. sub` to its `o.. endsub`, the endsub block included);
+/// `each` sees every statement of a subroutine to rewrite it.
+pub(super) fn split_subs(
+    blocks: Vec<Block>,
+    mut each: impl FnMut(SubStmt<'_>),
 ) -> (Vec<Block>, Vec<Block>) {
     let mut main = Vec::new();
     let mut subs = Vec::new();
     let mut open = false;
-    for mut b in std::mem::take(&mut p.blocks) {
+    for mut b in blocks {
         let mut into_sub = open;
-        for s in &mut b.stmts {
-            match &s.kind {
-                StmtKind::SubStart { name, .. } if !open => {
-                    open = true;
-                    into_sub = true;
-                    match name.parse::<u32>() {
-                        Ok(n) if (1..=MAX_PROGRAM).contains(&n) => {
-                            numbers.push(n);
-                            s.kind = StmtKind::ProgramStart {
-                                number: Some(n),
-                                name: None,
-                            };
-                        }
-                        Ok(n) => diags.push(refusal(s.span, &format!("the subroutine `o{n}`"))),
-                        Err(_) => {
-                            diags.push(refusal(s.span, &format!("the subroutine `o<{name}>`")))
-                        }
-                    }
-                }
-                StmtKind::SubEnd { value, .. } if open => {
-                    if value.is_some() {
-                        diags.push(refusal(s.span, "a subroutine that returns a value"));
-                    }
-                    open = false;
-                    s.kind = StmtKind::SubReturn { to: None };
-                }
-                StmtKind::Return { value: Some(_), .. } if open => {
-                    diags.push(refusal(s.span, "a subroutine that returns a value"));
-                }
-                StmtKind::Return { value: None, .. } if open => {
-                    s.kind = StmtKind::SubReturn { to: None };
-                }
-                _ => {}
+        let Block {
+            stmts, label, span, ..
+        } = &mut b;
+        for stmt in stmts.iter_mut() {
+            let starts = !open && matches!(stmt.kind, StmtKind::SubStart { .. });
+            let ends = open && matches!(stmt.kind, StmtKind::SubEnd { .. });
+            open |= starts;
+            into_sub |= starts;
+            if open {
+                each(SubStmt {
+                    stmt,
+                    label,
+                    block: *span,
+                });
             }
+            open &= !ends;
         }
         if into_sub {
             subs.push(b);
@@ -157,6 +148,37 @@ fn split(
         }
     }
     (main, subs)
+}
+
+/// The main program's blocks and the subroutines' (as `O n` .. `M99`).
+fn split(
+    p: &mut Program,
+    numbers: &mut Vec<u32>,
+    diags: &mut Vec<Diagnostic>,
+) -> (Vec<Block>, Vec<Block>) {
+    split_subs(std::mem::take(&mut p.blocks), |x| {
+        let s = x.stmt;
+        match &s.kind {
+            StmtKind::SubStart { name, .. } => match name.parse::<u32>() {
+                Ok(n) if (1..=MAX_PROGRAM).contains(&n) => {
+                    numbers.push(n);
+                    s.kind = StmtKind::ProgramStart {
+                        number: Some(n),
+                        name: None,
+                    };
+                }
+                Ok(n) => diags.push(refusal(s.span, &format!("the subroutine `o{n}`"))),
+                Err(_) => diags.push(refusal(s.span, &format!("the subroutine `o<{name}>`"))),
+            },
+            StmtKind::SubEnd { value, .. } | StmtKind::Return { value, .. } => {
+                if value.is_some() {
+                    diags.push(refusal(s.span, "a subroutine that returns a value"));
+                }
+                s.kind = StmtKind::SubReturn { to: None };
+            }
+            _ => {}
+        }
+    })
 }
 
 /// `o100 call [a] [b]` → `G65 P100 A.. B..`.
@@ -247,44 +269,33 @@ const ARGS: u32 = 30;
 /// Siemens: the subroutines as label subprograms after the end, their
 /// calls as argument assignments and a label call, then inlined.
 fn inline(p: &mut Program, diags: &mut Vec<Diagnostic>) {
-    let mut main = Vec::new();
-    let mut subs = Vec::new();
-    let mut open = false;
-    for mut b in std::mem::take(&mut p.blocks) {
-        let mut into_sub = open;
-        for s in &mut b.stmts {
-            match &s.kind {
-                StmtKind::SubStart { name, .. } if !open => {
-                    open = true;
-                    into_sub = true;
-                    b.label = Some(crate::span::Spanned {
-                        node: name.clone(),
-                        span: s.span,
-                    });
-                }
-                StmtKind::SubEnd { value, .. } if open => {
-                    if value.is_some() {
-                        diags.push(inline_refusal(s.span, "a subroutine that returns a value"));
-                    }
-                    open = false;
-                    s.kind = StmtKind::SubReturn { to: None };
-                }
-                StmtKind::Return { .. } if open => {
-                    diags.push(inline_refusal(
-                        s.span,
-                        "a return before the subroutine's end",
-                    ));
-                }
-                _ => {}
+    let (main, mut subs) = split_subs(std::mem::take(&mut p.blocks), |x| {
+        let s = x.stmt;
+        match &s.kind {
+            StmtKind::SubStart { name, .. } => {
+                *x.label = Some(crate::span::Spanned {
+                    node: name.clone(),
+                    span: s.span,
+                });
             }
+            StmtKind::SubEnd { value, .. } => {
+                if value.is_some() {
+                    diags.push(inline_refusal(s.span, "a subroutine that returns a value"));
+                }
+                s.kind = StmtKind::SubReturn { to: None };
+            }
+            StmtKind::Return { .. } => {
+                diags.push(inline_refusal(
+                    s.span,
+                    "a return before the subroutine's end",
+                ));
+            }
+            _ => {}
         }
+    });
+    for b in &mut subs {
         b.stmts
             .retain(|s| !matches!(s.kind, StmtKind::SubStart { .. }));
-        if into_sub {
-            subs.push(b);
-        } else {
-            main.push(b);
-        }
     }
     let sub_spans: Vec<Span> = subs.iter().map(|b| b.span).collect();
     main_locals(p, &sub_spans, diags);

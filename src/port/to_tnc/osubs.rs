@@ -10,9 +10,7 @@
 //! computed number cannot be carried this way (E0617).
 
 use crate::diag::{Code, Diagnostic};
-use crate::ir::{
-    Block, CallArgs, CallKind, CallTarget, ExprKind, Program, QBank, Stmt, StmtKind, Var,
-};
+use crate::ir::{CallArgs, CallKind, CallTarget, ExprKind, Program, QBank, Stmt, StmtKind, Var};
 use crate::span::Span;
 
 /// The highest LinuxCNC subroutine argument (`#30`).
@@ -21,51 +19,43 @@ const ARGS: u32 = 30;
 /// Moves the subroutines after the main program and reads their
 /// arguments as Q parameters.
 pub fn move_subs(p: &mut Program, diags: &mut Vec<Diagnostic>) {
-    let mut main = Vec::new();
-    let mut subs: Vec<Block> = Vec::new();
     let mut ranges: Vec<(Span, Span)> = Vec::new();
-    let mut open: Option<(String, Span)> = None;
-    for mut b in std::mem::take(&mut p.blocks) {
-        let mut into_sub = open.is_some();
-        for s in &mut b.stmts {
-            match &s.kind {
-                StmtKind::SubStart { name, .. } if open.is_none() => {
-                    open = Some((name.clone(), b.span));
-                    into_sub = true;
-                    b.label = Some(crate::span::Spanned {
-                        node: name.clone(),
-                        span: s.span,
-                    });
-                }
-                StmtKind::SubEnd { value: None, .. } if open.is_some() => {
-                    let (_, first) = open.take().expect("checked");
-                    ranges.push((first, b.span));
-                    s.kind = StmtKind::SubReturn { to: None };
-                }
-                StmtKind::Return { .. } | StmtKind::SubEnd { .. } if open.is_some() => {
-                    diags.push(refusal(
-                        s.span,
-                        "a subroutine that returns early or a value",
-                    ));
-                }
-                _ => {}
+    let mut first = None;
+    let blocks = std::mem::take(&mut p.blocks);
+    let (main, mut subs) = crate::port::osubs::split_subs(blocks, |x| {
+        let s = x.stmt;
+        match &s.kind {
+            StmtKind::SubStart { name, .. } => {
+                first = Some(x.block);
+                *x.label = Some(crate::span::Spanned {
+                    node: name.clone(),
+                    span: s.span,
+                });
             }
+            StmtKind::SubEnd { value: None, .. } => {
+                ranges.push((first.take().unwrap_or(x.block), x.block));
+                s.kind = StmtKind::SubReturn { to: None };
+            }
+            StmtKind::Return { .. } | StmtKind::SubEnd { .. } => {
+                diags.push(refusal(
+                    s.span,
+                    "a subroutine that returns early or a value",
+                ));
+            }
+            _ => {}
         }
+    });
+    for b in &mut subs {
         b.stmts
             .retain(|s| !matches!(s.kind, StmtKind::SubStart { .. }));
-        if into_sub {
-            subs.push(b);
-        } else {
-            main.push(b);
-        }
     }
     if subs.is_empty() {
         p.blocks = main;
         return;
     }
-    args_as_q(p, &ranges, diags);
-    main.extend(subs);
     p.blocks = main;
+    args_as_q(p, &ranges, diags);
+    p.blocks.extend(subs);
 }
 
 fn refusal(span: Span, what: &str) -> Diagnostic {
