@@ -172,7 +172,7 @@ fn holes_in_a_row_on_a_circle_and_in_a_grid_are_pattern_def() {
         let text = tnc(&p);
         let l = lines(&text);
         let at = l.iter().position(|x| *x == "PATTERN DEF ~").unwrap();
-        assert_eq!(&l[at + 1..at + 3], &[item, "CYCL CALL PAT"], "{name}");
+        assert_eq!(&l[at + 1..at + 3], &[item, "CYCL CALL PAT FMAX"], "{name}");
         assert!(l[at - 1].starts_with("CYCL DEF 200 DRILLING"), "{name}");
         // One cycle for the drillings, no M99 call for them.
         assert_eq!(text.matches("CYCL DEF 200").count(), 1, "{name}");

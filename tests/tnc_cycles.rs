@@ -185,3 +185,54 @@ fn cc2_recognises_the_milled_cycles() {
     let s = cc2("256");
     assert!(s.contains("TOOLPATH_FEATURE"), "{s}");
 }
+
+/// `CYCL CALL PAT FMAX` and `CYCL CALL POS .. FMAX`: read, run at every
+/// point (positioning at rapid), and written back with their `FMAX`;
+/// `FMAX` on a plain `CYCL CALL` is still refused.
+#[test]
+fn pattern_and_position_calls_take_fmax() {
+    let dir = tempfile::tempdir().unwrap();
+    let h = dir.path().join("pat.h");
+    std::fs::write(
+        &h,
+        "0 BEGIN PGM P MM\n1 TOOL CALL 1 Z S1000\n2 L Z+50 R0 FMAX M3\n3 PATTERN DEF ~\n  POS1 (X+25 Y+33.5 Z+0) ~\n  POS2 (X+50 Y+75 Z+0)\n4 CYCL DEF 200 DRILLING ~\n  Q200=+2 ;SET-UP CLEARANCE ~\n  Q201=-10 ;DEPTH ~\n  Q206=+150 ;FEED RATE FOR PLNGNG ~\n  Q202=+10 ;PLUNGING DEPTH ~\n  Q210=+0 ;DWELL TIME AT TOP ~\n  Q203=+0 ;SURFACE COORDINATE ~\n  Q204=+50 ;2ND SET-UP CLEARANCE ~\n  Q211=+0 ;DWELL TIME AT DEPTH\n5 CYCL CALL PAT FMAX\n6 CYCL CALL POS X+10 Y+10 Z+0 FMAX\n7 L Z+100 R0 FMAX M30\n8 END PGM P MM\n",
+    )
+    .unwrap();
+    let path = h.to_str().unwrap();
+    let o = cncc(&["canon", path]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    // Three holes, each drilled to z -10.
+    for (x, y) in [
+        ("25.0000", "33.5000"),
+        ("50.0000", "75.0000"),
+        ("10.0000", "10.0000"),
+    ] {
+        assert!(
+            out.contains(&format!("STRAIGHT_FEED({x}, {y}, -10.0000")),
+            "{out}"
+        );
+    }
+    let o = cncc(&["port", path, "--to", "heidenhain", "--verify"]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(text.contains("5 CYCL CALL PAT FMAX\n"), "{text}");
+    assert!(
+        text.contains("6 CYCL CALL POS X+10 Y+10 Z+0 FMAX\n"),
+        "{text}"
+    );
+    std::fs::write(&h, "0 BEGIN PGM P MM\n1 CYCL CALL FMAX\n2 END PGM P MM\n").unwrap();
+    let o = cncc(&["check", path]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("E0122"));
+}

@@ -360,10 +360,12 @@ pub struct CycleLine {
 pub enum CycleRunKind {
     /// `CYCL CALL`: once, at the current position.
     Call,
-    /// `CYCL CALL POS X.. Y.. Z..`: once, at the given point.
-    Pos(Box<Axes>),
-    /// `CYCL CALL PAT`: at every point of the last `PATTERN DEF`.
-    Pattern,
+    /// `CYCL CALL POS X.. Y.. Z..`: once, at the given point; `rapid`:
+    /// `FMAX` written (the interpreter positions at rapid either way).
+    Pos { axes: Box<Axes>, rapid: bool },
+    /// `CYCL CALL PAT`: at every point of the last `PATTERN DEF`; `rapid`:
+    /// `FMAX` written.
+    Pattern { rapid: bool },
     /// `M99` in a positioning block: once, at the block's end point.
     Block,
     /// `M89`: after every following positioning block (older controls).

@@ -152,12 +152,12 @@ impl Pass<'_> {
         }
         match &kind {
             CycleRunKind::Block | CycleRunKind::Call => {}
-            CycleRunKind::Pos(a) => {
+            CycleRunKind::Pos { axes: a, .. } => {
                 pos.x = a.x.clone();
                 pos.y = a.y.clone();
                 other.z = a.z.clone();
             }
-            CycleRunKind::Pattern | CycleRunKind::Modal => {
+            CycleRunKind::Pattern { .. } | CycleRunKind::Modal => {
                 let why = "a pattern or modal (M89) cycle call has no mapping".to_string();
                 b.stmts = stmts;
                 return self.refuse(span, &why, b, out);

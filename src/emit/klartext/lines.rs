@@ -85,11 +85,9 @@ fn sort<'p>(w: &mut Writer<'_>, out: &mut Out, s: &'p Stmt, parts: &mut Parts<'p
         K::Motion(_) | K::Pole(_) | K::Corner { .. } | K::Approach(_) if parts.main.is_none() => {
             parts.main = Some(s)
         }
-        K::CycleRun(CycleRunKind::Call | CycleRunKind::Pos(_) | CycleRunKind::Pattern)
-            if parts.main.is_none() =>
-        {
-            parts.main = Some(s)
-        }
+        K::CycleRun(
+            CycleRunKind::Call | CycleRunKind::Pos { .. } | CycleRunKind::Pattern { .. },
+        ) if parts.main.is_none() => parts.main = Some(s),
         K::CycleRun(CycleRunKind::Block) => parts.mods.push("M99".into()),
         K::TncFunction(f) if matches!(f.kind, crate::ir::TncFunctionKind::Paraxial(_)) => {
             parts.mods.push(f.text.clone())
@@ -269,8 +267,14 @@ fn main_line(w: &mut Writer<'_>, out: &mut Out, s: &Stmt, parts: &Parts<'_>) -> 
             }
             l
         }
-        K::CycleRun(CycleRunKind::Pos(a)) => format!("CYCL CALL POS{}", axes(w, out, a)?),
-        K::CycleRun(CycleRunKind::Pattern) => "CYCL CALL PAT".into(),
+        K::CycleRun(CycleRunKind::Pos { axes: a, rapid }) => {
+            out.rapid = *rapid;
+            format!("CYCL CALL POS{}", axes(w, out, a)?)
+        }
+        K::CycleRun(CycleRunKind::Pattern { rapid }) => {
+            out.rapid = *rapid;
+            "CYCL CALL PAT".into()
+        }
         _ => "CYCL CALL".into(),
     };
     if std::mem::take(&mut out.rapid) {

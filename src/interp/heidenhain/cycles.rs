@@ -169,12 +169,12 @@ pub fn run(
             it.heidenhain.modal_call = true;
             call_here(it, span, block, exprs)
         }
-        CycleRunKind::Pos(axes) => {
+        CycleRunKind::Pos { axes, .. } => {
             let w = crate::interp::target::written(it, axes, exprs)?;
             rapid_to(it, w[0], w[1]);
             call_at(it, span, w[2])
         }
-        CycleRunKind::Pattern => {
+        CycleRunKind::Pattern { .. } => {
             let pts = it.heidenhain.pattern.clone();
             if pts.is_empty() {
                 return Err(it.error_at(

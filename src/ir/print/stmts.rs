@@ -187,7 +187,14 @@ impl Printer<'_> {
                 self.cycle_words(&l.words)
             ),
             K::CycleRun(r) => match r {
-                CycleRunKind::Pos(axes) => format!("cycle-run pos{}", self.axes(axes)),
+                CycleRunKind::Pos { axes, rapid } => format!(
+                    "cycle-run pos{}{}",
+                    self.axes(axes),
+                    if *rapid { " rapid" } else { "" }
+                ),
+                CycleRunKind::Pattern { rapid } => {
+                    format!("cycle-run pattern{}", if *rapid { " rapid" } else { "" })
+                }
                 other => format!("cycle-run {}", name(other)),
             },
             K::PatternDef(items) => {

@@ -185,11 +185,17 @@ pub fn cycl_call(ctx: &mut Ctx<'_>, words: &[WordNode], l: usize, r: usize) -> V
     let mut how = CycleRunKind::Call;
     let mut axes = crate::ir::Axes::default();
     let mut pos = false;
+    let mut pat = false;
+    let mut rapid = false;
     for w in words {
         let v = ctx.word_value(w);
         match (w.name.as_str(), v) {
             ("POS", None) => pos = true,
-            ("PAT", None) => how = CycleRunKind::Pattern,
+            ("PAT", None) => pat = true,
+            // Positioning between the points at rapid (the interpreter
+            // positions at rapid either way) [?: the TNC manuals show F and
+            // FMAX here; without either the control's default applies].
+            ("FMAX", None) if pos || pat => rapid = true,
             ("F", Some(v)) => out.push(ctx.stmt(StmtKind::Feed(v), w.l, w.r)),
             ("M", Some(v)) => out.extend(super::path::m_function(ctx, w, v)),
             (n, Some(v)) if pos && n.len() == 1 && "XYZABCUVW".contains(n) => {
@@ -207,12 +213,17 @@ pub fn cycl_call(ctx: &mut Ctx<'_>, words: &[WordNode], l: usize, r: usize) -> V
                 w.l,
                 w.r,
                 format!("CYCL CALL does not take `{n}` here"),
-                "CYCL CALL takes POS with axes, PAT, F and M",
+                "CYCL CALL takes POS with axes, PAT, F (FMAX with POS or PAT) and M",
             ),
         }
     }
     if pos {
-        how = CycleRunKind::Pos(Box::new(axes));
+        how = CycleRunKind::Pos {
+            axes: Box::new(axes),
+            rapid,
+        };
+    } else if pat {
+        how = CycleRunKind::Pattern { rapid };
     }
     out.insert(0, ctx.stmt(StmtKind::CycleRun(how), l, r));
     out
