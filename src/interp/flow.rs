@@ -421,6 +421,7 @@ impl<'l> Walker<'l> {
                     if !truth(it.eval(*c, exprs)?) {
                         return Ok(None);
                     }
+                    it.last_jump = Some(s.span);
                 }
                 Some(self.jump(it, prog, pc, target, *dir, exprs)?)
             }

@@ -100,6 +100,9 @@ pub struct Interp<'a, 's> {
     pub auto_restore: Vec<(usize, Box<State>)>,
     /// G5.2's gathered NURBS points and G5's default I J.
     pub splines: splines::Splines,
+    /// The last conditional jump taken (an error the program raises names
+    /// the test that led to it).
+    pub last_jump: Option<Span>,
 }
 
 impl<'a, 's> Interp<'a, 's> {
@@ -130,6 +133,7 @@ impl<'a, 's> Interp<'a, 's> {
             siemens: siemens::SiemensState::default(),
             fanuc: fanuc_xform::FanucXform::default(),
             heidenhain: heidenhain::HeidenhainState::default(),
+            last_jump: None,
         }
     }
 

@@ -27,14 +27,16 @@ pub fn exec(
     match &f.kind {
         TncFunctionKind::Error(v) => {
             let n = it.value(v, exprs)?;
-            Err(Stop::Error(
-                Diagnostic::new(
-                    Code::KlartextProgramError,
-                    format!("the program stopped with its error {}", number(n)),
-                )
-                .primary(span, "FN 14 raises the program's own error here")
-                .help("the program's own check failed; see the comments near this block for what the number means"),
-            ))
+            let mut d = Diagnostic::new(
+                Code::KlartextProgramError,
+                format!("the program stopped with its error {}", number(n)),
+            )
+            .primary(span, "FN 14 raises the program's own error here")
+            .help("the program's own check failed; see the comments near this block for what the number means");
+            if let Some(jump) = it.last_jump {
+                d = d.secondary(jump, "the last test that jumped before it");
+            }
+            Err(Stop::Error(d))
         }
         TncFunctionKind::Print(items) => {
             let mut text = String::new();
