@@ -104,6 +104,9 @@ pub enum Capability {
     /// Haas G150 general pocket milling: read and kept, reported as not
     /// expanded (W0510) instead of stopping the run.
     GeneralPocketCycle,
+    /// The motion mode at power-on and reset is G00: axis words without a
+    /// motion code move at rapid (Fanuc parameter 3402#0 = 0, Haas).
+    PowerOnRapid,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -141,6 +144,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("pole-paths", Capability::PolePaths),
     ("circular-pocket-cycle", Capability::CircularPocketCycle),
     ("general-pocket-cycle", Capability::GeneralPocketCycle),
+    ("power-on-rapid", Capability::PowerOnRapid),
 ];
 
 impl Capability {

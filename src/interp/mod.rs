@@ -107,10 +107,14 @@ pub struct Interp<'a, 's> {
 
 impl<'a, 's> Interp<'a, 's> {
     pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
+        let mut state = State::new();
+        if spec.has(crate::dialect::Capability::PowerOnRapid) {
+            state.motion = state::ModalMotion::Move(crate::ir::MotionKind::Rapid);
+        }
         Interp {
             spec,
             opts,
-            state: State::new(),
+            state,
             sink: Output {
                 sink,
                 held: Vec::new(),

@@ -46,8 +46,12 @@ pub fn exec(
         }
         StmtKind::CycleCancel => {
             it.cycles.cancel();
-            it.state.motion = ModalMotion::None;
             it.splines.no_motion_code = false;
+            if let Some(k) = motion_after_cancel(it) {
+                it.state.motion = ModalMotion::Move(k);
+                return Ok(());
+            }
+            it.state.motion = ModalMotion::None;
             it.out(Canon::Comment(
                 "interpreter: motion mode set to none".into(),
             ));
@@ -408,6 +412,9 @@ pub(super) fn run_cycle(
     block: &Block,
 ) -> Result<(), Stop> {
     it.comp_block(block.span);
+    if let ModalMotion::Move(k) = it.state.motion {
+        it.state.motion_before_cycle = Some(k);
+    }
     it.state.motion = ModalMotion::Cycle(cb.kind);
     let mark = it.diags.len();
     let mut mem = std::mem::take(&mut it.cycles);
@@ -445,4 +452,20 @@ fn spindle_sync(
     }
     it.out(Canon::StopSpeedFeedSync);
     Ok(())
+}
+
+/// Where the cycle cancel is a code of another modal group than G00/G01
+/// (Fanuc: group 09 beside group 01), the motion in force before the cycle
+/// stays; where it is a motion code itself (LinuxCNC), none does.
+fn motion_after_cancel(it: &Interp<'_, '_>) -> Option<MotionKind> {
+    use crate::dialect::Meaning;
+    let cancel = it.spec.code_for(Meaning::CycleCancel)?;
+    let rapid = it.spec.code_for(Meaning::Motion(MotionKind::Rapid))?;
+    if cancel.group == rapid.group {
+        return None;
+    }
+    match it.state.motion {
+        ModalMotion::Move(k) => Some(k),
+        _ => it.state.motion_before_cycle,
+    }
 }

@@ -38,6 +38,10 @@ pub struct State {
     pub speed: f64,
     pub spindle: SpindleDir,
     pub motion: ModalMotion,
+    /// The G00/G01 in force when a canned cycle began: a control whose
+    /// cycles are a modal group of their own (Fanuc group 09) goes back to
+    /// it at G80.
+    pub motion_before_cycle: Option<MotionKind>,
     /// Active work offset 1..=9 (G54..G59.3).
     pub g5x_index: u32,
     /// Work offsets 1..=9, mm; index 0 unused.
@@ -105,6 +109,7 @@ impl State {
             speed: 0.0,
             spindle: SpindleDir::Stopped,
             motion: ModalMotion::None,
+            motion_before_cycle: None,
             g5x_index: 1,
             g5x: [[0.0; 9]; 10],
             g5x_rotation: [0.0; 10],
