@@ -134,15 +134,22 @@ pub(super) fn resolve<'s>(
 fn unknown(letter: char, code: Decimal, span: Span, spec: &DialectSpec) -> Diagnostic {
     let name = format!("{letter}{code}");
     if letter == 'G' {
+        let help = known_elsewhere(letter, code, spec).unwrap_or_else(|| {
+            "check the number, or load a dialect spec that defines it with `--dialect-file`".into()
+        });
         return Diagnostic::new(
             Code::UnknownGCode,
             format!("`{name}` is not a G code of {}", spec.name),
         )
         .primary(span, "unknown G code")
-        .help("check the number, or load a dialect spec that defines it with `--dialect-file`");
+        .help(help);
     }
-    let d = Diagnostic::new(Code::UnknownMCode, format!("`{name}` is not an M code of {}", spec.name))
-        .help("machine builders add M codes: describe this one in a dialect spec loaded with `--dialect-file`");
+    // M codes are the machine builder's: another dialect's is no hint.
+    let d = Diagnostic::new(
+        Code::UnknownMCode,
+        format!("`{name}` is not an M code of {}", spec.name),
+    )
+    .help("machine builders add M codes: describe this one in a dialect spec loaded with `--dialect-file`");
     if spec.has(Capability::StrictMCodes) {
         d.primary(span, "unknown M code")
     } else {
@@ -236,4 +243,19 @@ fn conflict(first: &CodeWord<'_>, later: &CodeWord<'_>) -> Diagnostic {
     .primary(later.span, "second code of the group")
     .secondary(first.span, "first code of the group")
     .help("codes of one modal group exclude each other: keep one per block")
+}
+
+/// The built-in dialects that define the code, as advice: the program may
+/// have been read as the wrong dialect (a Haas `.nc` read as Fanuc).
+fn known_elsewhere(letter: char, code: Decimal, spec: &DialectSpec) -> Option<String> {
+    let others: Vec<&str> = crate::dialect::builtin::builtins()
+        .iter()
+        .filter(|s| s.id != spec.id && s.family == spec.family && s.code(letter, code).is_some())
+        .map(|s| s.id.as_str())
+        .collect();
+    let first = others.first()?;
+    Some(format!(
+        "{letter}{code} is a code of {}: if the program is for that control, read it with `--dialect {first}`",
+        others.join(", ")
+    ))
 }
