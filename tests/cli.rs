@@ -265,3 +265,31 @@ fn no_run_only_reads() {
     let o = cncc(&["check", "--no-run", file]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
 }
+
+/// A Siemens tool called by name: without `--tool-table` the run goes on
+/// with W0516 (a tool of no size); with a table the name is a row's
+/// comment, and a name missing from a given table is E0501.
+#[test]
+fn named_tools_without_a_table_warn_and_with_one_must_be_there() {
+    let dir = tempfile::tempdir().unwrap();
+    let mpf = dir.path().join("named.mpf");
+    std::fs::write(&mpf, "T=\"FACEMILL 63\"\nM6\nD1\nG0 X0 Y0 Z10\nM30\n").unwrap();
+    let mpf = mpf.to_str().unwrap();
+    let o = cncc(&["check", mpf]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(
+        err.contains("warning[W0516 named-tool-without-table]"),
+        "{err}"
+    );
+    let with = dir.path().join("with.tbl");
+    std::fs::write(&with, "T7 P7 Z2.0 D2.48 ;FACEMILL 63\n").unwrap();
+    let o = cncc(&["check", "--tool-table", with.to_str().unwrap(), mpf]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("W0516"), "{}", stderr(&o));
+    let without = dir.path().join("without.tbl");
+    std::fs::write(&without, "T7 P7 Z2.0 D2.48 ;CUTTER 16\n").unwrap();
+    let o = cncc(&["check", "--tool-table", without.to_str().unwrap(), mpf]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("E0501"), "{}", stderr(&o));
+}

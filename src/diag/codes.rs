@@ -280,6 +280,9 @@ codes! {
     RunStoppedEarly = "W0511", "run-stopped-early", Warning,
         "the run-time checks stop at a statement cncc cannot run",
         "`check` runs the program to find run-time mistakes. This statement is read and kept, but cncc cannot run it yet, so the blocks after it were not checked at run time. The program itself may be right.";
+    NamedToolWithoutTable = "W0516", "named-tool-without-table", Warning,
+        "a tool called by name with no tool table to find it in",
+        "Siemens tool management calls tools by name (`T=\"FACEMILL 63\"`). cncc finds a named tool by the comment of a row of the tool table given with `--tool-table`; without one, only the built-in tools T1..T20 exist. The run goes on with a tool of no length and no diameter under that name, so lengths and radius compensation are not checked for it: give a tool table whose row carries the name as its comment.";
     CannotExpandCycle = "W0510", "cycle-not-expanded", Warning,
         "a cycle the interpreter cannot expand into moves",
         "The cycle is kept in the program, but its documentation does not define its toolpath well enough for cncc to generate it; the canonical output skips its moves.";

@@ -72,8 +72,16 @@ pub fn row_of(it: &Interp<'_, '_>, t: i64) -> Result<i64, Stop> {
 /// A tool called by name (Siemens `T="FACEMILL 63"`): the tool-table row
 /// whose comment is that name (case and surrounding spaces aside), since
 /// LinuxCNC tables have no name column.
-fn tool_by_name(it: &Interp<'_, '_>, name: &str) -> Result<i64, Stop> {
+fn tool_by_name(it: &mut Interp<'_, '_>, name: &str) -> Result<i64, Stop> {
     let wanted = name.trim();
+    let found = it
+        .tool_table
+        .tools
+        .iter()
+        .any(|t| t.comment.trim().eq_ignore_ascii_case(wanted));
+    if !found && it.opts.tool_table == crate::interp::tooltable::ToolTable::builtin() {
+        return Ok(assumed_tool(it, wanted));
+    }
     it.tool_table
         .tools
         .iter()
@@ -91,6 +99,37 @@ fn tool_by_name(it: &Interp<'_, '_>, name: &str) -> Result<i64, Stop> {
                 other => other,
             }
         })
+}
+
+/// No tool table was given: the named tool joins the run's table as a
+/// tool of no size (numbers from 1001 up), with W0516.
+fn assumed_tool(it: &mut Interp<'_, '_>, name: &str) -> i64 {
+    let number = 1001
+        + it.tool_table
+            .tools
+            .iter()
+            .filter(|t| t.number > 1000)
+            .count() as i64;
+    it.tool_table.tools.push(crate::interp::tooltable::Tool {
+        number,
+        pocket: number,
+        offset: [0.0; 9],
+        diameter: 0.0,
+        front_angle: 0.0,
+        back_angle: 0.0,
+        orientation: 0,
+        comment: name.to_string(),
+    });
+    let d = crate::diag::Diagnostic::new(
+        Code::NamedToolWithoutTable,
+        format!("tool \"{name}\" is called by name and no tool table was given"),
+    )
+    .primary(it.span, "run as a tool of no length and no diameter")
+    .help(format!(
+        "give `--tool-table` with a row named by its comment: `T5 P5 Z2.0 D2.48 ;{name}`"
+    ));
+    it.diags.push(d);
+    number
 }
 
 /// mm per machine unit.
