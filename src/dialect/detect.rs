@@ -199,13 +199,31 @@ fn haas_hint(line: &str) -> Option<&'static str> {
     for (word, what) in [
         ("G187", "Haas `G187`"),
         ("G154", "Haas `G154`"),
+        ("G150", "Haas `G150`"),
         ("M97", "Haas `M97`"),
     ] {
         if has_word(line, word) {
             return Some(what);
         }
     }
+    // Text engraving `G47 P0 (TEXT)`: Fanuc's G47 (an old tool position
+    // offset) takes no P and no text.
+    if has_word(line, "G47") && line.contains('(') && has_letter_word(line, 'P') {
+        return Some("Haas engraving `G47 P.. (text)`");
+    }
     None
+}
+
+/// A word with this letter and a number (`P0`) outside comments.
+fn has_letter_word(line: &str, letter: char) -> bool {
+    let code = line.split('(').next().unwrap_or("");
+    let b = code.as_bytes();
+    b.iter().enumerate().any(|(i, &c)| {
+        c == letter as u8
+            && (i == 0 || !b[i - 1].is_ascii_alphabetic())
+            && b.get(i + 1)
+                .is_some_and(|n| n.is_ascii_digit() || *n == b'-' || *n == b'.')
+    })
 }
 
 /// `word` stands alone: not after a letter, not before a digit or point.
@@ -249,6 +267,15 @@ mod tests {
         assert_eq!(det("a.nc", "O1234\nG0 X1\nM30").id, "fanuc");
         assert_eq!(det("a.txt", "0 BEGIN PGM X MM").id, "heidenhain");
         assert_eq!(det("a.nc", "N10 G187 P1 E0.01").id, "haas");
+        assert_eq!(
+            det(
+                "a.nc",
+                "N535 G47 P0 (CADE) X.01 Y-2.95 I0. J0.1 R0.05 Z-0.005 F15. E10."
+            )
+            .id,
+            "haas"
+        );
+        assert_eq!(det("a.nc", "G47 X1. (OFFSET)").id, "fanuc");
         assert_eq!(det("a.nc", "G1 X1 (G1870 is not G187)").id, "fanuc");
         assert_eq!(det("a.nc", "N5 MCALL CYCLE81(1,2,3)").id, "siemens840d");
         assert_eq!(
