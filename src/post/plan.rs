@@ -116,10 +116,12 @@ fn walk<'p>(
             Executable::OptionalStop { .. } => out.push(Item::Stop { optional: true }),
             Executable::DisplayMessage { text, .. } => out.push(Item::Message(text)),
             Executable::Rapid(r) => match r.toolpath.as_deref() {
-                Some(paths) => match super::toolpaths::moves(base, paths, None, true, &r.id) {
-                    Ok(moves) => out.push(Item::Rapid { id: &r.id, moves }),
-                    Err(e) => errors.push(e),
-                },
+                Some(paths) => {
+                    match super::toolpaths::moves(base, paths, None, (true, None), &r.id) {
+                        Ok(moves) => out.push(Item::Rapid { id: &r.id, moves }),
+                        Err(e) => errors.push(e),
+                    }
+                }
                 // Without a toolpath it is the move via the security plane
                 // that every posted workingstep already starts with.
                 None => {}

@@ -177,7 +177,7 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
             &s.frame,
             paths,
             feed(s).ok(),
-            false,
+            (false, Some(s.top)),
             &s.op.id,
         )?),
         _ => None,

@@ -42,12 +42,13 @@ pub enum PathMove {
 const SAME: f64 = 1e-9;
 
 /// The moves of `paths` placed by `frame`, fed at `feed` (mm/min) unless a
-/// trajectory says otherwise; `rapid_only` for a `RAPID_MOVEMENT`.
+/// trajectory says otherwise; `rapid_only` for a `RAPID_MOVEMENT`; `top`:
+/// the feature's top, below which the way to the first point is fed.
 pub fn moves(
     frame: &Frame,
     paths: &[Toolpath],
     feed: Option<f64>,
-    rapid_only: bool,
+    (rapid_only, top): (bool, Option<f64>),
     owner: &str,
 ) -> Result<Vec<PathMove>, PostError> {
     let mut out = Vec::new();
@@ -101,9 +102,12 @@ pub fn moves(
         curve_moves(frame, curve, speed, owner, &mut out)?;
     }
     // The path starts at its first point: the tool gets there by
-    // positioning, not by cutting.
-    if let Some(PathMove::Straight { feed, .. }) = out.first_mut() {
-        *feed = None;
+    // positioning, not by cutting, unless the point is below the
+    // feature's top (then it feeds down to it).
+    if let Some(PathMove::Straight { to, feed }) = out.first_mut() {
+        if top.is_none_or(|t| to[2] >= t - SAME) {
+            *feed = None;
+        }
     }
     Ok(out)
 }
@@ -260,4 +264,67 @@ pub(crate) fn write(
         }
     }
     Ok(at)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::stepnc::model::{ToolpathBase, ToolpathType};
+
+    fn polyline(points: &[[f64; 3]]) -> Toolpath {
+        Toolpath::CutterLocation {
+            base: ToolpathBase {
+                priority: true,
+                kind: ToolpathType::TrajectoryPath,
+                speed: None,
+                technology: None,
+                machine_functions: None,
+            },
+            direction: None,
+            basic_curve: Curve::Polyline {
+                name: String::new(),
+                points: points
+                    .iter()
+                    .map(|p| Point {
+                        name: String::new(),
+                        xyz: *p,
+                    })
+                    .collect(),
+            },
+            tool_axis: None,
+            surface_normal: None,
+        }
+    }
+
+    /// The way to the first point is a rapid above the feature's top and
+    /// a feed below it (the tool would plunge into the material).
+    #[test]
+    fn the_start_is_reached_at_rapid_only_above_the_top() {
+        let f = Frame::identity();
+        let above = [polyline(&[[0.0, 0.0, 5.0], [0.0, 0.0, -1.0]])];
+        let m = moves(&f, &above, Some(300.0), (false, Some(0.0)), "op").unwrap();
+        assert_eq!(
+            m[0],
+            PathMove::Straight {
+                to: [0.0, 0.0, 5.0],
+                feed: None
+            }
+        );
+        assert_eq!(
+            m[1],
+            PathMove::Straight {
+                to: [0.0, 0.0, -1.0],
+                feed: Some(300.0)
+            }
+        );
+        let below = [polyline(&[[0.0, 0.0, -2.0], [10.0, 0.0, -2.0]])];
+        let m = moves(&f, &below, Some(300.0), (false, Some(0.0)), "op").unwrap();
+        assert_eq!(
+            m[0],
+            PathMove::Straight {
+                to: [0.0, 0.0, -2.0],
+                feed: Some(300.0)
+            }
+        );
+    }
 }
