@@ -110,16 +110,12 @@ fn assumed_tool(it: &mut Interp<'_, '_>, name: &str) -> i64 {
             .iter()
             .filter(|t| t.number > 1000)
             .count() as i64;
-    it.tool_table.tools.push(crate::interp::tooltable::Tool {
-        number,
-        pocket: number,
-        offset: [0.0; 9],
-        diameter: 0.0,
-        front_angle: 0.0,
-        back_angle: 0.0,
-        orientation: 0,
-        comment: name.to_string(),
-    });
+    it.tool_table
+        .tools
+        .push(crate::interp::tooltable::Tool::blank(
+            number,
+            name.to_string(),
+        ));
     let d = crate::diag::Diagnostic::new(
         Code::NamedToolWithoutTable,
         format!("tool \"{name}\" is called by name and no tool table was given"),

@@ -18,6 +18,22 @@ pub struct Tool {
     pub comment: String,
 }
 
+impl Tool {
+    /// Tool `number` in pocket `number`, with no offsets and no size.
+    pub fn blank(number: i64, comment: String) -> Tool {
+        Tool {
+            number,
+            pocket: number,
+            offset: [0.0; 9],
+            diameter: 0.0,
+            front_angle: 0.0,
+            back_angle: 0.0,
+            orientation: 0,
+            comment,
+        }
+    }
+}
+
 /// Tools in table order; the row (1-based) is what `CHANGE_TOOL` prints.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ToolTable {
@@ -102,14 +118,8 @@ fn parse_line(line: &str) -> Result<Option<Tool>, String> {
         return Ok(None);
     }
     let mut t = Tool {
-        number: -1,
         pocket: 0,
-        offset: [0.0; 9],
-        diameter: 0.0,
-        front_angle: 0.0,
-        back_angle: 0.0,
-        orientation: 0,
-        comment,
+        ..Tool::blank(-1, comment)
     };
     for word in body.split_whitespace() {
         let mut chars = word.chars();

@@ -78,11 +78,12 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
         .retain(|b| !b.stmts.is_empty() || b.label.is_some());
 }
 
-/// `G43 H<tool>` on the first Z move after each `TOOL CALL` (a target
-/// with the length-offset code and no Siemens edge `D1`).
+/// `G43 H<tool>` on the first Z move after each `TOOL CALL`, for a target
+/// with the length-offset code (Siemens has none: its `D1` carries the
+/// length).
 fn length_offsets(p: &mut Program, to: &DialectSpec) {
     let g43 = Meaning::LengthComp(crate::ir::LengthComp::Positive);
-    if to.family == Family::Sinumerik || to.code_for(g43).is_none() {
+    if to.code_for(g43).is_none() {
         return;
     }
     let mut pending: Option<crate::ir::Value> = None;

@@ -72,7 +72,6 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
     }
     let applies = from.has(Capability::OWords)
         && !to.has(Capability::OWords)
-        && to.family != Family::Klartext
         && to.has(Capability::NumberedPrograms)
         && to.code_for(Meaning::MacroCall).is_some();
     if !applies || !has_subs(p) {

@@ -225,7 +225,7 @@ pub fn explicit_moves(
     let mut sink = MoveSink::new(frame);
     gen(&mut sink);
     w.comment(&format!("explicit toolpath: {} moves", sink.moves.len()))?;
-    explicit::write(w, &sink.moves, feed(s)?, s.clear)
+    explicit::write(w, &sink.moves, feed(s)?)
 }
 
 /// The layers of a cut from the top to the bottom plus allowance.

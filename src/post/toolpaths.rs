@@ -269,31 +269,21 @@ pub(crate) fn write(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::stepnc::model::{ToolpathBase, ToolpathType};
+    use crate::stepnc::model::ToolpathType;
 
     fn polyline(points: &[[f64; 3]]) -> Toolpath {
-        Toolpath::CutterLocation {
-            base: ToolpathBase {
-                priority: true,
-                kind: ToolpathType::TrajectoryPath,
-                speed: None,
-                technology: None,
-                machine_functions: None,
-            },
-            direction: None,
-            basic_curve: Curve::Polyline {
+        let points = points
+            .iter()
+            .map(|p| Point {
                 name: String::new(),
-                points: points
-                    .iter()
-                    .map(|p| Point {
-                        name: String::new(),
-                        xyz: *p,
-                    })
-                    .collect(),
-            },
-            tool_axis: None,
-            surface_normal: None,
-        }
+                xyz: *p,
+            })
+            .collect();
+        let curve = Curve::Polyline {
+            name: String::new(),
+            points,
+        };
+        crate::raise::ops::trajectory(curve, None, ToolpathType::TrajectoryPath)
     }
 
     /// The way to the first point is a rapid above the feature's top and

@@ -98,16 +98,7 @@ fn tool_mut(tools: &mut Vec<Tool>, number: i64) -> &mut Tool {
     let at = match tools.iter().position(|t| t.number == number) {
         Some(i) => i,
         None => {
-            tools.push(Tool {
-                number,
-                pocket: number,
-                offset: [0.0; 9],
-                diameter: 0.0,
-                front_angle: 0.0,
-                back_angle: 0.0,
-                orientation: 0,
-                comment: String::new(),
-            });
+            tools.push(Tool::blank(number, String::new()));
             tools.len() - 1
         }
     };
