@@ -1,0 +1,153 @@
+//! `cncc check` on every real program of `../shared/field/` and
+//! `../shared/corpus/`, as a new user runs it: the dialect is the one the
+//! folder names (`big/` files name it in their first word, and the generic
+//! ISO program there is read as LinuxCNC, the control it was written for).
+//!
+//! A program that does not check clean must be listed in
+//! `tests/field/<dialect>.expect` with the code of its first error and the
+//! reason, which must be a real mistake in that file or a construct its own
+//! controller refuses too. A listed file that now checks clean fails the
+//! test as well, so the list never goes stale. No program may crash
+//! (exit codes other than 0 and 1) or run away (the run is bounded).
+
+mod common;
+use common::*;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+const DIALECTS: &[&str] = &["fanuc", "haas", "linuxcnc", "siemens840d", "heidenhain"];
+
+/// One expected rejection: the first error's code and why it is right.
+struct Expected {
+    code: String,
+    reason: String,
+}
+
+fn expectations() -> BTreeMap<String, Expected> {
+    let mut out = BTreeMap::new();
+    for d in DIALECTS {
+        let path = root().join("tests/field").join(format!("{d}.expect"));
+        let text = std::fs::read_to_string(&path).unwrap_or_default();
+        for (n, line) in text.lines().enumerate() {
+            let line = line.trim_end();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let mut parts = line.splitn(3, '\t');
+            let (Some(file), Some(code), Some(reason)) = (parts.next(), parts.next(), parts.next())
+            else {
+                panic!("{}:{}: want `file<TAB>code<TAB>reason`", path.display(), n + 1);
+            };
+            assert!(reason.len() > 10, "{}:{}: say why", path.display(), n + 1);
+            out.insert(
+                file.to_string(),
+                Expected {
+                    code: code.to_string(),
+                    reason: reason.to_string(),
+                },
+            );
+        }
+    }
+    out
+}
+
+/// (dialect, path relative to `../shared`) of every program judged.
+fn programs(shared: &Path) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    for top in ["field", "corpus"] {
+        for d in DIALECTS {
+            collect(shared, &shared.join(top).join(d), d, &mut out);
+        }
+    }
+    for f in files_in(&shared.join("field/big")) {
+        let name = f.file_name().unwrap().to_string_lossy().to_string();
+        let d = DIALECTS
+            .iter()
+            .find(|d| name.starts_with(&format!("{d}_")))
+            .copied()
+            .unwrap_or("linuxcnc");
+        out.push((d.to_string(), rel(shared, &f)));
+    }
+    out
+}
+
+fn collect(shared: &Path, dir: &Path, d: &str, out: &mut Vec<(String, String)>) {
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path()).collect())
+        .unwrap_or_default();
+    entries.sort();
+    for p in entries {
+        if p.is_dir() {
+            collect(shared, &p, d, out);
+        } else if !p.file_name().unwrap().to_string_lossy().ends_with(".md") {
+            out.push((d.to_string(), rel(shared, &p)));
+        }
+    }
+}
+
+fn rel(shared: &Path, p: &Path) -> String {
+    p.strip_prefix(shared).unwrap().to_string_lossy().replace('\\', "/")
+}
+
+/// The code of the first error `check` printed (`error[E0122 ...]`).
+fn first_error(stderr: &str) -> Option<String> {
+    stderr.lines().find_map(|l| {
+        let rest = l.strip_prefix("error[")?;
+        Some(rest.split([' ', ']']).next()?.to_string())
+    })
+}
+
+#[test]
+fn field_programs_check_clean_or_fail_for_a_real_reason() {
+    let Some(shared) = shared() else {
+        return;
+    };
+    let expected = expectations();
+    let mut failures = Vec::new();
+    let (mut clean, mut field_clean, mut field_total) = (0, 0, 0);
+    let all = programs(&shared);
+    for (d, file) in &all {
+        let path = shared.join(file);
+        let o = cncc(&["check", "--dialect", d, path.to_str().unwrap()]);
+        let code = o.status.code();
+        let err = stderr(&o);
+        let is_field = file.starts_with("field/");
+        field_total += is_field as usize;
+        match (code, expected.get(file)) {
+            (Some(0), None) => {
+                clean += 1;
+                field_clean += is_field as usize;
+            }
+            (Some(0), Some(e)) => failures.push(format!(
+                "{file}: listed as rejected ({}: {}) but checks clean: take it off the list",
+                e.code, e.reason
+            )),
+            (Some(1), Some(e)) if first_error(&err).as_deref() == Some(&e.code) => {}
+            (Some(1), Some(e)) => failures.push(format!(
+                "{file}: listed for {} but the first error is {:?}:\n{}",
+                e.code,
+                first_error(&err),
+                head(&err)
+            )),
+            (Some(1), None) => failures.push(format!(
+                "{file} ({d}) does not check clean:\n{}",
+                head(&err)
+            )),
+            (other, _) => failures.push(format!("{file}: crashed ({other:?}):\n{}", head(&err))),
+        }
+    }
+    for file in expected.keys() {
+        if !all.iter().any(|(_, f)| f == file) {
+            failures.push(format!("{file} is listed but is not in ../shared"));
+        }
+    }
+    eprintln!(
+        "{clean}/{} programs check clean; field: {field_clean}/{field_total}",
+        all.len()
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
+
+fn head(s: &str) -> String {
+    s.lines().take(12).collect::<Vec<_>>().join("\n")
+}
