@@ -38,6 +38,7 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
         all.extend(d);
         a.options.tool_table = table;
     }
+    a.options.missing_calls_warn = true;
     for path in a.files {
         if crate::stepnc::is_part21(path, &read_head(path)?) {
             all.extend(crate::cli::stepnc::check_file(ctx, path)?);
@@ -87,10 +88,15 @@ fn check_file(
     .map_err(fail)?;
     let mut diags = result.diagnostics;
     if a.run && !diags.iter().any(Diagnostic::is_error) {
-        let mut run = match stream.handover {
+        let program = match stream.handover {
+            None => None,
+            Some(_) => Some(read_whole(path, id, &spec)?),
+        };
+        let fragment = program.as_deref().and_then(crate::interp::fragment::detect);
+        let mut run = match program {
             None => stream.finish(&mut it),
-            Some(_) => {
-                let program = read_whole(path, id, &spec)?;
+            Some(_) if fragment.is_some() => Vec::new(),
+            Some(program) => {
                 let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
                 let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
                 let mut d = stream.continue_with(&mut it, program, &mut loader);
@@ -98,6 +104,15 @@ fn check_file(
                 d
             }
         };
+        drop(it);
+        // A subprogram or library checked alone runs again from its top
+        // with its caller's values unknown: at once when it has control
+        // flow, after a failed run when it has none (a feed from the caller).
+        if fragment.is_some() || run.iter().any(Diagnostic::is_error) {
+            if let Some(again) = run_as_fragment(ctx, path, id, &spec, a)? {
+                run = again;
+            }
+        }
         // A statement cncc cannot run yet is our limit, not the program's
         // mistake: said as a warning that the run-time checks stop there.
         for d in run.iter_mut().filter(|d| d.code == Code::UnsupportedHere) {
@@ -117,6 +132,35 @@ fn check_file(
         }
     }
     Ok(diags)
+}
+
+/// A run that failed may be a subprogram's or a library's, checked alone:
+/// if the file is one, its run again with the caller's values unknown
+/// ([`crate::interp::fragment`]).
+fn run_as_fragment(
+    ctx: &mut Context,
+    path: &Path,
+    id: crate::span::FileId,
+    spec: &std::sync::Arc<DialectSpec>,
+    a: &CheckArgs<'_>,
+) -> Result<Option<Vec<Diagnostic>>, Failure> {
+    let program = read_whole(path, id, spec)?;
+    let Some(fragment) = crate::interp::fragment::detect(&program) else {
+        return Ok(None);
+    };
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
+    let mut discard = |_: crate::canon::Canon, _: crate::span::Span| {};
+    let mut d = crate::interp::fragment::run(
+        program,
+        &fragment,
+        spec,
+        &a.options,
+        &mut loader,
+        &mut discard,
+    );
+    d.append(&mut loader.diags);
+    Ok(Some(d))
 }
 
 /// Keeps, for a file read as a stream, the lines the diagnostics show.

@@ -280,6 +280,12 @@ codes! {
     RunStoppedEarly = "W0511", "run-stopped-early", Warning,
         "the run-time checks stop at a statement cncc cannot run",
         "`check` runs the program to find run-time mistakes. This statement is read and kept, but cncc cannot run it yet, so the blocks after it were not checked at run time. The program itself may be right.";
+    ValueFromOutside = "W0590", "value-from-outside", Warning,
+        "the run stops at a value the program gets from its caller or the machine",
+        "This file is a subprogram, macro, PROC or library of subroutines: it gets its parameters from the program that calls it (Fanuc G65 arguments #1-#33, LinuxCNC sub parameters #1-#30, Siemens PROC parameters and R parameters, Heidenhain Q parameters) or from the machine (GUD variables). Checked alone, cncc cannot know those values, so the run-time checks stop where the first one is needed; every block was still checked for syntax and structure. Check the caller together with it (put both files in one folder and check the caller) to run it with real values.";
+    CalledProgramMissing = "W0591", "called-program-missing", Warning,
+        "a call to a program that is neither in this file nor beside it",
+        "The program calls a subprogram or macro that cncc cannot find in the file or in the same folder (as `O1000.nc`, `L54.SPF`, `name.ngc`...). The controller may well hold it (a machine builder's macro, a program kept in the control's memory), so the call is not an error, but what it does was not checked: the run goes on after the call as if it had returned without moving. Put the called program beside this one to check it too.";
     NamedToolWithoutTable = "W0516", "named-tool-without-table", Warning,
         "a tool called by name with no tool table to find it in",
         "Siemens tool management calls tools by name (`T=\"FACEMILL 63\"`). cncc finds a named tool by the comment of a row of the tool table given with `--tool-table`; without one, only the built-in tools T1..T20 exist. The run goes on with a tool of no length and no diameter under that name, so lengths and radius compensation are not checked for it: give a tool table whose row carries the name as its comment.";

@@ -182,15 +182,20 @@ impl Interp<'_, '_> {
         Ok(match v {
             Var::Numbered(n) => {
                 self.check_number(*n, span)?;
+                self.known_numbered(*n, span)?;
                 self.read_numbered(*n)
             }
             Var::Indirect(e) => {
                 let n = self.eval(*e, exprs)?.unwrap_or(0.0).round().max(0.0) as u32;
                 self.check_number(n, span)?;
+                self.known_numbered(n, span)?;
                 self.read_numbered(n)
             }
             Var::Named(name) => match self.read_named(name) {
                 Some(v) => Some(v),
+                None if self.from_outside => {
+                    return Err(self.from_outside_at(span, &format!("#<{name}>")))
+                }
                 None => {
                     return Err(self.error_at(
                         span,
@@ -199,14 +204,24 @@ impl Interp<'_, '_> {
                     ))
                 }
             },
-            Var::R(n) => Some(self.params.r(*n)),
-            Var::Q(bank, n) => Some(self.params.q(*bank, *n)),
+            Var::R(n) => {
+                self.known_r(*n, span)?;
+                Some(self.params.r(*n))
+            }
+            Var::Q(bank, n) => {
+                if self.from_outside && !self.params.q_known(*bank, *n) {
+                    return Err(self.from_outside_at(span, &format!("{}{n}", bank_name(*bank))));
+                }
+                Some(self.params.q(*bank, *n))
+            }
             Var::RIndirect(e) => {
-                let n = self.eval(*e, exprs)?.unwrap_or(0.0);
-                Some(self.params.r(n.round().max(0.0) as u32))
+                let n = self.eval(*e, exprs)?.unwrap_or(0.0).round().max(0.0) as u32;
+                self.known_r(n, span)?;
+                Some(self.params.r(n))
             }
             Var::User(name, _) => match self.params.user(name) {
                 Some(v) => Some(v),
+                None if self.from_outside => return Err(self.from_outside_at(span, name)),
                 None => {
                     return Err(self.error_at(
                         span,
@@ -268,6 +283,38 @@ impl Interp<'_, '_> {
             .or_else(|| super::predefined::named(self, name))
     }
 
+    /// In a file checked alone ([`Interp::from_outside`]), `#n` that
+    /// neither the machine nor this run has set comes from the caller.
+    fn known_numbered(&self, n: u32, span: crate::span::Span) -> Result<(), Stop> {
+        if self.from_outside
+            && !self.params.numbered_known(n)
+            && super::predefined::numbered(self, n).is_none()
+        {
+            return Err(self.from_outside_at(span, &format!("#{n}")));
+        }
+        Ok(())
+    }
+
+    fn known_r(&self, n: u32, span: crate::span::Span) -> Result<(), Stop> {
+        if self.from_outside && !self.params.r_known(n) {
+            return Err(self.from_outside_at(span, &format!("R{n}")));
+        }
+        Ok(())
+    }
+
+    /// The run of a file checked alone stops at `what`, a value only its
+    /// caller (or the machine) gives.
+    pub fn from_outside_at(&self, span: crate::span::Span, what: &str) -> Stop {
+        Stop::Unknown(
+            Diagnostic::new(
+                Code::ValueFromOutside,
+                format!("`{what}` gets its value from the caller or the machine: the run-time checks stop here"),
+            )
+            .primary(span, "not known when this file is checked alone")
+            .help("every block was checked for syntax and structure; check the calling program with this file beside it to run it with real values"),
+        )
+    }
+
     /// A run-time error at a span: the run stops here.
     pub fn error_at(&self, span: crate::span::Span, code: Code, msg: impl Into<String>) -> Stop {
         Stop::Error(Diagnostic::new(code, msg).primary(span, "here"))
@@ -298,4 +345,12 @@ fn bin_to_bcd(a: f64) -> f64 {
         v /= 10;
     }
     out as f64
+}
+
+fn bank_name(bank: crate::ir::QBank) -> &'static str {
+    match bank {
+        crate::ir::QBank::Q => "Q",
+        crate::ir::QBank::Local => "QL",
+        crate::ir::QBank::Remanent => "QR",
+    }
 }

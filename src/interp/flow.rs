@@ -777,6 +777,12 @@ impl<'l> Walker<'l> {
         let target = target.clone();
         let (to_prog, at) = match self.find(prog, &target, kind) {
             Some(x) => x,
+            None if it.opts.missing_calls_warn => {
+                it.diags.push(missing_call(it.span, &target));
+                // What the called program sets is not known from here on.
+                it.from_outside = true;
+                return Ok(Next::Step);
+            }
             None => {
                 return Err(it.error_at(
                     it.span,
@@ -1067,3 +1073,16 @@ fn local_numbers(spec: &crate::dialect::DialectSpec) -> Vec<u32> {
 #[cfg(test)]
 #[path = "flow_tests.rs"]
 mod tests;
+
+/// W0591: the called program is not here; the run goes on after the call.
+fn missing_call(span: crate::span::Span, target: &CallTarget) -> Diagnostic {
+    Diagnostic::new(
+        Code::CalledProgramMissing,
+        format!(
+            "subprogram {} is neither in this file nor beside it: what it does was not checked",
+            target_name(target)
+        ),
+    )
+    .primary(span, "called here")
+    .help("the run goes on after the call as if it returned without moving; put the called program beside this file to check it too")
+}

@@ -273,7 +273,7 @@ impl Interp<'_, '_> {
     /// Reports an error from inside a [`MotionHost`] call; the caller
     /// checks [`Self::take_error`] afterwards.
     fn report_stop(&mut self, e: Stop) {
-        if let Stop::Error(d) = e {
+        if let Stop::Error(d) | Stop::Unknown(d) = e {
             self.diags.push(d);
         }
     }

@@ -16,6 +16,7 @@ pub mod exec;
 pub mod fanuc_xform;
 pub mod file;
 pub mod flow;
+pub mod fragment;
 pub mod haas_g150;
 pub mod haas_pocket;
 pub mod heidenhain;
@@ -62,6 +63,10 @@ pub enum Stop {
     Error(Diagnostic),
     /// M2/M30 or a closing `%`: the program ended.
     End,
+    /// A value the program gets from outside (its caller's arguments, the
+    /// machine's variables) is needed and cannot be known when the file is
+    /// checked alone: the run stops here with this warning (W0590).
+    Unknown(Diagnostic),
 }
 
 pub struct Interp<'a, 's> {
@@ -103,6 +108,10 @@ pub struct Interp<'a, 's> {
     /// The last conditional jump taken (an error the program raises names
     /// the test that led to it).
     pub last_jump: Option<Span>,
+    /// The file is a subprogram, macro, PROC or subroutine library checked
+    /// alone: values it never sets come from outside, unknown here
+    /// ([`Stop::Unknown`]).
+    pub from_outside: bool,
 }
 
 impl<'a, 's> Interp<'a, 's> {
@@ -138,6 +147,7 @@ impl<'a, 's> Interp<'a, 's> {
             fanuc: fanuc_xform::FanucXform::default(),
             heidenhain: heidenhain::HeidenhainState::default(),
             last_jump: None,
+            from_outside: false,
         }
     }
 
@@ -250,6 +260,7 @@ pub fn run(
             machine::abort_sequence(&mut it);
         }
         Err(Stop::End) => {}
+        Err(Stop::Unknown(d)) => diags.push(d),
         Ok(()) => machine::fell_off_end(&mut it, &mut diags),
     }
     diags

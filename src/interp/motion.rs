@@ -243,6 +243,11 @@ pub fn check_feed(
             return Err(it.error_at(it.span, Code::NoFeedRate, inverse));
         }
     } else if it.state.feed == 0.0 {
+        if it.from_outside {
+            // A subprogram checked alone cuts at its caller's feed. [?] An
+            // explicit F0 in the file is taken the same way.
+            return Err(it.from_outside_at(it.span, "F"));
+        }
         return Err(it.error_at(it.span, Code::NoFeedRate, zero));
     }
     Ok(())

@@ -33,6 +33,11 @@ pub struct Options {
     pub limits: Limits,
     /// Block delete switch: when on, blocks starting with `/` are skipped.
     pub block_delete: bool,
+    /// A call to a program that is neither in the file nor beside it is a
+    /// warning (W0591) and the run goes on after it, as `check` wants for a
+    /// program whose controller may hold the called one; `canon` keeps it
+    /// an error, as rs274 does.
+    pub missing_calls_warn: bool,
 }
 
 impl Default for Options {
@@ -42,6 +47,7 @@ impl Default for Options {
             machine_units: LengthUnit::Inch,
             limits: Limits::default(),
             block_delete: false,
+            missing_calls_warn: false,
         }
     }
 }

@@ -15,6 +15,9 @@ pub struct Params {
     /// One scope per call level; the last is the current one.
     local_named: Vec<HashMap<String, f64>>,
     user: Vec<HashMap<String, f64>>,
+    /// Numbered parameters made vacant by the program (`#1=#0`, a call's
+    /// fresh locals): known to be vacant, unlike ones never touched.
+    vacated: std::collections::HashSet<u32>,
 }
 
 impl Params {
@@ -38,8 +41,24 @@ impl Params {
             }
             None => {
                 self.numbered.remove(&n);
+                self.vacated.insert(n);
             }
         }
+    }
+
+    /// Whether the run has given `#n` a value (vacant included).
+    pub fn numbered_known(&self, n: u32) -> bool {
+        self.numbered.contains_key(&n) || self.vacated.contains(&n)
+    }
+
+    /// Whether the run has set `Rn`.
+    pub fn r_known(&self, n: u32) -> bool {
+        self.r.contains_key(&n)
+    }
+
+    /// Whether the run has set `Qn` (`QLn`, `QRn`).
+    pub fn q_known(&self, bank: crate::ir::QBank, n: u32) -> bool {
+        self.q.contains_key(&(bank, n))
     }
 
     pub fn r(&self, n: u32) -> f64 {

@@ -68,6 +68,10 @@ impl StreamRun {
         match r {
             Ok(()) => self.stopped = it.ended,
             Err(Stop::End) => self.stopped = true,
+            Err(Stop::Unknown(d)) => {
+                self.diags.push(d);
+                self.stopped = true;
+            }
             Err(Stop::Error(d)) => {
                 self.diags.push(d);
                 machine::abort_sequence(it);
@@ -119,6 +123,7 @@ impl StreamRun {
                 machine::abort_sequence(it);
             }
             Err(Stop::End) => {}
+            Err(Stop::Unknown(d)) => diags.push(d),
             Ok(()) => machine::fell_off_end(it, &mut diags),
         }
         diags
