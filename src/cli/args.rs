@@ -266,6 +266,11 @@ pub struct RunArgs {
     /// Skip blocks that start with `/` (the block-delete switch on).
     #[arg(long = "block-delete")]
     pub block_delete: bool,
+    /// The machine: reference point and work offsets (TOML; see
+    /// docs/machine.md). `check`, `stats`, `plot`, `diff` and `stepnc`
+    /// otherwise assume a reference point 500 mm above work zero.
+    #[arg(long = "machine", value_name = "FILE")]
+    pub machine: Option<std::path::PathBuf>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -284,6 +289,33 @@ impl RunArgs {
             MachineUnits::Mm => crate::ir::LengthUnit::Mm,
         };
         o.block_delete = self.block_delete;
+        o.machine = self.machine.as_deref().map(load_machine);
         o
     }
+
+    /// [`Self::options`] for the commands that look at where the tool goes
+    /// on the machine: without `--machine`, the default machine.
+    pub fn analysis_options(&self) -> crate::interp::Options {
+        let mut o = self.options();
+        o.machine.get_or_insert_with(Default::default);
+        o.report_tool_sizes = true;
+        o
+    }
+}
+
+/// Reads `--machine FILE`; a file that cannot be read or is wrong ends the
+/// run with exit 2 (a usage error) before anything is written.
+fn load_machine(path: &std::path::Path) -> crate::interp::machine_desc::Machine {
+    let result = std::fs::read_to_string(path)
+        .map_err(|e| e.to_string())
+        .and_then(|t| {
+            if t.len() > 1 << 20 {
+                return Err("a machine description is at most 1 MiB".into());
+            }
+            crate::interp::machine_desc::Machine::parse(&t)
+        });
+    result.unwrap_or_else(|e| {
+        eprintln!("error: --machine {}: {e}", path.display());
+        std::process::exit(2)
+    })
 }

@@ -39,6 +39,8 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
         a.options.tool_table = table;
     }
     a.options.missing_calls_warn = true;
+    // A check names invented tool sizes only where they mattered (W0592).
+    a.options.report_tool_sizes = false;
     for path in a.files {
         if crate::stepnc::is_part21(path, &read_head(path)?) {
             all.extend(crate::cli::stepnc::check_file(ctx, path)?);
@@ -77,7 +79,8 @@ fn check_file(
     let input = BufReader::with_capacity(1 << 16, File::open(path).map_err(fail)?);
     let id = ctx.files.add_sparse(path.display().to_string(), Vec::new());
     let mut discard = |_: crate::canon::Canon, _: crate::span::Span| {};
-    let mut it = Interp::new(&spec, &a.options, &mut discard);
+    let options = program_tools(&a.options, &head);
+    let mut it = Interp::new(&spec, &options, &mut discard);
     it.start();
     let mut stream = StreamRun::default();
     let result = check_stream(input, id, &spec, |b, e| {
@@ -109,7 +112,7 @@ fn check_file(
         // with its caller's values unknown: at once when it has control
         // flow, after a failed run when it has none (a feed from the caller).
         if fragment.is_some() || run.iter().any(Diagnostic::is_error) {
-            if let Some(again) = run_as_fragment(ctx, path, id, &spec, a)? {
+            if let Some(again) = run_as_fragment(ctx, path, id, &spec, &options)? {
                 run = again;
             }
         }
@@ -142,7 +145,7 @@ fn run_as_fragment(
     path: &Path,
     id: crate::span::FileId,
     spec: &std::sync::Arc<DialectSpec>,
-    a: &CheckArgs<'_>,
+    options: &Options,
 ) -> Result<Option<Vec<Diagnostic>>, Failure> {
     let program = read_whole(path, id, spec)?;
     let Some(fragment) = crate::interp::fragment::detect(&program) else {
@@ -155,12 +158,20 @@ fn run_as_fragment(
         program,
         &fragment,
         spec,
-        &a.options,
+        options,
         &mut loader,
         &mut discard,
     );
     d.append(&mut loader.diags);
     Ok(Some(d))
+}
+
+/// The run options for one program: the tools its header comments list
+/// join the tool table where no real table gives them.
+pub(crate) fn program_tools(options: &Options, head: &str) -> Options {
+    let mut o = options.clone();
+    crate::interp::tool_header::merge_header(&mut o.tool_table, head, o.machine_units);
+    o
 }
 
 /// Keeps, for a file read as a stream, the lines the diagnostics show.

@@ -58,7 +58,7 @@ pub fn run(cli: Cli) -> i32 {
                 verbose: *verbose,
                 tool_table: tool_table.as_deref(),
                 run: !*no_run,
-                options: run.options(),
+                options: run.analysis_options(),
             },
         ),
         Command::Ir {
@@ -141,7 +141,7 @@ pub fn run(cli: Cli) -> i32 {
                 summary: *summary,
                 output: output.as_deref(),
                 format: *format,
-                options: run.options(),
+                options: run.analysis_options(),
             },
         ),
         Command::Stats {
@@ -161,7 +161,7 @@ pub fn run(cli: Cli) -> i32 {
                 rapid_rate: *rapid_rate,
                 tool_change_time: *tool_change_time,
                 format: *format,
-                options: run.options(),
+                options: run.analysis_options(),
             },
         ),
         Command::Diff {
@@ -187,7 +187,7 @@ pub fn run(cli: Cli) -> i32 {
                 rapids: *rapids,
                 tool_table: tool_table.as_deref(),
                 format: *format,
-                options: run.options(),
+                options: run.analysis_options(),
             },
         ),
         Command::Plot {
@@ -211,7 +211,7 @@ pub fn run(cli: Cli) -> i32 {
                 tool_table: tool_table.as_deref(),
                 width: *width,
                 format: *format,
-                options: run.options(),
+                options: run.analysis_options(),
             },
         ),
         Command::Stepnc {

@@ -71,6 +71,10 @@ fn parse_args(a: &PlotArgs<'_>) -> Result<(Kind, Vec<View>, Option<Stock>), Fail
 pub fn run(ctx: &mut Context, mut a: PlotArgs<'_>) -> Result<i32, Failure> {
     let (kind, views, stock) = parse_args(&a)?;
     let mut diags = load_tool_table(ctx, a.tool_table, &mut a.options)?;
+    if let Some(first) = a.files.first() {
+        let head = crate::cli::check::read_head(first)?;
+        a.options = crate::cli::check::program_tools(&a.options, &head);
+    }
     let mut bounds = Bounds::default();
     if let Some(s) = stock {
         bounds.add(s.corner);

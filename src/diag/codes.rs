@@ -286,6 +286,9 @@ codes! {
     CalledProgramMissing = "W0591", "called-program-missing", Warning,
         "a call to a program that is neither in this file nor beside it",
         "The program calls a subprogram or macro that cncc cannot find in the file or in the same folder (as `O1000.nc`, `L54.SPF`, `name.ngc`...). The controller may well hold it (a machine builder's macro, a program kept in the control's memory), so the call is not an error, but what it does was not checked: the run goes on after the call as if it had returned without moving. Put the called program beside this one to check it too.";
+    ToolSizesInvented = "W0592", "tool-sizes-unknown", Warning,
+        "tools whose sizes no tool table gave",
+        "No tool table (`--tool-table`) gave these tools' lengths and diameters. Tools 1 to 20 got sizes from cncc's built-in table, which are invented (small inch end mills and drills); other tools, which the control holds in its own offset memory, run with no length and no diameter. Length offsets, radius compensation and anything measured with the tool were checked with those sizes, not the shop's. Give the shop's tool table to check them for real.";
     NamedToolWithoutTable = "W0516", "named-tool-without-table", Warning,
         "a tool called by name with no tool table to find it in",
         "Siemens tool management calls tools by name (`T=\"FACEMILL 63\"`). cncc finds a named tool by the comment of a row of the tool table given with `--tool-table`; without one, only the built-in tools T1..T20 exist. The run goes on with a tool of no length and no diameter under that name, so lengths and radius compensation are not checked for it: give a tool table whose row carries the name as its comment.";

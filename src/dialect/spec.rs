@@ -107,6 +107,16 @@ pub enum Capability {
     /// The motion mode at power-on and reset is G00: axis words without a
     /// motion code move at rapid (Fanuc parameter 3402#0 = 0, Haas).
     PowerOnRapid,
+    /// The control holds its own tool data: a tool the tool table does not
+    /// list is not an error; its sizes are unknown (Fanuc, Haas, Siemens,
+    /// Heidenhain). Without it (LinuxCNC) the tool must be in the table.
+    ControlHoldsTools,
+    /// Cutter compensation's entry move must be longer than the tool
+    /// radius (LinuxCNC's rule; Fanuc and Siemens start up otherwise).
+    CompEntryLongerThanRadius,
+    /// G41/G42 while compensation is on is an error (LinuxCNC); elsewhere
+    /// it changes side or offset on the fly.
+    CompOnWhenOnError,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -145,6 +155,9 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("circular-pocket-cycle", Capability::CircularPocketCycle),
     ("general-pocket-cycle", Capability::GeneralPocketCycle),
     ("power-on-rapid", Capability::PowerOnRapid),
+    ("control-holds-tools", Capability::ControlHoldsTools),
+    ("comp-entry-longer-than-radius", Capability::CompEntryLongerThanRadius),
+    ("comp-on-when-on-error", Capability::CompOnWhenOnError),
 ];
 
 impl Capability {

@@ -105,7 +105,7 @@ pub fn run(
         let mut walker = Walker::new(program.clone(), loader);
         walker.resume(at, false, 0);
         let result = walker.run(&mut it);
-        diags.append(&mut it.diags);
+        diags.append(&mut it.take_diags());
         match result {
             Err(Stop::Error(d)) | Err(Stop::Unknown(d)) => diags.push(d),
             Err(Stop::End) | Ok(()) => {}

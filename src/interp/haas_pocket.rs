@@ -84,7 +84,7 @@ fn fail(it: &Interp<'_, '_>, code: Code, msg: String) -> Stop {
 }
 
 /// The radius the circles are compensated by: D n's tool, in program units.
-fn d_radius(it: &Interp<'_, '_>, d: Option<f64>) -> Result<f64, Stop> {
+fn d_radius(it: &mut Interp<'_, '_>, d: Option<f64>) -> Result<f64, Stop> {
     let t = match d {
         None => return Ok(0.0),
         Some(v) if v.fract() != 0.0 || v < 0.0 => {
@@ -99,6 +99,7 @@ fn d_radius(it: &Interp<'_, '_>, d: Option<f64>) -> Result<f64, Stop> {
     if t == 0 {
         return Ok(0.0);
     }
+    crate::interp::tools::known_tool(it, t)?;
     let Some(tool) = it.tool_table.get(t) else {
         return Err(fail(
             it,

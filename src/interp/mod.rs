@@ -23,6 +23,7 @@ pub mod heidenhain;
 pub mod host;
 pub mod index;
 pub mod machine;
+pub mod machine_desc;
 pub mod modal_save;
 pub mod modes;
 pub mod motion;
@@ -38,6 +39,7 @@ pub mod stream;
 pub mod target;
 pub mod threading;
 pub mod tools;
+pub mod tool_header;
 pub mod tooltable;
 
 #[cfg(test)]
@@ -112,6 +114,14 @@ pub struct Interp<'a, 's> {
     /// alone: values it never sets come from outside, unknown here
     /// ([`Stop::Unknown`]).
     pub from_outside: bool,
+    /// Tools whose sizes no tool table gave: the first block that used
+    /// each, and whether cncc's built-in table invented them (W0592).
+    pub tools_without_data: std::collections::BTreeMap<i64, (Span, bool)>,
+    /// Tools whose sizes the program itself gives (a CAM tool-list
+    /// comment, TOOL DEF, $TC_DP): not invented.
+    pub program_tools: std::collections::BTreeSet<i64>,
+    /// Radius compensation ran with a radius no tool table gave.
+    pub comp_without_size: bool,
 }
 
 impl<'a, 's> Interp<'a, 's> {
@@ -120,6 +130,11 @@ impl<'a, 's> Interp<'a, 's> {
         if spec.has(crate::dialect::Capability::PowerOnRapid) {
             state.motion = state::ModalMotion::Move(crate::ir::MotionKind::Rapid);
         }
+        let mut comp = comp::RadiusComp::new();
+        comp.rules = comp::CompRules {
+            entry_longer_than_radius: spec.has(crate::dialect::Capability::CompEntryLongerThanRadius),
+            on_when_on_error: spec.has(crate::dialect::Capability::CompOnWhenOnError),
+        };
         Interp {
             spec,
             opts,
@@ -135,7 +150,7 @@ impl<'a, 's> Interp<'a, 's> {
             ended: false,
             params: params::Params::new(),
             cycles: cycles::CycleMemory::new(),
-            comp: comp::RadiusComp::new(),
+            comp,
             comp_tags: std::collections::VecDeque::new(),
             tool_table: opts.tool_table.clone(),
             block_span: Span::default(),
@@ -148,6 +163,9 @@ impl<'a, 's> Interp<'a, 's> {
             heidenhain: heidenhain::HeidenhainState::default(),
             last_jump: None,
             from_outside: false,
+            tools_without_data: Default::default(),
+            program_tools: Default::default(),
+            comp_without_size: false,
         }
     }
 
@@ -190,8 +208,19 @@ impl<'a, 's> Interp<'a, 's> {
         result
     }
 
+    /// The run's findings so far, with the note of tools whose sizes were
+    /// invented or unknown (said once per run).
+    pub fn take_diags(&mut self) -> Vec<Diagnostic> {
+        let mut d = std::mem::take(&mut self.diags);
+        d.extend(tools::tools_without_data(self));
+        d
+    }
+
     /// The calls every run starts with.
     pub fn start(&mut self) {
+        if let Some(m) = self.opts.machine.clone() {
+            m.apply(self);
+        }
         machine::init_sequence(self);
     }
 
@@ -253,7 +282,7 @@ pub fn run(
     let mut it = Interp::new(spec, opts, &mut sink);
     it.start();
     let result = flow::Walker::new(program, loader).run(&mut it);
-    let mut diags = std::mem::take(&mut it.diags);
+    let mut diags = it.take_diags();
     match result {
         Err(Stop::Error(d)) => {
             diags.push(d);

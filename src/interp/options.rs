@@ -38,6 +38,13 @@ pub struct Options {
     /// program whose controller may hold the called one; `canon` keeps it
     /// an error, as rs274 does.
     pub missing_calls_warn: bool,
+    /// The machine: reference point and work offsets (`None`: rs274's
+    /// standalone state, everything at 0).
+    pub machine: Option<super::machine_desc::Machine>,
+    /// Say which tools ran with invented or no sizes (W0592) even when
+    /// radius compensation did not need them (`stats`, `plot`, `stepnc`,
+    /// where the sizes shape the result).
+    pub report_tool_sizes: bool,
 }
 
 impl Default for Options {
@@ -48,6 +55,8 @@ impl Default for Options {
             limits: Limits::default(),
             block_delete: false,
             missing_calls_warn: false,
+            machine: None,
+            report_tool_sizes: false,
         }
     }
 }

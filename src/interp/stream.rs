@@ -87,7 +87,7 @@ impl StreamRun {
             machine::abort_sequence(it);
             self.stopped = true;
         }
-        let mut diags = std::mem::take(&mut it.diags);
+        let mut diags = it.take_diags();
         diags.append(&mut self.diags);
         diags
     }
@@ -95,7 +95,7 @@ impl StreamRun {
     /// Ends a run that was not handed over: its diagnostics, and the
     /// report of a program that fell off its end.
     pub fn finish(&mut self, it: &mut Interp<'_, '_>) -> Vec<Diagnostic> {
-        let mut diags = std::mem::take(&mut it.diags);
+        let mut diags = it.take_diags();
         diags.append(&mut self.diags);
         if !self.stopped && self.handover.is_none() {
             machine::fell_off_end(it, &mut diags);
@@ -115,7 +115,7 @@ impl StreamRun {
         let mut walker = Walker::new(program, loader);
         walker.resume(at, self.percent_start, self.blocks);
         let result = walker.run(it);
-        let mut diags = std::mem::take(&mut it.diags);
+        let mut diags = it.take_diags();
         diags.append(&mut self.diags);
         match result {
             Err(Stop::Error(d)) => {

@@ -54,11 +54,75 @@ pub fn exec(
     }
 }
 
+/// Makes sure tool `t` has a row: on a control that holds its own tool
+/// data, a tool the table lacks joins it with no sizes; elsewhere it is
+/// E0501. Tools with no size from a real table are noted (W0592).
+pub fn known_tool(it: &mut Interp<'_, '_>, t: i64) -> Result<(), Stop> {
+    if t <= 0 {
+        return Ok(());
+    }
+    let listed = it.tool_table.get(t).is_some();
+    if !listed && !it.spec.has(crate::dialect::Capability::ControlHoldsTools) {
+        return Err(it.error_at(
+            it.span,
+            Code::ToolNotInTable,
+            format!("Requested tool {t} not found in the tool table"),
+        ));
+    }
+    if !listed {
+        let tool = crate::interp::tooltable::Tool::blank(t, String::new());
+        it.tool_table.tools.push(tool);
+    }
+    let given = it.program_tools.contains(&t) || it.tool_table.from_program.contains(&t);
+    if !given && (!listed || it.tool_table.invented) {
+        let span = it.span;
+        it.tools_without_data.entry(t).or_insert((span, listed));
+    }
+    Ok(())
+}
+
+/// W0592, once per run: which tools ran with invented or no sizes.
+pub fn tools_without_data(it: &mut Interp<'_, '_>) -> Option<crate::diag::Diagnostic> {
+    let tools = std::mem::take(&mut it.tools_without_data);
+    if !(it.opts.report_tool_sizes || it.comp_without_size) {
+        return None;
+    }
+    let (&first, &(span, _)) = tools.iter().next()?;
+    let list = |invented: bool| {
+        tools
+            .iter()
+            .filter(|(_, (_, i))| *i == invented)
+            .map(|(t, _)| format!("T{t}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let (made, none) = (list(true), list(false));
+    let mut parts = Vec::new();
+    if !made.is_empty() {
+        parts.push(format!("{made} got sizes from cncc's built-in table"));
+    }
+    if !none.is_empty() {
+        parts.push(format!("{none} ran with no length and no diameter"));
+    }
+    if it.comp_without_size {
+        parts.push("radius compensation ran with no radius, so gouges were not checked".into());
+    }
+    Some(
+        crate::diag::Diagnostic::new(
+            Code::ToolSizesInvented,
+            format!("no tool table gave these tools' sizes: {}", parts.join("; ")),
+        )
+        .primary(span, format!("T{first} first used here"))
+        .help("give the shop's tool table with --tool-table to check lengths and radius compensation with real sizes"),
+    )
+}
+
 /// The 1-based table row of tool `t` (tool 0: row 0, no tool).
-pub fn row_of(it: &Interp<'_, '_>, t: i64) -> Result<i64, Stop> {
+pub fn row_of(it: &mut Interp<'_, '_>, t: i64) -> Result<i64, Stop> {
     if t == 0 {
         return Ok(0);
     }
+    known_tool(it, t)?;
     match it.tool_table.row(t) {
         Some(r) => Ok(r as i64),
         None => Err(it.error_at(
@@ -227,6 +291,14 @@ fn comp_radius(
     if t == 0 {
         return Ok(0.0);
     }
+    known_tool(it, t)?;
+    let invented = it.tools_without_data.contains_key(&t);
+    if invented && it.spec.has(crate::dialect::Capability::ControlHoldsTools) {
+        // The built-in sizes are not this control's: compensating by them
+        // would report gouges the real tool may not make (W0592 says so).
+        it.comp_without_size = true;
+        return Ok(0.0);
+    }
     let dia = match it.tool_table.get(t) {
         Some(tool) => tool.diameter,
         None => {
@@ -252,6 +324,7 @@ fn length_comp(
         if t == 0 {
             return Ok([0.0; 9]);
         }
+        known_tool(it, t)?;
         match it.tool_table.get(t) {
             Some(tool) => {
                 let mut o = tool.offset;

@@ -38,6 +38,10 @@ impl Tool {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ToolTable {
     pub tools: Vec<Tool>,
+    /// cncc's built-in table: its sizes are invented, not the shop's.
+    pub invented: bool,
+    /// Tools whose sizes the program's own header comments gave.
+    pub from_program: std::collections::BTreeSet<i64>,
 }
 
 /// The table used when none is given: tools 1 to 20, flat end mills and
@@ -68,7 +72,9 @@ T20 P20 Z3.0 D0.5 ;chamfer mill
 
 impl ToolTable {
     pub fn builtin() -> ToolTable {
-        ToolTable::parse(BUILTIN, FileId(0)).0
+        let mut t = ToolTable::parse(BUILTIN, FileId(0)).0;
+        t.invented = true;
+        t
     }
 
     /// Reads a table; lines that cannot be read are reported (LinuxCNC

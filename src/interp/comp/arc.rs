@@ -24,7 +24,7 @@ impl RadiusComp {
         let r = self.radius;
         let (cx, cy) = (from[0], from[1]);
         let (ex, ey) = (to[0], to[1]);
-        if (ex - cx).hypot(ey - cy) <= r {
+        if self.rules.entry_longer_than_radius && (ex - cx).hypot(ey - cy) <= r {
             return Err(self.error(CompErrorKind::EntryArcTooShort, None));
         }
         let gamma = if tool_inside_arc(self.left(), turn) {

@@ -68,6 +68,18 @@ pub struct RadiusComp {
     queue: Queue,
     /// The block the calls now arriving belong to.
     block: BlockTag,
+    /// The controller's own start-up rules.
+    pub rules: CompRules,
+}
+
+/// Where controllers differ in starting compensation (from the spec's
+/// capabilities; LinuxCNC's rules when both are on).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CompRules {
+    /// The entry move must be longer than the radius.
+    pub entry_longer_than_radius: bool,
+    /// G41/G42 while on is an error; otherwise it changes side and radius.
+    pub on_when_on_error: bool,
 }
 
 impl Default for RadiusComp {
@@ -86,6 +98,10 @@ impl RadiusComp {
             current: [0.0; 3],
             queue: Queue::default(),
             block: 0,
+            rules: CompRules {
+                entry_longer_than_radius: true,
+                on_when_on_error: true,
+            },
         }
     }
 
@@ -107,17 +123,20 @@ impl RadiusComp {
         plane: CanonPlane,
     ) -> Result<(), CompError> {
         if self.side.is_some() {
-            return Err(self.error(CompErrorKind::AlreadyOn, None));
+            if self.rules.on_when_on_error {
+                return Err(self.error(CompErrorKind::AlreadyOn, None));
+            }
+            // Fanuc and Siemens take a new G41/G42 or D while on as a
+            // change of side or offset from the next move on [K].
+            self.side = Some(side_of(side, radius < 0.0));
+            self.radius = radius.abs();
+            return Ok(());
         }
         if plane == CanonPlane::YZ {
             return Err(self.error(CompErrorKind::NotXyPlane, None));
         }
         self.queue.xz = plane == CanonPlane::XZ;
-        let swap = radius < 0.0;
-        self.side = Some(match (side, swap) {
-            (CompSide::Left, false) | (CompSide::Right, true) => CompSide::Left,
-            _ => CompSide::Right,
-        });
+        self.side = Some(side_of(side, radius < 0.0));
         self.radius = radius.abs();
         self.first_move = true;
         Ok(())
@@ -160,7 +179,7 @@ impl RadiusComp {
     pub fn compensated(&self) -> Option<[f64; 3]> {
         let c = self.current;
         let real = if self.queue.xz { [c[1], c[2], c[0]] } else { c };
-        (self.is_on() && !self.first_move).then_some(real)
+        (self.is_on() && self.radius > 0.0 && !self.first_move).then_some(real)
     }
 
     /// A pose in the engine's plane order (XZ: Z X Y).
@@ -208,8 +227,10 @@ impl RadiusComp {
         to: Pose,
         out: &mut dyn FnMut(Canon),
     ) -> Result<(), CompError> {
-        if self.side.is_none() {
-            self.arc_not_allowed = false;
+        if self.side.is_none() || self.radius == 0.0 {
+            // rs274 compensates only with a radius above zero: with D0 or
+            // a tool of no diameter the path is the programmed one.
+            self.arc_not_allowed &= self.side.is_some();
             self.queue.flush(out);
             out(match kind {
                 MoveKind::Rapid => Canon::StraightTraverse(to),
@@ -237,8 +258,8 @@ impl RadiusComp {
         rotation: i64,
         out: &mut dyn FnMut(Canon),
     ) -> Result<(), CompError> {
-        if self.side.is_none() {
-            if self.arc_not_allowed {
+        if self.side.is_none() || self.radius == 0.0 {
+            if self.arc_not_allowed && self.side.is_none() {
                 return Err(self.error(CompErrorKind::ArcAfterExit, None));
             }
             self.queue.flush(out);
@@ -281,5 +302,13 @@ impl RadiusComp {
         self.queue
             .move_end_and_flush(p, out)
             .map_err(|(kind, held)| self.error(kind, Some(held)))
+    }
+}
+
+/// The side compensation works on: a negative radius swaps it.
+fn side_of(side: CompSide, swap: bool) -> CompSide {
+    match (side, swap) {
+        (CompSide::Left, false) | (CompSide::Right, true) => CompSide::Left,
+        _ => CompSide::Right,
     }
 }

@@ -24,7 +24,7 @@ impl RadiusComp {
     ) -> Result<(), super::CompError> {
         let (cx, cy) = (from[0], from[1]);
         let (px, py) = (to[0], to[1]);
-        if (px - cx).hypot(py - cy) <= self.radius {
+        if self.rules.entry_longer_than_radius && (px - cx).hypot(py - cy) <= self.radius {
             return Err(self.error(CompErrorKind::EntryMoveTooShort, None));
         }
         let k = if self.left() { 1 } else { -1 };

@@ -74,6 +74,7 @@ fn activate(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
     let [dl, dr] = it.heidenhain.oversize;
     let (mut offset, mut radius) = ([0.0; 9], 0.0);
     if tool != 0 {
+        crate::interp::tools::known_tool(it, tool)?;
         let Some(t) = it.tool_table.get(tool) else {
             return Err(it.error_at(
                 it.span,

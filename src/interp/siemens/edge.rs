@@ -36,6 +36,7 @@ pub fn activate_edge(it: &mut Interp<'_, '_>, d: i64) -> Result<(), Stop> {
     let (offset, radius) = if d == 0 || tool == 0 {
         ([0.0; 9], 0.0)
     } else {
+        crate::interp::tools::known_tool(it, tool)?;
         let Some(t) = it.tool_table.get(tool) else {
             return Err(it.error_at(
                 it.span,
