@@ -103,3 +103,18 @@ fn canon_keeps_rs274s_machine_without_a_file() {
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000"), "{out}");
 }
+
+#[test]
+fn one_check_reports_every_independent_run_time_mistake() {
+    // A bad arc, then a zero feed, then a move that still has none: each
+    // is reported with its place, and the run goes on after each.
+    let (code, _, err) = run(&["check", &format!("{T}/three_mistakes.nc")]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("three_mistakes.nc:6:"), "{err}");
+    assert!(err.contains("three_mistakes.nc:9:"), "{err}");
+    assert!(err.contains("three_mistakes.nc:10:"), "{err}");
+    assert!(err.contains("3 errors"), "{err}");
+    // canon stops at the first, as rs274 does.
+    let o = cncc(&["canon", "--dialect", "fanuc", &format!("{T}/three_mistakes.nc")]);
+    assert_eq!(stderr(&o).matches("error[").count(), 1, "{}", stderr(&o));
+}

@@ -39,6 +39,7 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
         a.options.tool_table = table;
     }
     a.options.missing_calls_warn = true;
+    a.options.keep_going = true;
     // A check names invented tool sizes only where they mattered (W0592).
     a.options.report_tool_sizes = false;
     for path in a.files {

@@ -149,7 +149,13 @@ impl<'l> Walker<'l> {
             }
             it.hold();
             let next = self.block(it, prog, pc, entered);
-            let next = it.settle(next)?;
+            let next = match it.settle(next) {
+                Err(stop) => {
+                    it.recover(stop)?;
+                    Next::Step
+                }
+                Ok(next) => next,
+            };
             entered = false;
             match next {
                 Next::Step => pc += 1,

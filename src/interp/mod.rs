@@ -122,6 +122,8 @@ pub struct Interp<'a, 's> {
     pub program_tools: std::collections::BTreeSet<i64>,
     /// Radius compensation ran with a radius no tool table gave.
     pub comp_without_size: bool,
+    /// Run-time mistakes reported so far while going on after them.
+    pub recovered: u32,
 }
 
 impl<'a, 's> Interp<'a, 's> {
@@ -166,6 +168,7 @@ impl<'a, 's> Interp<'a, 's> {
             tools_without_data: Default::default(),
             program_tools: Default::default(),
             comp_without_size: false,
+            recovered: 0,
         }
     }
 
@@ -231,6 +234,50 @@ impl<'a, 's> Interp<'a, 's> {
         }
         exec::exec_block(self, block, exprs)
     }
+}
+
+/// Most run-time mistakes one `check` reports before it stops running.
+pub const MAX_RECOVERED: u32 = 50;
+
+impl Interp<'_, '_> {
+    /// With [`Options::keep_going`], a run-time mistake that leaves the
+    /// program's values sound is kept as a finding and the run goes on
+    /// with the next block (`Ok`); anything else stops the run (`Err`).
+    /// Cutter compensation is switched off after a mistake, so that one
+    /// bad corner does not report every corner after it.
+    pub fn recover(&mut self, stop: Stop) -> Result<(), Stop> {
+        let Stop::Error(d) = stop else { return Err(stop) };
+        if !self.opts.keep_going || !recoverable(&d) || self.recovered >= MAX_RECOVERED {
+            return Err(Stop::Error(d));
+        }
+        self.recovered += 1;
+        let rules = self.comp.rules;
+        self.comp = comp::RadiusComp::new();
+        self.comp.rules = rules;
+        self.state.comp_side = crate::ir::CompSide::Off;
+        self.diags.push(d.note(
+            "the run went on with the next block, as if this one had not been given",
+        ));
+        Ok(())
+    }
+}
+
+/// Mistakes after which the run's values are still what the program
+/// meant: geometry, words, feeds, tools. Not: loops past their limit, the
+/// program's own alarms, or values that could not be computed.
+fn recoverable(d: &Diagnostic) -> bool {
+    use crate::diag::Code;
+    d.code.code().starts_with("E05")
+        && !matches!(
+            d.code,
+            Code::LimitExceeded
+                | Code::KlartextProgramError
+                | Code::UndefinedVariable
+                | Code::DivisionByZero
+                | Code::DomainError
+                | Code::UnsupportedHere
+                | Code::TiltNeedsRotaryAxes
+        )
 }
 
 /// Errors rs274 meets while reading a block, before it runs any of it:

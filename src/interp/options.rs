@@ -45,6 +45,11 @@ pub struct Options {
     /// radius compensation did not need them (`stats`, `plot`, `stepnc`,
     /// where the sizes shape the result).
     pub report_tool_sizes: bool,
+    /// After a run-time mistake that leaves the program's state sound (a
+    /// bad arc, a missing feed, a compensation error), report it and go on
+    /// with the next block, as `check` does; `canon` stops at the first,
+    /// as rs274 does.
+    pub keep_going: bool,
 }
 
 impl Default for Options {
@@ -57,6 +62,7 @@ impl Default for Options {
             missing_calls_warn: false,
             machine: None,
             report_tool_sizes: false,
+            keep_going: false,
         }
     }
 }

@@ -60,7 +60,10 @@ impl StreamRun {
         it.line = index as u32 + 1;
         it.hold();
         let r = it.block(b, exprs);
-        let r = it.settle(r);
+        let r = match it.settle(r) {
+            Err(stop) => it.recover(stop),
+            ok => ok,
+        };
         self.stop(it, r);
     }
 

@@ -44,6 +44,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
     let mut modal = Modal::new(from);
     let blocks = std::mem::take(&mut p.blocks);
     for mut b in blocks {
+        see_distance_first(&mut modal, &b);
         // A direct return written under G90: G91 for it, G90 after.
         let mut absolute = false;
         for s in &mut b.stmts {
@@ -101,6 +102,7 @@ fn machine_datum(
 ) {
     let mut modal = Modal::new(from);
     for b in &mut p.blocks {
+        see_distance_first(&mut modal, b);
         let mut i = 0;
         while i < b.stmts.len() {
             modal.see(&b.stmts[i]);
@@ -131,6 +133,16 @@ fn machine_datum(
             b.stmts[i] = Stmt::new(StmtKind::Motion(Box::new(rapid)), span);
             b.stmts.insert(i, Stmt::new(StmtKind::MachineCoords, span));
             i += 2;
+        }
+    }
+}
+
+/// A block's G90/G91 applies before its motion, wherever it is written
+/// (`G28 G91 Z0.` is `G91 G28 Z0.`), as the control applies it.
+fn see_distance_first(modal: &mut Modal, b: &crate::ir::Block) {
+    for s in &b.stmts {
+        if matches!(s.kind, StmtKind::Distance(_)) {
+            modal.see(s);
         }
     }
 }
