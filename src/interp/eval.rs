@@ -66,6 +66,13 @@ impl Interp<'_, '_> {
                 Some(atan2_deg(y, x))
             }
             ExprKind::Exists(name) => Some(self.read_named(name).is_some() as i64 as f64),
+            ExprKind::Query(name, _) => {
+                return Err(self.error_at(
+                    span,
+                    Code::UnsupportedHere,
+                    format!("the control function {name} reads machine state cncc does not know"),
+                ))
+            }
             ExprKind::Dimension(_, inner) => self.eval(*inner, exprs)?,
         })
     }

@@ -30,6 +30,11 @@ pub enum ExprKind {
     AtanSlash(ExprId, ExprId),
     /// Siemens `AC(expr)` / `IC(expr)` inside an address value.
     Dimension(DimMode, ExprId),
+    /// A call of a control function that is not in the dialect's function
+    /// table, kept by name (Siemens `ISAXIS(1)`, `GETT("DRILL",1)`): its
+    /// value is machine or tool-management state cncc cannot know, so the
+    /// run stops where it is needed (W0511) instead of guessing.
+    Query(String, Vec<ExprId>),
 }
 
 /// Absolute or incremental, for a whole program (G90/G91) or one value (AC/IC).

@@ -137,7 +137,12 @@ impl Finish<'_> {
         if call.is_none() {
             let d = Diagnostic::new(Code::SyntaxError, format!("`{addr}{number}` cannot take arguments"))
                 .primary(span, "arguments after a word")
-                .help("only a subprogram call `L<number>(...)` or a named call `NAME(...)` takes arguments in parentheses");
+                .help(format!(
+                    "only a subprogram call `L<number>(...)` or a named call `NAME(...)` takes arguments in parentheses; \
+                     if `{addr}{number}(...)` is a function the machine builder added (an OEM cycle or M function), \
+                     describe the machine in a dialect file that extends this one, with \
+                     `<command name=\"{addr}{number}\" doc=\"...\"/>`, and give it with `--dialect-file`"
+                ));
             self.diags.push(d);
         }
         call
