@@ -107,6 +107,10 @@ pub enum Capability {
     /// The motion mode at power-on and reset is G00: axis words without a
     /// motion code move at rapid (Fanuc parameter 3402#0 = 0, Haas).
     PowerOnRapid,
+    /// The motion mode at power-on and reset is G1 (Siemens: the SAG
+    /// default of G group 1, machine data 20150 GCODE_RESET_VALUES): axis
+    /// words without a motion code move at the feed, which must be given.
+    PowerOnLinear,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -145,6 +149,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("circular-pocket-cycle", Capability::CircularPocketCycle),
     ("general-pocket-cycle", Capability::GeneralPocketCycle),
     ("power-on-rapid", Capability::PowerOnRapid),
+    ("power-on-linear", Capability::PowerOnLinear),
 ];
 
 impl Capability {

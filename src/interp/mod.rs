@@ -111,6 +111,9 @@ impl<'a, 's> Interp<'a, 's> {
         if spec.has(crate::dialect::Capability::PowerOnRapid) {
             state.motion = state::ModalMotion::Move(crate::ir::MotionKind::Rapid);
         }
+        if spec.has(crate::dialect::Capability::PowerOnLinear) {
+            state.motion = state::ModalMotion::Move(crate::ir::MotionKind::Linear);
+        }
         Interp {
             spec,
             opts,

@@ -127,7 +127,7 @@ impl Builder<'_> {
     /// line is kept as text (W0005); the node itself is never finished.
     pub fn indirect(&mut self, addr: String, l: usize, r: usize) -> Node {
         self.keep_raw(
-            format!("`{addr}[..]=`: an address whose extension is computed when the program runs"),
+            format!("`{addr}[..]=`: an address with an extension in brackets (axis, spindle or G group), known only when the program runs"),
             l,
             r,
         );

@@ -1,14 +1,15 @@
 //! From the grammar's [`Node`]s to the line's [`Item`]s: numbered
-//! subprogram calls `L123 P3`, tool names `T="NAME"`, words without a value,
-//! and named cycle calls checked against their signature in the spec.
+//! subprogram calls `L123 P3`, tool names `T="NAME"`, spindle positioning
+//! `SPOS=90`, words without a value, and named cycle calls checked against
+//! their signature in the spec.
 
 use super::builder::Node;
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::spec::ParamType;
 use crate::dialect::DialectSpec;
 use crate::ir::{
-    Arena, Arg, CallArgs, CallKind, CallTarget, CycleCall, Expr, ExprKind, Stmt, StmtKind, ToolRef,
-    Value,
+    Arena, Arg, CallArgs, CallKind, CallTarget, CycleCall, Expr, ExprKind, SpindleState, Stmt,
+    StmtKind, ToolRef, Value,
 };
 use crate::span::Span;
 use crate::syntax::{Item, WordSyntax};
@@ -79,6 +80,12 @@ impl Finish<'_> {
     ) -> Item {
         if let Some(call) = self.l_call(&addr, &value, None, span) {
             return call;
+        }
+        if addr == "SPOS" && dim.is_none() {
+            // `SPOS=90`: the programmable spindle positioning (M19 takes
+            // its angle from setting data).
+            let kind = StmtKind::Spindle(SpindleState::Orient(Some(value)));
+            return Item::Stmt(Stmt::new(kind, span));
         }
         if addr == "T" {
             if let Value::Expr(e) = &value {

@@ -27,6 +27,8 @@ mod token;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod field_tests;
 
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{Arena, CommentStyle, Expr, Stmt, StmtKind};

@@ -142,7 +142,7 @@ pub fn spec() -> DialectSpec {
 }
 
 /// Reads a whole text line by line; returns the rendering and diagnostics.
-fn read(text: &str) -> (String, Vec<Diagnostic>) {
+pub(super) fn read(text: &str) -> (String, Vec<Diagnostic>) {
     let spec = spec();
     let mut fe = SinumerikFrontEnd::new();
     let mut exprs = Arena::new();
