@@ -169,6 +169,7 @@ impl Interp<'_, '_> {
             Func::Max => v.iter().copied().fold(f64::NEG_INFINITY, f64::max),
             Func::Bin => bcd_to_bin(a),
             Func::Bcd => bin_to_bcd(a),
+            Func::PosShortest | Func::PosPlus | Func::PosMinus => a,
             Func::Asin | Func::Acos | Func::Sqrt | Func::Ln => {
                 return Err(self.error_at(
                     span,

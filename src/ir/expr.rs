@@ -181,6 +181,16 @@ pub enum Func {
     Bcd,
     Min,
     Max,
+    /// Siemens `DC(a)`: an absolute position of a rotary axis or spindle
+    /// reached the shortest way. Its value is the position; the direction
+    /// is not simulated.
+    PosShortest,
+    /// Siemens `ACP(a)`: the absolute position, approached in the positive
+    /// direction.
+    PosPlus,
+    /// Siemens `ACN(a)`: the absolute position, approached in the negative
+    /// direction.
+    PosMinus,
 }
 
 /// A word's value: a number as written, or an expression.

@@ -64,3 +64,10 @@ fn a_multi_letter_address_before_assign_wins_over_a_command() {
     let out = clean("G0 X1 SPOS=90");
     assert!(out.contains("Spindle(Orient(Some(Number("), "{out}");
 }
+
+#[test]
+fn rotary_positions_with_a_direction_are_functions() {
+    let out = clean("C=ACP(90) SPOS=DC(R1)");
+    assert!(out.contains("PosPlus"), "{out}");
+    assert!(out.contains("PosShortest"), "{out}");
+}

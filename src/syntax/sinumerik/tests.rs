@@ -116,6 +116,8 @@ pub fn spec() -> DialectSpec {
         ("TRUNC", Func::Trunc, 1),
         ("ATAN2", Func::Atan2, 2),
         ("POT", Func::Square, 1),
+        ("DC", Func::PosShortest, 1),
+        ("ACP", Func::PosPlus, 1),
     ] {
         s.functions.push(FunctionDef {
             name: name.into(),
