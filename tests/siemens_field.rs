@@ -18,16 +18,32 @@ fn field_constructs_check_clean_and_run() {
     let out = stdout(&o);
     // G1 from reset; CASE to the lower-case label; the second IF of a block
     // jumps; GOTOF GRESKA finds `greska:`.
-    assert!(out.contains("STRAIGHT_FEED(0.0000, 0.0000, 10.0000"), "{out}");
+    assert!(
+        out.contains("STRAIGHT_FEED(0.0000, 0.0000, 10.0000"),
+        "{out}"
+    );
     assert!(out.contains("STRAIGHT_FEED(2.0000"), "{out}");
     assert!(!out.contains("(1.0000, 0.0000, 10.0000"), "{out}");
-    assert!(!out.contains("99.0000") && !out.contains("98.0000"), "{out}");
-    assert!(out.contains("STRAIGHT_FEED(20.0000, 10.0000, 5.0000"), "{out}");
+    assert!(
+        !out.contains("99.0000") && !out.contains("98.0000"),
+        "{out}"
+    );
+    assert!(
+        out.contains("STRAIGHT_FEED(20.0000, 10.0000, 5.0000"),
+        "{out}"
+    );
 }
 
 #[test]
 fn field_constructs_port_back_unchanged() {
-    let o = cncc(&["port", "--from", "siemens840d", "--to", "siemens840d", CONSTRUCTS]);
+    let o = cncc(&[
+        "port",
+        "--from",
+        "siemens840d",
+        "--to",
+        "siemens840d",
+        CONSTRUCTS,
+    ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let src = std::fs::read_to_string(root().join(CONSTRUCTS)).unwrap();
     let comments = |t: &str| -> Vec<String> {
@@ -36,7 +52,11 @@ fn field_constructs_port_back_unchanged() {
             .collect()
     };
     assert_eq!(comments(&src), comments(&stdout(&o)));
-    for line in ["CASE(_AXN) OF 1 GOTOF _AX1 2 GOTOF _ax2 DEFAULT GOTOF _AX3", "SETMS(1)", "D8"] {
+    for line in [
+        "CASE(_AXN) OF 1 GOTOF _AX1 2 GOTOF _ax2 DEFAULT GOTOF _AX3",
+        "SETMS(1)",
+        "D8",
+    ] {
         assert!(stdout(&o).contains(line), "{line}: {}", stdout(&o));
     }
     assert!(
@@ -48,7 +68,12 @@ fn field_constructs_port_back_unchanged() {
 
 #[test]
 fn axis_words_after_reset_feed_at_g1() {
-    let o = cncc(&["check", "--dialect", "siemens840d", "tests/programs/siemens840d/reset_g1.mpf"]);
+    let o = cncc(&[
+        "check",
+        "--dialect",
+        "siemens840d",
+        "tests/programs/siemens840d/reset_g1.mpf",
+    ]);
     assert_eq!(o.status.code(), Some(1));
     assert!(stderr(&o).contains("E0507"), "{}", stderr(&o));
 }
@@ -75,4 +100,21 @@ fn a_dialect_file_for_the_machine_makes_it_check_clean() {
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(!stderr(&o).contains("error["), "{}", stderr(&o));
+}
+
+#[test]
+fn machine_state_is_read_and_kept_not_guessed() {
+    const P: &str = "tests/programs/siemens840d/machine_state.mpf";
+    let o = cncc(&["check", "--dialect", "siemens840d", P]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert_eq!(e.matches("W0005").count(), 2, "{e}");
+    assert!(e.contains("W0511") && e.contains("ISAXIS"), "{e}");
+    let o = cncc(&["port", "--from", "siemens840d", "--to", "siemens840d", P]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let src = std::fs::read_to_string(root().join(P)).unwrap();
+    assert_eq!(stdout(&o).trim_end(), src.trim_end());
+    // Another dialect cannot say it.
+    let o = cncc(&["port", "--from", "siemens840d", "--to", "fanuc", P]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
 }

@@ -158,7 +158,12 @@ impl Labels {
                 kind: CallKind::Local,
                 target: CallTarget::Number(n),
                 ..
-            } => self.jump(Target::Number(*n), &format!("N{n}"), JumpDir::Either, s.span),
+            } => self.jump(
+                Target::Number(*n),
+                &format!("N{n}"),
+                JumpDir::Either,
+                s.span,
+            ),
             StmtKind::Call {
                 kind: CallKind::Label,
                 target,

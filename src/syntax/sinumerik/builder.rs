@@ -235,7 +235,11 @@ pub fn query(ctx: &mut Builder<'_>, name: String, args: Vec<Arg>, l: usize, r: u
         match a.value {
             Some(v) => vals.push(v),
             None => {
-                ctx.keep_raw(format!("the control function `{name}` with an empty argument"), l, r);
+                ctx.keep_raw(
+                    format!("the control function `{name}` with an empty argument"),
+                    l,
+                    r,
+                );
                 return ctx.expr(ExprKind::Str(name), l, r);
             }
         }
