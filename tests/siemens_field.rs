@@ -14,6 +14,7 @@ fn field_constructs_check_clean_and_run() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let e = stderr(&o);
     assert!(e.contains("W0530"), "{e}");
+    assert!(e.contains("W0531"), "{e}");
     let o = cncc(&["canon", "--dialect", "siemens840d", CONSTRUCTS]);
     let out = stdout(&o);
     // G1 from reset; CASE to the lower-case label; the second IF of a block
