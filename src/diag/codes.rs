@@ -515,6 +515,12 @@ codes! {
     TncCycleMachineFunction = "W0515", "cycle-machine-function-not-run", Warning,
         "an M function given to a Heidenhain cycle that cncc does not simulate",
         "Cycle 241 switches coolant with the M functions in Q429/Q430. M7, M8 and M9 are run as mist, flood and coolant off; other numbers are machine-dependent (set by the machine builder), so they are not run and the canonical output lacks them.";
+    EdgeNotInTable = "W0530", "edge-not-in-table", Warning,
+        "a Siemens cutting edge D the tool table has no data for",
+        "The tool table given to cncc (LinuxCNC's .tbl format) holds one cutting edge per tool. A Siemens program may select another edge (`D2`..) or, with flat D numbering (machine data 18102), any D number (`D08`): the control takes that edge's data from its own tool memory, which cncc cannot see. The run goes on with the tool's row of the table as the edge's length and radius, so length and radius checks after this block are only as good as that guess.";
+    CornerFeedNotSimulated = "W0531", "corner-feed-not-simulated", Warning,
+        "a corner feed override (Fanuc G62, Siemens G62/G621) is not simulated",
+        "The control slows the feed at (inside) corners in this mode; the path itself does not change. cncc runs on with the path mode it had, so the canonical output, plots and time estimates keep the programmed feed at corners.";
 }
 
 impl Code {

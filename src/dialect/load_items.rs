@@ -187,6 +187,9 @@ pub const FUNCS: &[(&str, Func)] = &[
     ("bcd", Func::Bcd),
     ("min", Func::Min),
     ("max", Func::Max),
+    ("position-shortest", Func::PosShortest),
+    ("position-plus", Func::PosPlus),
+    ("position-minus", Func::PosMinus),
 ];
 
 /// Cycle kinds a `<cycle kind=...>` may name.

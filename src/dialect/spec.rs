@@ -117,6 +117,10 @@ pub enum Capability {
     /// G41/G42 while compensation is on is an error (LinuxCNC); elsewhere
     /// it changes side or offset on the fly.
     CompOnWhenOnError,
+    /// The motion mode at power-on and reset is G1 (Siemens: the SAG
+    /// default of G group 1, machine data 20150 GCODE_RESET_VALUES): axis
+    /// words without a motion code move at the feed, which must be given.
+    PowerOnLinear,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -158,6 +162,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("control-holds-tools", Capability::ControlHoldsTools),
     ("comp-entry-longer-than-radius", Capability::CompEntryLongerThanRadius),
     ("comp-on-when-on-error", Capability::CompOnWhenOnError),
+    ("power-on-linear", Capability::PowerOnLinear),
 ];
 
 impl Capability {

@@ -39,6 +39,16 @@ pub fn write_expr(w: &mut Writer<'_>, id: ExprId) -> Option<String> {
             Some(format!("EXISTS[#<{name}>]"))
         }
         ExprKind::AtanSlash(a, b) => atan_slash(w, *a, *b, span),
+        ExprKind::Query(name, args) => match w.style {
+            Style::Sinumerik => {
+                let mut a = Vec::with_capacity(args.len());
+                for x in args {
+                    a.push(write_expr(w, *x)?);
+                }
+                Some(format!("{name}({})", a.join(",")))
+            }
+            Style::Bracket => cannot(w, span, &format!("the control function {name}")),
+        },
         ExprKind::Dimension(mode, a) => match w.style {
             Style::Sinumerik => {
                 let f = if *mode == DimMode::Absolute {

@@ -66,6 +66,13 @@ impl Interp<'_, '_> {
                 Some(atan2_deg(y, x))
             }
             ExprKind::Exists(name) => Some(self.read_named(name).is_some() as i64 as f64),
+            ExprKind::Query(name, _) => {
+                return Err(self.error_at(
+                    span,
+                    Code::UnsupportedHere,
+                    format!("the control function {name} reads machine state cncc does not know"),
+                ))
+            }
             ExprKind::Dimension(_, inner) => self.eval(*inner, exprs)?,
         })
     }
@@ -162,6 +169,7 @@ impl Interp<'_, '_> {
             Func::Max => v.iter().copied().fold(f64::NEG_INFINITY, f64::max),
             Func::Bin => bcd_to_bin(a),
             Func::Bcd => bin_to_bcd(a),
+            Func::PosShortest | Func::PosPlus | Func::PosMinus => a,
             Func::Asin | Func::Acos | Func::Sqrt | Func::Ln => {
                 return Err(self.error_at(
                     span,

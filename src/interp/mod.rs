@@ -137,6 +137,9 @@ impl<'a, 's> Interp<'a, 's> {
             entry_longer_than_radius: spec.has(crate::dialect::Capability::CompEntryLongerThanRadius),
             on_when_on_error: spec.has(crate::dialect::Capability::CompOnWhenOnError),
         };
+        if spec.has(crate::dialect::Capability::PowerOnLinear) {
+            state.motion = state::ModalMotion::Move(crate::ir::MotionKind::Linear);
+        }
         Interp {
             spec,
             opts,

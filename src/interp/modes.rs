@@ -6,7 +6,7 @@
 use super::state::PathControl;
 use super::{aux, Interp, Stop};
 use crate::canon::{Canon, CanonPlane, CanonUnits, MotionMode};
-use crate::diag::Code;
+use crate::diag::{Code, Diagnostic};
 use crate::interp::host::SpindleDir;
 use crate::ir::{
     Arena, Block, CommentStyle, Coolant, DimMode, DwellUnit, Expr, FeedMode, LengthUnit, PathMode,
@@ -375,7 +375,16 @@ fn path_mode(
             it.out(Canon::SetMotionControlMode(MotionMode::Continuous(p)));
             it.out(Canon::SetNaivecamTolerance(q));
         }
-        PathMode::ExactStopBlock | PathMode::CornerOverride | PathMode::Tapping => {
+        PathMode::CornerOverride => {
+            // A feed change at corners, not a path change: the run goes on.
+            let note = Diagnostic::new(
+                Code::CornerFeedNotSimulated,
+                "the feed override at corners is not simulated; the path is unchanged",
+            )
+            .primary(s.span, "corner feed override");
+            it.diags.push(note);
+        }
+        PathMode::ExactStopBlock | PathMode::Tapping => {
             return Err(it.error_at(
                 s.span,
                 Code::UnsupportedHere,

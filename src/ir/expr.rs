@@ -30,6 +30,11 @@ pub enum ExprKind {
     AtanSlash(ExprId, ExprId),
     /// Siemens `AC(expr)` / `IC(expr)` inside an address value.
     Dimension(DimMode, ExprId),
+    /// A call of a control function that is not in the dialect's function
+    /// table, kept by name (Siemens `ISAXIS(1)`, `GETT("DRILL",1)`): its
+    /// value is machine or tool-management state cncc cannot know, so the
+    /// run stops where it is needed (W0511) instead of guessing.
+    Query(String, Vec<ExprId>),
 }
 
 /// Absolute or incremental, for a whole program (G90/G91) or one value (AC/IC).
@@ -176,6 +181,16 @@ pub enum Func {
     Bcd,
     Min,
     Max,
+    /// Siemens `DC(a)`: an absolute position of a rotary axis or spindle
+    /// reached the shortest way. Its value is the position; the direction
+    /// is not simulated.
+    PosShortest,
+    /// Siemens `ACP(a)`: the absolute position, approached in the positive
+    /// direction.
+    PosPlus,
+    /// Siemens `ACN(a)`: the absolute position, approached in the negative
+    /// direction.
+    PosMinus,
 }
 
 /// A word's value: a number as written, or an expression.

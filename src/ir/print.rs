@@ -129,6 +129,10 @@ impl Printer<'_> {
                 format!("{}({})", format!("{f:?}").to_lowercase(), a.join(", "))
             }
             ExprKind::Exists(n) => format!("exists(#<{n}>)"),
+            ExprKind::Query(n, args) => {
+                let a: Vec<String> = args.iter().map(|x| self.expr(*x)).collect();
+                format!("{n}?({})", a.join(", "))
+            }
             ExprKind::AtanSlash(a, b) => format!("atan({})/({})", self.expr(*a), self.expr(*b)),
             ExprKind::Dimension(m, a) => format!("{}({})", dim(*m), self.expr(*a)),
         }

@@ -10,11 +10,17 @@ use crate::ir::{CallKind, CallTarget, JumpDir, JumpTarget, Stmt, StmtKind, Value
 use crate::span::Span;
 use std::collections::HashMap;
 
-/// Where a jump goes.
+/// Where a jump goes. Labels are compared without regard to case, as the
+/// controls (and the interpreter's flow index) find them.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 enum Target {
     Number(u32),
     Label(String),
+}
+
+/// A label target, keyed in upper case.
+fn label(name: &str) -> Target {
+    Target::Label(name.to_ascii_uppercase())
 }
 
 impl Target {
@@ -30,6 +36,8 @@ impl Target {
 #[derive(Clone, Debug)]
 struct Pending {
     target: Target,
+    /// The target as the jump wrote it.
+    shown: String,
     dir: JumpDir,
     span: Span,
     /// A Heidenhain `CALL LBL` (not a jump).
@@ -111,11 +119,12 @@ impl Labels {
 
     /// Defines a label; returns where it was first defined if it was.
     pub fn define_label(&mut self, name: &str, span: Span) -> Option<Span> {
-        if let Some(first) = self.names.get(name) {
+        let key = name.to_ascii_uppercase();
+        if let Some(first) = self.names.get(&key) {
             return Some(*first);
         }
-        self.resolve(&Target::Label(name.to_string()));
-        self.names.insert(name.to_string(), span);
+        self.resolve(&Target::Label(key.clone()));
+        self.names.insert(key, span);
         None
     }
 
@@ -126,10 +135,10 @@ impl Labels {
             StmtKind::IfThen { then, .. } => self.jumps(then),
             StmtKind::Case { arms, default, .. } => {
                 for arm in arms {
-                    self.jump(Target::Label(arm.target.clone()), arm.dir, s.span);
+                    self.jump(label(&arm.target), &arm.target, arm.dir, s.span);
                 }
-                if let Some((label, dir)) = default {
-                    self.jump(Target::Label(label.clone()), *dir, s.span);
+                if let Some((l, dir)) = default {
+                    self.jump(label(l), l, *dir, s.span);
                 }
             }
             StmtKind::SectionRepeat {
@@ -140,16 +149,21 @@ impl Labels {
                 } else {
                     JumpDir::Backward
                 };
-                self.jump(Target::Label(start.clone()), dir, s.span);
+                self.jump(label(start), start, dir, s.span);
                 if let Some(end) = end {
-                    self.jump(Target::Label(end.clone()), dir, s.span);
+                    self.jump(label(end), end, dir, s.span);
                 }
             }
             StmtKind::Call {
                 kind: CallKind::Local,
                 target: CallTarget::Number(n),
                 ..
-            } => self.jump(Target::Number(*n), JumpDir::Either, s.span),
+            } => self.jump(
+                Target::Number(*n),
+                &format!("N{n}"),
+                JumpDir::Either,
+                s.span,
+            ),
             StmtKind::Call {
                 kind: CallKind::Label,
                 target,
@@ -160,7 +174,7 @@ impl Labels {
                     CallTarget::Name(n) => n.clone(),
                     CallTarget::Computed(_) => return,
                 };
-                self.pending_call(Target::Label(name), s.span);
+                self.pending_call(label(&name), name, s.span);
             }
             StmtKind::SubReturn { to: Some(v) } => {
                 self.jump_target(&JumpTarget::Sequence(v.clone()), JumpDir::Either, s.span)
@@ -171,7 +185,7 @@ impl Labels {
 
     fn jump_target(&mut self, target: &JumpTarget, dir: JumpDir, span: Span) {
         let t = match target {
-            JumpTarget::Label(l) => Target::Label(l.clone()),
+            JumpTarget::Label(l) => return self.jump(label(l), l, dir, span),
             JumpTarget::Sequence(Value::Number(d)) => {
                 match d.as_int().and_then(|n| u32::try_from(n).ok()) {
                     Some(n) => Target::Number(n),
@@ -180,16 +194,18 @@ impl Labels {
             }
             JumpTarget::Sequence(Value::Expr(_)) => return,
         };
-        self.jump(t, dir, span);
+        let shown = t.show();
+        self.jump(t, &shown, dir, span);
     }
 
-    fn jump(&mut self, target: Target, dir: JumpDir, span: Span) {
+    fn jump(&mut self, target: Target, shown: &str, dir: JumpDir, span: Span) {
         let known = self.seen(&target);
         match dir {
             JumpDir::EitherNoAlarm => {}
             JumpDir::Either | JumpDir::Backward if known => {}
             _ => self.pending.push(Pending {
                 target,
+                shown: shown.to_string(),
                 dir,
                 span,
                 call: false,
@@ -198,10 +214,11 @@ impl Labels {
     }
 
     /// `CALL LBL`: the label may come anywhere in the program.
-    fn pending_call(&mut self, target: Target, span: Span) {
+    fn pending_call(&mut self, target: Target, shown: String, span: Span) {
         if !self.seen(&target) {
             self.pending.push(Pending {
                 target,
+                shown,
                 dir: JumpDir::Either,
                 span,
                 call: true,
@@ -225,7 +242,7 @@ impl Labels {
 }
 
 fn missing_target(p: &Pending, exists: bool) -> Diagnostic {
-    let name = p.target.show();
+    let name = p.shown.clone();
     let (msg, help) = match (p.dir, exists) {
         (JumpDir::Forward, true) => (
             format!("`{name}` is not found after this jump"),
@@ -246,7 +263,7 @@ fn missing_target(p: &Pending, exists: bool) -> Diagnostic {
 /// E0321 in Heidenhain's terms: `CALL LBL 5` / `GOTO LBL 5` / `REP` to a
 /// label the program lacks (or, for a section repeat, has only after it).
 fn missing_label(p: &Pending, exists: bool) -> Diagnostic {
-    let name = p.target.show();
+    let name = p.shown.clone();
     let lbl = if name.bytes().all(|b| b.is_ascii_digit()) {
         format!("LBL {name}")
     } else {

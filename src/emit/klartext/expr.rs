@@ -111,6 +111,9 @@ pub fn formula(w: &mut Writer<'_>, e: ExprId) -> Option<String> {
                 | Func::Pow
                 | Func::Bin
                 | Func::Bcd
+                | Func::PosShortest
+                | Func::PosPlus
+                | Func::PosMinus
                 | Func::Min
                 | Func::Max => {
                     w.cannot(

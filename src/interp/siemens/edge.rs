@@ -7,11 +7,13 @@
 //! one edge per tool, so `D1` is that edge, printed as rs274 prints `G43`
 //! for the tool in the spindle (`USE_TOOL_LENGTH_OFFSET`, program units);
 //! the radius (half the table diameter) is kept for G41/G42.
-//! `D2`.. have no data in such a table: an error, as the control alarms
-//! on an edge that does not exist [?].
+//! `D2`.. (and, with flat D numbering, MD 18102, any D number such as
+//! `D08`) have no data in such a table. The control takes them from its own
+//! tool memory, which cncc cannot see: the run goes on with the tool's row
+//! as that edge, with a W0530 note, rather than a false error.
 
 use crate::canon::Canon;
-use crate::diag::Code;
+use crate::diag::{Code, Diagnostic};
 use crate::interp::state::MM_PER_INCH;
 use crate::interp::{Interp, Stop};
 use crate::ir::{Arena, Expr, LengthUnit, Value};
@@ -37,7 +39,7 @@ pub fn activate_edge(it: &mut Interp<'_, '_>, d: i64) -> Result<(), Stop> {
         ([0.0; 9], 0.0)
     } else {
         crate::interp::tools::known_tool(it, tool)?;
-        let Some(t) = it.tool_table.get(tool) else {
+        let Some(t) = it.tool_table.get(tool).cloned() else {
             return Err(it.error_at(
                 it.span,
                 Code::ToolNotInTable,
@@ -45,11 +47,7 @@ pub fn activate_edge(it: &mut Interp<'_, '_>, d: i64) -> Result<(), Stop> {
             ));
         };
         if d > 1 {
-            return Err(it.error_at(
-                it.span,
-                Code::ToolNotInTable,
-                format!("tool {tool} has no cutting edge D{d}: a LinuxCNC tool table holds one edge (D1) per tool"),
-            ));
+            edge_note(it, tool, d);
         }
         let k = match it.opts.machine_units {
             LengthUnit::Mm => 1.0,
@@ -68,4 +66,15 @@ pub fn activate_edge(it: &mut Interp<'_, '_>, d: i64) -> Result<(), Stop> {
     let printed = it.state.pose_to_prog(&offset);
     it.emit(Canon::UseToolLengthOffset(printed));
     Ok(())
+}
+
+/// W0530: edge `d` of `tool` is not in the table; its row stands in.
+fn edge_note(it: &mut Interp<'_, '_>, tool: i64, d: i64) {
+    let msg = format!(
+        "cutting edge D{d} of tool {tool} is not in the tool table: its length and radius are taken from the tool's row"
+    );
+    let note = Diagnostic::new(Code::EdgeNotInTable, msg)
+        .primary(it.span, "edge selected here")
+        .help("the control reads this edge from its tool memory (or, with flat D numbering, the D number alone); give it in the tool table's row for this tool if the values differ");
+    it.diags.push(note);
 }

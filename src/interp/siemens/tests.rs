@@ -211,8 +211,18 @@ fn program_cycle832_and_unexpanded() {
 }
 
 #[test]
+fn an_edge_not_in_the_table_is_a_note_not_an_error() {
+    // Flat D numbering (`D08`) or a second edge: the table row stands in.
+    let out = drive::run("T8 M6\nD08\nM30\n");
+    assert!(!out.contains("error"), "{out}");
+    assert!(out.contains("USE_TOOL_LENGTH_OFFSET"), "{out}");
+    assert!(out.contains("W0530 cutting edge D8 of tool 8"), "{out}");
+    assert!(!out.contains("LinuxCNC"), "{out}");
+}
+
+#[test]
 fn program_errors() {
-    let d2 = drive::run("T1 M6\nD2\nM30\n");
+    let d2 = drive::run("T1 M6\nD40000\nM30\n");
     let t99 = drive::run("T99 M6\nD1\nM30\n");
     let scale0 = drive::run("SCALE X0\nM30\n");
     let pattern = drive::run("MCALL HOLES1(0,0,0,10,10,3)\nM30\n");

@@ -46,6 +46,9 @@ pub(super) fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
                 Func::Max => "MAX",
                 Func::Bin => "BIN",
                 Func::Bcd => "BCD",
+                Func::PosShortest | Func::PosPlus | Func::PosMinus => {
+                    "a rotary position with a direction (DC, ACP, ACN)"
+                }
                 Func::Pow => "POW with other than two arguments",
                 Func::Sin
                 | Func::Cos

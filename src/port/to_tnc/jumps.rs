@@ -99,6 +99,7 @@ impl Flow<'_> {
             }
             ExprKind::Str(_)
             | ExprKind::Exists(_)
+            | ExprKind::Query(..)
             | ExprKind::AtanSlash(..)
             | ExprKind::Dimension(..)
             | ExprKind::Unary(UnaryOp::Not | UnaryOp::BitNot, _)

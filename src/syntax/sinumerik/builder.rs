@@ -123,6 +123,20 @@ impl Builder<'_> {
         }
     }
 
+    /// `G[8]=..`, `AX[_Z]=..`: an address with a computed extension. The
+    /// line is kept as text (W0005); the node itself is never finished.
+    pub fn indirect(&mut self, addr: String, l: usize, r: usize) -> Node {
+        self.keep_raw(
+            format!("`{addr}[..]=`: an address with an extension in brackets (axis, spindle or G group), known only when the program runs"),
+            l,
+            r,
+        );
+        Node::Bare {
+            addr,
+            span: self.span(l, r),
+        }
+    }
+
     /// Marks the line to be kept as text.
     pub fn keep_raw(&mut self, why: String, l: usize, r: usize) {
         let span = self.span(l, r);
@@ -210,4 +224,25 @@ pub fn call(ctx: &mut Builder<'_>, name: String, args: Vec<ExprId>, l: usize, r:
         ctx.diags.push(d);
     }
     ctx.expr(ExprKind::Call(func, args), l, r)
+}
+
+/// `NAME(args)` in an expression, NAME not in the spec's function table: a
+/// control function kept by name ([`ExprKind::Query`]); its value is not
+/// known at check time. An argument left empty keeps the line as text.
+pub fn query(ctx: &mut Builder<'_>, name: String, args: Vec<Arg>, l: usize, r: usize) -> ExprId {
+    let mut vals = Vec::with_capacity(args.len());
+    for a in args {
+        match a.value {
+            Some(v) => vals.push(v),
+            None => {
+                ctx.keep_raw(
+                    format!("the control function `{name}` with an empty argument"),
+                    l,
+                    r,
+                );
+                return ctx.expr(ExprKind::Str(name), l, r);
+            }
+        }
+    }
+    ctx.expr(ExprKind::Query(name, vals), l, r)
 }

@@ -7,7 +7,7 @@
 //! `;` comment.
 
 use super::lexer::{lex, Raw};
-use super::split::{split, Piece};
+use super::split::{split, Piece, MULTI_ADDRESSES};
 use super::token::{keyword, Kw, Tok};
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::DialectSpec;
@@ -286,6 +286,7 @@ impl Cx<'_> {
                     | Div
                     | Mod
                     | Of
+                    | Case
                     | Ac
                     | Ic
             ),
@@ -346,6 +347,11 @@ impl Cx<'_> {
         }
         if self.names_here(before_assign) {
             return self.push(r, Tok::Name(s.to_string()));
+        }
+        // `SPOS=90`: a multi-letter address before `=` is the address,
+        // even where the spec also lists it as a command.
+        if before_assign && upper.len() > 1 && MULTI_ADDRESSES.contains(&upper.as_str()) {
+            return self.push(r, Tok::Addr(upper));
         }
         if let Some(t) = self.named(s, &upper, next) {
             return self.push(r, t);

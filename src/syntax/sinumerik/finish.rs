@@ -1,14 +1,15 @@
 //! From the grammar's [`Node`]s to the line's [`Item`]s: numbered
-//! subprogram calls `L123 P3`, tool names `T="NAME"`, words without a value,
-//! and named cycle calls checked against their signature in the spec.
+//! subprogram calls `L123 P3`, tool names `T="NAME"`, spindle positioning
+//! `SPOS=90`, words without a value, and named cycle calls checked against
+//! their signature in the spec.
 
 use super::builder::Node;
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::spec::ParamType;
 use crate::dialect::DialectSpec;
 use crate::ir::{
-    Arena, Arg, CallArgs, CallKind, CallTarget, CycleCall, Expr, ExprKind, Stmt, StmtKind, ToolRef,
-    Value,
+    Arena, Arg, CallArgs, CallKind, CallTarget, CycleCall, Expr, ExprKind, SpindleState, Stmt,
+    StmtKind, ToolRef, Value,
 };
 use crate::span::Span;
 use crate::syntax::{Item, WordSyntax};
@@ -80,6 +81,12 @@ impl Finish<'_> {
         if let Some(call) = self.l_call(&addr, &value, None, span) {
             return call;
         }
+        if addr == "SPOS" && dim.is_none() {
+            // `SPOS=90`: the programmable spindle positioning (M19 takes
+            // its angle from setting data).
+            let kind = StmtKind::Spindle(SpindleState::Orient(Some(value)));
+            return Item::Stmt(Stmt::new(kind, span));
+        }
         if addr == "T" {
             if let Value::Expr(e) = &value {
                 if let ExprKind::Str(name) = &self.exprs[*e].kind {
@@ -137,7 +144,12 @@ impl Finish<'_> {
         if call.is_none() {
             let d = Diagnostic::new(Code::SyntaxError, format!("`{addr}{number}` cannot take arguments"))
                 .primary(span, "arguments after a word")
-                .help("only a subprogram call `L<number>(...)` or a named call `NAME(...)` takes arguments in parentheses");
+                .help(format!(
+                    "only a subprogram call `L<number>(...)` or a named call `NAME(...)` takes arguments in parentheses; \
+                     if `{addr}{number}(...)` is a function the machine builder added (an OEM cycle or M function), \
+                     describe the machine in a dialect file that extends this one, with \
+                     `<command name=\"{addr}{number}\" doc=\"...\"/>`, and give it with `--dialect-file`"
+                ));
             self.diags.push(d);
         }
         call

@@ -13,10 +13,15 @@
 //! `D1`, axes, `CR=`, `I1=`, `CHF=`...) for the shared lowering; `CIP`
 //! and `CT` are words with that address and the value 0; `L123` is a
 //! `Call` (passes from `P`); `T="NAME"` a `ToolSelect`; everything else
-//! the grammar builds as a statement. A block the grammar cannot place but
-//! that starts with an unknown name (`WHENEVER ...`), or that uses a
-//! function the spec does not list, is kept as `Raw` with a W0005
-//! warning. A main block `:10` is read as block number 10.
+//! the grammar builds as a statement; `SPOS=90` is a spindle positioning.
+//! A call `NAME(args)` of a function the spec does not list (`ISAXIS(1)`)
+//! is an [`ExprKind::Query`](crate::ir::ExprKind::Query): kept by name, its
+//! value unknown until the program runs. A block the grammar cannot place
+//! but that starts with an unknown name (`WHENEVER ...`), or that writes an
+//! address with a computed extension (`G[8]=`, `M[n]=`, `AX[_Z]=`), is
+//! kept as `Raw` with a W0005 warning. A main block `:10` is read as block
+//! number 10. Several `IF cond GOTOF label` may share a block; `CASE expr
+//! OF` needs no parentheses.
 
 mod builder;
 mod classify;
@@ -25,6 +30,8 @@ mod lexer;
 mod split;
 mod token;
 
+#[cfg(test)]
+mod field_tests;
 #[cfg(test)]
 mod tests;
 

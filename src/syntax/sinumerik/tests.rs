@@ -116,6 +116,8 @@ pub fn spec() -> DialectSpec {
         ("TRUNC", Func::Trunc, 1),
         ("ATAN2", Func::Atan2, 2),
         ("POT", Func::Square, 1),
+        ("DC", Func::PosShortest, 1),
+        ("ACP", Func::PosPlus, 1),
     ] {
         s.functions.push(FunctionDef {
             name: name.into(),
@@ -142,7 +144,7 @@ pub fn spec() -> DialectSpec {
 }
 
 /// Reads a whole text line by line; returns the rendering and diagnostics.
-fn read(text: &str) -> (String, Vec<Diagnostic>) {
+pub(super) fn read(text: &str) -> (String, Vec<Diagnostic>) {
     let spec = spec();
     let mut fe = SinumerikFrontEnd::new();
     let mut exprs = Arena::new();
