@@ -187,6 +187,8 @@ pub const FUNCS: &[(&str, Func)] = &[
     ("bcd", Func::Bcd),
     ("min", Func::Min),
     ("max", Func::Max),
+    ("sign", Func::Sign),
+    ("log10", Func::Log10),
 ];
 
 /// Cycle kinds a `<cycle kind=...>` may name.

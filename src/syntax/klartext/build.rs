@@ -145,10 +145,14 @@ impl Ctx<'_> {
             "INT" => Some(Func::Trunc),
             "LN" => Some(Func::Ln),
             "EXP" => Some(Func::Exp),
+            "LOG" => Some(Func::Log10),
+            "SGN" => Some(Func::Sign),
             _ => None,
         };
         match (f, arg) {
             (Some(f), Some(a)) => self.alloc(ExprKind::Call(f, vec![a]), l, r),
+            // NEG x = -x.
+            (None, Some(a)) if name == "NEG" => self.unary(UnaryOp::Neg, a, l, r),
             // FRAC x = x - INT x.
             (None, Some(a)) if name == "FRAC" => {
                 let int = self.alloc(ExprKind::Call(Func::Trunc, vec![a]), l, r);
@@ -165,7 +169,7 @@ impl Ctx<'_> {
                 } else {
                     format!("`{name}` has no value in a formula")
                 };
-                self.error(Code::SyntaxError, l, r, what, "use SIN COS TAN ASIN ACOS ATAN SQRT SQ ABS INT LN EXP, PI, Q parameters and numbers");
+                self.error(Code::SyntaxError, l, r, what, "use SIN COS TAN ASIN ACOS ATAN SQRT SQ ABS INT FRAC NEG SGN LN LOG EXP, PI, Q parameters and numbers");
                 self.number(Decimal::from_int(0), l, r)
             }
         }

@@ -205,7 +205,13 @@ fn read_block(
             .map(|l| l.1 as usize + l.0.len() - base)
             .unwrap_or(0),
     );
-    let lead = text.len() - text.trim_start().len();
+    let mut lead = text.len() - text.trim_start().len();
+    // `/` before the block number (or after it, `12 /L ..`): the block is
+    // skipped when block skip is on.
+    let mut skip = slash_at(&mut text, lead, base, file);
+    if skip.is_some() {
+        lead = text.len() - text.trim_start().len();
+    }
     let digits = text[lead..].bytes().take_while(u8::is_ascii_digit).count();
     let after = text[lead + digits..].chars().next();
     let mut number = None;
@@ -225,10 +231,14 @@ fn read_block(
             ),
         }
         text.replace_range(lead..lead + digits, &" ".repeat(digits));
+        if skip.is_none() {
+            let after = text.len() - text.trim_start().len();
+            skip = slash_at(&mut text, after, base, file);
+        }
     }
     let mut line = LineSyntax {
         span: full,
-        skip: None,
+        skip,
         number,
         label: None,
         items: Vec::new(),
@@ -270,6 +280,15 @@ fn read_block(
         line.items.push(Item::Stmt(Stmt::new(kind, span)));
     }
     Some(line)
+}
+
+/// A block-skip `/` at `at` (blanked in `text`): skip level 0.
+fn slash_at(text: &mut String, at: usize, base: usize, file: crate::span::FileId) -> Option<Spanned<u8>> {
+    if !text[at..].starts_with('/') {
+        return None;
+    }
+    text.replace_range(at..at + 1, " ");
+    Some(Spanned::new(0, Span::new(file, base + at, base + at + 1)))
 }
 
 /// Lexes and parses the block's code; returns the comments used as labels.

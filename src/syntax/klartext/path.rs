@@ -44,8 +44,17 @@ pub(super) fn read_words(
     axes_ok: bool,
 ) -> Said {
     let mut s = Said::default();
-    for w in words {
+    let mut i = 0;
+    while i < words.len() {
+        let w = &words[i];
+        i += 1;
         let n = w.name.as_str();
+        if n == "MB" && allowed.contains(&"M") {
+            let (item, used) = super::functions::retract(ctx, words, i - 1);
+            s.items.extend(item);
+            i += used - 1;
+            continue;
+        }
         let incr = n.len() == 2 && n.starts_with('I') && AXES.contains(&&n[1..]);
         if axes_ok && (AXES.contains(&n) || incr) {
             let Some(v) = ctx.word_value(w) else {
