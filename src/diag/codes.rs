@@ -334,6 +334,9 @@ codes! {
     CompStateChange = "E0554", "comp-state-change", Error,
         "a change that is not allowed while cutter radius compensation is on",
         "Turning compensation on while it is on, or changing plane, needs G40 first.";
+    KlartextEndNameMismatch = "W0120", "klartext-end-name", Warning,
+        "END PGM names another program than BEGIN PGM",
+        "A Klartext program begins with `BEGIN PGM name unit` and ends with `END PGM name unit`, the same name in both; the TNC writes them so. A different name at the end is usually a program copied under a new name (or a post's mistake). The program still ends there; correct the name.";
     KlartextUnknownBlock = "E0120", "klartext-unknown-block", Error,
         "a Klartext block that does not start with a known function",
         "A Heidenhain block starts with its path or program function: L, C, CC, CR, CT, LP, CP, CTP, RND, CHF, APPR, DEP, LBL, CALL, FN, CYCL DEF, CYCL CALL, TOOL DEF, TOOL CALL, BLK FORM, PATTERN DEF, STOP, a Q parameter formula, or M functions alone. Check the spelling (`CYCL`, not `CYCLE`).";

@@ -94,6 +94,20 @@ fn missing_params(ctx: &mut Ctx<'_>, number: u32, params: &[QParam], l: usize, r
         .filter(|p| !params.iter().any(|q| format!("Q{}", q.q) == p.name))
         .map(|p| format!("{} ({})", p.name, p.doc))
         .collect();
+    if !missing.is_empty() && params.is_empty() && !sig.params.is_empty() {
+        // None at all: the parameter lines were not joined to the block.
+        let d = Diagnostic::new(
+            Code::KlartextCycleMissingParameter,
+            format!("CYCL DEF {number} has none of its parameters: its line does not end with `~`"),
+        )
+        .primary(ctx.span(l, r), "the block ends here")
+        .help(format!(
+            "a CYCL DEF goes on over the next lines only when each line but its last ends with `~` (`CYCL DEF {number} ... ~`, then `Q200=2 ;... ~`); without it the Q lines after it are separate blocks and cycle {number} lacks {}",
+            sig.params.iter().map(|p| p.name.as_str()).collect::<Vec<_>>().join(" ")
+        ));
+        ctx.diags.push(d);
+        return;
+    }
     if !missing.is_empty() {
         let d = Diagnostic::new(
             Code::KlartextCycleMissingParameter,

@@ -79,6 +79,8 @@ pub struct KlartextFrontEnd {
     /// Lines of a block continued with `~`: text and file offset.
     pending: Vec<(String, u32)>,
     pending_len: usize,
+    /// The name `BEGIN PGM` gave (for the `END PGM` check).
+    begin: Option<String>,
 }
 
 impl KlartextFrontEnd {
@@ -109,7 +111,11 @@ impl FrontEnd for KlartextFrontEnd {
         }
         let lines = std::mem::take(&mut self.pending);
         self.pending_len = 0;
-        read_block(&lines, input, exprs, diags)
+        let line = read_block(&lines, input, exprs, diags);
+        if let Some(l) = &line {
+            self.program_names(l, diags);
+        }
+        line
     }
 
     fn finish(&mut self, file: crate::span::FileId, diags: &mut Vec<Diagnostic>) {
@@ -123,6 +129,34 @@ impl FrontEnd for KlartextFrontEnd {
                 .primary(span, "this block is not complete")
                 .help("complete the block or remove the trailing `~`"),
             );
+        }
+    }
+}
+
+impl KlartextFrontEnd {
+    /// Remembers the `BEGIN PGM` name; an `END PGM` naming another program
+    /// is a warning (the TNC writes the same name in both [K]; the run
+    /// ends there all the same).
+    fn program_names(&mut self, line: &LineSyntax, diags: &mut Vec<Diagnostic>) {
+        for item in &line.items {
+            let Item::Stmt(s) = item else { continue };
+            match &s.kind {
+                StmtKind::ProgramStart { name, .. } => self.begin = name.clone(),
+                StmtKind::ProgramEnd { name: Some(end) } => {
+                    let Some(begin) = &self.begin else { continue };
+                    if !begin.eq_ignore_ascii_case(end) {
+                        diags.push(
+                            Diagnostic::new(
+                                Code::KlartextEndNameMismatch,
+                                format!("END PGM names `{end}`, but the program is `{begin}`"),
+                            )
+                            .primary(s.span, "this END PGM")
+                            .help(format!("write `END PGM {begin}` with the name of BEGIN PGM")),
+                        );
+                    }
+                }
+                _ => {}
+            }
         }
     }
 }
@@ -282,6 +316,24 @@ fn read_block(
     Some(line)
 }
 
+/// `% name G71`: the first block of a TNC DIN/ISO program, which this
+/// front end does not read; said so at once.
+fn iso_start(text: &str, base: usize, file: crate::span::FileId) -> Option<Diagnostic> {
+    let code = text.trim_start();
+    let rest = code.strip_prefix('%')?;
+    let words: Vec<&str> = rest.split_whitespace().collect();
+    words.last().filter(|w| matches!(**w, "G70" | "G71"))?;
+    let at = base + text.len() - code.len();
+    Some(
+        Diagnostic::new(
+            Code::KlartextUnknownBlock,
+            format!("`{}` starts a TNC DIN/ISO program, not a Klartext one", code.trim_end()),
+        )
+        .primary(Span::new(file, at, at + code.trim_end().len()), "DIN/ISO program start")
+        .help("this is the TNC's ISO (G-code) programming: cncc has no TNC DIN/ISO dialect yet, and Klartext reads only conversational blocks (BEGIN PGM ... END PGM)"),
+    )
+}
+
 /// A block-skip `/` at `at` (blanked in `text`): skip level 0.
 fn slash_at(text: &mut String, at: usize, base: usize, file: crate::span::FileId) -> Option<Spanned<u8>> {
     if !text[at..].starts_with('/') {
@@ -302,6 +354,10 @@ fn body(
     line: &mut LineSyntax,
 ) -> Vec<usize> {
     let file = input.file;
+    if let Some(d) = iso_start(text, base, file) {
+        diags.push(d);
+        return Vec::new();
+    }
     let mut raw = Vec::new();
     if let Err(e) = lexer::lex(text, base, &mut raw) {
         let code = match e.what {

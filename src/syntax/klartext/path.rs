@@ -78,6 +78,9 @@ pub(super) fn read_words(
             }
             continue;
         }
+        if axes_ok && not_a_number(ctx, w) {
+            continue;
+        }
         let r_word = n == "R" && allowed.contains(&"R0");
         if !allowed.contains(&n) && !r_word {
             ctx.error(
@@ -92,6 +95,27 @@ pub(super) fn read_words(
         word(ctx, w, n, &mut s, allowed.contains(&"R"));
     }
     s
+}
+
+/// `Xnan`, `Yinf`: a post that computed no coordinate wrote the float's
+/// text; a located E0121 naming it (true when reported).
+fn not_a_number(ctx: &mut Ctx<'_>, w: &WordNode) -> bool {
+    let n = w.name.as_str();
+    let Some(bad) = ["NAN", "INF", "INFINITY"]
+        .into_iter()
+        .find(|b| n.strip_suffix(b).is_some_and(|a| AXES.contains(&a.trim_start_matches('I'))))
+    else {
+        return false;
+    };
+    let axis = &n[..n.len() - bad.len()];
+    ctx.error(
+        Code::KlartextAxisWithoutValue,
+        w.l,
+        w.r,
+        format!("the coordinate of `{axis}` is `{}`: not a number", bad.to_ascii_lowercase()),
+        "the post-processor computed no value here and wrote its float's text; regenerate the program (check the operation's geometry in the CAM system)",
+    );
+    true
 }
 
 fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said, radius_ok: bool) {
