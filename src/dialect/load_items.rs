@@ -307,6 +307,7 @@ pub struct CodeCommon {
     pub uses: Vec<char>,
     pub dwell_units: Vec<(char, DwellUnit)>,
     pub preferred: bool,
+    pub run: crate::dialect::spec::AuxRun,
     pub doc: String,
 }
 
@@ -319,6 +320,7 @@ pub const CODE_ATTRS: &[&str] = &[
     "uses",
     "dwell",
     "preferred",
+    "run",
     "doc",
     "confidence",
 ];
@@ -362,6 +364,18 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
         None => Some(Vec::new()),
     };
     let preferred = cx.bool_attr(n, "preferred", false);
+    let run = match n.attr("run") {
+        Some(a) => cx.parse(a, "`stop`, `pass` or `kinematics`", "`run` says what the canonical run does with an aux code", |s| {
+            use crate::dialect::spec::AuxRun;
+            match s {
+                "stop" => Some(AuxRun::Stop),
+                "pass" => Some(AuxRun::Pass),
+                "kinematics" => Some(AuxRun::Kinematics),
+                _ => None,
+            }
+        }),
+        None => Some(Default::default()),
+    };
     Some(CodeCommon {
         group: group?,
         meaning: meaning?,
@@ -369,6 +383,7 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
         uses: uses?,
         dwell_units: dwell_units?,
         preferred,
+        run: run?,
         doc: cx.doc(n),
     })
 }
@@ -406,6 +421,7 @@ pub fn read_code(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<CodeDef>
         uses: c.uses,
         dwell_units: c.dwell_units,
         preferred: c.preferred,
+        run: c.run,
         doc: c.doc,
         span: n.span,
     })
@@ -452,6 +468,7 @@ pub fn read_code_range(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Vec<CodeD
             uses: c.uses.clone(),
             dwell_units: c.dwell_units.clone(),
             preferred: c.preferred,
+            run: c.run,
             doc: c.doc.clone(),
             span: n.span,
         })

@@ -193,7 +193,7 @@ fn unknown_datum(it: &mut Interp<'_, '_>, id: u32, nr: u32, idx: Option<i64>, sp
 }
 
 /// A 5-axis function the run does not make: one warning per run.
-pub(super) fn kinematics_not_run(it: &mut Interp<'_, '_>, what: &str, span: Span) {
+pub fn kinematics_not_run(it: &mut Interp<'_, '_>, what: &str, span: Span) {
     if !it.heidenhain.once("kinematics".into()) {
         return;
     }

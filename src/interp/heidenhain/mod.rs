@@ -37,6 +37,7 @@ use crate::diag::Code;
 use crate::ir::{Arena, Block, Expr, Stmt, StmtKind};
 
 pub use corner::{flush, flush_before};
+pub use functions::kinematics_not_run;
 pub use paths::motion;
 pub use tooldelta::{radius_comp, tool_change};
 

@@ -289,10 +289,16 @@ fn function(ctx: &mut Ctx<'_>, words: &[WordNode], l: usize, r: usize) -> Vec<It
     vec![item(ctx, TncFunctionKind::Function(what.to_ascii_uppercase()), l, r)]
 }
 
-/// `MB MAX` / `MB+50` after `M140`, with the `F` that follows: the retract
-/// in the tool axis. `at` is the index of `MB` in `words`; returns the
+/// `M140 MB MAX` / `M140 MB+50`, with the `F` that follows: the retract
+/// in the tool axis. `at` is the index of `MB` in `words`, `m` where the
+/// M function before it starts (it is part of the item); returns the
 /// item and how many words it took.
-pub(super) fn retract(ctx: &mut Ctx<'_>, words: &[WordNode], at: usize) -> (Option<Item>, usize) {
+pub(super) fn retract(
+    ctx: &mut Ctx<'_>,
+    words: &[WordNode],
+    at: usize,
+    m: Option<usize>,
+) -> (Option<Item>, usize) {
     let mb = &words[at];
     let mut used = 1;
     let distance = match (ctx.word_value(mb), words.get(at + 1)) {
@@ -318,5 +324,5 @@ pub(super) fn retract(ctx: &mut Ctx<'_>, words: &[WordNode], at: usize) -> (Opti
         r = f.r;
     }
     let kind = TncFunctionKind::Retract(distance);
-    (Some(item(ctx, kind, mb.l, r)), used)
+    (Some(item(ctx, kind, m.unwrap_or(mb.l), r)), used)
 }

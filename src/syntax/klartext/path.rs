@@ -50,7 +50,15 @@ pub(super) fn read_words(
         i += 1;
         let n = w.name.as_str();
         if n == "MB" && allowed.contains(&"M") {
-            let (item, used) = super::functions::retract(ctx, words, i - 1);
+            // `MB` belongs to the M function written just before it.
+            let m = match s.items.last() {
+                Some(Item::Word(m)) if m.address.as_bytes() == b"M" => Some(m.span.range().start),
+                _ => None,
+            };
+            if m.is_some() {
+                s.items.pop();
+            }
+            let (item, used) = super::functions::retract(ctx, words, i - 1, m);
             s.items.extend(item);
             i += used - 1;
             continue;
