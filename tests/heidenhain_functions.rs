@@ -155,5 +155,5 @@ fn five_axis_blocks_run_on() {
     );
     assert!(out.contains("STRAIGHT_FEED(10.0000, 0.0000, -1.0000"), "{out}");
     // The tilt warning comes once, for the first tilt.
-    assert_eq!(stderr(&o).matches("W0518").count(), 1, "{}", stderr(&o));
+    assert_eq!(stderr(&o).matches("warning[W0518").count(), 1, "{}", stderr(&o));
 }
