@@ -250,7 +250,8 @@ impl Ctx<'_> {
     }
 
     /// Tokens as a sequence of cycle words: `DIST25.000`, `X+0`, `DATUM`,
-    /// `5`, `#5`; `None` when something else is there.
+    /// `5`, `#5`, `HSC-MODE:0`, `V.IDO5`; `None` when something else is
+    /// there.
     pub fn cycle_words(&mut self, toks: &[Spanned3]) -> Option<Vec<crate::ir::CycleWord>> {
         let mut out = Vec::new();
         let mut i = 0;
@@ -261,6 +262,7 @@ impl Ctx<'_> {
                 Tok::Name(n) => {
                     name = n;
                     i += 1;
+                    glue_name(toks, &mut i, &mut name, &mut r);
                 }
                 Tok::Kw(k) => {
                     name = format!("{k:?}").to_ascii_uppercase();
@@ -303,5 +305,26 @@ impl Ctx<'_> {
             });
         }
         Some(out)
+    }
+}
+
+/// A cycle word's name goes on over `-`, `.` and `:` written against it
+/// and the letters after them (`HSC-MODE:` of `HSC-MODE:0`, `V.IDO` of
+/// the Hungarian `V.IDO5`); `r` becomes its end.
+fn glue_name(toks: &[Spanned3], i: &mut usize, name: &mut String, r: &mut usize) {
+    while let Some((a, t, b)) = toks.get(*i) {
+        if *a != *r {
+            return;
+        }
+        let piece = match t {
+            Tok::Minus if matches!(toks.get(*i + 1), Some((c, Tok::Name(_), _)) if *c == *b) => "-",
+            Tok::Dot if matches!(toks.get(*i + 1), Some((c, Tok::Name(_), _)) if *c == *b) => ".",
+            Tok::Colon => ":",
+            Tok::Name(n) if name.ends_with(['-', '.']) => n.as_str(),
+            _ => return,
+        };
+        name.push_str(piece);
+        *r = *b;
+        *i += 1;
     }
 }

@@ -22,7 +22,16 @@ pub fn cycl_def(ctx: &mut Ctx<'_>, from: usize, l: usize, r: usize) -> Vec<Item>
         );
         return Vec::new();
     };
-    let text = ctx.slice(nl, nr).to_string();
+    let mut text = ctx.slice(nl, nr).to_string();
+    let mut toks = toks;
+    // `CYCL DEF9 .0` (a post's spacing): the sub-number after a space.
+    if let Some((_, Tok::Num(_), sr)) = toks.get(1).cloned() {
+        let sub = ctx.slice(toks[1].0, sr).to_string();
+        if !text.contains('.') && sub.starts_with('.') {
+            text.push_str(&sub);
+            toks.remove(1);
+        }
+    }
     if let Some((c, sub)) = text.split_once('.') {
         let (Ok(cycle), Ok(sub)) = (c.parse::<u32>(), sub.parse::<u32>()) else {
             ctx.error(

@@ -224,3 +224,12 @@ fn end_pgm_naming_another_program_is_a_warning() {
     let (_, d) = read("0 BEGIN PGM CUT MM\n1 END PGM cut MM\n");
     assert!(d.is_empty(), "{d:?}");
 }
+
+#[test]
+fn old_cycle_words_with_dashes_dots_and_colons() {
+    let (ir, d) = read("CYCL DEF 32.2 HSC-MODE:0\nCYCL DEF9 .0 VARAKOZASI IDO\nCYCL DEF9.1 V.IDO5\n");
+    assert!(d.is_empty(), "{d:?}");
+    assert!(ir.contains("HSC-MODE:"), "{ir}");
+    assert!(ir.contains("cycle-line 9.0"), "{ir}");
+    assert!(ir.contains("V.IDO"), "{ir}");
+}
