@@ -131,7 +131,7 @@ fn missing_params(ctx: &mut Ctx<'_>, number: u32, params: &[QParam], l: usize, r
         )
         .primary(ctx.span(l, r), format!("missing: {}", missing.join(", ")))
         .help(format!(
-            "cycle {number} takes {}; add one `Qnnn=value` line for each",
+            "cycle {number} takes {}; add one `Qnnn=value` line for each (a parameter line belongs to the block only when the line before it ends with `~`)",
             sig.params
                 .iter()
                 .map(|p| p.name.as_str())
