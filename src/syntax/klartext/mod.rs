@@ -178,8 +178,13 @@ fn join(lines: &[(String, u32)]) -> (String, usize, Vec<LineComment>) {
         while text.len() < at {
             text.push(' ');
         }
-        let line = line.trim_end();
-        let line = line.strip_suffix('~').map(str::trim_end).unwrap_or(line);
+        // A comment keeps its trailing blanks (byte for byte); before a
+        // continuation `~` they are only layout.
+        let trimmed = line.trim_end();
+        let line = match trimmed.strip_suffix('~') {
+            Some(l) => l.trim_end(),
+            None => line.trim_end_matches(['\r', '\n']),
+        };
         let start = if comment_block && k > 0 {
             Some(usize::MAX)
         } else {

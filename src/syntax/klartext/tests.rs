@@ -233,3 +233,11 @@ fn old_cycle_words_with_dashes_dots_and_colons() {
     assert!(ir.contains("cycle-line 9.0"), "{ir}");
     assert!(ir.contains("V.IDO"), "{ir}");
 }
+
+#[test]
+fn comments_keep_their_trailing_blanks() {
+    let (ir, d) = read("10 ; PROJECT\t  : \r\n11 CYCL DEF 392 ATC ~\n  Q240=+0 ; TUNING MODE   ~\n  Q241=+1 ;WEIGHT MODE\n");
+    assert!(ir.contains("\" PROJECT\\t  : \""), "{ir}");
+    assert!(ir.contains("\" TUNING MODE\""), "{ir}");
+    assert!(d.is_empty(), "{d:?}");
+}
