@@ -153,7 +153,15 @@ fn five_axis_blocks_run_on() {
         out.contains("STRAIGHT_TRAVERSE(0.0000, 0.0000, 10.0000, 0.0000, 0.0000, 0.0000)\nSTRAIGHT_TRAVERSE(0.0000, 0.0000, 15.0000,"),
         "{out}"
     );
-    assert!(out.contains("STRAIGHT_FEED(10.0000, 0.0000, -1.0000"), "{out}");
+    assert!(
+        out.contains("STRAIGHT_FEED(10.0000, 0.0000, -1.0000"),
+        "{out}"
+    );
     // The tilt warning comes once, for the first tilt.
-    assert_eq!(stderr(&o).matches("warning[W0518").count(), 1, "{}", stderr(&o));
+    assert_eq!(
+        stderr(&o).matches("warning[W0518").count(),
+        1,
+        "{}",
+        stderr(&o)
+    );
 }

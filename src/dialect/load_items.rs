@@ -365,15 +365,20 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
     };
     let preferred = cx.bool_attr(n, "preferred", false);
     let run = match n.attr("run") {
-        Some(a) => cx.parse(a, "`stop`, `pass` or `kinematics`", "`run` says what the canonical run does with an aux code", |s| {
-            use crate::dialect::spec::AuxRun;
-            match s {
-                "stop" => Some(AuxRun::Stop),
-                "pass" => Some(AuxRun::Pass),
-                "kinematics" => Some(AuxRun::Kinematics),
-                _ => None,
-            }
-        }),
+        Some(a) => cx.parse(
+            a,
+            "`stop`, `pass` or `kinematics`",
+            "`run` says what the canonical run does with an aux code",
+            |s| {
+                use crate::dialect::spec::AuxRun;
+                match s {
+                    "stop" => Some(AuxRun::Stop),
+                    "pass" => Some(AuxRun::Pass),
+                    "kinematics" => Some(AuxRun::Kinematics),
+                    _ => None,
+                }
+            },
+        ),
         None => Some(Default::default()),
     };
     Some(CodeCommon {

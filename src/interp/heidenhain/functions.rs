@@ -223,7 +223,9 @@ fn function(it: &mut Interp<'_, '_>, what: &str, span: Span) {
             format!("FUNCTION {what}: not run"),
         )
         .primary(span, "skipped")
-        .help("the run has no model of this machine function; check what the program expects of it"),
+        .help(
+            "the run has no model of this machine function; check what the program expects of it",
+        ),
     );
 }
 

@@ -286,7 +286,12 @@ fn function(ctx: &mut Ctx<'_>, words: &[WordNode], l: usize, r: usize) -> Vec<It
     };
     let what = ctx.slice(second.l, r);
     let what = what.split_whitespace().collect::<Vec<_>>().join(" ");
-    vec![item(ctx, TncFunctionKind::Function(what.to_ascii_uppercase()), l, r)]
+    vec![item(
+        ctx,
+        TncFunctionKind::Function(what.to_ascii_uppercase()),
+        l,
+        r,
+    )]
 }
 
 /// `M140 MB MAX` / `M140 MB+50`, with the `F` that follows: the retract
@@ -319,7 +324,10 @@ pub(super) fn retract(
         }
     };
     let mut r = words[at + used - 1].r;
-    if let Some(f) = words.get(at + used).filter(|w| w.name == "F" || w.name == "FMAX") {
+    if let Some(f) = words
+        .get(at + used)
+        .filter(|w| w.name == "F" || w.name == "FMAX")
+    {
         used += 1;
         r = f.r;
     }

@@ -151,7 +151,9 @@ impl KlartextFrontEnd {
                                 format!("END PGM names `{end}`, but the program is `{begin}`"),
                             )
                             .primary(s.span, "this END PGM")
-                            .help(format!("write `END PGM {begin}` with the name of BEGIN PGM")),
+                            .help(format!(
+                                "write `END PGM {begin}` with the name of BEGIN PGM"
+                            )),
                         );
                     }
                 }
@@ -340,7 +342,12 @@ fn iso_start(text: &str, base: usize, file: crate::span::FileId) -> Option<Diagn
 }
 
 /// A block-skip `/` at `at` (blanked in `text`): skip level 0.
-fn slash_at(text: &mut String, at: usize, base: usize, file: crate::span::FileId) -> Option<Spanned<u8>> {
+fn slash_at(
+    text: &mut String,
+    at: usize,
+    base: usize,
+    file: crate::span::FileId,
+) -> Option<Spanned<u8>> {
     if !text[at..].starts_with('/') {
         return None;
     }

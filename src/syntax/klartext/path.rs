@@ -109,10 +109,10 @@ pub(super) fn read_words(
 /// text; a located E0121 naming it (true when reported).
 fn not_a_number(ctx: &mut Ctx<'_>, w: &WordNode) -> bool {
     let n = w.name.as_str();
-    let Some(bad) = ["NAN", "INF", "INFINITY"]
-        .into_iter()
-        .find(|b| n.strip_suffix(b).is_some_and(|a| AXES.contains(&a.trim_start_matches('I'))))
-    else {
+    let Some(bad) = ["NAN", "INF", "INFINITY"].into_iter().find(|b| {
+        n.strip_suffix(b)
+            .is_some_and(|a| AXES.contains(&a.trim_start_matches('I')))
+    }) else {
         return false;
     };
     let axis = &n[..n.len() - bad.len()];

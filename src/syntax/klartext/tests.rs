@@ -201,7 +201,10 @@ fn post_mistakes_get_located_errors() {
     let spec = builtin("heidenhain").unwrap();
     let one = |text: &str| {
         let (_, d) = read_program(text, FileId(0), &spec);
-        d.into_iter().next().map(|d| (d.code.code().to_string(), d.message)).unwrap()
+        d.into_iter()
+            .next()
+            .map(|d| (d.code.code().to_string(), d.message))
+            .unwrap()
     };
     let (c, m) = one("L Xnan Y+1 FMAX\n");
     assert_eq!(c, "E0121");
@@ -227,7 +230,8 @@ fn end_pgm_naming_another_program_is_a_warning() {
 
 #[test]
 fn old_cycle_words_with_dashes_dots_and_colons() {
-    let (ir, d) = read("CYCL DEF 32.2 HSC-MODE:0\nCYCL DEF9 .0 VARAKOZASI IDO\nCYCL DEF9.1 V.IDO5\n");
+    let (ir, d) =
+        read("CYCL DEF 32.2 HSC-MODE:0\nCYCL DEF9 .0 VARAKOZASI IDO\nCYCL DEF9.1 V.IDO5\n");
     assert!(d.is_empty(), "{d:?}");
     assert!(ir.contains("HSC-MODE:"), "{ir}");
     assert!(ir.contains("cycle-line 9.0"), "{ir}");
