@@ -36,10 +36,20 @@
 //!   a `SectionRepeat` from the label to the call; `FN 9..12` a `Goto`
 //!   with a condition; Q parameters are [`Var::Q`](crate::ir::Var::Q).
 //! * `FN 14` ERROR, `FN 15/16` PRINT/F-PRINT, `FN 18` SYSREAD, `FN 17/19/20`
-//!   (SYSWRITE, PLC, WAIT FOR), `PLANE ...`, the FK blocks (`FL`, `FC`,
+//!   (SYSWRITE, PLC, WAIT FOR), `PLANE ...`, `FUNCTION ...` (TCPM, RESET
+//!   TCPM ...), `M140 MB MAX|n [F..]`, the FK blocks (`FL`, `FC`,
 //!   `FPOL` ...) and the paraxial `R+`/`R-` of an `L` block are
 //!   [`StmtKind::TncFunction`]: what they ask and their text as written,
 //!   which the Klartext writer writes back ([`functions`]).
+//!
+//! What CAM posts write and the TNC reads: `F MAX` with a space (`FMAX`),
+//! the block skip `/` before or after the block number, `X + 0` with
+//! spaces, letters with an apostrophe in cycle texts (`PLAN D'USINAGE`),
+//! `CYCL DEF9 .0`. Block numbers are not checked for order or repeats:
+//! the TNC numbers blocks itself and the writer renumbers from 0 [?: how a
+//! TNC loading a file with repeated numbers reacts is not documented to
+//! us]. Post mistakes get located errors: `Xnan`, `BEGIN PGM .. IN`, a
+//! CYCL DEF whose lines lack `~`, a TNC DIN/ISO program (`% name G71`).
 
 mod approach;
 mod build;
