@@ -37,6 +37,7 @@ fn written_back_as_read() {
         "freecontour",
         "tilt",
         "roundarc",
+        "fiveaxis",
     ] {
         let f = path(name);
         let text = std::fs::read_to_string(root().join(&f)).unwrap();
@@ -75,13 +76,18 @@ fn functions_run_until_the_programs_own_error() {
 
 #[test]
 fn what_the_run_cannot_do_is_reported() {
-    for name in ["tilt", "freecontour", "sysread", "badfunctions", "roundct"] {
+    for name in [
+        "tilt",
+        "freecontour",
+        "sysread",
+        "badfunctions",
+        "roundct",
+        "fiveaxis",
+    ] {
         let o = cncc(&["check", "--dialect", "heidenhain", &path(name)]);
-        let code = if matches!(name, "freecontour" | "roundct") {
-            0
-        } else {
-            1
-        };
+        // A tilt is kept and not made (W0518), an unknown datum is a note
+        // (W0517): neither is an error.
+        let code = if name == "badfunctions" { 1 } else { 0 };
         assert_eq!(o.status.code(), Some(code), "{name}: {}", stderr(&o));
         insta::assert_snapshot!(format!("tncfn_check_{name}"), stderr(&o));
     }
@@ -134,4 +140,28 @@ fn oversizes_match_linuxcnc_with_the_same_length_and_radius() {
     assert_eq!(theirs.len(), 5, "{theirs:?}");
     assert_eq!(ours, theirs);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `M140 MB+5` retracts 5 mm in the tool axis; `M140 MB MAX`, a tilted
+/// PLANE, FUNCTION TCPM, cycle 19, ID240 and cycle 247 let the run go on.
+#[test]
+fn five_axis_blocks_run_on() {
+    let o = cncc(&["canon", "--dialect", "heidenhain", &path("fiveaxis")]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(
+        out.contains("STRAIGHT_TRAVERSE(0.0000, 0.0000, 10.0000, 0.0000, 0.0000, 0.0000)\nSTRAIGHT_TRAVERSE(0.0000, 0.0000, 15.0000,"),
+        "{out}"
+    );
+    assert!(
+        out.contains("STRAIGHT_FEED(10.0000, 0.0000, -1.0000"),
+        "{out}"
+    );
+    // The tilt warning comes once, for the first tilt.
+    assert_eq!(
+        stderr(&o).matches("warning[W0518").count(),
+        1,
+        "{}",
+        stderr(&o)
+    );
 }

@@ -343,6 +343,9 @@ codes! {
     CompStateChange = "E0554", "comp-state-change", Error,
         "a change that is not allowed while cutter radius compensation is on",
         "Turning compensation on while it is on, or changing plane, needs G40 first.";
+    KlartextEndNameMismatch = "W0120", "klartext-end-name", Warning,
+        "END PGM names another program than BEGIN PGM",
+        "A Klartext program begins with `BEGIN PGM name unit` and ends with `END PGM name unit`, the same name in both; the TNC writes them so. A different name at the end is usually a program copied under a new name (or a post's mistake). The program still ends there; correct the name.";
     KlartextUnknownBlock = "E0120", "klartext-unknown-block", Error,
         "a Klartext block that does not start with a known function",
         "A Heidenhain block starts with its path or program function: L, C, CC, CR, CT, LP, CP, CTP, RND, CHF, APPR, DEP, LBL, CALL, FN, CYCL DEF, CYCL CALL, TOOL DEF, TOOL CALL, BLK FORM, PATTERN DEF, STOP, a Q parameter formula, or M functions alone. Check the spelling (`CYCL`, not `CYCLE`).";
@@ -390,7 +393,7 @@ codes! {
         "`FN 14: ERROR= n` stops the program run with the control's error number n (the program's own check failed: an input parameter out of range, a missing tool ...). The run stops here as the control's would. Read the program's comments near the block for what the number means, and correct the input it checks.";
     KlartextUnknownSystemDatum = "E0520", "unknown-system-datum", Error,
         "FN 18: SYSREAD of a system datum the run does not know",
-        "The run knows these FN 18 data (numbers from the TNC system data table, values in mm): ID10 NR1 (program unit, 0 mm / 1 inch) and NR3 (active cycle), ID20 NR1 (active tool), NR3 (tool axis, 0 X 1 Y 2 Z), NR4 (spindle speed) and NR9 (feed), ID50 NR1/NR2 IDXt (length/radius of tool t in the table), ID60 NR1 (tool called), NR4/NR5 (its DL/DR), ID200 NR1/NR2 (active radius/length with the oversizes), ID270 NR1 IDX1..9 (position in the active coordinate system). Any other datum depends on the machine: the run stops there.";
+        "The run knows these FN 18 data (numbers from the TNC system data table, values in mm): ID10 NR1 (program unit, 0 mm / 1 inch) and NR3 (active cycle), ID20 NR1 (active tool), NR3 (tool axis, 0 X 1 Y 2 Z), NR4 (spindle speed) and NR9 (feed), ID50 NR1/NR2 IDXt (length/radius of tool t in the table), ID60 NR1 (tool called), NR4/NR5 (its DL/DR), ID200 NR1/NR2 (active radius/length with the oversizes), ID270 NR1 IDX1..9 (position in the active coordinate system). Any other datum depends on the machine. (This error is no longer raised: such a datum is now unknown at check time, W0517, and the run goes on.)";
     TiltNeedsRotaryAxes = "E0521", "tilt-needs-rotary-axes", Error,
         "a tilted working plane on a 3-axis run",
         "PLANE SPATIAL/PROJECTED/EULER/VECTOR/POINTS/RELATIV/AXIAL with a non-zero tilt turns the working plane with the machine's rotary axes (or the tilting head). cncc runs programs on a 3-axis machine, as LinuxCNC's canonical calls describe it, so the tilt cannot be made. PLANE RESET and a zero tilt run. Machine the feature in the untilted plane or run the program on a 5-axis control.";
@@ -400,6 +403,12 @@ codes! {
     MachineFunctionNotRun = "W0513", "machine-function-not-run", Warning,
         "an FN function that talks to the machine (PLC, SYSWRITE, WAIT FOR) is not run",
         "FN 17 SYSWRITE, FN 19 PLC and FN 20 WAIT FOR act on the machine's own data, PLC or synchronisation, which a canonical run does not have. The block is reported and skipped; the run goes on. Check what the program expects of it.";
+    UnknownAtCheckTime = "W0517", "unknown-at-check-time", Note,
+        "a value the run cannot know at check time",
+        "Some values exist only on the machine: FN 18 system data such as the position in the machine (REF) system (ID240), which depends on where the preset lies, or the end of travel that `M140 MB MAX` retracts to. The run goes on with the value unknown: parameters read from it stay unknown (formulas of them too) and are never reported as errors; moves to an unknown coordinate are not checked. Give the value with a machine description where cncc can read one.";
+    KinematicsNotRun = "W0518", "kinematics-not-run", Warning,
+        "a tilted plane or tool-centre-point function that the 3-axis run does not make",
+        "PLANE SPATIAL/PROJECTED/EULER/VECTOR/POINTS/RELATIV/AXIAL with a non-zero tilt, cycle 19, FUNCTION TCPM and M128 turn the working plane or keep the tool tip on the path while rotary axes move. They need the machine's kinematics, which a canonical 3-axis run does not have. The program is read and kept as written (a port to Klartext writes it back); the run goes on in the untilted plane with the coordinates as programmed, so the positions it shows after this block differ from the machine's. Reported once per run.";
     CompExitArc = "E0555", "comp-exit-arc", Error,
         "an arc as the first move after G40",
         "The move after cancelling compensation with G40 takes the tool off the compensated path and must be a straight line.";

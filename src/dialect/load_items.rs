@@ -190,6 +190,8 @@ pub const FUNCS: &[(&str, Func)] = &[
     ("position-shortest", Func::PosShortest),
     ("position-plus", Func::PosPlus),
     ("position-minus", Func::PosMinus),
+    ("sign", Func::Sign),
+    ("log10", Func::Log10),
 ];
 
 /// Cycle kinds a `<cycle kind=...>` may name.
@@ -308,6 +310,7 @@ pub struct CodeCommon {
     pub uses: Vec<char>,
     pub dwell_units: Vec<(char, DwellUnit)>,
     pub preferred: bool,
+    pub run: crate::dialect::spec::AuxRun,
     pub doc: String,
 }
 
@@ -320,6 +323,7 @@ pub const CODE_ATTRS: &[&str] = &[
     "uses",
     "dwell",
     "preferred",
+    "run",
     "doc",
     "confidence",
 ];
@@ -363,6 +367,23 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
         None => Some(Vec::new()),
     };
     let preferred = cx.bool_attr(n, "preferred", false);
+    let run = match n.attr("run") {
+        Some(a) => cx.parse(
+            a,
+            "`stop`, `pass` or `kinematics`",
+            "`run` says what the canonical run does with an aux code",
+            |s| {
+                use crate::dialect::spec::AuxRun;
+                match s {
+                    "stop" => Some(AuxRun::Stop),
+                    "pass" => Some(AuxRun::Pass),
+                    "kinematics" => Some(AuxRun::Kinematics),
+                    _ => None,
+                }
+            },
+        ),
+        None => Some(Default::default()),
+    };
     Some(CodeCommon {
         group: group?,
         meaning: meaning?,
@@ -370,6 +391,7 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
         uses: uses?,
         dwell_units: dwell_units?,
         preferred,
+        run: run?,
         doc: cx.doc(n),
     })
 }
@@ -407,6 +429,7 @@ pub fn read_code(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<CodeDef>
         uses: c.uses,
         dwell_units: c.dwell_units,
         preferred: c.preferred,
+        run: c.run,
         doc: c.doc,
         span: n.span,
     })
@@ -453,6 +476,7 @@ pub fn read_code_range(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Vec<CodeD
             uses: c.uses.clone(),
             dwell_units: c.dwell_units.clone(),
             preferred: c.preferred,
+            run: c.run,
             doc: c.doc.clone(),
             span: n.span,
         })

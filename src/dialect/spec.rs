@@ -223,9 +223,27 @@ pub struct CodeDef {
     pub dwell_units: Vec<(char, DwellUnit)>,
     /// Writers choose this code for its meaning when several share one.
     pub preferred: bool,
+    /// For `aux` codes: what the canonical run does with it.
+    pub run: AuxRun,
     pub doc: String,
     /// Where it is defined in the spec file.
     pub span: Span,
+}
+
+/// What the canonical run does with an `aux` code it has no function for
+/// (the `run` attribute of `<code>`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum AuxRun {
+    /// The run stops there (W0511 in `check`): the code may change what
+    /// the run computes.
+    #[default]
+    Stop,
+    /// Passed to the machine; nothing the canonical run computes depends
+    /// on it (rotary axes' shortest path, TCPM off ...).
+    Pass,
+    /// A function of the machine's kinematics (TCPM on): kept, not made,
+    /// reported once (W0518); the run goes on.
+    Kinematics,
 }
 
 /// The kind of value a cycle parameter takes.

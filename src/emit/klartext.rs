@@ -70,7 +70,10 @@ pub fn write_klartext(p: &Program, spec: &DialectSpec) -> Result<String, Vec<Dia
     }
     let mut text = String::new();
     for (i, l) in out.lines.iter().enumerate() {
-        text.push_str(&format!("{i} {l}\n"));
+        match l.strip_prefix('/') {
+            Some(rest) => text.push_str(&format!("/{i} {rest}\n")),
+            None => text.push_str(&format!("{i} {l}\n")),
+        }
     }
     Ok(text)
 }

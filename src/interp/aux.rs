@@ -173,6 +173,22 @@ pub fn exec(
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
     let Some(f) = lookup(letter, code) else {
+        use crate::dialect::spec::AuxRun;
+        let run = crate::ir::Decimal::parse(&format!("{code}"))
+            .ok()
+            .and_then(|d| it.spec.code(letter, d))
+            .map(|c| c.run)
+            .unwrap_or_default();
+        match run {
+            AuxRun::Pass => return Ok(()),
+            AuxRun::Kinematics => {
+                let what = format!("{letter}{code} is a function of the machine's kinematics");
+                let span = it.span;
+                super::heidenhain::kinematics_not_run(it, &what, span);
+                return Ok(());
+            }
+            AuxRun::Stop => {}
+        }
         return Err(it.error_at(
             it.span,
             Code::UnsupportedHere,

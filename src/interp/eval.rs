@@ -147,6 +147,10 @@ impl Interp<'_, '_> {
         let a = v.first().copied().unwrap_or(0.0);
         let b = v.get(1).copied().unwrap_or(0.0);
         let domain = |ok: bool| ok;
+        // A value unknown at check time (NaN, from FN 18) stays unknown.
+        if v.iter().any(|x| x.is_nan()) {
+            return Ok(f64::NAN);
+        }
         let r = match f {
             Func::Sin => a.to_radians().sin(),
             Func::Cos => a.to_radians().cos(),
@@ -170,7 +174,10 @@ impl Interp<'_, '_> {
             Func::Bin => bcd_to_bin(a),
             Func::Bcd => bin_to_bcd(a),
             Func::PosShortest | Func::PosPlus | Func::PosMinus => a,
-            Func::Asin | Func::Acos | Func::Sqrt | Func::Ln => {
+            Func::Sign if a == 0.0 => 0.0,
+            Func::Sign => a.signum(),
+            Func::Log10 if a > 0.0 => a.log10(),
+            Func::Asin | Func::Acos | Func::Sqrt | Func::Ln | Func::Log10 => {
                 return Err(self.error_at(
                     span,
                     Code::DomainError,

@@ -185,3 +185,21 @@ fn siemens_def_case_loop_and_repeat_until() {
     assert_eq!(p.r(2), 3.0);
     assert_eq!(p.r(3), 4.0);
 }
+
+/// SGN, LOG and NEG; an FN 18 datum unknown at check time is NaN, which
+/// formulas carry (no false division by zero or SQRT domain error).
+#[test]
+fn heidenhain_sgn_log_neg_and_unknown_system_data() {
+    let (p, e) = run_with(
+        "heidenhain",
+        "0 BEGIN PGM T MM\n1 Q1 = SGN ( 0 - 3 )\n2 Q2 = LOG 1000\n3 Q3 = NEG Q2\n4 Q4 = SGN 0\n5 FN 18: SYSREAD Q5 = ID240 NR1 IDX1\n6 Q6 = SQRT ( Q5 - Q5 - 1 ) / ( Q5 - Q5 )\n7 END PGM T MM\n",
+        &Options::default(),
+    );
+    assert!(e.is_none(), "{e:?}");
+    let q = |n| p.q(crate::ir::QBank::Q, n);
+    assert_eq!(q(1), -1.0);
+    assert!((q(2) - 3.0).abs() < 1e-12);
+    assert!((q(3) + 3.0).abs() < 1e-12);
+    assert_eq!(q(4), 0.0);
+    assert!(q(5).is_nan() && q(6).is_nan());
+}

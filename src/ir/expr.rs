@@ -191,6 +191,10 @@ pub enum Func {
     /// Siemens `ACN(a)`: the absolute position, approached in the negative
     /// direction.
     PosMinus,
+    /// The sign of a value: -1, 0 or +1 (Heidenhain `SGN`).
+    Sign,
+    /// The common (base 10) logarithm (Heidenhain `LOG`).
+    Log10,
 }
 
 /// A word's value: a number as written, or an expression.

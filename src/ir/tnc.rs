@@ -1,6 +1,7 @@
 //! Heidenhain functions that no other dialect has a statement for: the
 //! FN functions 14..20 (error, print, system data, PLC), `PLANE` (tilting
-//! the working plane) and the FK free contour blocks.
+//! the working plane), `FUNCTION` blocks (TCPM ...), the `MB` retract of
+//! `M140` and the FK free contour blocks.
 //!
 //! Each keeps its text as written (the Klartext writer writes it back
 //! unchanged; other writers report it as a construct they cannot express)
@@ -43,6 +44,13 @@ pub enum TncFunctionKind {
     /// `FL`, `FC`, `FPOL`, `FSELECT` ...: FK free contour programming,
     /// which is kept but not interpreted; the block's keyword.
     FreeContour(String),
+    /// `FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS`, `FUNCTION RESET
+    /// TCPM`, `FUNCTION MODE MILL` ...: a `FUNCTION` block; the words after
+    /// `FUNCTION`, upper case, one space apart.
+    Function(String),
+    /// `MB MAX` / `MB 50` after `M140` (with its `F`, if any): retract in
+    /// the tool axis by a distance, or to the end of travel (`None`).
+    Retract(Option<Value>),
 }
 
 /// One item of `FN 15: PRINT`.
@@ -77,6 +85,8 @@ impl TncFunctionKind {
             TncFunctionKind::Plane(_) => "plane",
             TncFunctionKind::Paraxial(_) => "paraxial",
             TncFunctionKind::FreeContour(_) => "free-contour",
+            TncFunctionKind::Function(_) => "function",
+            TncFunctionKind::Retract(_) => "retract",
         }
     }
 }

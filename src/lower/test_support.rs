@@ -31,6 +31,7 @@ pub fn def(
         uses: uses.chars().collect(),
         dwell_units: Vec::new(),
         preferred: false,
+        run: Default::default(),
         doc: String::new(),
         span: Span::default(),
     }

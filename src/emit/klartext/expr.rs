@@ -104,6 +104,8 @@ pub fn formula(w: &mut Writer<'_>, e: ExprId) -> Option<String> {
                 Func::Trunc => "INT",
                 Func::Ln => "LN",
                 Func::Exp => "EXP",
+                Func::Sign => "SGN",
+                Func::Log10 => "LOG",
                 Func::Atan2
                 | Func::Round
                 | Func::Floor
@@ -119,7 +121,7 @@ pub fn formula(w: &mut Writer<'_>, e: ExprId) -> Option<String> {
                     w.cannot(
                         x.span,
                         &format!("the function {f:?} in a formula"),
-                        "rewrite it with SIN COS TAN ASIN ACOS ATAN SQRT SQ ABS INT LN EXP",
+                        "rewrite it with SIN COS TAN ASIN ACOS ATAN SQRT SQ ABS INT LN LOG EXP SGN",
                     );
                     return None;
                 }

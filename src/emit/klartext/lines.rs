@@ -69,6 +69,12 @@ pub fn block(w: &mut Writer<'_>, out: &mut Out, b: &Block) {
             out.lines.push(format!(";{text}"));
         }
     }
+    // Block skip: `/` before the number of each block this one became.
+    if b.skip.is_some() {
+        for l in &mut out.lines[start..] {
+            l.insert(0, '/');
+        }
+    }
 }
 
 pub(super) fn label(n: &str) -> String {
@@ -89,7 +95,12 @@ fn sort<'p>(w: &mut Writer<'_>, out: &mut Out, s: &'p Stmt, parts: &mut Parts<'p
             CycleRunKind::Call | CycleRunKind::Pos { .. } | CycleRunKind::Pattern { .. },
         ) if parts.main.is_none() => parts.main = Some(s),
         K::CycleRun(CycleRunKind::Block) => parts.mods.push("M99".into()),
-        K::TncFunction(f) if matches!(f.kind, crate::ir::TncFunctionKind::Paraxial(_)) => {
+        K::TncFunction(f)
+            if matches!(
+                f.kind,
+                crate::ir::TncFunctionKind::Paraxial(_) | crate::ir::TncFunctionKind::Retract(_)
+            ) =>
+        {
             parts.mods.push(f.text.clone())
         }
         K::CycleRun(CycleRunKind::Modal) => parts.mods.push("M89".into()),

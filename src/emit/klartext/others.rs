@@ -255,8 +255,10 @@ fn cycle_words(w: &mut Writer<'_>, words: &[CycleWord], span: Span) -> Option<St
     let mut s = String::new();
     for cw in words {
         match &cw.value {
-            Some(v) if cw.name.is_empty() => s.push_str(&format!(
-                " {}",
+            // A bare value, or one after a colon (`HSC-MODE:0`): no sign.
+            Some(v) if cw.name.is_empty() || cw.name.ends_with(':') => s.push_str(&format!(
+                " {}{}",
+                cw.name,
                 signed(w, v, NumKind::Plain, span)?.trim_start_matches('+')
             )),
             Some(v) => s.push_str(&format!(

@@ -23,6 +23,7 @@ fn code(spec: &str, meaning: &str) -> CodeDef {
         uses: vec![],
         dwell_units: vec![],
         preferred: false,
+        run: Default::default(),
         doc: String::new(),
         span: Span::default(),
     }

@@ -125,6 +125,14 @@ pub fn line(
             Ok(())
         }
         (1..=5 | 17, _) => Ok(()),
+        // Cycle 19 WORKING PLANE: a tilt is kept, not made (W0518).
+        (19, 0) => Ok(()),
+        (19, _) => {
+            if named.iter().any(|(_, v)| v.is_some_and(|x| x != 0.0)) {
+                super::functions::kinematics_not_run(it, "cycle 19 tilts the working plane", span);
+            }
+            Ok(())
+        }
         (c, _) => Err(it.error_at(
             span,
             Code::UnsupportedHere,

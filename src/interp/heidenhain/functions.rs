@@ -1,9 +1,11 @@
 //! Running the Heidenhain function blocks ([`TncFunction`]): FN 14 stops
 //! the run with the program's own error (E0519); FN 15/16 print a
-//! `MESSAGE`; FN 18 reads the system data the run knows (E0520 for the
-//! others); FN 17/19/20 are reported (W0513) and skipped; `PLANE` runs when
-//! it tilts nothing (E0521 otherwise); FK blocks stop the run (not
-//! interpreted).
+//! `MESSAGE`; FN 18 reads the system data the run knows (the others are
+//! unknown at check time: a note, W0517, and the parameter is NaN, which
+//! formulas carry and no check reports); FN 17/19/20 are reported (W0513)
+//! and skipped; `PLANE` runs when it tilts nothing, a tilt and `FUNCTION
+//! TCPM` are kept and not made (W0518, once per run); `M140 MB` retracts
+//! in the tool axis; FK blocks stop the run (not interpreted).
 //!
 //! FN 18 data numbers are those of the TNC system data table (technical
 //! manuals TNC 426/430, iTNC 530); the values are metric as the TNC 7
@@ -66,19 +68,12 @@ pub fn exec(
                 Some(v) => Some(it.value(v, exprs)?.round() as i64),
                 None => None,
             };
-            let Some(value) = system_datum(it, *id, *nr, i) else {
-                let at = match i {
-                    Some(i) => format!("ID{id} NR{nr} IDX{i}"),
-                    None => format!("ID{id} NR{nr}"),
-                };
-                return Err(Stop::Error(
-                    Diagnostic::new(
-                        Code::KlartextUnknownSystemDatum,
-                        format!("FN 18: the system datum {at} is not known to the run"),
-                    )
-                    .primary(span, "read here")
-                    .help("cncc knows ID10 NR1/3, ID20 NR1/3/4/9, ID50 NR1/2, ID60 NR1/4/5, ID200 NR1/2 and ID270 NR1 IDX1..9 (see `cncc explain E0520`)"),
-                ));
+            let value = match system_datum(it, *id, *nr, i) {
+                Some(v) => v,
+                None => {
+                    unknown_datum(it, *id, *nr, i, span);
+                    f64::NAN
+                }
             };
             if let Var::Q(bank, n) = var {
                 it.params.set_q(*bank, *n, value);
@@ -101,6 +96,11 @@ pub fn exec(
         TncFunctionKind::Plane(p) => plane(it, p, span, exprs),
         // Applied to the block's move (see `paraxial`).
         TncFunctionKind::Paraxial(_) => Ok(()),
+        TncFunctionKind::Function(what) => {
+            function(it, what, span);
+            Ok(())
+        }
+        TncFunctionKind::Retract(d) => retract(it, d.as_ref(), span, exprs),
         TncFunctionKind::FreeContour(k) => Err(Stop::Error(
             Diagnostic::new(
                 Code::UnsupportedHere,
@@ -168,7 +168,101 @@ fn system_datum(it: &Interp<'_, '_>, id: u32, nr: u32, idx: Option<i64>) -> Opti
     })
 }
 
-/// `PLANE`: RESET and a plane that tilts nothing run; a tilt is E0521.
+/// An FN 18 datum the run cannot know: a note (once per datum), and the
+/// parameter is unknown from here on.
+fn unknown_datum(it: &mut Interp<'_, '_>, id: u32, nr: u32, idx: Option<i64>, span: Span) {
+    let at = match idx {
+        Some(i) => format!("ID{id} NR{nr} IDX{i}"),
+        None => format!("ID{id} NR{nr}"),
+    };
+    let what = match id {
+        240 => " (the nominal position in the machine's REF system: it depends on the preset)",
+        _ => "",
+    };
+    if !it.heidenhain.once(format!("sysread {at}")) {
+        return;
+    }
+    it.diags.push(
+        Diagnostic::new(
+            Code::UnknownAtCheckTime,
+            format!("FN 18: the system datum {at}{what} is unknown at check time"),
+        )
+        .primary(span, "read here; the parameter stays unknown")
+        .help("cncc knows ID10 NR1/3, ID20 NR1/3/4/9, ID50 NR1/2, ID60 NR1/4/5, ID200 NR1/2 and ID270 NR1 IDX1..9; the others belong to the machine (see `cncc explain W0517`)"),
+    );
+}
+
+/// A 5-axis function the run does not make: one warning per run.
+pub fn kinematics_not_run(it: &mut Interp<'_, '_>, what: &str, span: Span) {
+    if !it.heidenhain.once("kinematics".into()) {
+        return;
+    }
+    it.diags.push(
+        Diagnostic::new(
+            Code::KinematicsNotRun,
+            format!("{what}: the 3-axis run does not make it"),
+        )
+        .primary(span, "kept, not run")
+        .help("the run goes on in the untilted plane with the coordinates as programmed (reported once; see `cncc explain W0518`)"),
+    );
+}
+
+/// `FUNCTION ...`: `RESET TCPM` runs (nothing is on); `TCPM` is a 5-axis
+/// function (W0518); the others are reported and skipped (W0513).
+fn function(it: &mut Interp<'_, '_>, what: &str, span: Span) {
+    if what.starts_with("RESET") {
+        return;
+    }
+    if what.starts_with("TCPM") {
+        kinematics_not_run(it, "FUNCTION TCPM keeps the tool tip on the path", span);
+        return;
+    }
+    it.diags.push(
+        Diagnostic::new(
+            Code::MachineFunctionNotRun,
+            format!("FUNCTION {what}: not run"),
+        )
+        .primary(span, "skipped")
+        .help(
+            "the run has no model of this machine function; check what the program expects of it",
+        ),
+    );
+}
+
+/// `M140 MB n`: a rapid by n along the tool axis; `MB MAX` goes to the end
+/// of travel, which the run does not know (W0517): the tool stays.
+fn retract(
+    it: &mut Interp<'_, '_>,
+    d: Option<&crate::ir::Value>,
+    span: Span,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    let Some(d) = d else {
+        if it.heidenhain.once("retract max".into()) {
+            it.diags.push(
+                Diagnostic::new(
+                    Code::UnknownAtCheckTime,
+                    "M140 MB MAX retracts to the end of travel, which is unknown at check time",
+                )
+                .primary(span, "the run leaves the tool where it is")
+                .help("the next moves are checked from the position before the retract (see `cncc explain W0517`)"),
+            );
+        }
+        return Ok(());
+    };
+    let dist = it.value(d, exprs)?;
+    let axis = match it.state.plane {
+        CanonPlane::YZ => 0,
+        CanonPlane::XZ => 1,
+        _ => 2,
+    };
+    let mut to = crate::interp::host::MotionHost::position(it);
+    to[axis] += dist;
+    it.straight_move(crate::interp::comp::MoveKind::Rapid, to)
+}
+
+/// `PLANE`: RESET and a plane that tilts nothing run; a tilt is kept and
+/// not made (W0518, once).
 fn plane(
     it: &mut Interp<'_, '_>,
     p: &TiltPlane,
@@ -194,15 +288,9 @@ fn plane(
         "POINTS" => false,
         _ => vals.iter().all(|(_, v)| v.abs() < 1e-9),
     };
-    if flat {
-        return Ok(());
+    if !flat {
+        let what = format!("PLANE {} tilts the working plane", p.how);
+        kinematics_not_run(it, &what, span);
     }
-    Err(Stop::Error(
-        Diagnostic::new(
-            Code::TiltNeedsRotaryAxes,
-            format!("PLANE {} tilts the working plane: that needs rotary axes", p.how),
-        )
-        .primary(span, "this tilt")
-        .help("cncc runs programs on a 3-axis machine; PLANE RESET and a zero tilt run, a tilt does not"),
-    ))
+    Ok(())
 }

@@ -62,6 +62,16 @@ pub fn define(
     for p in &def.params {
         vals.push((p.q, it.value(&p.value, exprs)?));
     }
+    if def.number == 247 && it.heidenhain.once("preset".into()) {
+        it.diags.push(
+            crate::diag::Diagnostic::new(
+                crate::diag::Code::UnknownAtCheckTime,
+                "cycle 247 activates a preset of the machine's preset table, unknown at check time",
+            )
+            .primary(it.span, "the run keeps the datum it has")
+            .help("coordinates after it are checked against the datum before it (see `cncc explain W0517`)"),
+        );
+    }
     it.heidenhain.cycle = Some(super::Defined {
         number: def.number,
         params: vals,

@@ -62,6 +62,8 @@ pub(super) fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
                 | Func::Trunc
                 | Func::Ln
                 | Func::Exp
+                | Func::Sign
+                | Func::Log10
                 | Func::Square => continue,
             },
             _ => continue,

@@ -145,10 +145,14 @@ impl Ctx<'_> {
             "INT" => Some(Func::Trunc),
             "LN" => Some(Func::Ln),
             "EXP" => Some(Func::Exp),
+            "LOG" => Some(Func::Log10),
+            "SGN" => Some(Func::Sign),
             _ => None,
         };
         match (f, arg) {
             (Some(f), Some(a)) => self.alloc(ExprKind::Call(f, vec![a]), l, r),
+            // NEG x = -x.
+            (None, Some(a)) if name == "NEG" => self.unary(UnaryOp::Neg, a, l, r),
             // FRAC x = x - INT x.
             (None, Some(a)) if name == "FRAC" => {
                 let int = self.alloc(ExprKind::Call(Func::Trunc, vec![a]), l, r);
@@ -165,7 +169,7 @@ impl Ctx<'_> {
                 } else {
                     format!("`{name}` has no value in a formula")
                 };
-                self.error(Code::SyntaxError, l, r, what, "use SIN COS TAN ASIN ACOS ATAN SQRT SQ ABS INT LN EXP, PI, Q parameters and numbers");
+                self.error(Code::SyntaxError, l, r, what, "use SIN COS TAN ASIN ACOS ATAN SQRT SQ ABS INT FRAC NEG SGN LN LOG EXP, PI, Q parameters and numbers");
                 self.number(Decimal::from_int(0), l, r)
             }
         }
@@ -246,7 +250,8 @@ impl Ctx<'_> {
     }
 
     /// Tokens as a sequence of cycle words: `DIST25.000`, `X+0`, `DATUM`,
-    /// `5`, `#5`; `None` when something else is there.
+    /// `5`, `#5`, `HSC-MODE:0`, `V.IDO5`; `None` when something else is
+    /// there.
     pub fn cycle_words(&mut self, toks: &[Spanned3]) -> Option<Vec<crate::ir::CycleWord>> {
         let mut out = Vec::new();
         let mut i = 0;
@@ -257,6 +262,7 @@ impl Ctx<'_> {
                 Tok::Name(n) => {
                     name = n;
                     i += 1;
+                    glue_name(toks, &mut i, &mut name, &mut r);
                 }
                 Tok::Kw(k) => {
                     name = format!("{k:?}").to_ascii_uppercase();
@@ -299,5 +305,26 @@ impl Ctx<'_> {
             });
         }
         Some(out)
+    }
+}
+
+/// A cycle word's name goes on over `-`, `.` and `:` written against it
+/// and the letters after them (`HSC-MODE:` of `HSC-MODE:0`, `V.IDO` of
+/// the Hungarian `V.IDO5`); `r` becomes its end.
+fn glue_name(toks: &[Spanned3], i: &mut usize, name: &mut String, r: &mut usize) {
+    while let Some((a, t, b)) = toks.get(*i) {
+        if *a != *r {
+            return;
+        }
+        let piece = match t {
+            Tok::Minus if matches!(toks.get(*i + 1), Some((c, Tok::Name(_), _)) if *c == *b) => "-",
+            Tok::Dot if matches!(toks.get(*i + 1), Some((c, Tok::Name(_), _)) if *c == *b) => ".",
+            Tok::Colon => ":",
+            Tok::Name(n) if name.ends_with(['-', '.']) => n.as_str(),
+            _ => return,
+        };
+        name.push_str(piece);
+        *r = *b;
+        *i += 1;
     }
 }

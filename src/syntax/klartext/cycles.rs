@@ -22,7 +22,16 @@ pub fn cycl_def(ctx: &mut Ctx<'_>, from: usize, l: usize, r: usize) -> Vec<Item>
         );
         return Vec::new();
     };
-    let text = ctx.slice(nl, nr).to_string();
+    let mut text = ctx.slice(nl, nr).to_string();
+    let mut toks = toks;
+    // `CYCL DEF9 .0` (a post's spacing): the sub-number after a space.
+    if let Some((_, Tok::Num(_), sr)) = toks.get(1).cloned() {
+        let sub = ctx.slice(toks[1].0, sr).to_string();
+        if !text.contains('.') && sub.starts_with('.') {
+            text.push_str(&sub);
+            toks.remove(1);
+        }
+    }
     if let Some((c, sub)) = text.split_once('.') {
         let (Ok(cycle), Ok(sub)) = (c.parse::<u32>(), sub.parse::<u32>()) else {
             ctx.error(
@@ -94,6 +103,20 @@ fn missing_params(ctx: &mut Ctx<'_>, number: u32, params: &[QParam], l: usize, r
         .filter(|p| !params.iter().any(|q| format!("Q{}", q.q) == p.name))
         .map(|p| format!("{} ({})", p.name, p.doc))
         .collect();
+    if !missing.is_empty() && params.is_empty() && !sig.params.is_empty() {
+        // None at all: the parameter lines were not joined to the block.
+        let d = Diagnostic::new(
+            Code::KlartextCycleMissingParameter,
+            format!("CYCL DEF {number} has none of its parameters: its line does not end with `~`"),
+        )
+        .primary(ctx.span(l, r), "the block ends here")
+        .help(format!(
+            "a CYCL DEF goes on over the next lines only when each line but its last ends with `~` (`CYCL DEF {number} ... ~`, then `Q200=2 ;... ~`); without it the Q lines after it are separate blocks and cycle {number} lacks {}",
+            sig.params.iter().map(|p| p.name.as_str()).collect::<Vec<_>>().join(" ")
+        ));
+        ctx.diags.push(d);
+        return;
+    }
     if !missing.is_empty() {
         let d = Diagnostic::new(
             Code::KlartextCycleMissingParameter,
@@ -108,7 +131,7 @@ fn missing_params(ctx: &mut Ctx<'_>, number: u32, params: &[QParam], l: usize, r
         )
         .primary(ctx.span(l, r), format!("missing: {}", missing.join(", ")))
         .help(format!(
-            "cycle {number} takes {}; add one `Qnnn=value` line for each",
+            "cycle {number} takes {}; add one `Qnnn=value` line for each (a parameter line belongs to the block only when the line before it ends with `~`)",
             sig.params
                 .iter()
                 .map(|p| p.name.as_str())

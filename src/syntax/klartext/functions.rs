@@ -27,9 +27,10 @@ use crate::syntax::Item;
 /// The FK free contour keywords.
 pub(super) const FREE_CONTOUR: [&str; 7] = ["FL", "FLT", "FC", "FCT", "FPOL", "FSELECT", "FLN"];
 
-/// `PLANE` and the FK keywords start blocks the grammar reads as words.
+/// `PLANE`, `FUNCTION` and the FK keywords start blocks the grammar reads
+/// as words.
 pub(super) fn starts_block(name: &str) -> bool {
-    name == "PLANE" || FREE_CONTOUR.contains(&name)
+    name == "PLANE" || name == "FUNCTION" || FREE_CONTOUR.contains(&name)
 }
 
 fn item(ctx: &Ctx<'_>, kind: TncFunctionKind, l: usize, r: usize) -> Item {
@@ -209,6 +210,9 @@ const PLANE_TAIL: [&str; 12] = [
 /// `PLANE ...`, or an FK block: a block the grammar read as words.
 pub fn word_block(ctx: &mut Ctx<'_>, words: &[WordNode], l: usize, r: usize) -> Vec<Item> {
     let first = words[0].name.clone();
+    if first == "FUNCTION" {
+        return function(ctx, words, l, r);
+    }
     if first != "PLANE" {
         return vec![item(ctx, TncFunctionKind::FreeContour(first), l, r)];
     }
@@ -265,4 +269,68 @@ pub fn word_block(ctx: &mut Ctx<'_>, words: &[WordNode], l: usize, r: usize) -> 
         return Vec::new();
     }
     vec![item(ctx, TncFunctionKind::Plane(Box::new(plane)), l, r)]
+}
+
+/// `FUNCTION TCPM ...`, `FUNCTION RESET TCPM`, `FUNCTION MODE MILL` ...:
+/// kept with its words; the run decides what it can do with them.
+fn function(ctx: &mut Ctx<'_>, words: &[WordNode], l: usize, r: usize) -> Vec<Item> {
+    let Some(second) = words.get(1) else {
+        ctx.error(
+            Code::KlartextMissingWord,
+            l,
+            r,
+            "FUNCTION needs the function it selects",
+            "write `FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS` or `FUNCTION RESET TCPM`",
+        );
+        return Vec::new();
+    };
+    let what = ctx.slice(second.l, r);
+    let what = what.split_whitespace().collect::<Vec<_>>().join(" ");
+    vec![item(
+        ctx,
+        TncFunctionKind::Function(what.to_ascii_uppercase()),
+        l,
+        r,
+    )]
+}
+
+/// `M140 MB MAX` / `M140 MB+50`, with the `F` that follows: the retract
+/// in the tool axis. `at` is the index of `MB` in `words`, `m` where the
+/// M function before it starts (it is part of the item); returns the
+/// item and how many words it took.
+pub(super) fn retract(
+    ctx: &mut Ctx<'_>,
+    words: &[WordNode],
+    at: usize,
+    m: Option<usize>,
+) -> (Option<Item>, usize) {
+    let mb = &words[at];
+    let mut used = 1;
+    let distance = match (ctx.word_value(mb), words.get(at + 1)) {
+        (Some(v), _) => Some(v),
+        (None, Some(w)) if w.name == "MAX" && w.value.is_none() => {
+            used += 1;
+            None
+        }
+        _ => {
+            ctx.error(
+                Code::KlartextMissingWord,
+                mb.l,
+                mb.r,
+                "`MB` needs the retract distance or MAX",
+                "write `M140 MB MAX` (to the end of travel) or `M140 MB 50`",
+            );
+            return (None, 1);
+        }
+    };
+    let mut r = words[at + used - 1].r;
+    if let Some(f) = words
+        .get(at + used)
+        .filter(|w| w.name == "F" || w.name == "FMAX")
+    {
+        used += 1;
+        r = f.r;
+    }
+    let kind = TncFunctionKind::Retract(distance);
+    (Some(item(ctx, kind, m.unwrap_or(mb.l), r)), used)
 }

@@ -5,7 +5,8 @@
 //! second after `CYCL`, `TOOL`, `CALL`, `BEGIN`, `END`, `BLK`, `PATTERN`,
 //! and `IF`/`GOTO`/`LBL` inside `FN`) become keywords; `Q12`, `QL3`, `QR5`
 //! written together become one parameter token, and a parameter glued to
-//! an address (`RQ1832`, `FQ1820`) is split from it.
+//! an address (`RQ1832`, `FQ1820`) is split from it. `F MAX` written
+//! with a space is the one word `FMAX`.
 
 use super::token::{Kw, Tok};
 use crate::ir::{Decimal, QBank};
@@ -14,7 +15,9 @@ use logos::Logos;
 #[derive(Logos, Clone, Copy, Debug, PartialEq, Eq)]
 #[logos(skip r"[ \t\r\n\f~]+")]
 enum Raw {
-    #[regex(r"[A-Za-z_]+")]
+    /// Letters; an apostrophe between letters belongs to the word (the
+    /// French cycle text `PLAN D'USINAGE`).
+    #[regex(r"[A-Za-z_]+('[A-Za-z_]+)*")]
     Name,
     #[regex(r"[0-9]+(\.[0-9]*)?|\.[0-9]+")]
     Number,
@@ -162,6 +165,15 @@ pub fn classify(toks: Vec<Spanned3>) -> Vec<Spanned3> {
             Tok::Name(n) => keyword_at(&out, &n).map(Tok::Kw).unwrap_or(Tok::Name(n)),
             t => t,
         };
+        // `F MAX` (with a space, as hyperMILL writes it) is `FMAX`.
+        if let (Tok::Name(n), Some((_, Tok::Name(m), e2))) = (&t, it.peek()) {
+            if n == "F" && m == "MAX" {
+                let e2 = *e2;
+                it.next();
+                out.push((s, Tok::Name("FMAX".into()), e2));
+                continue;
+            }
+        }
         out.push((s, t, e));
     }
     out

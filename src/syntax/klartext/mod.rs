@@ -36,10 +36,20 @@
 //!   a `SectionRepeat` from the label to the call; `FN 9..12` a `Goto`
 //!   with a condition; Q parameters are [`Var::Q`](crate::ir::Var::Q).
 //! * `FN 14` ERROR, `FN 15/16` PRINT/F-PRINT, `FN 18` SYSREAD, `FN 17/19/20`
-//!   (SYSWRITE, PLC, WAIT FOR), `PLANE ...`, the FK blocks (`FL`, `FC`,
+//!   (SYSWRITE, PLC, WAIT FOR), `PLANE ...`, `FUNCTION ...` (TCPM, RESET
+//!   TCPM ...), `M140 MB MAX|n [F..]`, the FK blocks (`FL`, `FC`,
 //!   `FPOL` ...) and the paraxial `R+`/`R-` of an `L` block are
 //!   [`StmtKind::TncFunction`]: what they ask and their text as written,
 //!   which the Klartext writer writes back ([`functions`]).
+//!
+//! What CAM posts write and the TNC reads: `F MAX` with a space (`FMAX`),
+//! the block skip `/` before or after the block number, `X + 0` with
+//! spaces, letters with an apostrophe in cycle texts (`PLAN D'USINAGE`),
+//! `CYCL DEF9 .0`. Block numbers are not checked for order or repeats:
+//! the TNC numbers blocks itself and the writer renumbers from 0 [?: how a
+//! TNC loading a file with repeated numbers reacts is not documented to
+//! us]. Post mistakes get located errors: `Xnan`, `BEGIN PGM .. IN`, a
+//! CYCL DEF whose lines lack `~`, a TNC DIN/ISO program (`% name G71`).
 
 mod approach;
 mod build;
@@ -79,6 +89,8 @@ pub struct KlartextFrontEnd {
     /// Lines of a block continued with `~`: text and file offset.
     pending: Vec<(String, u32)>,
     pending_len: usize,
+    /// The name `BEGIN PGM` gave (for the `END PGM` check).
+    begin: Option<String>,
 }
 
 impl KlartextFrontEnd {
@@ -109,7 +121,11 @@ impl FrontEnd for KlartextFrontEnd {
         }
         let lines = std::mem::take(&mut self.pending);
         self.pending_len = 0;
-        read_block(&lines, input, exprs, diags)
+        let line = read_block(&lines, input, exprs, diags);
+        if let Some(l) = &line {
+            self.program_names(l, diags);
+        }
+        line
     }
 
     fn finish(&mut self, file: crate::span::FileId, diags: &mut Vec<Diagnostic>) {
@@ -123,6 +139,36 @@ impl FrontEnd for KlartextFrontEnd {
                 .primary(span, "this block is not complete")
                 .help("complete the block or remove the trailing `~`"),
             );
+        }
+    }
+}
+
+impl KlartextFrontEnd {
+    /// Remembers the `BEGIN PGM` name; an `END PGM` naming another program
+    /// is a warning (the TNC writes the same name in both [K]; the run
+    /// ends there all the same).
+    fn program_names(&mut self, line: &LineSyntax, diags: &mut Vec<Diagnostic>) {
+        for item in &line.items {
+            let Item::Stmt(s) = item else { continue };
+            match &s.kind {
+                StmtKind::ProgramStart { name, .. } => self.begin = name.clone(),
+                StmtKind::ProgramEnd { name: Some(end) } => {
+                    let Some(begin) = &self.begin else { continue };
+                    if !begin.eq_ignore_ascii_case(end) {
+                        diags.push(
+                            Diagnostic::new(
+                                Code::KlartextEndNameMismatch,
+                                format!("END PGM names `{end}`, but the program is `{begin}`"),
+                            )
+                            .primary(s.span, "this END PGM")
+                            .help(format!(
+                                "write `END PGM {begin}` with the name of BEGIN PGM"
+                            )),
+                        );
+                    }
+                }
+                _ => {}
+            }
         }
     }
 }
@@ -144,8 +190,13 @@ fn join(lines: &[(String, u32)]) -> (String, usize, Vec<LineComment>) {
         while text.len() < at {
             text.push(' ');
         }
-        let line = line.trim_end();
-        let line = line.strip_suffix('~').map(str::trim_end).unwrap_or(line);
+        // A comment keeps its trailing blanks (byte for byte); before a
+        // continuation `~` they are only layout.
+        let trimmed = line.trim_end();
+        let line = match trimmed.strip_suffix('~') {
+            Some(l) => l.trim_end(),
+            None => line.trim_end_matches(['\r', '\n']),
+        };
         let start = if comment_block && k > 0 {
             Some(usize::MAX)
         } else {
@@ -205,7 +256,13 @@ fn read_block(
             .map(|l| l.1 as usize + l.0.len() - base)
             .unwrap_or(0),
     );
-    let lead = text.len() - text.trim_start().len();
+    let mut lead = text.len() - text.trim_start().len();
+    // `/` before the block number (or after it, `12 /L ..`): the block is
+    // skipped when block skip is on.
+    let mut skip = slash_at(&mut text, lead, base, file);
+    if skip.is_some() {
+        lead = text.len() - text.trim_start().len();
+    }
     let digits = text[lead..].bytes().take_while(u8::is_ascii_digit).count();
     let after = text[lead + digits..].chars().next();
     let mut number = None;
@@ -225,10 +282,14 @@ fn read_block(
             ),
         }
         text.replace_range(lead..lead + digits, &" ".repeat(digits));
+        if skip.is_none() {
+            let after = text.len() - text.trim_start().len();
+            skip = slash_at(&mut text, after, base, file);
+        }
     }
     let mut line = LineSyntax {
         span: full,
-        skip: None,
+        skip,
         number,
         label: None,
         items: Vec::new(),
@@ -272,6 +333,38 @@ fn read_block(
     Some(line)
 }
 
+/// `% name G71`: the first block of a TNC DIN/ISO program, which this
+/// front end does not read; said so at once.
+fn iso_start(text: &str, base: usize, file: crate::span::FileId) -> Option<Diagnostic> {
+    let code = text.trim_start();
+    let rest = code.strip_prefix('%')?;
+    let words: Vec<&str> = rest.split_whitespace().collect();
+    words.last().filter(|w| matches!(**w, "G70" | "G71"))?;
+    let at = base + text.len() - code.len();
+    Some(
+        Diagnostic::new(
+            Code::KlartextUnknownBlock,
+            format!("`{}` starts a TNC DIN/ISO program, not a Klartext one", code.trim_end()),
+        )
+        .primary(Span::new(file, at, at + code.trim_end().len()), "DIN/ISO program start")
+        .help("this is the TNC's ISO (G-code) programming: cncc has no TNC DIN/ISO dialect yet, and Klartext reads only conversational blocks (BEGIN PGM ... END PGM)"),
+    )
+}
+
+/// A block-skip `/` at `at` (blanked in `text`): skip level 0.
+fn slash_at(
+    text: &mut String,
+    at: usize,
+    base: usize,
+    file: crate::span::FileId,
+) -> Option<Spanned<u8>> {
+    if !text[at..].starts_with('/') {
+        return None;
+    }
+    text.replace_range(at..at + 1, " ");
+    Some(Spanned::new(0, Span::new(file, base + at, base + at + 1)))
+}
+
 /// Lexes and parses the block's code; returns the comments used as labels.
 fn body(
     text: &str,
@@ -283,6 +376,10 @@ fn body(
     line: &mut LineSyntax,
 ) -> Vec<usize> {
     let file = input.file;
+    if let Some(d) = iso_start(text, base, file) {
+        diags.push(d);
+        return Vec::new();
+    }
     let mut raw = Vec::new();
     if let Err(e) = lexer::lex(text, base, &mut raw) {
         let code = match e.what {

@@ -44,8 +44,25 @@ pub(super) fn read_words(
     axes_ok: bool,
 ) -> Said {
     let mut s = Said::default();
-    for w in words {
+    let mut i = 0;
+    while i < words.len() {
+        let w = &words[i];
+        i += 1;
         let n = w.name.as_str();
+        if n == "MB" && allowed.contains(&"M") {
+            // `MB` belongs to the M function written just before it.
+            let m = match s.items.last() {
+                Some(Item::Word(m)) if m.address.as_bytes() == b"M" => Some(m.span.range().start),
+                _ => None,
+            };
+            if m.is_some() {
+                s.items.pop();
+            }
+            let (item, used) = super::functions::retract(ctx, words, i - 1, m);
+            s.items.extend(item);
+            i += used - 1;
+            continue;
+        }
         let incr = n.len() == 2 && n.starts_with('I') && AXES.contains(&&n[1..]);
         if axes_ok && (AXES.contains(&n) || incr) {
             let Some(v) = ctx.word_value(w) else {
@@ -69,6 +86,9 @@ pub(super) fn read_words(
             }
             continue;
         }
+        if axes_ok && not_a_number(ctx, w) {
+            continue;
+        }
         let r_word = n == "R" && allowed.contains(&"R0");
         if !allowed.contains(&n) && !r_word {
             ctx.error(
@@ -83,6 +103,27 @@ pub(super) fn read_words(
         word(ctx, w, n, &mut s, allowed.contains(&"R"));
     }
     s
+}
+
+/// `Xnan`, `Yinf`: a post that computed no coordinate wrote the float's
+/// text; a located E0121 naming it (true when reported).
+fn not_a_number(ctx: &mut Ctx<'_>, w: &WordNode) -> bool {
+    let n = w.name.as_str();
+    let Some(bad) = ["NAN", "INF", "INFINITY"].into_iter().find(|b| {
+        n.strip_suffix(b)
+            .is_some_and(|a| AXES.contains(&a.trim_start_matches('I')))
+    }) else {
+        return false;
+    };
+    let axis = &n[..n.len() - bad.len()];
+    ctx.error(
+        Code::KlartextAxisWithoutValue,
+        w.l,
+        w.r,
+        format!("the coordinate of `{axis}` is `{}`: not a number", bad.to_ascii_lowercase()),
+        "the post-processor computed no value here and wrote its float's text; regenerate the program (check the operation's geometry in the CAM system)",
+    );
+    true
 }
 
 fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said, radius_ok: bool) {

@@ -231,13 +231,30 @@ pub fn pgm_line(ctx: &mut Ctx<'_>, end: bool, from: usize, l: usize, r: usize) -
             l,
             r,
         )),
-        None => ctx.error(
+        None => missing_unit(ctx, &text, l, r),
+    }
+    out
+}
+
+/// E0123 for a `BEGIN PGM` without its unit: the TNC writes `MM` or
+/// `INCH` and nothing else [K]; an `IN` (as some NX posts write) is named.
+fn missing_unit(ctx: &mut Ctx<'_>, text: &str, l: usize, r: usize) {
+    let last = text.rsplit(char::is_whitespace).next().unwrap_or("");
+    if last.eq_ignore_ascii_case("IN") && text.split_whitespace().count() > 1 {
+        ctx.error(
             Code::KlartextMissingWord,
             l,
             r,
-            "BEGIN PGM needs the unit MM or INCH",
-            "write `BEGIN PGM NAME MM`",
-        ),
+            "BEGIN PGM gives the unit `IN`: the TNC's inch unit is `INCH`",
+            "write `BEGIN PGM NAME INCH` (the TNC knows MM and INCH only; the post wrote IN)",
+        );
+        return;
     }
-    out
+    ctx.error(
+        Code::KlartextMissingWord,
+        l,
+        r,
+        "BEGIN PGM needs the unit MM or INCH",
+        "write `BEGIN PGM NAME MM`: the TNC does not take a program without its unit",
+    );
 }

@@ -149,3 +149,99 @@ fn cycle_def_is_rejected_with_the_right_keyword() {
     let (_, d) = read("0 BEGIN PGM P MM\n1 CYCLE CALL\n2 END PGM P MM\n");
     assert_eq!(d, ["E0120"]);
 }
+
+#[test]
+fn f_max_with_a_space_is_fmax() {
+    let (a, d) = read("L X+1 R0 F MAX M3\n");
+    let (b, _) = read("L X+1 R0 FMAX M3\n");
+    assert!(d.is_empty(), "{d:?}");
+    assert_eq!(a, b);
+}
+
+#[test]
+fn block_skip_slash_before_or_after_the_number() {
+    let spec = builtin("heidenhain").unwrap();
+    for text in ["/69 M30\n", "69 /M30\n", "/L X+1 FMAX\n"] {
+        let (p, d) = read_program(text, FileId(0), &spec);
+        assert!(d.is_empty(), "{text}: {d:?}");
+        assert!(p.blocks[0].skip.is_some(), "{text}");
+    }
+}
+
+#[test]
+fn m140_mb_is_one_retract_with_its_m_function() {
+    let (ir, d) = read("M140 MB MAX F99999\nL Z+5 R0 F500 M140 MB+50\n");
+    assert!(d.is_empty(), "{d:?}");
+    assert_eq!(ir.matches("retract").count(), 2, "{ir}");
+    assert!(!ir.contains("aux M140"), "{ir}");
+    let (_, d) = read("M140 MB\n");
+    assert_eq!(d, ["E0123"]);
+}
+
+#[test]
+fn function_blocks_and_formula_functions() {
+    let (ir, d) = read("FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\nFUNCTION RESET TCPM\nQ1 = SGN Q2 + LOG 10 + NEG Q3\n");
+    assert!(d.is_empty(), "{d:?}");
+    assert!(ir.contains("function"), "{ir}");
+    assert!(ir.contains("sign(Q2)"), "{ir}");
+    assert!(ir.contains("log10(10)+-Q3"), "{ir}");
+    let (_, d) = read("FUNCTION\n");
+    assert_eq!(d, ["E0123"]);
+}
+
+#[test]
+fn cycle_text_may_have_an_apostrophe() {
+    let (ir, d) = read("CYCL DEF 19.0 PLAN D'USINAGE\nCYCL DEF 19.1 A+0\n");
+    assert!(d.is_empty(), "{d:?}");
+    assert!(ir.contains("D'USINAGE"), "{ir}");
+}
+
+#[test]
+fn post_mistakes_get_located_errors() {
+    let spec = builtin("heidenhain").unwrap();
+    let one = |text: &str| {
+        let (_, d) = read_program(text, FileId(0), &spec);
+        d.into_iter()
+            .next()
+            .map(|d| (d.code.code().to_string(), d.message))
+            .unwrap()
+    };
+    let (c, m) = one("L Xnan Y+1 FMAX\n");
+    assert_eq!(c, "E0121");
+    assert!(m.contains("`X` is `nan`"), "{m}");
+    let (c, m) = one("0010 BEGIN PGM 100 IN\n");
+    assert_eq!(c, "E0123");
+    assert!(m.contains("INCH"), "{m}");
+    let (c, m) = one("1 CYCL DEF 200 DRILLING\nQ200=2\nQ201=-5\n");
+    assert_eq!(c, "E0320");
+    assert!(m.contains("does not end with `~`"), "{m}");
+    let (c, m) = one("% 123 G71\nN10 G0 X0\n");
+    assert_eq!(c, "E0120");
+    assert!(m.contains("DIN/ISO"), "{m}");
+}
+
+#[test]
+fn end_pgm_naming_another_program_is_a_warning() {
+    let (_, d) = read("0 BEGIN PGM CUT MM\n1 END PGM RECTIFI MM\n");
+    assert_eq!(d, ["W0120"]);
+    let (_, d) = read("0 BEGIN PGM CUT MM\n1 END PGM cut MM\n");
+    assert!(d.is_empty(), "{d:?}");
+}
+
+#[test]
+fn old_cycle_words_with_dashes_dots_and_colons() {
+    let (ir, d) =
+        read("CYCL DEF 32.2 HSC-MODE:0\nCYCL DEF9 .0 VARAKOZASI IDO\nCYCL DEF9.1 V.IDO5\n");
+    assert!(d.is_empty(), "{d:?}");
+    assert!(ir.contains("HSC-MODE:"), "{ir}");
+    assert!(ir.contains("cycle-line 9.0"), "{ir}");
+    assert!(ir.contains("V.IDO"), "{ir}");
+}
+
+#[test]
+fn comments_keep_their_trailing_blanks() {
+    let (ir, d) = read("10 ; PROJECT\t  : \r\n11 CYCL DEF 392 ATC ~\n  Q240=+0 ; TUNING MODE   ~\n  Q241=+1 ;WEIGHT MODE\n");
+    assert!(ir.contains("\" PROJECT\\t  : \""), "{ir}");
+    assert!(ir.contains("\" TUNING MODE\""), "{ir}");
+    assert!(d.is_empty(), "{d:?}");
+}
