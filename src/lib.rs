@@ -13,6 +13,7 @@ pub mod compare;
 pub mod diag;
 pub mod dialect;
 pub mod driver;
+pub mod encoding;
 pub mod emit;
 pub mod fuzzing;
 pub mod interp;

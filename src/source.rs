@@ -36,9 +36,15 @@ pub struct SourceMap {
     files: Vec<SourceFile>,
 }
 
+/// Line starts: after each LF, and after each CR not followed by LF
+/// (CR-only files, read as line ends as the driver reads them).
 fn line_starts(text: &str) -> Vec<usize> {
+    let b = text.as_bytes();
     std::iter::once(0)
-        .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+        .chain(b.iter().enumerate().filter_map(|(i, &c)| {
+            let end = c == b'\n' || (c == b'\r' && b.get(i + 1) != Some(&b'\n'));
+            end.then_some(i + 1)
+        }))
         .collect()
 }
 
