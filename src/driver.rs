@@ -149,7 +149,8 @@ pub fn read_program(text: &str, file: FileId, spec: &DialectSpec) -> (Program, V
     let mut first_cr = None;
     for (line, offset) in lines(text) {
         let end = offset as usize + line.len();
-        if first_cr.is_none() && text.as_bytes().get(end) == Some(&b'\r')
+        if first_cr.is_none()
+            && text.as_bytes().get(end) == Some(&b'\r')
             && text.as_bytes().get(end + 1) != Some(&b'\n')
         {
             first_cr = Some(end as u64);

@@ -123,12 +123,17 @@ pub fn encode(text: &str, enc: SourceEncoding) -> Vec<u8> {
     out
 }
 
-/// Splits a line (which may end with `\n`) at each lone CR (a CR not
-/// followed by LF), calling `f` with each piece with its ending.
+/// Splits a piece of text that has no LF (a CR-only file, or the last
+/// line of a file) at each lone CR, calling `f` with each piece with its
+/// ending. A line that ends with LF is passed whole: a stray CR inside a
+/// line of an LF or CR LF file (a CAM's comment) stays blank space.
 pub fn split_lone_cr<'a, E>(
     text: &'a str,
     mut f: impl FnMut(&'a str, bool) -> Result<bool, E>,
 ) -> Result<bool, E> {
+    if text.ends_with('\n') {
+        return f(text, false);
+    }
     let b = text.as_bytes();
     let mut start = 0;
     let mut i = 0;
@@ -174,10 +179,8 @@ mod tests {
                 ("M30\r".into(), true)
             ]
         );
-        assert_eq!(
-            pieces("a\rb\n"),
-            [("a\r".into(), true), ("b\n".into(), false)]
-        );
+        assert_eq!(pieces("a\rb\n"), [("a\rb\n".into(), false)]);
+        assert_eq!(pieces("a\rb"), [("a\r".into(), true), ("b".into(), false)]);
         assert_eq!(pieces(""), [("".into(), false)]);
     }
 

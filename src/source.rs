@@ -36,14 +36,15 @@ pub struct SourceMap {
     files: Vec<SourceFile>,
 }
 
-/// Line starts: after each LF, and after each CR not followed by LF
-/// (CR-only files, read as line ends as the driver reads them).
+/// Line starts: after each LF, and after each lone CR past the last LF
+/// (a CR-only file), as the driver reads lines.
 fn line_starts(text: &str) -> Vec<usize> {
     let b = text.as_bytes();
+    let last_lf = b.iter().rposition(|&c| c == b'\n');
     std::iter::once(0)
         .chain(b.iter().enumerate().filter_map(|(i, &c)| {
-            let end = c == b'\n' || (c == b'\r' && b.get(i + 1) != Some(&b'\n'));
-            end.then_some(i + 1)
+            let lone_cr = c == b'\r' && last_lf.is_none_or(|l| i > l);
+            (c == b'\n' || (lone_cr && b.get(i + 1) != Some(&b'\n'))).then_some(i + 1)
         }))
         .collect()
 }

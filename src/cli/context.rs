@@ -106,8 +106,7 @@ impl Context {
         &mut self,
         path: &Path,
     ) -> Result<(FileId, String, crate::encoding::SourceEncoding), Failure> {
-        let bytes =
-            std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+        let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
         let text = crate::driver::decode(&bytes);
         let id = self.files.add(path.display().to_string(), text.clone());
         Ok((id, text, crate::encoding::sniff(&bytes)))

@@ -49,6 +49,9 @@ codes! {
     UnclosedComment = "E0001", "unclosed-comment", Error,
         "a comment opened with `(` is not closed on its line",
         "A parenthesised comment must close on the line it opens on. A comment that never closes would swallow the rest of the block, so the opening parenthesis is reported. Close it with `)`.";
+    NestedComment = "E0006", "nested-comment", Error,
+        "a `(` inside a parenthesised comment",
+        "LinuxCNC does not nest comments: a `(` before the comment's `)` stops the program with \"Nested comment found\". cncc reports it once for the line and reads that line no further, so the comment's text is not taken for words. Remove the inner parentheses (or use [ ]).";
     BadCharacter = "E0002", "bad-character", Error,
         "a character that has no meaning in this dialect",
         "The character is not a word address, operator, or part of a number, comment or string in this dialect. Remove it, or put it inside a comment.";

@@ -107,6 +107,16 @@ pub enum Capability {
     /// The motion mode at power-on and reset is G00: axis words without a
     /// motion code move at rapid (Fanuc parameter 3402#0 = 0, Haas).
     PowerOnRapid,
+    /// The first block of a canned cycle must give R, and P for a dwell
+    /// cycle (LinuxCNC). Without it a missing R is the initial level [?]
+    /// and a missing P no dwell (Fanuc, Haas).
+    CycleWordsRequired,
+    /// `:` is the program number address as `O` is (ISO code, Fanuc,
+    /// Fadal, Haas: `:0097` is program O0097).
+    ColonProgramNumber,
+    /// A `(` inside a `( )` comment is an error (LinuxCNC: "Nested
+    /// comment found"); otherwise it is comment text.
+    NoNestedComments,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -145,6 +155,9 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("circular-pocket-cycle", Capability::CircularPocketCycle),
     ("general-pocket-cycle", Capability::GeneralPocketCycle),
     ("power-on-rapid", Capability::PowerOnRapid),
+    ("cycle-words-required", Capability::CycleWordsRequired),
+    ("colon-program-number", Capability::ColonProgramNumber),
+    ("no-nested-comments", Capability::NoNestedComments),
 ];
 
 impl Capability {
