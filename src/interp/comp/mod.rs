@@ -208,7 +208,9 @@ impl RadiusComp {
         to: Pose,
         out: &mut dyn FnMut(Canon),
     ) -> Result<(), CompError> {
-        if self.side.is_none() {
+        // rs274 compensates only with a radius above zero: with D0 (or
+        // no tool) the moves go out as programmed.
+        if self.side.is_none() || self.radius == 0.0 {
             self.arc_not_allowed = false;
             self.queue.flush(out);
             out(match kind {
@@ -237,8 +239,8 @@ impl RadiusComp {
         rotation: i64,
         out: &mut dyn FnMut(Canon),
     ) -> Result<(), CompError> {
-        if self.side.is_none() {
-            if self.arc_not_allowed {
+        if self.side.is_none() || self.radius == 0.0 {
+            if self.side.is_none() && self.arc_not_allowed {
                 return Err(self.error(CompErrorKind::ArcAfterExit, None));
             }
             self.queue.flush(out);
