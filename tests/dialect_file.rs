@@ -62,8 +62,14 @@ fn a_builders_g_code_is_a_located_error_whose_help_names_the_dialect_file() {
     let o = cncc(&["check", "--dialect", "fanuc", BUILDER]);
     assert_eq!(o.status.code(), Some(1));
     let err = stderr(&o);
-    assert!(err.contains("E0203") && err.contains("builder-g100.nc:4:1"), "{err}");
-    assert!(err.contains("--dialect-file") && err.contains("number=\"100\""), "{err}");
+    assert!(
+        err.contains("E0203") && err.contains("builder-g100.nc:4:1"),
+        "{err}"
+    );
+    assert!(
+        err.contains("--dialect-file") && err.contains("number=\"100\""),
+        "{err}"
+    );
 }
 
 #[test]

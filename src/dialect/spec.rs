@@ -117,6 +117,9 @@ pub enum Capability {
     /// A `(` inside a `( )` comment is an error (LinuxCNC: "Nested
     /// comment found"); otherwise it is comment text.
     NoNestedComments,
+    /// G5/G5.1/G5.2/G5.3 are LinuxCNC's splines, run as such (elsewhere
+    /// G5/G5.1 are other functions, e.g. Fanuc's AI contour control).
+    Splines,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -158,6 +161,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("cycle-words-required", Capability::CycleWordsRequired),
     ("colon-program-number", Capability::ColonProgramNumber),
     ("no-nested-comments", Capability::NoNestedComments),
+    ("splines", Capability::Splines),
 ];
 
 impl Capability {
