@@ -101,3 +101,14 @@ fn a_colon_is_no_program_number_in_linuxcnc() {
     let o = cncc(&["check", "--dialect", "linuxcnc", path.to_str().unwrap()]);
     assert!(stderr(&o).contains("E0002"), "{}", stderr(&o));
 }
+
+#[test]
+fn a_round_trip_keeps_the_high_speed_switches_as_written() {
+    let path = "tests/programs/fanuc/iso-tape.nc";
+    let o = cncc(&["port", path, "--from", "fanuc", "--to", "fanuc"]);
+    let out = stdout(&o);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for line in ["G5 P10000 (AICC ON)\n", "G5.1 Q1\n", "G8 P1\n"] {
+        assert!(out.contains(line), "{line:?} in\n{out}");
+    }
+}
