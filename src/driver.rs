@@ -113,17 +113,32 @@ fn empty_block() -> Block {
     }
 }
 
-/// Splits text into lines without their endings (`\n` or `\r\n`), with the
-/// byte offset of each line's start.
+/// Splits text into lines without their endings (`\n`, `\r\n` or a lone
+/// `\r`), with the byte offset of each line's start.
 pub fn lines(text: &str) -> impl Iterator<Item = (&str, u32)> {
     let mut offset = 0usize;
-    text.split_inclusive('\n').map(move |raw| {
-        let start = offset;
-        offset += raw.len();
-        let line = raw.strip_suffix('\n').unwrap_or(raw);
-        let line = line.strip_suffix('\r').unwrap_or(line);
-        (line, start as u32)
-    })
+    let mut pieces = Vec::new();
+    for raw in text.split_inclusive('\n') {
+        let _ = crate::encoding::split_lone_cr::<()>(raw, |p, _| {
+            pieces.push((strip_ending(p), offset as u32));
+            offset += p.len();
+            Ok(true)
+        });
+    }
+    pieces.into_iter()
+}
+
+/// The note for a file whose lines end with a lone CR, at the first one.
+fn cr_note(file: FileId, at: Option<u64>) -> Option<Diagnostic> {
+    let at = u32::try_from(at?).ok()?;
+    Some(
+        Diagnostic::new(
+            crate::diag::Code::CrLineEnds,
+            "lines end with a lone carriage return (CR): read as line ends",
+        )
+        .primary(Span::new(file, at as usize, at as usize + 1), "a CR without LF")
+        .help("CR-only line ends come from old Mac or DNC software; most controllers want LF or CR LF"),
+    )
 }
 
 /// Reads a whole program.
@@ -131,37 +146,25 @@ pub fn read_program(text: &str, file: FileId, spec: &DialectSpec) -> (Program, V
     let mut program = Program::new(file, spec.id.clone());
     let mut diags = Vec::new();
     let mut reader = Reader::new(spec, file);
+    let mut first_cr = None;
     for (line, offset) in lines(text) {
+        let end = offset as usize + line.len();
+        if first_cr.is_none()
+            && text.as_bytes().get(end) == Some(&b'\r')
+            && text.as_bytes().get(end + 1) != Some(&b'\n')
+        {
+            first_cr = Some(end as u64);
+        }
         if let Some(b) = reader.line(line, offset, &mut program.exprs, &mut diags) {
             program.blocks.push(b);
         }
     }
     diags.extend(reader.finish());
+    diags.extend(cr_note(file, first_cr));
     (program, diags)
 }
 
-/// Decodes a file's bytes: UTF-8 when valid, otherwise each line that is
-/// not valid UTF-8 as Latin-1 (old controllers' files), so that no byte is
-/// lost. Offsets in the result are offsets in the decoded text.
-pub fn decode(bytes: &[u8]) -> String {
-    match std::str::from_utf8(bytes) {
-        Ok(s) => s.to_owned(),
-        Err(_) => {
-            let mut out = String::with_capacity(bytes.len());
-            for line in bytes.split_inclusive(|&b| b == b'\n') {
-                decode_line_into(line, &mut out);
-            }
-            out
-        }
-    }
-}
-
-fn decode_line_into(line: &[u8], out: &mut String) {
-    match std::str::from_utf8(line) {
-        Ok(s) => out.push_str(s),
-        Err(_) => out.extend(line.iter().map(|&b| b as char)),
-    }
-}
+pub use crate::encoding::decode;
 
 /// What a streamed check found.
 pub struct StreamResult {
@@ -195,7 +198,11 @@ pub fn check_stream_flagged(
     let mut diags = Vec::new();
     let mut block = empty_block();
     let (mut offset, mut line_no) = (0u64, 0u64);
+    let mut first_cr = None;
     for_each_line(input, |text| {
+        if first_cr.is_none() && text.ends_with('\r') {
+            first_cr = Some(offset + text.len() as u64 - 1);
+        }
         let line = strip_ending(text);
         let off = u32::try_from(offset).map_err(|_| too_large())?;
         let before = diags.len();
@@ -212,6 +219,7 @@ pub fn check_stream_flagged(
         Ok(true)
     })?;
     diags.extend(reader.finish());
+    diags.extend(cr_note(file, first_cr));
     Ok(StreamResult {
         diagnostics: diags,
         bytes: offset,
@@ -226,14 +234,16 @@ fn strip_ending(text: &str) -> &str {
 }
 
 /// Calls `f` with each line of the input, with its ending, decoded as
-/// [`decode`] does (UTF-8, or Latin-1 for a line that is not), until `f`
-/// says `false`. Reads the input's buffer in place: whole buffers of lines
+/// [`decode`] does (no BOM; UTF-8, or Latin-1 for a line that is not; a
+/// lone CR ends a line), until `f` says `false`. Reads the input's buffer in place: whole buffers of lines
 /// are checked as UTF-8 at once; only a line across two reads is copied.
 pub fn for_each_line<F>(mut input: impl BufRead, mut f: F) -> std::io::Result<()>
 where
     F: FnMut(&str) -> std::io::Result<bool>,
 {
-    let mut carry: Vec<u8> = Vec::new();
+    // Bytes that began like a BOM but were not one are the first line's.
+    let mut carry: Vec<u8> = skip_bom(&mut input)?;
+    let mut f = |text: &str| crate::encoding::split_lone_cr(text, |p, _| f(p));
     let mut latin = String::new();
     loop {
         let chunk = match input.fill_buf() {
@@ -275,6 +285,27 @@ where
         one_line(&carry, &mut latin, &mut f)?;
     }
     Ok(())
+}
+
+/// Consumes a UTF-8 byte order mark at the start of the input; gives back
+/// the bytes consumed that turned out not to be one.
+fn skip_bom(input: &mut impl BufRead) -> std::io::Result<Vec<u8>> {
+    let bom = crate::encoding::BOM;
+    let mut seen = 0;
+    while seen < bom.len() {
+        let chunk = match input.fill_buf() {
+            Ok(c) => c,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        let n = chunk.len().min(bom.len() - seen);
+        if n == 0 || chunk[..n] != bom[seen..seen + n] {
+            return Ok(bom[..seen].to_vec());
+        }
+        input.consume(n);
+        seen += n;
+    }
+    Ok(Vec::new())
 }
 
 /// Whole lines (the last one ends with `\n`).

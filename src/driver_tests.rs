@@ -18,6 +18,9 @@ fn samples() -> Vec<Vec<u8>> {
         "(caf\u{e9} \u{2713})\nX1\rY2\n\rZ3\r".as_bytes().to_vec(),
         latin,
         b"N10 G1 X1 X2 G999\nG2 X1 Y1\nG80 X2\nM30\n".to_vec(),
+        b"\xEF\xBB\xBFG0 X1\r\nM30\r\n".to_vec(),
+        b"\xEF\xBBG0 X1\n(\xe9)\n".to_vec(),
+        b"G0 X1\rG1 X2 F100\rM30\r".to_vec(),
     ]
 }
 

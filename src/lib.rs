@@ -14,6 +14,7 @@ pub mod diag;
 pub mod dialect;
 pub mod driver;
 pub mod emit;
+pub mod encoding;
 pub mod fuzzing;
 pub mod interp;
 pub mod ir;

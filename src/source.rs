@@ -36,9 +36,16 @@ pub struct SourceMap {
     files: Vec<SourceFile>,
 }
 
+/// Line starts: after each LF, and after each lone CR past the last LF
+/// (a CR-only file), as the driver reads lines.
 fn line_starts(text: &str) -> Vec<usize> {
+    let b = text.as_bytes();
+    let last_lf = b.iter().rposition(|&c| c == b'\n');
     std::iter::once(0)
-        .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+        .chain(b.iter().enumerate().filter_map(|(i, &c)| {
+            let lone_cr = c == b'\r' && last_lf.is_none_or(|l| i > l);
+            (c == b'\n' || (lone_cr && b.get(i + 1) != Some(&b'\n'))).then_some(i + 1)
+        }))
         .collect()
 }
 

@@ -54,3 +54,34 @@ fn a_missing_spec_file_is_an_io_error() {
     ]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+const BUILDER: &str = "tests/programs/fanuc/builder-g100.nc";
+
+#[test]
+fn a_builders_g_code_is_a_located_error_whose_help_names_the_dialect_file() {
+    let o = cncc(&["check", "--dialect", "fanuc", BUILDER]);
+    assert_eq!(o.status.code(), Some(1));
+    let err = stderr(&o);
+    assert!(
+        err.contains("E0203") && err.contains("builder-g100.nc:4:1"),
+        "{err}"
+    );
+    assert!(
+        err.contains("--dialect-file") && err.contains("number=\"100\""),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_dialect_file_for_the_machine_makes_it_check_clean() {
+    let o = cncc(&[
+        "--dialect-file",
+        "tests/dialects/nomura-6mb.xml",
+        "check",
+        "--dialect",
+        "nomura-6mb",
+        BUILDER,
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("error["), "{}", stderr(&o));
+}

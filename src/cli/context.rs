@@ -100,6 +100,18 @@ impl Context {
         Ok((id, text))
     }
 
+    /// [`Context::add_file`], with what the file's bytes were (for writing
+    /// a result the same way).
+    pub fn add_file_encoded(
+        &mut self,
+        path: &Path,
+    ) -> Result<(FileId, String, crate::encoding::SourceEncoding), Failure> {
+        let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+        let text = crate::driver::decode(&bytes);
+        let id = self.files.add(path.display().to_string(), text.clone());
+        Ok((id, text, crate::encoding::sniff(&bytes)))
+    }
+
     pub fn print(&self, diags: &[Diagnostic], format: Format) {
         print_diagnostics(diags, &self.files, format, self.color);
     }

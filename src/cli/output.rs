@@ -37,6 +37,18 @@ pub fn emit_output(output: Option<&Path>, text: &str) -> std::io::Result<()> {
     }
 }
 
+/// [`emit_output`] for bytes already encoded.
+pub fn emit_output_bytes(output: Option<&Path>, bytes: &[u8]) -> std::io::Result<()> {
+    match output {
+        Some(p) => write_bytes_atomically(p, bytes),
+        None => {
+            let mut out = std::io::stdout().lock();
+            out.write_all(bytes)?;
+            out.flush()
+        }
+    }
+}
+
 /// Like [`emit_output`], for output written piece by piece by `write`
 /// (into a temporary file renamed at the end, or stdout).
 pub fn emit_output_with(

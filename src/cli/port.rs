@@ -50,7 +50,7 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
         tool_map,
         expand_cycles: a.expand_cycles,
     };
-    let (id, text) = ctx.add_file(a.file)?;
+    let (id, text, encoding) = ctx.add_file_encoded(a.file)?;
     let (spec, reason) = ctx.spec_for(a.from, a.file, &text)?;
     if let Some(r) = reason {
         report_detection(a.file, &spec, &r);
@@ -114,7 +114,9 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
     } else {
         ctx.print(&diags, a.format);
     }
-    crate::cli::output::emit_output(a.output, &out)?;
+    // Written as the source was: comment bytes, BOM, line ends.
+    let bytes = crate::encoding::encode(&out, encoding);
+    crate::cli::output::emit_output_bytes(a.output, &bytes)?;
     Ok(EXIT_OK)
 }
 

@@ -49,6 +49,9 @@ codes! {
     UnclosedComment = "E0001", "unclosed-comment", Error,
         "a comment opened with `(` is not closed on its line",
         "A parenthesised comment must close on the line it opens on. A comment that never closes would swallow the rest of the block, so the opening parenthesis is reported. Close it with `)`.";
+    NestedComment = "E0006", "nested-comment", Error,
+        "a `(` inside a parenthesised comment",
+        "LinuxCNC does not nest comments: a `(` before the comment's `)` stops the program with \"Nested comment found\". cncc reports it once for the line and reads that line no further, so the comment's text is not taken for words. Remove the inner parentheses (or use [ ]).";
     BadCharacter = "E0002", "bad-character", Error,
         "a character that has no meaning in this dialect",
         "The character is not a word address, operator, or part of a number, comment or string in this dialect. Remove it, or put it inside a comment.";
@@ -253,6 +256,9 @@ codes! {
     KeptAsText = "W0005", "kept-as-text", Warning,
         "a block understood only as text",
         "The front end recognised the block as plausibly valid for the dialect (an unknown system function, an unusual keyword) but cannot place it in the meta-model. It is kept verbatim: it is written back unchanged into the same dialect, and translating it to another dialect is an error.";
+    CrLineEnds = "W0006", "cr-line-ends", Note,
+        "lines that end with a lone carriage return",
+        "The file ends its lines with CR alone (classic Mac OS, some DNC software), not LF or CR LF. cncc reads each CR as a line end; a controller or DNC link set for LF may read the whole file as one block. Convert the line ends if the machine needs it.";
     DivisionByZero = "E0503", "division-by-zero", Error,
         "a division by zero while the program runs",
         "An expression divides by zero (or takes MOD of zero) with the values the variables have at that point. Check the divisor's variables.";

@@ -65,6 +65,11 @@ pub enum Meaning {
     SubCall,
     LocalCall,
     SubReturn,
+    /// High-speed contouring / look-ahead on or off by its words (Fanuc
+    /// G05 P10000, G5.1 Q1, G08 P1; Haas G187, G103): the control follows
+    /// the programmed path within its tolerance, so a run goes on as
+    /// programmed. Kept by its code, as `aux` is.
+    PathSmoothing,
     /// A machine function with no neutral meaning, kept by its code.
     Aux,
 }
@@ -277,6 +282,7 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
     ("sub.call", M::SubCall),
     ("sub.local-call", M::LocalCall),
     ("sub.return", M::SubReturn),
+    ("path.smoothing", M::PathSmoothing),
     ("aux", M::Aux),
 ];
 

@@ -121,6 +121,19 @@ pub enum Capability {
     /// default of G group 1, machine data 20150 GCODE_RESET_VALUES): axis
     /// words without a motion code move at the feed, which must be given.
     PowerOnLinear,
+    /// The first block of a canned cycle must give R, and P for a dwell
+    /// cycle (LinuxCNC). Without it a missing R is the initial level [?]
+    /// and a missing P no dwell (Fanuc, Haas).
+    CycleWordsRequired,
+    /// `:` is the program number address as `O` is (ISO code, Fanuc,
+    /// Fadal, Haas: `:0097` is program O0097).
+    ColonProgramNumber,
+    /// A `(` inside a `( )` comment is an error (LinuxCNC: "Nested
+    /// comment found"); otherwise it is comment text.
+    NoNestedComments,
+    /// G5/G5.1/G5.2/G5.3 are LinuxCNC's splines, run as such (elsewhere
+    /// G5/G5.1 are other functions, e.g. Fanuc's AI contour control).
+    Splines,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -163,6 +176,10 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("comp-entry-longer-than-radius", Capability::CompEntryLongerThanRadius),
     ("comp-on-when-on-error", Capability::CompOnWhenOnError),
     ("power-on-linear", Capability::PowerOnLinear),
+    ("cycle-words-required", Capability::CycleWordsRequired),
+    ("colon-program-number", Capability::ColonProgramNumber),
+    ("no-nested-comments", Capability::NoNestedComments),
+    ("splines", Capability::Splines),
 ];
 
 impl Capability {

@@ -163,7 +163,17 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
             words: list,
         } => {
             words.push(format!("{letter}{}", code.format(0, false)));
-            w.push_words(words, list);
+            // A high-speed code's words are switches and levels, written
+            // as read (`G5.1 Q1`, not `Q1.`).
+            let smoothing =
+                w.spec.code(*letter, *code).map(|c| c.meaning) == Some(Meaning::PathSmoothing);
+            if smoothing {
+                for x in list {
+                    w.push_word(words, &x.address(), &x.value, NumKind::Plain, x.span);
+                }
+            } else {
+                w.push_words(words, list);
+            }
         }
         K::DynamicCode {
             letter,

@@ -164,6 +164,17 @@ pub fn block_word(
     Ok(None)
 }
 
+/// A code the spec calls `path.smoothing` (high-speed contouring, look-
+/// ahead): the programmed path stands, so it is run as nothing.
+fn smoothing(it: &Interp<'_, '_>, letter: char, code: f64) -> bool {
+    let Ok(d) = crate::ir::Decimal::parse(&code.to_string()) else {
+        return false;
+    };
+    it.spec
+        .code(letter.to_ascii_uppercase(), d)
+        .is_some_and(|c| c.meaning == crate::dialect::Meaning::PathSmoothing)
+}
+
 /// Runs an Aux statement.
 pub fn exec(
     it: &mut Interp<'_, '_>,
@@ -188,6 +199,9 @@ pub fn exec(
                 return Ok(());
             }
             AuxRun::Stop => {}
+        }
+        if smoothing(it, letter, code) {
+            return Ok(());
         }
         return Err(it.error_at(
             it.span,

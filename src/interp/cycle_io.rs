@@ -28,6 +28,10 @@ pub struct CycleBlock {
     pub incremental: bool,
     /// G98 (true) or G99 (false) in force.
     pub return_initial: bool,
+    /// The first block of a cycle must give R, and P for a dwell cycle
+    /// (capability `cycle-words-required`, LinuxCNC); otherwise a missing
+    /// R is the initial level and a missing P no dwell (Fanuc, Haas).
+    pub words_required: bool,
     /// This block wrote the cycle's G code (not only axis words).
     pub code_in_block: bool,
     /// LinuxCNC polar words under G91: the distance and the angle

@@ -143,7 +143,9 @@ fn exec_stmt(
             letter,
             code,
             words,
-        } if super::splines::is_spline(*letter, *code) => {
+        } if super::splines::is_spline(*letter, *code)
+            && it.spec.has(crate::dialect::Capability::Splines) =>
+        {
             it.begin_block(block);
             super::splines::exec(it, *code, words, block, exprs)
         }

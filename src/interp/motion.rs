@@ -359,6 +359,7 @@ fn base_block(
         k: None,
         incremental: !it.state.absolute,
         return_initial: it.state.retract_initial,
+        words_required: it.spec.has(crate::dialect::Capability::CycleWordsRequired),
         code_in_block: false,
         polar_step: None,
         span: it.span,

@@ -135,7 +135,10 @@ fn unknown(letter: char, code: Decimal, span: Span, spec: &DialectSpec) -> Diagn
     let name = format!("{letter}{code}");
     if letter == 'G' {
         let help = known_elsewhere(letter, code, spec).unwrap_or_else(|| {
-            "check the number, or load a dialect spec that defines it with `--dialect-file`".into()
+            format!(
+                "check the number; if it is the machine builder's code (a tool-change or probing macro), describe the machine in a dialect file extending `{}`, with `<code letter=\"G\" number=\"{code}\" group=\"non-modal\" meaning=\"aux\" uses=\"...\"/>` for its words, and load it with `--dialect-file`",
+                spec.id
+            )
         });
         return Diagnostic::new(
             Code::UnknownGCode,

@@ -146,7 +146,15 @@ impl<'s> Lowering<'s> {
         sort_items(items, s, to, &mut self.codes, spec, ctx.diags);
         // Repeated words are reported after the codes, as when words come later.
         ctx.diags.append(&mut self.deferred);
-        words::convert_increments(&mut s.plain, spec, ctx.diags);
+        // The words of a high-speed code (`G5.1 Q1`, `G05 P10000`) are
+        // switches and levels, not lengths.
+        let smoothing = s
+            .codes
+            .iter()
+            .any(|c| c.meaning == Some(Meaning::PathSmoothing));
+        if !smoothing {
+            words::convert_increments(&mut s.plain, spec, ctx.diags);
+        }
         for w in &s.plain {
             self.words.push(w, ctx.diags, &mut self.repeated);
         }

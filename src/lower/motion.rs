@@ -87,6 +87,15 @@ fn corner(words: &mut Words) -> Option<(CornerKind, crate::ir::Value)> {
 }
 
 /// A fixed cycle with its words.
+/// A cycle's repeat word that is not a count may be another control's
+/// dwell or peck word under the same letter (a GE 1050's `K.4`).
+fn repeat_help(spec: &crate::dialect::DialectSpec) -> String {
+    format!(
+        "in {} `{}` is a canned cycle's repeat count; a control that reads `{}` as a dwell or peck depth is described by a dialect file (`--dialect-file`) that extends this one with another `repeat-letter` and its own cycle codes",
+        spec.name, spec.repeat_letter, spec.repeat_letter
+    )
+}
+
 pub(super) fn cycle(kind: CycleKind, words: &mut Words, ctx: &mut Ctx<'_>) -> CannedCycle {
     let target = words.take_axes();
     let q = words.take("Q");
@@ -95,7 +104,12 @@ pub(super) fn cycle(kind: CycleKind, words: &mut Words, ctx: &mut Ctx<'_>) -> Ca
     }
     let repeat = words.take(ctx.spec.repeat_letter);
     if let Some(r) = &repeat {
-        check_index(r, "repeat count", None, ctx.diags);
+        let before = ctx.diags.len();
+        if check_index(r, "repeat count", None, ctx.diags).is_none() {
+            if let Some(d) = ctx.diags.get_mut(before) {
+                d.help = Some(repeat_help(ctx.spec));
+            }
+        }
     }
     CannedCycle {
         kind,

@@ -87,6 +87,20 @@ fn lengths_without_point_are_increments_once_per_line() {
 }
 
 #[test]
+fn high_speed_code_words_are_switches_not_lengths() {
+    let spec = crate::dialect::builtin::builtin("fanuc").unwrap();
+    for line in ["G5.1 Q1", "G05 P10000", "G08 P1"] {
+        let o = run(&spec, line);
+        assert!(o.diags.is_empty(), "{line}: {:?}", codes(&o));
+        let StmtKind::Aux { words, .. } = kinds(&o)[0] else {
+            panic!("{line}: {:?}", kinds(&o));
+        };
+        let v = words[0].value.number().unwrap();
+        assert!(!v.point && v.scale == 0, "{line}: {v:?}");
+    }
+}
+
+#[test]
 fn two_motion_codes() {
     let o = run(&fanuc(), "G0 G1 X1.");
     assert_eq!(codes(&o), vec![Code::TwoMotionCodes]);

@@ -227,10 +227,10 @@ impl RadiusComp {
         to: Pose,
         out: &mut dyn FnMut(Canon),
     ) -> Result<(), CompError> {
+        // rs274 compensates only with a radius above zero: with D0 (or
+        // no tool) the moves go out as programmed.
         if self.side.is_none() || self.radius == 0.0 {
-            // rs274 compensates only with a radius above zero: with D0 or
-            // a tool of no diameter the path is the programmed one.
-            self.arc_not_allowed &= self.side.is_some();
+            self.arc_not_allowed = false;
             self.queue.flush(out);
             out(match kind {
                 MoveKind::Rapid => Canon::StraightTraverse(to),
@@ -259,7 +259,7 @@ impl RadiusComp {
         out: &mut dyn FnMut(Canon),
     ) -> Result<(), CompError> {
         if self.side.is_none() || self.radius == 0.0 {
-            if self.arc_not_allowed && self.side.is_none() {
+            if self.side.is_none() && self.arc_not_allowed {
                 return Err(self.error(CompErrorKind::ArcAfterExit, None));
             }
             self.queue.flush(out);

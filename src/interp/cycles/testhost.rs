@@ -242,6 +242,7 @@ impl Driver {
             k: get('K'),
             incremental: self.incremental,
             return_initial: self.return_initial,
+            words_required: true,
             code_in_block,
             polar_step: None,
             span: Span::default(),

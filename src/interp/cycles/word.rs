@@ -59,7 +59,7 @@ fn try_run(
     let r_word = match (block.r, same) {
         (Some(r), _) => r,
         (None, true) => mem.r,
-        (None, false) => {
+        (None, false) if block.words_required => {
             return Err(err(
                 Code::CycleMissingWord,
                 block,
@@ -68,6 +68,10 @@ fn try_run(
                 "give the retract plane with R in the first block of a cycle",
             ))
         }
+        // [?] Fanuc/Haas: no R in the first block leaves point R at the
+        // initial level (the cycle feeds from where the tool is).
+        (None, false) if block.incremental => 0.0,
+        (None, false) => Frame::of(host).here(host).1,
     };
     let repeats = repeats(block, mem)?;
     let frame = Frame::of(host);
@@ -244,7 +248,8 @@ fn params(
         block.kind,
         DrillDwell | BoreStopRapidOut | BoreManual | BoreDwellFeedOut
     );
-    if need_p && block.p.is_none() && !same {
+    // Fanuc/Haas: no P is no dwell; LinuxCNC refuses it.
+    if need_p && block.p.is_none() && !same && block.words_required {
         let msg = format!("dwell time P word missing with {}", gcode(block.kind));
         return Err(err(
             Code::CycleMissingWord,

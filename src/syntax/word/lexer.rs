@@ -10,7 +10,9 @@ use logos::Logos;
 
 /// Raw tokens as logos finds them.
 #[derive(Logos, Clone, Copy, Debug, PartialEq, Eq)]
-#[logos(skip r"[ \t\r\f\v\u{feff}]+")]
+/// `\x1a` (Ctrl-Z) is the DOS end-of-file mark old DNC software leaves
+/// after the closing `%`: read as blank.
+#[logos(skip r"[ \t\r\f\v\u{feff}\x1a]+")]
 enum Raw {
     #[regex("[A-Za-z]")]
     Letter,
@@ -45,6 +47,8 @@ enum Raw {
     Assign,
     #[token("%")]
     Percent,
+    #[token(":")]
+    Colon,
     #[regex(r"\([^)]*\)")]
     Comment,
     #[regex(r"\([^)]*")]
@@ -78,6 +82,9 @@ pub enum Tok {
     Slash,
     Assign,
     Percent,
+    /// `:`: the ISO program number address (`:0097` is `O0097`) where the
+    /// dialect has `colon-program-number`; a bad character elsewhere.
+    Colon,
     /// A name that is no keyword: a function or an unknown word.
     Name,
     Kw(Kw),
@@ -216,6 +223,7 @@ fn convert(raw: Raw, slice: &str) -> Tok {
         Raw::Slash => Tok::Slash,
         Raw::Assign => Tok::Assign,
         Raw::Percent => Tok::Percent,
+        Raw::Colon => Tok::Colon,
         Raw::Comment => Tok::Comment { closed: true },
         Raw::OpenComment => Tok::Comment { closed: false },
         Raw::Semi => Tok::Semi,
@@ -310,5 +318,7 @@ mod tests {
         assert_eq!(toks("2**3")[1], (Tok::Pow, "**"));
         assert_eq!(toks("@1 ^2")[2], (Tok::Letter(b'^'), "^"));
         assert_eq!(toks("\u{feff}G1")[0], (Tok::Letter(b'G'), "G"));
+        assert_eq!(toks("%\x1a"), [(Tok::Percent, "%")]);
+        assert_eq!(toks(":0097")[0], (Tok::Colon, ":"));
     }
 }

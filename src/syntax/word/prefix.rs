@@ -30,13 +30,37 @@ pub fn split(
     for &(l, t, r) in toks {
         let sp = span(input, l, r);
         match t {
+            Tok::Comment { .. } if nested_comment(input, l, r, diags) => break,
             Tok::Comment { closed } => side.push(paren_comment(input, l, r, closed, diags)),
             Tok::Semi => side.extend(semicolon(input, l, r, diags)),
-            Tok::Bad => diags.push(bad_char(input.text.get(l..r).unwrap_or("?"), sp)),
+            Tok::Colon if input.spec.has(Capability::ColonProgramNumber) => {
+                feed.push((l, Tok::O, r))
+            }
+            Tok::Bad | Tok::Colon => diags.push(bad_char(input.text.get(l..r).unwrap_or("?"), sp)),
             _ => feed.push((l, t, r)),
         }
     }
     side
+}
+
+/// Where the dialect has `no-nested-comments` (LinuxCNC): a `(` inside a
+/// comment is "Nested comment found", and the line is read no further (so
+/// the comment's text after the inner `)` is not read as words).
+fn nested_comment(input: &LineInput<'_>, l: usize, r: usize, diags: &mut Vec<Diagnostic>) -> bool {
+    if !input.spec.has(Capability::NoNestedComments) {
+        return false;
+    }
+    let Some(k) = input.text[l + 1..r].find('(') else {
+        return false;
+    };
+    let at = l + 1 + k;
+    diags.push(
+        Diagnostic::new(Code::NestedComment, "nested comment found")
+            .primary(span(input, at, at + 1), "a `(` inside a comment")
+            .secondary(span(input, l, l + 1), "the comment opens here")
+            .help("comments do not nest here: remove the inner parentheses or write them as [ ]"),
+    );
+    true
 }
 
 fn paren_comment(

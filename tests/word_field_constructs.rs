@@ -1,0 +1,114 @@
+//! Constructs real Fanuc, Haas and LinuxCNC programs use (issue 12): ISO
+//! `:` program numbers, Ctrl-Z after the closing `%`, the high-speed codes
+//! posts write (G05 P10000, G5.1 Q1, G08 P1; Haas G187, G103), G84.2/G84.3
+//! rigid tapping, G31 skip, and the cycle words each control may leave out
+//! (Fanuc/Haas: G82 without P dwells 0, G81 without R feeds from the
+//! initial level; LinuxCNC refuses both), and LinuxCNC's nested comments.
+
+mod common;
+use common::*;
+
+fn errors(err: &str) -> Vec<&str> {
+    err.lines().filter(|l| l.starts_with("error[")).collect()
+}
+
+#[test]
+fn a_fanuc_iso_tape_with_high_speed_codes_checks_clean() {
+    let o = cncc(&[
+        "check",
+        "--dialect",
+        "fanuc",
+        "tests/programs/fanuc/iso-tape.nc",
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(errors(&err).is_empty(), "{err}");
+    // The smoothing codes do not stop the run: nothing was left unchecked.
+    assert!(!err.contains("W0511"), "{err}");
+}
+
+#[test]
+fn a_haas_program_with_colon_number_smoothing_and_m97_checks_clean() {
+    let o = cncc(&[
+        "check",
+        "--dialect",
+        "haas",
+        "tests/programs/haas/iso-tape.nc",
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(errors(&err).is_empty() && !err.contains("W0511"), "{err}");
+}
+
+#[test]
+fn fanuc_cycles_without_p_or_r_dwell_zero_and_start_at_the_initial_level() {
+    let o = cncc(&[
+        "canon",
+        "--dialect",
+        "fanuc",
+        "tests/programs/fanuc/iso-tape.nc",
+    ]);
+    let out = stdout(&o);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // G82 without P: a dwell of 0 at the bottom.
+    assert!(
+        out.contains(
+            "STRAIGHT_FEED(10.0000, 10.0000, -2.0000, 0.0000, 0.0000, 0.0000)\nDWELL(0.0000)"
+        ),
+        "{out}"
+    );
+    // G81 without R: from the initial level Z5 straight down.
+    assert!(out.contains("STRAIGHT_TRAVERSE(20.0000, 10.0000, 5.0000, 0.0000, 0.0000, 0.0000)\nSTRAIGHT_FEED(20.0000, 10.0000, -3.0000"), "{out}");
+    // G84.2 / G84.3: rigid tapping right and left hand.
+    assert!(out.contains("START_SPINDLE_COUNTERCLOCKWISE"), "{out}");
+    // G31: the skip move probes.
+    assert!(out.contains("STRAIGHT_PROBE(30.0000"), "{out}");
+}
+
+#[test]
+fn linuxcnc_refuses_cycles_without_p_or_r() {
+    for (file, msg) in [
+        ("g82-no-p", "dwell time P word missing with G82"),
+        ("g81-no-r", "R clearance plane unspecified in cycle"),
+    ] {
+        let path = format!("tests/programs/linuxcnc/{file}.ngc");
+        let o = cncc(&["check", "--dialect", "linuxcnc", &path]);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(1), "{err}");
+        assert!(err.contains("E0541") && err.contains(msg), "{err}");
+    }
+}
+
+#[test]
+fn a_nested_comment_is_one_error_in_linuxcnc() {
+    let path = "tests/programs/linuxcnc/nested-comment.ngc";
+    let o = cncc(&["check", "--dialect", "linuxcnc", path]);
+    let err = stderr(&o);
+    assert_eq!(
+        errors(&err),
+        ["error[E0006 nested-comment]: nested comment found"],
+        "{err}"
+    );
+    assert!(err.contains("nested-comment.ngc:1:12"), "{err}");
+}
+
+#[test]
+fn a_colon_is_no_program_number_in_linuxcnc() {
+    let dir = std::env::temp_dir().join(format!("cncc-colon-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("colon.ngc");
+    std::fs::write(&path, ":0097\nG0 X1\nM2\n").unwrap();
+    let o = cncc(&["check", "--dialect", "linuxcnc", path.to_str().unwrap()]);
+    assert!(stderr(&o).contains("E0002"), "{}", stderr(&o));
+}
+
+#[test]
+fn a_round_trip_keeps_the_high_speed_switches_as_written() {
+    let path = "tests/programs/fanuc/iso-tape.nc";
+    let o = cncc(&["port", path, "--from", "fanuc", "--to", "fanuc"]);
+    let out = stdout(&o);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for line in ["G5 P10000 (AICC ON)\n", "G5.1 Q1\n", "G8 P1\n"] {
+        assert!(out.contains(line), "{line:?} in\n{out}");
+    }
+}
