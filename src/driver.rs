@@ -78,9 +78,14 @@ impl<'s> Reader<'s> {
             offset,
             spec: self.spec,
         };
+        let first_expr = exprs.len();
         let Some(mut syntax) = self.front.parse_line(&input, exprs, diags) else {
             return false;
         };
+        if let Some(deep) = crate::ir::depth::first_too_deep(exprs, first_expr) {
+            diags.push(too_deep(exprs[deep].span));
+            return false;
+        }
         self.lowering.recycle(&mut block.stmts);
         self.lowering
             .lower(&mut syntax.items, exprs, diags, &mut block.stmts);
@@ -101,6 +106,19 @@ impl<'s> Reader<'s> {
         diags.extend(self.structure.finish());
         diags
     }
+}
+
+/// E0190 at the part of an expression that crosses the depth limit.
+fn too_deep(span: Span) -> Diagnostic {
+    Diagnostic::new(
+        crate::diag::Code::ExpressionTooDeep,
+        format!(
+            "expression nested more than {} levels deep",
+            crate::ir::depth::MAX_EXPR_DEPTH
+        ),
+    )
+    .primary(span, "too deep from here on; this block is not run")
+    .help("split the expression into several assignments")
 }
 
 fn empty_block() -> Block {

@@ -38,12 +38,16 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
         all.extend(d);
         a.options.tool_table = table;
     }
+    let mut failed = false;
     for path in a.files {
-        if crate::stepnc::is_part21(path, &read_head(path)?) {
-            all.extend(crate::cli::stepnc::check_file(ctx, path)?);
-            continue;
+        match check_one(ctx, path, &a) {
+            Ok(d) => all.extend(d),
+            Err(Failure(msg)) => {
+                // Each file is independent: the others are still checked.
+                eprintln!("error: {msg}");
+                failed = true;
+            }
         }
-        all.extend(check_file(ctx, path, &a)?);
     }
     ctx.print(&all, a.format);
     let errors = all.iter().filter(|d| d.severity == Severity::Error).count();
@@ -56,10 +60,36 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
             eprintln!("{s}");
         }
     }
-    Ok(if errors > 0 {
+    Ok(if errors > 0 || failed {
         EXIT_INPUT_ERRORS
     } else {
         EXIT_OK
+    })
+}
+
+/// Checks one file (a program or STEP-NC); a panic in cncc while checking
+/// it is reported as a failure of that file alone.
+fn check_one(
+    ctx: &mut Context,
+    path: &Path,
+    a: &CheckArgs<'_>,
+) -> Result<Vec<Diagnostic>, Failure> {
+    let run = std::panic::AssertUnwindSafe(|| {
+        if crate::stepnc::is_part21(path, &read_head(path)?) {
+            return crate::cli::stepnc::check_file(ctx, path);
+        }
+        check_file(ctx, path, a)
+    });
+    std::panic::catch_unwind(run).unwrap_or_else(|p| {
+        let what = p
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| p.downcast_ref::<String>().cloned())
+            .unwrap_or_default();
+        Err(Failure(format!(
+            "{}: internal error in cncc while checking this file ({what}); please report it",
+            path.display()
+        )))
     })
 }
 

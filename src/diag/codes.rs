@@ -506,6 +506,24 @@ codes! {
     TncCycleMachineFunction = "W0515", "cycle-machine-function-not-run", Warning,
         "an M function given to a Heidenhain cycle that cncc does not simulate",
         "Cycle 241 switches coolant with the M functions in Q429/Q430. M7, M8 and M9 are run as mist, flood and coolant off; other numbers are machine-dependent (set by the machine builder), so they are not run and the canonical output lacks them.";
+    BlockTooLong = "E0191", "block-too-long", Error,
+        "a block longer than cncc reads (1 MiB)",
+        "A block, with all the lines continued into it, is longer than 1 MiB. No controller accepts such a block; it is not read, and the lines continued after the limit are not joined to it. Split it into several blocks.";
+    ExpressionTooDeep = "E0190", "expression-too-deep", Error,
+        "an expression nested deeper than cncc follows",
+        "The expression nests more than 256 levels (brackets, functions or a chain of operators). Controllers allow far fewer (Fanuc: 5 levels of brackets). The block is not run. Split the expression into several assignments.";
+    NotAFiniteNumber = "E0590", "not-a-finite-number", Error,
+        "a calculation whose result is not a number or is infinite",
+        "The value is undefined (a negative number to a fractional power, the square root of a negative number) or too large to hold (EXP[1000], 10**308*10). A controller stops with an alarm here; cncc stops the run at this block. Correct the calculation.";
+    ValueOutOfRange = "E0690", "value-out-of-range", Error,
+        "a value too large for the target's number format",
+        "The target writes lengths, feeds and speeds with a limited number of digits (about 8 before the point): a larger value cannot be programmed and is not written. Check the units and the value in the source.";
+    ActiveTextNeutralised = "W0690", "active-text-neutralised", Warning,
+        "text that the target would read as a command, changed so it stays text",
+        "A comment or message would, written as it is, be read by the target as something else: a LinuxCNC active comment such as `(LOGOPEN,..)`, `(PY,..)` or `(MSG,..)`, a Klartext `~` that continues the block into the next line, a `%` that ends a tape, a parenthesis or a control character. The writer changed the character (the table is `<text>` in the target's dialect spec) and the comment stays a comment. Check the posted text.";
+    TextTransliterated = "W0691", "text-transliterated", Warning,
+        "characters the target cannot read, replaced by the nearest ASCII",
+        "The target reads 7-bit text (its `<text charset=\"ascii\">`): letters with accents are written without them, other characters as `?`.";
 }
 
 impl Code {
