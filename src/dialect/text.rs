@@ -93,6 +93,9 @@ impl TextRules {
             } else if let Some(r) = self.rule_for(c, form) {
                 s.push_str(&r.with);
                 note(&mut out.replaced, c);
+            } else if let Some(r) = delimiter(c, form) {
+                s.push(r);
+                note(&mut out.replaced, c);
             } else if self.ascii && !c.is_ascii() {
                 out.transliterated = true;
                 s.push_str(transliterate(c));
@@ -150,6 +153,17 @@ impl TextRules {
             }
         }
         found
+    }
+}
+
+/// What no table can allow: the form's own delimiters (`( )` nest in no
+/// reader cncc knows, `"` ends a string).
+fn delimiter(c: char, form: TextForm) -> Option<char> {
+    match (form, c) {
+        (TextForm::Paren, '(') => Some('['),
+        (TextForm::Paren, ')') => Some(']'),
+        (TextForm::Quoted, '"') => Some('\''),
+        _ => None,
     }
 }
 
