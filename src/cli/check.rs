@@ -33,7 +33,7 @@ pub struct CheckArgs<'a> {
 pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
     let mut all = Vec::new();
     if let Some(t) = a.tool_table {
-        let (tid, ttext) = ctx.add_file(t)?;
+        let (tid, ttext) = ctx.add_side_file(t)?;
         let (table, d) = ToolTable::parse(&ttext, tid);
         all.extend(d);
         a.options.tool_table = table;
@@ -174,7 +174,8 @@ pub(crate) fn read_whole(
     id: crate::span::FileId,
     spec: &DialectSpec,
 ) -> Result<std::rc::Rc<crate::ir::Program>, Failure> {
-    let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    let bytes = crate::cli::context::read_limited(path, crate::cli::context::MAX_INPUT)
+        .map_err(|e| Failure(format!("{}: {e}", path.display())))?;
     let text = crate::driver::decode(&bytes);
     drop(bytes);
     Ok(std::rc::Rc::new(read_program(&text, id, spec).0))
