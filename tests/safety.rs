@@ -241,3 +241,126 @@ fn a_killed_run_leaves_no_temporary_file() {
 extern "C" {
     fn kill(pid: i32, sig: i32) -> i32;
 }
+
+#[test]
+fn a_50_mb_single_line_is_refused_quickly() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "words.nc", &format!("%\nO1\nG1 {}\nM30\n%\n", "X1 Y2 ".repeat(8 << 20)));
+    let t = std::time::Instant::now();
+    let out = check("fanuc", &p);
+    ended_normally(&out);
+    assert!(text(&out.stderr).contains("E0191"));
+    assert!(t.elapsed().as_secs() < 30);
+}
+
+#[test]
+fn thousands_of_errors_on_a_long_line_print_a_window_and_a_count() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "rep.nc", &format!("%\nO1\nG0 {}\nM30\n%\n", "X1 ".repeat(50_000)));
+    let out = check("fanuc", &p);
+    ended_normally(&out);
+    let err = text(&out.stderr);
+    assert!(err.len() < 200_000, "{} bytes of diagnostics", err.len());
+    assert!(err.contains("more E0205 repeated-word diagnostics not shown"), "{:.2000}", &err[err.len().saturating_sub(2000)..]);
+}
+
+#[test]
+fn a_tool_table_from_dev_zero_is_a_clear_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "a.ngc", "G0 X1\nM2\n");
+    let out = cncc(&["check", "--tool-table", "/dev/zero", &p.display().to_string()]);
+    ended_normally(&out);
+    assert!(text(&out.stderr).contains("larger than 16 MiB"), "{}", text(&out.stderr));
+}
+
+fn port(file: &Path, from: &str, to: &str) -> Output {
+    cncc(&["port", &file.display().to_string(), "--from", from, "--to", to, "--verify"])
+}
+
+#[test]
+fn fanuc_logopen_ported_to_linuxcnc_is_neutralised_with_a_warning() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "a.nc", "%\nO1\n(LOGOPEN,/home/cnc/x.txt)\n( py ,print[1])\nG0 X1.\nM30\n%\n");
+    let out = port(&p, "fanuc", "linuxcnc");
+    let (o, e) = (text(&out.stdout), text(&out.stderr));
+    assert!(e.contains("W0690") && e.contains("a.nc:3:1"), "{e}");
+    assert!(o.contains("(LOGOPEN:/home/cnc/x.txt)") && o.contains("( py :print[1])"), "{o}");
+    assert!(!o.contains("LOGOPEN,") && !o.contains("py ,"), "{o}");
+}
+
+#[test]
+fn siemens_py_comment_ported_to_linuxcnc_is_neutralised() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "a.mpf", "G0 X0\n; py,__import__('os')\nG0 Z50\nM30\n");
+    let out = port(&p, "siemens840d", "linuxcnc");
+    let (o, e) = (text(&out.stdout), text(&out.stderr));
+    assert!(e.contains("W0690") && e.contains("`PY`"), "{e}");
+    assert!(o.contains("py:__import__"), "{o}");
+}
+
+#[test]
+fn a_fanuc_comment_ending_in_tilde_does_not_swallow_the_retract_in_klartext() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "a.nc", "%\nO1\nG0 X0. Y0. Z5.\n(RETRACT ~)\nG0 Z50.\nG0 X100.\nM30\n%\n");
+    let out = port(&p, "fanuc", "heidenhain");
+    let (o, e) = (text(&out.stdout), text(&out.stderr));
+    assert_eq!(out.status.code(), Some(0), "{e}");
+    assert!(e.contains("verify: OK"), "{e}");
+    assert!(o.contains("L Z+50 FMAX"), "{o}");
+    assert!(!o.lines().any(|l| l.trim_end().ends_with('~')), "{o}");
+    // Read back, the retract is still a move of its own.
+    let h = write(dir.path(), "a.h", &o);
+    let canon = cncc(&["canon", "--dialect", "heidenhain", &h.display().to_string()]);
+    assert!(text(&canon.stdout).contains("50.0000"), "{}", text(&canon.stdout));
+}
+
+#[test]
+fn percent_and_non_ascii_in_fanuc_comments_are_escaped() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "a.ngc", "(50% OFF, Bohrung Ø12 für)\nG0 X1\nM2\n");
+    for to in ["fanuc", "haas"] {
+        let out = port(&p, "linuxcnc", to);
+        let (o, e) = (text(&out.stdout), text(&out.stderr));
+        let body: Vec<&str> = o.lines().filter(|l| l.starts_with('(')).collect();
+        assert!(body.iter().all(|l| !l.contains('%') && l.is_ascii()), "{to}: {o}");
+        assert!(e.contains("W0690") || e.contains("W0691"), "{to}: {e}");
+    }
+}
+
+/// The Part 21 fixture with its project id and first workingstep's name.
+fn evil_stepnc(dir: &Path, id: &str, ws: &str, z: &str) -> PathBuf {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let s = std::fs::read_to_string(root.join("tests/programs/stepnc/tapped_holes.stp")).unwrap();
+    let s = s
+        .replace("PROJECT('TAPPED HOLES'", &format!("PROJECT('{id}'"))
+        .replace("MACHINING_WORKINGSTEP('WS DRILL M8'", &format!("MACHINING_WORKINGSTEP('{ws}'"))
+        .replace("#62=CARTESIAN_POINT('',(0.,0.,-16.));", &format!("#62=CARTESIAN_POINT('',(0.,0.,{z}));"));
+    write(dir, "evil.stp", &s)
+}
+
+#[test]
+fn a_stepnc_project_id_never_becomes_a_linuxcnc_command() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = evil_stepnc(dir.path(), "LOGOPEN,/home/cnc/x", "py,import os ~", "-16.");
+    let out = cncc(&["post", &p.display().to_string(), "--to", "linuxcnc"]);
+    let (o, e) = (text(&out.stdout), text(&out.stderr));
+    assert_eq!(out.status.code(), Some(0), "{e}");
+    assert!(e.contains("W0690"), "{e}");
+    assert!(o.contains("(LOGOPEN:/home/cnc/x)") && !o.contains("LOGOPEN,"), "{o}");
+    let out = cncc(&["post", &p.display().to_string(), "--to", "heidenhain"]);
+    let o = text(&out.stdout);
+    assert!(!o.lines().any(|l| l.trim_end().ends_with('~')), "{o}");
+}
+
+#[test]
+fn a_hole_depth_of_1e12_mm_is_refused_by_the_post() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = evil_stepnc(dir.path(), "TAPPED HOLES", "WS DRILL M8", "-1.E12");
+    for to in ["fanuc", "linuxcnc", "siemens840d", "heidenhain", "haas"] {
+        let out = cncc(&["post", &p.display().to_string(), "--to", to]);
+        let e = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{to}: {e}");
+        assert!(e.contains("E0690"), "{to}: {e}");
+        assert!(text(&out.stdout).is_empty(), "{to}");
+    }
+}
