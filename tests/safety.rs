@@ -364,3 +364,29 @@ fn a_hole_depth_of_1e12_mm_is_refused_by_the_post() {
         assert!(text(&out.stdout).is_empty(), "{to}");
     }
 }
+
+/// The fuzz targets' entry points (interpreter, port, post) on hostile
+/// samples, so CI runs them briefly even without cargo-fuzz.
+#[test]
+fn fuzz_entry_points_survive_hostile_samples() {
+    let samples: Vec<Vec<u8>> = vec![
+        b"#1=[-1]**0.5\nG0 X#1\nM2\n".to_vec(),
+        b"WHILE[1 EQ 1]DO1\nG91 G0 X1\nEND1\nM30\n".to_vec(),
+        b"o1 while [1]\nG0 X1\no1 endwhile\nM2\n".to_vec(),
+        b"R1=1\nLOOP\nG0 X=R1\nENDLOOP\nM30\n".to_vec(),
+        b"BEGIN PGM A MM\nLBL 1\nCALL LBL 1\nEND PGM A MM\n".to_vec(),
+        format!("#1=1{}\n", "+1".repeat(5000)).into_bytes(),
+        (0u8..=255).collect(),
+        b"(LOGOPEN,x)\n(50% ~)\nG0 X1\nM30\n".to_vec(),
+    ];
+    for s in &samples {
+        for d in cncc::fuzzing::DIALECTS {
+            cncc::fuzzing::interpret(d, s);
+            cncc::fuzzing::port(d, s);
+        }
+        cncc::fuzzing::post(s);
+    }
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let stp = std::fs::read(root.join("tests/programs/stepnc/tapped_holes.stp")).unwrap();
+    cncc::fuzzing::post(&stp);
+}
