@@ -390,3 +390,16 @@ fn fuzz_entry_points_survive_hostile_samples() {
     let stp = std::fs::read(root.join("tests/programs/stepnc/tapped_holes.stp")).unwrap();
     cncc::fuzzing::post(&stp);
 }
+
+#[test]
+fn a_plot_of_a_long_helix_is_bounded() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "helix.ngc", "G21 G90 G17 F100\nG0 X0 Y0 Z0\nG1 X5\nG2 X5 Y0 I-5 J0 Z-100 P100000000\nM2\n");
+    let svg = dir.path().join("x.svg");
+    let t = std::time::Instant::now();
+    let out = cncc(&["plot", &p.display().to_string(), "-o", &svg.display().to_string()]);
+    ended_normally(&out);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(std::fs::metadata(&svg).unwrap().len() < 10_000_000);
+    assert!(t.elapsed().as_secs() < 30);
+}
