@@ -17,7 +17,12 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
             if let StmtKind::Comment { text, .. } = &mut s.kind {
                 // Only the active word is changed here; the writer escapes
                 // the characters for the form it writes.
-                let mut kept = text.clone();
+                // Control characters are written as spaces: the word is
+                // looked for in the text as the target will read it.
+                let mut kept: String = text
+                    .chars()
+                    .map(|c| if c.is_control() { ' ' } else { c })
+                    .collect();
                 if let Some(word) = &to.text.neutralise(&mut kept) {
                     let d = crate::emit::writer::text_warning(
                         &to.name,
