@@ -138,7 +138,8 @@ fn one_failing_file_does_not_stop_the_others() {
     let err = text(&out.stderr);
     assert!(err.contains("missing.ngc"), "{err}");
     assert!(err.contains("bad.ngc") && err.contains("good.ngc"), "{err}");
-    assert_eq!(out.status.code(), Some(1));
+    // The missing file is an I/O failure (2), reported after the others.
+    assert_eq!(out.status.code(), Some(2));
 }
 
 /// `cncc ... | head`: the reader closes the pipe early.

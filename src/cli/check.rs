@@ -60,7 +60,11 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
             eprintln!("{s}");
         }
     }
-    Ok(if errors > 0 || failed {
+    // A file that could not be checked at all is the status an I/O
+    // failure always had (2), once every other file is checked.
+    Ok(if failed {
+        crate::cli::context::EXIT_USAGE
+    } else if errors > 0 {
         EXIT_INPUT_ERRORS
     } else {
         EXIT_OK
