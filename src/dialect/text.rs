@@ -4,7 +4,7 @@
 //! trailing `~` continues a Klartext block, `)` closes a comment, `"` ends a
 //! string), the words that make a comment a command (LinuxCNC's
 //! `(LOGOPEN,..)`, `(PY,..)`, `(MSG,..)`...), and whether the target reads
-//! only 7-bit text. Control characters never reach a program.
+//! only 7-bit text. Control characters (but tabs) never reach a program.
 
 /// Where the text is written: the form decides which delimiter it must
 /// not hold.
@@ -87,7 +87,7 @@ impl TextRules {
         let mut out = Escaped::default();
         let mut s = String::with_capacity(text.len());
         for c in text.chars() {
-            if c.is_control() {
+            if c.is_control() && c != '\t' {
                 s.push(' ');
                 note(&mut out.replaced, c);
             } else if let Some(r) = self.rule_for(c, form) {

@@ -21,7 +21,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
                 // looked for in the text as the target will read it.
                 let mut kept: String = text
                     .chars()
-                    .map(|c| if c.is_control() { ' ' } else { c })
+                    .map(|c| if c.is_control() && c != '\t' { ' ' } else { c })
                     .collect();
                 if let Some(word) = &to.text.neutralise(&mut kept) {
                     let d = crate::emit::writer::text_warning(
