@@ -78,9 +78,18 @@ impl<'s> Reader<'s> {
             offset,
             spec: self.spec,
         };
+        if text.len() > MAX_LINE {
+            diags.push(too_long(Span::new(self.file, offset as usize, offset as usize + 80.min(text.len()))));
+            return false;
+        }
+        let first_expr = exprs.len();
         let Some(mut syntax) = self.front.parse_line(&input, exprs, diags) else {
             return false;
         };
+        if let Some(deep) = crate::ir::depth::first_too_deep(exprs, first_expr) {
+            diags.push(too_deep(exprs[deep].span));
+            return false;
+        }
         self.lowering.recycle(&mut block.stmts);
         self.lowering
             .lower(&mut syntax.items, exprs, diags, &mut block.stmts);
@@ -101,6 +110,33 @@ impl<'s> Reader<'s> {
         diags.extend(self.structure.finish());
         diags
     }
+}
+
+/// The longest line read as a block: no controller takes one near it,
+/// and reading a longer one would hold far more memory than the file.
+pub const MAX_LINE: usize = 1 << 20;
+
+/// E0191 for a line over [`MAX_LINE`].
+fn too_long(span: Span) -> Diagnostic {
+    Diagnostic::new(
+        crate::diag::Code::BlockTooLong,
+        format!("a line longer than {MAX_LINE} bytes"),
+    )
+    .primary(span, "this line is not read")
+    .help("split it into several blocks")
+}
+
+/// E0190 at the part of an expression that crosses the depth limit.
+fn too_deep(span: Span) -> Diagnostic {
+    Diagnostic::new(
+        crate::diag::Code::ExpressionTooDeep,
+        format!(
+            "expression nested more than {} levels deep",
+            crate::ir::depth::MAX_EXPR_DEPTH
+        ),
+    )
+    .primary(span, "too deep from here on; this block is not run")
+    .help("split the expression into several assignments")
 }
 
 fn empty_block() -> Block {
@@ -413,7 +449,7 @@ impl<'a> FsLoader<'a> {
 impl crate::interp::flow::ProgramLoader for FsLoader<'_> {
     fn load(&mut self, target: &crate::ir::CallTarget) -> Option<std::rc::Rc<Program>> {
         let path = self.candidates(target).into_iter().find(|p| p.is_file())?;
-        let text = decode(&std::fs::read(&path).ok()?);
+        let text = decode(&crate::cli::context::read_limited(&path, crate::cli::context::MAX_INPUT).ok()?);
         let id = self.files.add(path.display().to_string(), text.clone());
         let (p, d) = read_program(&text, id, &self.spec);
         self.diags.extend(d);

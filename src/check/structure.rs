@@ -64,6 +64,9 @@ struct Open {
 pub struct StructureChecker {
     end_required: bool,
     stack: Vec<Open>,
+    /// How many `Sub` openers `stack` holds (kept so that asking is O(1)
+    /// however deep the nesting).
+    subs_open: usize,
     diags: Vec<Diagnostic>,
     /// Sequence numbers and labels of the current program.
     labels: Labels,
@@ -81,6 +84,7 @@ impl StructureChecker {
         StructureChecker {
             end_required: spec.has(Capability::ProgramEndRequired),
             stack: Vec::new(),
+            subs_open: 0,
             diags: Vec::new(),
             labels: Labels::new(spec.has(Capability::PolePaths)),
             subs: HashMap::new(),
@@ -115,6 +119,7 @@ impl StructureChecker {
     /// Reports what is still open or unresolved, and a missing program end.
     pub fn finish(mut self) -> Vec<Diagnostic> {
         self.labels.close_scope(&mut self.diags);
+        self.subs_open = 0;
         for open in std::mem::take(&mut self.stack) {
             let name = describe(open.kind, &open.id);
             self.diags.push(
@@ -142,7 +147,7 @@ impl StructureChecker {
     }
 
     fn in_sub(&self) -> bool {
-        self.in_proc || self.stack.iter().any(|o| o.kind == Opener::Sub)
+        self.in_proc || self.subs_open > 0
     }
 
     fn stmt(&mut self, s: &Stmt) {
@@ -211,6 +216,9 @@ impl StructureChecker {
     }
 
     fn open(&mut self, kind: Opener, id: &FlowId, span: Span) {
+        if kind == Opener::Sub {
+            self.subs_open += 1;
+        }
         self.stack.push(Open {
             kind,
             id: id.clone(),
@@ -234,16 +242,26 @@ impl StructureChecker {
             return self.unopened(span, word, accepts[0]);
         };
         if fits(top) {
-            self.stack.pop();
+            self.pop();
             return;
         }
         let top = top.clone();
         self.diags.push(self.mismatch(span, word, &top));
         if let Some(i) = self.stack.iter().rposition(fits) {
-            self.stack.truncate(i);
+            while self.stack.len() > i {
+                self.pop();
+            }
         } else if accepts.contains(&top.kind) {
-            self.stack.pop();
+            self.pop();
         }
+    }
+
+    fn pop(&mut self) -> Option<Open> {
+        let o = self.stack.pop()?;
+        if o.kind == Opener::Sub {
+            self.subs_open -= 1;
+        }
+        Some(o)
     }
 
     fn mismatch(&self, span: Span, word: &str, top: &Open) -> Diagnostic {

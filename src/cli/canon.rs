@@ -46,7 +46,7 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
     }
     let mut diags = Vec::new();
     if let Some(t) = a.tool_table {
-        let (tid, ttext) = ctx.add_file(t)?;
+        let (tid, ttext) = ctx.add_side_file(t)?;
         let (table, d) = ToolTable::parse(&ttext, tid);
         diags.extend(d);
         a.options.tool_table = table;

@@ -33,7 +33,7 @@ pub struct CheckArgs<'a> {
 pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
     let mut all = Vec::new();
     if let Some(t) = a.tool_table {
-        let (tid, ttext) = ctx.add_file(t)?;
+        let (tid, ttext) = ctx.add_side_file(t)?;
         let (table, d) = ToolTable::parse(&ttext, tid);
         all.extend(d);
         a.options.tool_table = table;
@@ -42,12 +42,16 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
     a.options.keep_going = true;
     // A check names invented tool sizes only where they mattered (W0592).
     a.options.report_tool_sizes = false;
+    let mut failed = false;
     for path in a.files {
-        if crate::stepnc::is_part21(path, &read_head(path)?) {
-            all.extend(crate::cli::stepnc::check_file(ctx, path)?);
-            continue;
+        match check_one(ctx, path, &a) {
+            Ok(d) => all.extend(d),
+            Err(Failure(msg)) => {
+                // Each file is independent: the others are still checked.
+                eprintln!("error: {msg}");
+                failed = true;
+            }
         }
-        all.extend(check_file(ctx, path, &a)?);
     }
     ctx.print(&all, a.format);
     let errors = all.iter().filter(|d| d.severity == Severity::Error).count();
@@ -60,10 +64,40 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
             eprintln!("{s}");
         }
     }
-    Ok(if errors > 0 {
+    // A file that could not be checked at all is the status an I/O
+    // failure always had (2), once every other file is checked.
+    Ok(if failed {
+        crate::cli::context::EXIT_USAGE
+    } else if errors > 0 {
         EXIT_INPUT_ERRORS
     } else {
         EXIT_OK
+    })
+}
+
+/// Checks one file (a program or STEP-NC); a panic in cncc while checking
+/// it is reported as a failure of that file alone.
+fn check_one(
+    ctx: &mut Context,
+    path: &Path,
+    a: &CheckArgs<'_>,
+) -> Result<Vec<Diagnostic>, Failure> {
+    let run = std::panic::AssertUnwindSafe(|| {
+        if crate::stepnc::is_part21(path, &read_head(path)?) {
+            return crate::cli::stepnc::check_file(ctx, path);
+        }
+        check_file(ctx, path, a)
+    });
+    std::panic::catch_unwind(run).unwrap_or_else(|p| {
+        let what = p
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| p.downcast_ref::<String>().cloned())
+            .unwrap_or_default();
+        Err(Failure(format!(
+            "{}: internal error in cncc while checking this file ({what}); please report it",
+            path.display()
+        )))
     })
 }
 
@@ -200,7 +234,8 @@ pub(crate) fn read_whole(
     id: crate::span::FileId,
     spec: &DialectSpec,
 ) -> Result<std::rc::Rc<crate::ir::Program>, Failure> {
-    let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    let bytes = crate::cli::context::read_limited(path, crate::cli::context::MAX_INPUT)
+        .map_err(|e| Failure(format!("{}: {e}", path.display())))?;
     let text = crate::driver::decode(&bytes);
     drop(bytes);
     Ok(std::rc::Rc::new(read_program(&text, id, spec).0))

@@ -55,7 +55,7 @@ impl Context {
             color: cli.color,
         };
         for path in &cli.dialect_files {
-            let text = match read_text(path) {
+            let text = match read_text_limited(path, MAX_SIDE_FILE) {
                 Ok(t) => t,
                 Err(Failure(m)) => {
                     eprintln!("error: cannot read dialect spec {}: {m}", path.display());
@@ -95,7 +95,16 @@ impl Context {
 
     /// Reads a source file and adds it to the source map.
     pub fn add_file(&mut self, path: &Path) -> Result<(FileId, String), Failure> {
-        let text = read_text(path)?;
+        self.add_file_limited(path, MAX_INPUT)
+    }
+
+    /// A side file (tool table...): at most [`MAX_SIDE_FILE`] bytes.
+    pub fn add_side_file(&mut self, path: &Path) -> Result<(FileId, String), Failure> {
+        self.add_file_limited(path, MAX_SIDE_FILE)
+    }
+
+    fn add_file_limited(&mut self, path: &Path, limit: u64) -> Result<(FileId, String), Failure> {
+        let text = read_text_limited(path, limit)?;
         let id = self.files.add(path.display().to_string(), text.clone());
         Ok((id, text))
     }
@@ -117,10 +126,38 @@ impl Context {
     }
 }
 
-/// Reads a file as text (Latin-1 for lines that are not UTF-8).
+/// The largest program or STEP-NC file read whole.
+pub const MAX_INPUT: u64 = 256 << 20;
+/// The largest side file (tool table, dialect spec, tool map, stock).
+pub const MAX_SIDE_FILE: u64 = 16 << 20;
+
+/// Reads a file as text (Latin-1 for lines that are not UTF-8), up to
+/// [`MAX_INPUT`] bytes.
 pub fn read_text(path: &Path) -> Result<String, Failure> {
-    let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    read_text_limited(path, MAX_INPUT)
+}
+
+/// [`read_text`] with a size limit: a larger file (or an endless one such
+/// as `/dev/zero`) is a clear error, never memory exhausted.
+pub fn read_text_limited(path: &Path, limit: u64) -> Result<String, Failure> {
+    let bytes = read_limited(path, limit).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
     Ok(crate::driver::decode(&bytes))
+}
+
+/// A file's bytes, refused past `limit`.
+pub fn read_limited(path: &Path, limit: u64) -> std::io::Result<Vec<u8>> {
+    use std::io::Read;
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)?
+        .take(limit + 1)
+        .read_to_end(&mut bytes)?;
+    if bytes.len() as u64 > limit {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!("larger than {} MiB, the most cncc reads here", limit >> 20),
+        ));
+    }
+    Ok(bytes)
 }
 
 /// Says which dialect was chosen and why, on stderr.

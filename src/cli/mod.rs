@@ -1,6 +1,7 @@
 //! The `cncc` command line: argument parsing and one module per command.
 
 pub mod args;
+pub mod atomic;
 pub mod canon;
 pub mod check;
 pub mod context;

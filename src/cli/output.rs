@@ -1,6 +1,7 @@
 //! Writing results: whole or not at all, and diagnostics to stderr.
 
 use crate::cli::args::{ColorChoice, Format};
+use crate::cli::atomic::AtomicFile;
 use crate::diag::{render, Diagnostic};
 use crate::source::SourceMap;
 use std::io::{IsTerminal, Write};
@@ -14,15 +15,14 @@ pub fn write_atomically(path: &Path, text: &str) -> std::io::Result<()> {
 
 /// [`write_atomically`] for bytes (pictures).
 pub fn write_bytes_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let dir = match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => Path::new("."),
-    };
-    let mut tmp = tempfile::NamedTempFile::new_in(dir)?;
-    tmp.write_all(bytes)?;
-    tmp.as_file().sync_all()?;
-    tmp.persist(path).map_err(|e| e.error)?;
-    Ok(())
+    let mut tmp = AtomicFile::create(path)?;
+    tmp.file().write_all(bytes).map_err(|e| named(path, e))?;
+    tmp.commit()
+}
+
+/// The error with the output's path in it.
+fn named(path: &Path, e: std::io::Error) -> std::io::Error {
+    std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
 }
 
 /// Writes the result to the output file, or to stdout.
@@ -57,18 +57,11 @@ pub fn emit_output_with(
 ) -> std::io::Result<()> {
     match output {
         Some(path) => {
-            let dir = match path.parent() {
-                Some(p) if !p.as_os_str().is_empty() => p,
-                _ => Path::new("."),
-            };
-            let mut tmp = tempfile::NamedTempFile::new_in(dir)?;
-            let mut out = std::io::BufWriter::new(tmp.as_file_mut());
-            write(&mut out)?;
-            out.flush()?;
+            let mut tmp = AtomicFile::create(path)?;
+            let mut out = std::io::BufWriter::new(tmp.file());
+            write(&mut out).and_then(|()| out.flush()).map_err(|e| named(path, e))?;
             drop(out);
-            tmp.as_file().sync_all()?;
-            tmp.persist(path).map_err(|e| e.error)?;
-            Ok(())
+            tmp.commit()
         }
         None => {
             let mut out = std::io::BufWriter::new(std::io::stdout().lock());

@@ -34,7 +34,7 @@ pub(crate) fn load_tool_table(
     let Some(t) = table else {
         return Ok(Vec::new());
     };
-    let (tid, ttext) = ctx.add_file(t)?;
+    let (tid, ttext) = ctx.add_side_file(t)?;
     let (table, d) = ToolTable::parse(&ttext, tid);
     options.tool_table = table;
     Ok(d)

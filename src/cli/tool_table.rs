@@ -18,7 +18,7 @@ pub fn load(
     path: &Path,
     units: LengthUnit,
 ) -> Result<(ToolTable, Vec<Diagnostic>), Failure> {
-    let (id, text) = ctx.add_file(path)?;
+    let (id, text) = ctx.add_side_file(path)?;
     let (table, mut diags) = ToolTable::parse(&text, id);
     if units == LengthUnit::Inch {
         diags.extend(looks_metric(&table, &text, id));

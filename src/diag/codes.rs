@@ -536,6 +536,24 @@ codes! {
     CornerFeedNotSimulated = "W0531", "corner-feed-not-simulated", Warning,
         "a corner feed override (Fanuc G62, Siemens G62/G621) is not simulated",
         "The control slows the feed at (inside) corners in this mode; the path itself does not change. cncc runs on with the path mode it had, so the canonical output, plots and time estimates keep the programmed feed at corners.";
+    BlockTooLong = "E0191", "block-too-long", Error,
+        "a block longer than cncc reads (1 MiB)",
+        "A block, with all the lines continued into it, is longer than 1 MiB. No controller accepts such a block; it is not read, and the lines continued after the limit are not joined to it. Split it into several blocks.";
+    ExpressionTooDeep = "E0190", "expression-too-deep", Error,
+        "an expression nested deeper than cncc follows",
+        "The expression nests more than 256 levels (brackets, functions or a chain of operators). Controllers allow far fewer (Fanuc: 5 levels of brackets). The block is not run. Split the expression into several assignments.";
+    NotAFiniteNumber = "E0590", "not-a-finite-number", Error,
+        "a calculation whose result is not a number or is infinite",
+        "The value is undefined (a negative number to a fractional power, the square root of a negative number) or too large to hold (EXP[1000], 10**308*10). A controller stops with an alarm here; cncc stops the run at this block. Correct the calculation.";
+    ValueOutOfRange = "E0690", "value-out-of-range", Error,
+        "a value too large for the target's number format",
+        "The target writes lengths, feeds and speeds with a limited number of digits (about 8 before the point): a larger value cannot be programmed and is not written. Check the units and the value in the source.";
+    ActiveTextNeutralised = "W0690", "active-text-neutralised", Warning,
+        "text that the target would read as a command, changed so it stays text",
+        "A comment or message would, written as it is, be read by the target as something else: a LinuxCNC active comment such as `(LOGOPEN,..)`, `(PY,..)` or `(MSG,..)`, a Klartext `~` that continues the block into the next line, a `%` that ends a tape, a parenthesis or a control character. The writer changed the character (the table is `<text>` in the target's dialect spec) and the comment stays a comment. Check the posted text.";
+    TextTransliterated = "W0691", "text-transliterated", Warning,
+        "characters the target cannot read, replaced by the nearest ASCII",
+        "The target reads 7-bit text (its `<text charset=\"ascii\">`): letters with accents are written without them, other characters as `?`.";
 }
 
 impl Code {

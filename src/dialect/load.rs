@@ -27,6 +27,7 @@ const ELEMENTS: &[&str] = &[
     "command",
     "variables",
     "remove",
+    "text",
 ];
 
 /// Reads one spec. `resolve_base` finds the (already loaded) spec that
@@ -152,6 +153,7 @@ pub fn default_numbers() -> NumberRules {
         point_on_lengths: false,
         feed_places: 3,
         angle_places: 3,
+        integer_digits: 8,
     }
 }
 
@@ -206,6 +208,10 @@ fn read_children(cx: &mut Ctx, root: &Node, spec: &mut DialectSpec) {
                 read_numbers(cx, n, &mut spec.numbers);
             }
             "remove" => read_remove(cx, n, spec),
+            "text" => {
+                seen.check(cx, "text".into(), "`<text>`", n.span);
+                spec.text = super::load_text::read_text(cx, n);
+            }
             _ => read_entry(cx, n, spec, &mut seen),
         }
     }
@@ -342,6 +348,7 @@ fn read_numbers(cx: &mut Ctx, n: &Node, r: &mut NumberRules) {
         "point-on-lengths",
         "feed-places",
         "angle-places",
+        "integer-digits",
         "doc",
         "confidence",
     ];
@@ -378,6 +385,13 @@ fn read_numbers(cx: &mut Ctx, n: &Node, r: &mut NumberRules) {
         ("feed-places", &mut r.feed_places),
         ("angle-places", &mut r.angle_places),
     ];
+    if let Some(a) = n.attr("integer-digits") {
+        if let Some(v) = cx.parse(a, "a count of digits from 1 to 12", "as in `5`", |s| {
+            s.parse::<u8>().ok().filter(|p| (1..=12).contains(p))
+        }) {
+            r.integer_digits = v;
+        }
+    }
     for (name, slot) in places {
         if let Some(a) = n.attr(name) {
             if let Some(v) = cx.parse(a, "a count of places from 0 to 9", "as in `3`", |s| {

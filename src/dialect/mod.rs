@@ -6,10 +6,12 @@ pub mod detect;
 pub mod listing;
 pub mod load;
 pub(crate) mod load_items;
+mod load_text;
 #[cfg(test)]
 mod load_tests;
 pub mod meaning;
 pub mod spec;
+pub mod text;
 pub(crate) mod xml;
 
 pub use builtin::{builtin, builtins, Registry};

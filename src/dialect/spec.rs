@@ -221,6 +221,9 @@ pub struct NumberRules {
     pub feed_places: u8,
     /// Most decimal places for angles.
     pub angle_places: u8,
+    /// Most digits before the point a value may have (`integer-digits`):
+    /// a post refuses a larger value (E0690).
+    pub integer_digits: u8,
 }
 
 /// One G or M code.
@@ -370,6 +373,8 @@ pub struct DialectSpec {
     pub commands: Vec<String>,
     pub variables: Vec<VarRange>,
     pub capabilities: BTreeSet<Capability>,
+    /// What comments and messages may hold (`<text>`).
+    pub text: super::text::TextRules,
     /// The letter for canned-cycle repeats (`K` or `L`).
     pub repeat_letter: char,
     /// Block number increment when writing (0: keep the program's numbers).
@@ -403,6 +408,7 @@ impl DialectSpec {
             commands: Vec::new(),
             variables: Vec::new(),
             capabilities: BTreeSet::new(),
+            text: Default::default(),
             repeat_letter: 'K',
             doc: String::new(),
             index: CodeIndex::default(),

@@ -1,4 +1,4 @@
-//! The Heidenhain Klartext writer ([`write_klartext`]), and how the other
+//! The Heidenhain Klartext writer ([`write_klartext_warned`]), and how the other
 //! families write (or refuse) the Heidenhain-only statements ([`foreign`]).
 //!
 //! Every block gets a number (0, 1, 2 ... as the control renumbers on
@@ -41,8 +41,12 @@ pub(super) struct Out {
     pub arc_absolute: bool,
 }
 
-/// Writes `p` as Klartext: the whole text, or all the diagnostics.
-pub fn write_klartext(p: &Program, spec: &DialectSpec) -> Result<String, Vec<Diagnostic>> {
+/// Writes `p` as Klartext: the whole text and the warnings, or all the
+/// diagnostics.
+pub fn write_klartext_warned(
+    p: &Program,
+    spec: &DialectSpec,
+) -> Result<(String, Vec<Diagnostic>), Vec<Diagnostic>> {
     let mut w = Writer::new(p, spec, Style::Sinumerik);
     let mut out = Out::default();
     let stmts = || p.blocks.iter().flat_map(|b| b.stmts.iter());
@@ -75,7 +79,7 @@ pub fn write_klartext(p: &Program, spec: &DialectSpec) -> Result<String, Vec<Dia
             None => text.push_str(&format!("{i} {l}\n")),
         }
     }
-    Ok(text)
+    Ok((text, w.diags))
 }
 
 pub(super) fn unit_word(u: Option<LengthUnit>) -> &'static str {

@@ -13,7 +13,7 @@ pub mod number;
 mod sinumerik;
 mod stmt;
 mod word;
-mod writer;
+pub(crate) mod writer;
 
 #[cfg(test)]
 pub(crate) mod tests;
@@ -25,10 +25,18 @@ use writer::{Style, Writer};
 
 /// Writes `p` as `spec`'s dialect: the whole text, or all the diagnostics.
 pub fn write_program(p: &Program, spec: &DialectSpec) -> Result<String, Vec<Diagnostic>> {
+    write_program_warned(p, spec).map(|(t, _)| t)
+}
+
+/// [`write_program`] with the warnings (text the writer had to change).
+pub fn write_program_warned(
+    p: &Program,
+    spec: &DialectSpec,
+) -> Result<(String, Vec<Diagnostic>), Vec<Diagnostic>> {
     let style = match spec.family {
         Family::WordAddress => Style::Bracket,
         Family::Sinumerik => Style::Sinumerik,
-        Family::Klartext => return klartext::write_klartext(p, spec),
+        Family::Klartext => return klartext::write_klartext_warned(p, spec),
     };
     let mut w = Writer::new(p, spec, style);
     let mut out = String::new();
@@ -40,7 +48,7 @@ pub fn write_program(p: &Program, spec: &DialectSpec) -> Result<String, Vec<Diag
     if w.diags.iter().any(Diagnostic::is_error) {
         return Err(w.diags);
     }
-    Ok(out)
+    Ok((out, w.diags))
 }
 
 /// One block: `/1 N10 LABEL: words...`.

@@ -111,6 +111,7 @@ mod tests {
             point_on_lengths: true,
             feed_places: 2,
             angle_places: 3,
+            integer_digits: 8,
         }
     }
 

@@ -15,12 +15,10 @@ use crate::span::Span;
 pub fn message(w: &mut Writer<'_>, text: Option<&str>, span: Span, words: &mut Vec<String>) {
     match text {
         None => words.push("MSG()".to_string()),
-        Some(t) if !t.contains('"') => words.push(format!("MSG(\"{t}\")")),
-        Some(_) => w.cannot(
-            span,
-            "a message containing `\"`",
-            "remove the quote from the text",
-        ),
+        Some(t) => {
+            let t = w.safe_message(t, crate::dialect::text::TextForm::Quoted, span);
+            words.push(format!("MSG(\"{t}\")"))
+        }
     }
 }
 
@@ -31,8 +29,12 @@ pub fn program_start(
     span: Span,
     words: &mut Vec<String>,
 ) {
+    // A file name: letters, digits and `_` only.
     let base = match (name, number) {
-        (Some(n), _) => n.to_string(),
+        (Some(n), _) => n
+            .chars()
+            .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+            .collect(),
         (None, Some(n)) => format!("O{n}"),
         (None, None) => {
             return w.cannot(span, "a program start without a name", "name the program")

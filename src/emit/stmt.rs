@@ -310,22 +310,26 @@ fn comment(
     last: bool,
     words: &mut Vec<String>,
 ) {
+    use crate::dialect::text::TextForm;
     use crate::dialect::Capability::{ParenComments, SemicolonComments, SemicolonEndOfBlock};
     use crate::ir::CommentStyle;
-    // A `(` inside a comment read as `( )` reads back the same way.
-    let paren_ok = w.spec.has(ParenComments)
-        && !text.contains(')')
-        && (style == CommentStyle::Paren || !text.contains('('));
+    // A `(` inside a comment read as `( )` reads back the same way; a `)`
+    // would close it: such text goes to a `;` comment where there is one,
+    // else the target's `<text>` table replaces the parentheses.
+    let paren = w.spec.has(ParenComments);
     let semi = w.spec.has(SemicolonComments) && !w.spec.has(SemicolonEndOfBlock);
-    if paren_ok && (style == CommentStyle::Paren || !semi || !last) {
-        words.push(format!("({text})"));
+    let clean = !text.contains(')') && (style == CommentStyle::Paren || !text.contains('('));
+    if paren && (clean || !semi) && (style == CommentStyle::Paren || !semi || !last) {
+        let t = w.safe_text(text, TextForm::Paren, span);
+        words.push(format!("({t})"));
     } else if semi {
-        w.trailing.push(text.to_string());
+        let t = w.safe_text(text, TextForm::Semicolon, span);
+        w.trailing.push(t);
     } else {
         w.cannot(
             span,
-            "a comment containing parentheses",
-            "the target has only `( )` comments; remove the parentheses from the text",
+            "a comment",
+            "the target has no comment syntax cncc knows",
         );
     }
 }

@@ -16,12 +16,10 @@ pub fn message(w: &mut Writer<'_>, text: Option<&str>, span: Span, words: &mut V
         return;
     }
     match text {
-        Some(t) if !t.contains(')') => words.push(format!("(MSG,{t})")),
-        Some(_) => w.cannot(
-            span,
-            "a message containing `)`",
-            "remove the parenthesis from the text",
-        ),
+        Some(t) => {
+            let t = w.safe_message(t, crate::dialect::text::TextForm::Paren, span);
+            words.push(format!("(MSG,{t})"))
+        }
         None => w.cannot(
             span,
             "clearing the operator message",
@@ -49,7 +47,8 @@ pub fn program_start(
     };
     words.push(format!("O{n:04}"));
     if let Some(name) = name {
-        words.push(format!("({name})"));
+        let t = w.safe_text(name, crate::dialect::text::TextForm::Paren, span);
+        words.push(format!("({t})"));
     }
 }
 

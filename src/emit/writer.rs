@@ -51,6 +51,27 @@ impl<'a> Writer<'a> {
         self.diags.push(d);
     }
 
+    /// `text` made safe for the target's reader in `form` (its spec's
+    /// `<text>` table), with a warning at `span` for what was changed.
+    pub fn safe_text(&mut self, text: &str, form: crate::dialect::text::TextForm, span: Span) -> String {
+        let same = self.spec.answers_to(&self.prog.dialect);
+        self.escaped(text, form, span, same)
+    }
+
+    /// The text of a message (after `MSG,` or in `MSG("..")`): no word
+    /// there makes it a command, only its characters are escaped.
+    pub fn safe_message(&mut self, text: &str, form: crate::dialect::text::TextForm, span: Span) -> String {
+        self.escaped(text, form, span, true)
+    }
+
+    fn escaped(&mut self, text: &str, form: crate::dialect::text::TextForm, span: Span, keep_active: bool) -> String {
+        let e = self.spec.text.escape(text, form, keep_active);
+        if let Some(d) = text_warning(&self.spec.name, &e, Some(span)) {
+            self.diags.push(d);
+        }
+        e.text
+    }
+
     /// E0603: a number the target cannot write exactly.
     pub fn inexact(&mut self, span: Span, why: String) {
         let d = Diagnostic::new(Code::InexactNumber, format!("{} cannot write this number exactly", self.spec.name))
@@ -216,4 +237,53 @@ impl Writer<'_> {
         self.cannot(span, what, &help);
         false
     }
+}
+
+/// W0690/W0691 for text a writer changed, located at `span` (none when the
+/// text is unchanged). Shared by every writer (port and post).
+pub fn text_warning(
+    target: &str,
+    e: &crate::dialect::text::Escaped,
+    span: Option<Span>,
+) -> Option<Diagnostic> {
+    let at = |d: Diagnostic, label: &str| match span {
+        Some(s) => d.primary(s, label.to_string()),
+        None => d,
+    };
+    if let Some(word) = &e.neutralised {
+        return Some(
+            at(
+                Diagnostic::new(
+                    Code::ActiveTextNeutralised,
+                    format!("{target} would run this comment as a command (`{word}`)"),
+                ),
+                "written as a plain comment",
+            )
+            .note(format!("written as `{}`", e.text))
+            .help("write the command itself if it was meant, not as a comment"),
+        );
+    }
+    if !e.replaced.is_empty() {
+        let chars: Vec<String> = e.replaced.iter().map(|c| format!("{c:?}")).collect();
+        return Some(
+            at(
+                Diagnostic::new(
+                    Code::ActiveTextNeutralised,
+                    format!("characters {target} would read as syntax in a comment: {}", chars.join(" ")),
+                ),
+                "replaced so that the text stays a comment",
+            )
+            .note(format!("written as `{}`", e.text)),
+        );
+    }
+    e.transliterated.then(|| {
+        at(
+            Diagnostic::new(
+                Code::TextTransliterated,
+                format!("{target} reads 7-bit text: characters written as the nearest ASCII"),
+            ),
+            "transliterated",
+        )
+        .note(format!("written as `{}`", e.text))
+    })
 }

@@ -29,7 +29,24 @@ impl Interp<'_, '_> {
         }
     }
 
+    /// An expression's value; a result that is NaN or infinite is E0590
+    /// where it is computed (as rs274 refuses a negative number to a
+    /// fractional power), so no such value reaches a move.
     pub fn eval(&mut self, id: ExprId, exprs: &Arena<Expr>) -> Result<Num, Stop> {
+        match self.eval_unchecked(id, exprs)? {
+            Some(v) if !v.is_finite() => {
+                let what = if v.is_nan() {
+                    "this calculation has no value (NaN)"
+                } else {
+                    "this calculation overflows to infinity"
+                };
+                Err(self.error_at(exprs[id].span, Code::NotAFiniteNumber, what))
+            }
+            v => Ok(v),
+        }
+    }
+
+    fn eval_unchecked(&mut self, id: ExprId, exprs: &Arena<Expr>) -> Result<Num, Stop> {
         let e = &exprs[id];
         let span = e.span;
         Ok(match &e.kind {

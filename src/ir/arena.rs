@@ -81,7 +81,14 @@ impl<T> Arena<T> {
     }
 
     pub fn iter(&self) -> impl Iterator<Item = (Handle<T>, &T)> {
-        self.items.iter().enumerate().map(|(i, v)| {
+        self.iter_from(0)
+    }
+
+    /// The values from index `from` on, with their handles.
+    pub fn iter_from(&self, from: usize) -> impl Iterator<Item = (Handle<T>, &T)> {
+        let from = from.min(self.items.len());
+        self.items[from..].iter().enumerate().map(move |(i, v)| {
+            let i = i + from;
             (
                 Handle {
                     index: i as u32,

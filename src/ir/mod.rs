@@ -7,6 +7,7 @@
 //! referred to by handle; every node carries its source span.
 
 pub mod arena;
+pub mod depth;
 pub mod expr;
 pub mod num;
 pub mod print;

@@ -47,6 +47,7 @@ fn rules(integer_lengths: IntegerLengths) -> NumberRules {
         point_on_lengths: true,
         feed_places: 1,
         angle_places: 3,
+        integer_digits: 8,
     }
 }
 

@@ -204,7 +204,7 @@ fn draw_move(layer: &mut Layer, view: View, m: &Move, merge: f64, chord: f64) {
                     centre,
                     r: g.radius(m.from),
                     start: (from.1 - centre.1).atan2(from.0 - centre.0),
-                    sweep: sign * g.sweep(m.from, m.to),
+                    sweep: bounded_sweep(sign * g.sweep(m.from, m.to)),
                 };
                 layer.arc_to(seg, to);
             }
@@ -215,6 +215,17 @@ fn draw_move(layer: &mut Layer, view: View, m: &Move, merge: f64, chord: f64) {
             }
         },
     }
+}
+
+/// A circle seen whole draws the same pixels however many turns it
+/// makes: more than one turn is drawn as one to two turns ending at the
+/// same angle, so a helix of a million turns is a bounded picture.
+fn bounded_sweep(sweep: f64) -> f64 {
+    use std::f64::consts::TAU;
+    if sweep.abs() <= 2.0 * TAU {
+        return sweep;
+    }
+    sweep % TAU + TAU * sweep.signum()
 }
 
 #[cfg(test)]

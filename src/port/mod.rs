@@ -57,6 +57,7 @@ mod spf;
 pub mod subload;
 mod tnc_labels;
 pub mod to_named;
+mod text;
 pub mod to_tnc;
 pub mod to_word;
 mod tool_call;
@@ -113,6 +114,7 @@ pub fn port_program(
     groups::run(&mut out, to);
     tool_call::run(&mut out, from, to);
     to_tnc::subprograms::run(&mut out, from, to, &mut diags);
+    text::run(&mut out, from, to, &mut diags);
     out.dialect = to.id.clone();
     (out, diags)
 }

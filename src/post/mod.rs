@@ -122,6 +122,7 @@ pub fn post(project: &Project, target: &DialectSpec) -> Result<Posted, Vec<Diagn
     let items = plan::plan(project).map_err(into_diags)?;
     let mut w = Writer {
         post: &post,
+        target,
         fmt: Fmt::new(&target.numbers),
         out: String::new(),
         warnings: Vec::new(),
@@ -130,6 +131,16 @@ pub fn post(project: &Project, target: &DialectSpec) -> Result<Posted, Vec<Diagn
         coolant_on: false,
     };
     step::write_program(&mut w, project, &items).map_err(into_diags)?;
+    if let Some(v) = w.fmt.too_large.get() {
+        return Err(vec![Diagnostic::new(
+            Code::ValueOutOfRange,
+            format!(
+                "the value {v} is too large for {} ({} digits before the point at most)",
+                target.name, target.numbers.integer_digits
+            ),
+        )
+        .help("check the units and the values of the STEP-NC file; nothing was posted")]);
+    }
     read_back(&w.out, target)?;
     Ok(Posted {
         text: w.out,
@@ -181,6 +192,8 @@ fn line_of(text: &str, at: usize) -> &str {
 /// The output being written, with the target's templates and numbers.
 pub(crate) struct Writer<'a> {
     pub post: &'a Post,
+    /// The target: its `<text>` table escapes every text posted.
+    pub target: &'a DialectSpec,
     pub fmt: Fmt,
     pub out: String,
     pub warnings: Vec<Diagnostic>,
@@ -204,9 +217,23 @@ impl Writer<'_> {
 
     /// A comment line in the target's syntax.
     pub fn comment(&mut self, text: &str) -> Result<(), PostError> {
-        let parens_ok = !self.post.source("comment.j2").contains('(');
-        let text = values::comment_text_in(text, parens_ok);
+        let text = self.safe_text(text, "comment.j2");
         self.emit("comment.j2", Vals::new().set("text", text))
+    }
+
+    /// STEP-NC text (a project id, a workingstep's name, a message) made
+    /// safe for the comment that template `template` writes it in: the
+    /// target's `<text>` table decides, and a change is a warning.
+    pub fn safe_text(&mut self, text: &str, template: &str) -> String {
+        use crate::dialect::text::TextForm;
+        let paren = self.post.source(template).contains('(');
+        let text = values::comment_text_in(text, !paren);
+        let form = if paren { TextForm::Paren } else { TextForm::Semicolon };
+        let e = self.target.text.escape(&text, form, false);
+        if let Some(d) = crate::emit::writer::text_warning(&self.target.name, &e, None) {
+            self.warnings.push(d);
+        }
+        e.text
     }
 
     /// A value the target cannot carry: a comment in the program and a

@@ -18,7 +18,7 @@ pub fn write_program(
     let one = |r: Result<(), PostError>| r.map_err(|e| vec![e]);
     let begin = Vals::new()
         .set("number", "1000")
-        .set("title", super::values::comment_text(&project.id));
+        .set("title", w.safe_text(&project.id, "begin.j2"));
     one(w.emit("begin.j2", blank(w, project, begin)))?;
     let mut errors = Vec::new();
     for unit in group::units(items) {

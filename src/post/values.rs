@@ -11,12 +11,15 @@ use crate::ir::{Decimal, LengthUnit};
 #[derive(Clone, Debug)]
 pub struct Fmt {
     rules: NumberRules,
+    /// The first value too large for the target's format (or not finite).
+    pub too_large: std::cell::Cell<Option<f64>>,
 }
 
 impl Fmt {
     pub fn new(rules: &NumberRules) -> Self {
         Fmt {
             rules: rules.clone(),
+            too_large: std::cell::Cell::new(None),
         }
     }
 
@@ -42,6 +45,19 @@ impl Fmt {
     }
 
     fn kind(&self, v: f64, places: u8, kind: NumKind) -> String {
+        // Lengths are held to the target's digits; feeds and speeds have
+        // formats of their own on most controls [?], so only what no
+        // control takes (not finite, or 12 digits and more) is refused.
+        let digits = match kind {
+            NumKind::Length => self.rules.integer_digits,
+            _ => 12,
+        };
+        if !(v.abs() < 10f64.powi(i32::from(digits))) {
+            if self.too_large.get().is_none() {
+                self.too_large.set(Some(v));
+            }
+            return "0".into();
+        }
         let d = Decimal::from_f64(clean(v), places);
         // Rounded to the target's places first, so formatting cannot fail.
         format_number(d, kind, &self.rules, Some(LengthUnit::Mm))

@@ -81,7 +81,7 @@ pub fn read_text(text: &str, file: FileId) -> ReadResult {
 /// Reads a Part 21 file, registering it in `files` for the diagnostics'
 /// spans.
 pub fn read_file(path: &Path, files: &mut SourceMap) -> std::io::Result<ReadResult> {
-    let bytes = std::fs::read(path)?;
+    let bytes = crate::cli::context::read_limited(path, crate::cli::context::MAX_INPUT)?;
     let text = crate::driver::decode(&bytes);
     drop(bytes);
     let id = files.add(path.display().to_string(), text);

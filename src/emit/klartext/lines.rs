@@ -148,7 +148,10 @@ fn sort<'p>(w: &mut Writer<'_>, out: &mut Out, s: &'p Stmt, parts: &mut Parts<'p
         K::Comment {
             text,
             style: CommentStyle::Semicolon | CommentStyle::Paren,
-        } => parts.comments.push(text.clone()),
+        } => {
+            let t = w.safe_text(text, crate::dialect::text::TextForm::Semicolon, s.span);
+            parts.comments.push(t)
+        }
         // Siemens D1: TOOL CALL activates the tool's (one) edge [?].
         K::CuttingEdge(Value::Number(d)) if d.as_int() == Some(1) => {}
         K::Distance(d) => out.incremental = *d == crate::ir::DimMode::Incremental,

@@ -77,7 +77,8 @@ pub(super) fn other(w: &mut Writer<'_>, out: &mut Out, s: &Stmt) {
                 .push(format!("BEGIN PGM {n} {}", unit_word(out.unit)));
             // What the name after BEGIN PGM cannot hold stays as a comment.
             if let Some(text) = name.as_deref().filter(|t| *t != n) {
-                out.lines.push(format!("; {text}"));
+                let t = w.safe_text(text, crate::dialect::text::TextForm::Semicolon, span);
+                out.lines.push(format!("; {t}"));
             }
             if let Some(num) = number.filter(|k| k.to_string() != n) {
                 out.lines.push(format!("; program number {num}"));
@@ -86,7 +87,7 @@ pub(super) fn other(w: &mut Writer<'_>, out: &mut Out, s: &Stmt) {
         }
         K::ProgramEnd { name } => Some(format!(
             "END PGM {} {}",
-            name.clone()
+            super::program_name(None, name.as_deref())
                 .or_else(|| super::first_name(w.prog))
                 .unwrap_or_else(|| "PGM".into()),
             unit_word(out.unit)
@@ -94,7 +95,10 @@ pub(super) fn other(w: &mut Writer<'_>, out: &mut Out, s: &Stmt) {
         K::Comment {
             text,
             style: CommentStyle::Heading,
-        } => Some(format!("* {text}")),
+        } => Some(format!(
+            "* {}",
+            w.safe_text(text, crate::dialect::text::TextForm::Plain, span)
+        )),
         K::Stop(StopKind::Program) => Some("STOP".into()),
         K::Stock {
             corner,

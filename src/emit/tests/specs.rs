@@ -134,6 +134,7 @@ fn rules(increments: bool, places: (u8, u8), point: bool) -> NumberRules {
         point_on_lengths: point,
         feed_places: 4,
         angle_places: 4,
+        integer_digits: 8,
     }
 }
 

@@ -99,6 +99,37 @@ impl KlartextFrontEnd {
     }
 }
 
+impl KlartextFrontEnd {
+    /// E0191: the block with this line is longer than [`MAX_BLOCK`]. The
+    /// whole block is reported and not read (never a part of it); when the
+    /// line continues, the lines after it up to the block's end are skipped
+    /// as part of the same block.
+    fn too_long(
+        &mut self,
+        input: &LineInput<'_>,
+        continued: bool,
+        diags: &mut Vec<Diagnostic>,
+    ) -> Option<LineSyntax> {
+        let start = self.pending.first().map_or(input.offset, |l| l.1) as usize;
+        let end = input.offset as usize + input.text.len();
+        let skipping = self.pending_len == usize::MAX;
+        if !skipping {
+            diags.push(
+                Diagnostic::new(
+                    Code::BlockTooLong,
+                    format!("a block longer than {} bytes", MAX_BLOCK),
+                )
+                .primary(Span::new(input.file, start, end.min(start + 80)), "this block is not read")
+                .help("split it into several blocks"),
+            );
+        }
+        self.pending.clear();
+        // Skip the rest of the block: its lines are not a block of their own.
+        self.pending_len = if continued { usize::MAX } else { 0 };
+        None
+    }
+}
+
 impl FrontEnd for KlartextFrontEnd {
     fn parse_line(
         &mut self,
@@ -107,15 +138,16 @@ impl FrontEnd for KlartextFrontEnd {
         diags: &mut Vec<Diagnostic>,
     ) -> Option<LineSyntax> {
         let continued = input.text.trim_end().ends_with('~');
-        if self.pending.is_empty() && !continued {
+        if self.pending_len == 0 && !continued {
             if let Some(line) = fast::line(input.text, input.offset as usize, input.file) {
                 return Some(line);
             }
         }
-        if self.pending_len + input.text.len() <= MAX_BLOCK {
-            self.pending.push((input.text.to_string(), input.offset));
-            self.pending_len += input.text.len();
+        if self.pending_len.saturating_add(input.text.len()) > MAX_BLOCK {
+            return self.too_long(input, continued, diags);
         }
+        self.pending.push((input.text.to_string(), input.offset));
+        self.pending_len += input.text.len();
         if continued {
             return None;
         }

@@ -106,6 +106,7 @@ mod tests {
             point_on_lengths: false,
             feed_places: 1,
             angle_places: 3,
+            integer_digits: 8,
         };
         DialectSpec::new("t".into(), "t".into(), Family::Sinumerik, n)
     }

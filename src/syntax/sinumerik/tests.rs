@@ -42,6 +42,7 @@ pub fn spec() -> DialectSpec {
         point_on_lengths: false,
         feed_places: 1,
         angle_places: 3,
+        integer_digits: 8,
     };
     let mut s = DialectSpec::new(
         "siemens840d".into(),

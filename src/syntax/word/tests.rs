@@ -18,6 +18,7 @@ pub fn test_spec(caps: &[Capability]) -> DialectSpec {
         point_on_lengths: true,
         feed_places: 1,
         angle_places: 3,
+        integer_digits: 8,
     };
     let mut s = DialectSpec::new("test".into(), "Test".into(), Family::WordAddress, numbers);
     s.capabilities = caps.iter().copied().collect();
