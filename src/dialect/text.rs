@@ -84,6 +84,13 @@ impl TextRules {
     /// word is left as it is (the text came from this same dialect, where
     /// it was already a command).
     pub fn escape(&self, text: &str, form: TextForm, keep_active: bool) -> Escaped {
+        self.escape_as(text, form, keep_active, false)
+    }
+
+    /// [`Self::escape`]; with `keep_chars`, the text came from this same
+    /// dialect, whose control read its characters: they are not
+    /// transliterated, so a round trip keeps a comment's bytes.
+    pub fn escape_as(&self, text: &str, form: TextForm, keep_active: bool, keep_chars: bool) -> Escaped {
         let mut out = Escaped::default();
         let mut s = String::with_capacity(text.len());
         for c in text.chars() {
@@ -96,7 +103,7 @@ impl TextRules {
             } else if let Some(r) = delimiter(c, form) {
                 s.push(r);
                 note(&mut out.replaced, c);
-            } else if self.ascii && !c.is_ascii() {
+            } else if self.ascii && !c.is_ascii() && !keep_chars {
                 out.transliterated = true;
                 s.push_str(transliterate(c));
             } else {
@@ -108,6 +115,20 @@ impl TextRules {
         }
         out.text = s;
         out
+    }
+
+    /// `text` in the target's characters: for a 7-bit target, letters
+    /// without their accents and other characters as `?`; `None` when
+    /// nothing changes.
+    pub fn to_charset(&self, text: &str) -> Option<String> {
+        if !self.ascii || text.is_ascii() {
+            return None;
+        }
+        Some(
+            text.chars()
+                .map(|c| if c.is_ascii() { c.to_string() } else { transliterate(c).to_string() })
+                .collect(),
+        )
     }
 
     fn rule_for(&self, c: char, form: TextForm) -> Option<&Replace> {

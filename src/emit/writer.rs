@@ -55,17 +55,20 @@ impl<'a> Writer<'a> {
     /// `<text>` table), with a warning at `span` for what was changed.
     pub fn safe_text(&mut self, text: &str, form: crate::dialect::text::TextForm, span: Span) -> String {
         let same = self.spec.answers_to(&self.prog.dialect);
-        self.escaped(text, form, span, same)
+        self.escaped(text, form, span, (same, same))
     }
 
     /// The text of a message (after `MSG,` or in `MSG("..")`): no word
     /// there makes it a command, only its characters are escaped.
     pub fn safe_message(&mut self, text: &str, form: crate::dialect::text::TextForm, span: Span) -> String {
-        self.escaped(text, form, span, true)
+        let same = self.spec.answers_to(&self.prog.dialect);
+        self.escaped(text, form, span, (true, same))
     }
 
-    fn escaped(&mut self, text: &str, form: crate::dialect::text::TextForm, span: Span, keep_active: bool) -> String {
-        let e = self.spec.text.escape(text, form, keep_active);
+    /// `keep`: keep active words, keep the characters (text from this
+    /// same dialect).
+    fn escaped(&mut self, text: &str, form: crate::dialect::text::TextForm, span: Span, keep: (bool, bool)) -> String {
+        let e = self.spec.text.escape_as(text, form, keep.0, keep.1);
         if let Some(d) = text_warning(&self.spec.name, &e, Some(span)) {
             self.diags.push(d);
         }

@@ -34,6 +34,13 @@ impl Interp<'_, '_> {
     /// fractional power), so no such value reaches a move.
     pub fn eval(&mut self, id: ExprId, exprs: &Arena<Expr>) -> Result<Num, Stop> {
         match self.eval_unchecked(id, exprs)? {
+            // A parameter holding a value unknown at check time (FN 18
+            // data of the machine): the run-time checks stop where it is
+            // used, with a warning, never a false error.
+            Some(v) if v.is_nan() && matches!(exprs[id].kind, ExprKind::Var(_)) => {
+                let ExprKind::Var(var) = &exprs[id].kind else { unreachable!() };
+                Err(self.from_outside_at(exprs[id].span, &var_name(var)))
+            }
             Some(v) if !v.is_finite() => {
                 let what = if v.is_nan() {
                     "this calculation has no value (NaN)"
@@ -342,8 +349,8 @@ impl Interp<'_, '_> {
                 Code::ValueFromOutside,
                 format!("`{what}` gets its value from the caller or the machine: the run-time checks stop here"),
             )
-            .primary(span, "not known when this file is checked alone")
-            .help("every block was checked for syntax and structure; check the calling program with this file beside it to run it with real values"),
+            .primary(span, "not known at check time")
+            .help("every block was checked for syntax and structure; a caller's values are known when the calling program is checked with this file beside it, the machine's only on the machine"),
         )
     }
 
@@ -384,5 +391,17 @@ fn bank_name(bank: crate::ir::QBank) -> &'static str {
         crate::ir::QBank::Q => "Q",
         crate::ir::QBank::Local => "QL",
         crate::ir::QBank::Remanent => "QR",
+    }
+}
+
+/// How a variable is written, for messages.
+fn var_name(v: &Var) -> String {
+    match v {
+        Var::Numbered(n) => format!("#{n}"),
+        Var::Named(n) => format!("#<{n}>"),
+        Var::R(n) => format!("R{n}"),
+        Var::Q(bank, n) => format!("{}{n}", bank_name(*bank)),
+        Var::User(n, _) | Var::System(n, _) => n.clone(),
+        Var::Indirect(_) | Var::RIndirect(_) => "this parameter".into(),
     }
 }
