@@ -79,7 +79,11 @@ impl<'s> Reader<'s> {
             spec: self.spec,
         };
         if text.len() > MAX_LINE {
-            diags.push(too_long(Span::new(self.file, offset as usize, offset as usize + 80.min(text.len()))));
+            diags.push(too_long(Span::new(
+                self.file,
+                offset as usize,
+                offset as usize + 80.min(text.len()),
+            )));
             return false;
         }
         let first_expr = exprs.len();
@@ -449,7 +453,8 @@ impl<'a> FsLoader<'a> {
 impl crate::interp::flow::ProgramLoader for FsLoader<'_> {
     fn load(&mut self, target: &crate::ir::CallTarget) -> Option<std::rc::Rc<Program>> {
         let path = self.candidates(target).into_iter().find(|p| p.is_file())?;
-        let text = decode(&crate::cli::context::read_limited(&path, crate::cli::context::MAX_INPUT).ok()?);
+        let text =
+            decode(&crate::cli::context::read_limited(&path, crate::cli::context::MAX_INPUT).ok()?);
         let id = self.files.add(path.display().to_string(), text.clone());
         let (p, d) = read_program(&text, id, &self.spec);
         self.diags.extend(d);

@@ -39,7 +39,13 @@ pub fn interpret(dialect: &str, data: &[u8]) {
     let mut calls = 0u64;
     let mut sink = |_: crate::canon::Canon, _: crate::span::Span| calls += 1;
     let mut loader = crate::interp::flow::NoLoader;
-    let _ = crate::interp::run(std::rc::Rc::new(program), &spec, &opts, &mut loader, &mut sink);
+    let _ = crate::interp::run(
+        std::rc::Rc::new(program),
+        &spec,
+        &opts,
+        &mut loader,
+        &mut sink,
+    );
 }
 
 /// Reads `data` as a program of `from` and ports it to every other

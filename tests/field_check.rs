@@ -36,7 +36,11 @@ fn expectations() -> BTreeMap<String, Expected> {
             let mut parts = line.splitn(3, '\t');
             let (Some(file), Some(code), Some(reason)) = (parts.next(), parts.next(), parts.next())
             else {
-                panic!("{}:{}: want `file<TAB>code<TAB>reason`", path.display(), n + 1);
+                panic!(
+                    "{}:{}: want `file<TAB>code<TAB>reason`",
+                    path.display(),
+                    n + 1
+                );
             };
             assert!(
                 reason.len() > 10 && !reason.starts_with("TODO"),
@@ -91,7 +95,10 @@ fn collect(shared: &Path, dir: &Path, d: &str, out: &mut Vec<(String, String)>) 
 }
 
 fn rel(shared: &Path, p: &Path) -> String {
-    p.strip_prefix(shared).unwrap().to_string_lossy().replace('\\', "/")
+    p.strip_prefix(shared)
+        .unwrap()
+        .to_string_lossy()
+        .replace('\\', "/")
 }
 
 /// The code of the first error `check` printed (`error[E0122 ...]`).
@@ -160,13 +167,34 @@ fn head(s: &str) -> String {
 /// Programs that check clean but that cncc's own writer cannot yet write
 /// back in their dialect: cncc's limits, not the programs' mistakes.
 const NO_ROUND_TRIP: &[(&str, &str)] = &[
-    ("field/fanuc/nick-burrill_SWCAM_CGIP09902-2.NC", "E0603: an inch feed with 4 places (F18.7734); the Fanuc spec writes feeds with 3 [?]"),
-    ("field/fanuc/nick-burrill_SWCAM_CGIP09902.NC", "E0603: an inch feed with 4 places; the Fanuc spec writes feeds with 3 [?]"),
-    ("field/fanuc/nick-burrill_SWCAM_CGIP11719.NC", "E0603: an inch feed with 4 places; the Fanuc spec writes feeds with 3 [?]"),
-    ("field/haas/NX_Haas_VF3_testpart.ptp", "E0603: a value of 0.5 where the writer wants a whole number"),
-    ("field/haas/NX_Haas_VF3_testpart2.ptp", "E0603: a value of 0.5 where the writer wants a whole number"),
-    ("field/heidenhain/DangaRPT_test.h", "E0603: -1.44444 has 5 places; the Klartext spec writes 4 in mm [?]"),
-    ("field/siemens840d/NX_Huron_KX20_Training.MPF", "E0603: a value of 0.5 where the writer wants a whole number"),
+    (
+        "field/fanuc/nick-burrill_SWCAM_CGIP09902-2.NC",
+        "E0603: an inch feed with 4 places (F18.7734); the Fanuc spec writes feeds with 3 [?]",
+    ),
+    (
+        "field/fanuc/nick-burrill_SWCAM_CGIP09902.NC",
+        "E0603: an inch feed with 4 places; the Fanuc spec writes feeds with 3 [?]",
+    ),
+    (
+        "field/fanuc/nick-burrill_SWCAM_CGIP11719.NC",
+        "E0603: an inch feed with 4 places; the Fanuc spec writes feeds with 3 [?]",
+    ),
+    (
+        "field/haas/NX_Haas_VF3_testpart.ptp",
+        "E0603: a value of 0.5 where the writer wants a whole number",
+    ),
+    (
+        "field/haas/NX_Haas_VF3_testpart2.ptp",
+        "E0603: a value of 0.5 where the writer wants a whole number",
+    ),
+    (
+        "field/heidenhain/DangaRPT_test.h",
+        "E0603: -1.44444 has 5 places; the Klartext spec writes 4 in mm [?]",
+    ),
+    (
+        "field/siemens840d/NX_Huron_KX20_Training.MPF",
+        "E0603: a value of 0.5 where the writer wants a whole number",
+    ),
 ];
 
 /// Every program that checks clean ports to its own dialect and, ported
@@ -185,22 +213,40 @@ fn clean_field_programs_round_trip_to_a_fixpoint() {
             continue;
         }
         let listed = NO_ROUND_TRIP.iter().any(|(f, _)| f == file);
-        let ext = file.rsplit('.').next().filter(|e| e.len() <= 4).unwrap_or("txt");
+        let ext = file
+            .rsplit('.')
+            .next()
+            .filter(|e| e.len() <= 4)
+            .unwrap_or("txt");
         let (a, b) = (
             dir.path().join(format!("{i}a.{ext}")),
             dir.path().join(format!("{i}b.{ext}")),
         );
         let src = shared.join(file);
         let port = |from: &std::path::Path, to: &std::path::Path| {
-            cncc(&["port", "--from", d, "--to", d, from.to_str().unwrap(), "-o", to.to_str().unwrap()])
+            cncc(&[
+                "port",
+                "--from",
+                d,
+                "--to",
+                d,
+                from.to_str().unwrap(),
+                "-o",
+                to.to_str().unwrap(),
+            ])
         };
         let first = port(&src, &a);
         let ok = first.status.code() == Some(0)
             && port(&a, &b).status.code() == Some(0)
             && std::fs::read(&a).ok() == std::fs::read(&b).ok();
         match (ok, listed) {
-            (true, true) => failures.push(format!("{file} round-trips now: take it off NO_ROUND_TRIP")),
-            (false, false) => failures.push(format!("{file} ({d}) does not round-trip:\n{}", head(&stderr(&first)))),
+            (true, true) => {
+                failures.push(format!("{file} round-trips now: take it off NO_ROUND_TRIP"))
+            }
+            (false, false) => failures.push(format!(
+                "{file} ({d}) does not round-trip:\n{}",
+                head(&stderr(&first))
+            )),
             _ => {}
         }
     }

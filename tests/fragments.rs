@@ -19,7 +19,10 @@ fn a_macro_stops_at_its_first_argument_with_a_warning() {
     assert_eq!(code, 0, "{err}");
     assert!(err.contains("warning[W0590 value-from-outside]"), "{err}");
     assert!(err.contains("`#1` gets its value from the caller"), "{err}");
-    assert!(err.contains("o9001.nc:3:"), "stops where #1 is first read: {err}");
+    assert!(
+        err.contains("o9001.nc:3:"),
+        "stops where #1 is first read: {err}"
+    );
 }
 
 #[test]
@@ -33,14 +36,20 @@ fn a_subprogram_cuts_at_its_callers_feed() {
 fn a_mistake_before_the_first_argument_is_still_found() {
     let (code, err) = check("fanuc", "o9003.nc");
     assert_eq!(code, 1, "{err}");
-    assert!(err.contains("E0508"), "the arc's end is off its circle: {err}");
+    assert!(
+        err.contains("E0508"),
+        "the arc's end is off its circle: {err}"
+    );
 }
 
 #[test]
 fn a_proc_runs_with_its_parameters_unknown() {
     let (code, err) = check("siemens840d", "SLOT.SPF");
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("`DEPTH` gets its value from the caller"), "{err}");
+    assert!(
+        err.contains("`DEPTH` gets its value from the caller"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -57,7 +66,10 @@ fn each_subroutine_of_a_library_is_run() {
 fn a_call_to_a_program_the_control_holds_is_a_warning() {
     let (code, err) = check("fanuc", "o1000.nc");
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("warning[W0591 called-program-missing]"), "{err}");
+    assert!(
+        err.contains("warning[W0591 called-program-missing]"),
+        "{err}"
+    );
     assert!(err.contains("subprogram 9810"), "{err}");
 }
 
@@ -72,7 +84,12 @@ fn a_main_program_is_still_run_by_its_own_rules() {
 
 #[test]
 fn canon_keeps_a_missing_program_an_error_as_rs274_does() {
-    let o = cncc(&["canon", "--dialect", "fanuc", "tests/programs/fragments/o1000.nc"]);
+    let o = cncc(&[
+        "canon",
+        "--dialect",
+        "fanuc",
+        "tests/programs/fragments/o1000.nc",
+    ]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     assert!(stderr(&o).contains("E0301"), "{}", stderr(&o));
 }

@@ -107,7 +107,14 @@ fn canonical_calls_of_running_programs() {
         // The sizes these programs were written for: cncc's built-in
         // table given as the shop's (without a table, a TNC's tools run
         // with no radius, W0592).
-        let o = cncc(&["canon", "--dialect", "heidenhain", "--tool-table", "tests/programs/builtin.tbl", f]);
+        let o = cncc(&[
+            "canon",
+            "--dialect",
+            "heidenhain",
+            "--tool-table",
+            "tests/programs/builtin.tbl",
+            f,
+        ]);
         assert_eq!(o.status.code(), Some(0), "{f}: {}", stderr(&o));
         assert_eq!(stderr(&o), "", "{f}");
         insta::assert_snapshot!(format!("canon_{}", name(f)), stdout(&o));

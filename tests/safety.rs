@@ -25,7 +25,10 @@ fn write(dir: &Path, name: &str, body: &str) -> PathBuf {
 /// The run ended by itself (no panic, no abort, no signal).
 fn ended_normally(out: &Output) {
     let err = text(&out.stderr);
-    assert!(out.status.code().is_some(), "killed by a signal: {err:.2000}");
+    assert!(
+        out.status.code().is_some(),
+        "killed by a signal: {err:.2000}"
+    );
     assert!(!err.contains("panicked"), "{err:.2000}");
     assert!(!err.contains("overflow"), "{err:.2000}");
 }
@@ -37,18 +40,30 @@ fn check(dialect: &str, path: &Path) -> Output {
 #[test]
 fn a_sum_of_50000_terms_is_too_deep_not_a_stack_overflow() {
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "sum.nc", &format!("%\nO1\n#1=1{}\nG0 X#1\nM30\n%\n", "+1".repeat(50_000)));
+    let p = write(
+        dir.path(),
+        "sum.nc",
+        &format!("%\nO1\n#1=1{}\nG0 X#1\nM30\n%\n", "+1".repeat(50_000)),
+    );
     let out = check("fanuc", &p);
     ended_normally(&out);
     assert_eq!(out.status.code(), Some(1));
-    assert!(text(&out.stderr).contains("E0190"), "{:.2000}", text(&out.stderr));
+    assert!(
+        text(&out.stderr).contains("E0190"),
+        "{:.2000}",
+        text(&out.stderr)
+    );
 }
 
 #[test]
 fn abs_nested_20000_deep_is_too_deep() {
     let dir = tempfile::tempdir().unwrap();
     let e = format!("{}1{}", "ABS[".repeat(20_000), "]".repeat(20_000));
-    let p = write(dir.path(), "abs.nc", &format!("%\nO1\n#1={e}\nG0 X#1\nM30\n%\n"));
+    let p = write(
+        dir.path(),
+        "abs.nc",
+        &format!("%\nO1\n#1={e}\nG0 X#1\nM30\n%\n"),
+    );
     let out = check("fanuc", &p);
     ended_normally(&out);
     assert!(text(&out.stderr).contains("E0190"));
@@ -58,7 +73,11 @@ fn abs_nested_20000_deep_is_too_deep() {
 fn a_long_and_chain_is_too_deep() {
     let dir = tempfile::tempdir().unwrap();
     let c = "[1 EQ 1] AND ".repeat(30_000);
-    let p = write(dir.path(), "and.nc", &format!("%\nO1\nIF[{c}[1 EQ 1]] GOTO 10\nN10 M30\n%\n"));
+    let p = write(
+        dir.path(),
+        "and.nc",
+        &format!("%\nO1\nIF[{c}[1 EQ 1]] GOTO 10\nN10 M30\n%\n"),
+    );
     let out = check("fanuc", &p);
     ended_normally(&out);
     assert!(text(&out.stderr).contains("E0190"));
@@ -71,7 +90,11 @@ fn deep_expressions_in_every_family_are_too_deep() {
     for (dialect, name, body) in [
         ("linuxcnc", "a.ngc", format!("#1=1{sum}\nG0 X#1\nM2\n")),
         ("siemens840d", "a.mpf", format!("R1=1{sum}\nG0 X=R1\nM30\n")),
-        ("heidenhain", "a.h", format!("BEGIN PGM A MM\nQ1 = 1{sum}\nEND PGM A MM\n")),
+        (
+            "heidenhain",
+            "a.h",
+            format!("BEGIN PGM A MM\nQ1 = 1{sum}\nEND PGM A MM\n"),
+        ),
     ] {
         let p = write(dir.path(), name, &body);
         let out = check(dialect, &p);
@@ -83,7 +106,10 @@ fn deep_expressions_in_every_family_are_too_deep() {
 #[test]
 fn a_klartext_line_over_1_mib_is_an_error_not_a_panic() {
     let dir = tempfile::tempdir().unwrap();
-    let body = format!("BEGIN PGM T MM\n; {}\nEND PGM T MM\n", "A".repeat((1 << 20) + 10));
+    let body = format!(
+        "BEGIN PGM T MM\n; {}\nEND PGM T MM\n",
+        "A".repeat((1 << 20) + 10)
+    );
     let p = write(dir.path(), "kt.h", &body);
     let out = check("heidenhain", &p);
     ended_normally(&out);
@@ -108,7 +134,11 @@ fn a_continuation_over_the_block_limit_is_reported_not_dropped() {
 #[test]
 fn nan_and_infinity_are_located_errors() {
     let dir = tempfile::tempdir().unwrap();
-    for (e, what) in [("[-1]**0.5", "NaN"), ("EXP[1000]", "infinity"), ("[10**308]*10", "infinity")] {
+    for (e, what) in [
+        ("[-1]**0.5", "NaN"),
+        ("EXP[1000]", "infinity"),
+        ("[10**308]*10", "infinity"),
+    ] {
         let p = write(dir.path(), "n.ngc", &format!("#1={e}\nG0 X#1\nM2\n"));
         let out = check("linuxcnc", &p);
         let err = text(&out.stderr);
@@ -124,7 +154,11 @@ fn nan_and_infinity_are_located_errors() {
 fn one_failing_file_does_not_stop_the_others() {
     let dir = tempfile::tempdir().unwrap();
     let bad = write(dir.path(), "bad.ngc", "G0 X[1/0]\nM2\n");
-    let good = write(dir.path(), "good.ngc", "G0 X1 (UNKNOWN WORD FOLLOWS) Q\nM2\n");
+    let good = write(
+        dir.path(),
+        "good.ngc",
+        "G0 X1 (UNKNOWN WORD FOLLOWS) Q\nM2\n",
+    );
     let missing = dir.path().join("missing.ngc");
     let out = cncc(&[
         "check",
@@ -169,7 +203,10 @@ fn a_closed_pipe_ends_the_run_quietly() {
     let p = write(dir.path(), "big.ngc", &big);
     let out = closed_pipe(&["canon", "--dialect", "linuxcnc", &p.display().to_string()]);
     let err = text(&out.stderr);
-    assert!(!err.contains("Broken pipe") && !err.contains("panicked"), "{err}");
+    assert!(
+        !err.contains("Broken pipe") && !err.contains("panicked"),
+        "{err}"
+    );
     assert_eq!(out.status.signal(), Some(13), "{:?} {err}", out.status);
 }
 
@@ -179,7 +216,14 @@ fn outputs_get_the_umask_permissions_and_keep_an_existing_mode() {
     let dir = tempfile::tempdir().unwrap();
     let src = write(dir.path(), "a.ngc", "G0 X1\nM2\n");
     let out_path = dir.path().join("new.mpf");
-    let out = cncc(&["port", &src.display().to_string(), "--to", "siemens840d", "-o", &out_path.display().to_string()]);
+    let out = cncc(&[
+        "port",
+        &src.display().to_string(),
+        "--to",
+        "siemens840d",
+        "-o",
+        &out_path.display().to_string(),
+    ]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let mode = std::fs::metadata(&out_path).unwrap().permissions().mode() & 0o777;
     // SAFETY: reading the umask (set and restored at once).
@@ -190,12 +234,25 @@ fn outputs_get_the_umask_permissions_and_keep_an_existing_mode() {
     };
     assert_eq!(mode, 0o666 & !umask, "{mode:o}");
     std::fs::set_permissions(&out_path, std::fs::Permissions::from_mode(0o640)).unwrap();
-    let out = cncc(&["port", &src.display().to_string(), "--to", "siemens840d", "-o", &out_path.display().to_string()]);
+    let out = cncc(&[
+        "port",
+        &src.display().to_string(),
+        "--to",
+        "siemens840d",
+        "-o",
+        &out_path.display().to_string(),
+    ]);
     assert_eq!(out.status.code(), Some(0));
     let mode = std::fs::metadata(&out_path).unwrap().permissions().mode() & 0o777;
     assert_eq!(mode, 0o640, "{mode:o}");
-    let left: Vec<_> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
-    assert!(left.iter().all(|n| !n.to_string_lossy().contains(".cncc-")), "{left:?}");
+    let left: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert!(
+        left.iter().all(|n| !n.to_string_lossy().contains(".cncc-")),
+        "{left:?}"
+    );
 }
 
 extern "C" {
@@ -208,7 +265,14 @@ fn a_failed_output_names_the_real_path() {
     let dir = tempfile::tempdir().unwrap();
     let src = write(dir.path(), "a.ngc", "G0 X1\nM2\n");
     let out_path = dir.path().join("no/such/dir/out.mpf");
-    let out = cncc(&["port", &src.display().to_string(), "--to", "siemens840d", "-o", &out_path.display().to_string()]);
+    let out = cncc(&[
+        "port",
+        &src.display().to_string(),
+        "--to",
+        "siemens840d",
+        "-o",
+        &out_path.display().to_string(),
+    ]);
     let err = text(&out.stderr);
     assert_ne!(out.status.code(), Some(0));
     assert!(err.contains("no/such/dir/out.mpf"), "{err}");
@@ -226,7 +290,12 @@ fn a_killed_run_leaves_no_temporary_file() {
     let src = write(dir.path(), "big.ngc", &big);
     let out_path = dir.path().join("out.svg");
     let mut child = Command::new(env!("CARGO_BIN_EXE_cncc"))
-        .args(["plot", &src.display().to_string(), "-o", &out_path.display().to_string()])
+        .args([
+            "plot",
+            &src.display().to_string(),
+            "-o",
+            &out_path.display().to_string(),
+        ])
         .stderr(Stdio::null())
         .spawn()
         .unwrap();
@@ -234,8 +303,14 @@ fn a_killed_run_leaves_no_temporary_file() {
     // SAFETY: sending SIGTERM to our own child.
     unsafe { kill(child.id() as i32, 15) };
     let _ = child.wait();
-    let left: Vec<_> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
-    assert!(left.iter().all(|n| !n.to_string_lossy().starts_with('.')), "{left:?}");
+    let left: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert!(
+        left.iter().all(|n| !n.to_string_lossy().starts_with('.')),
+        "{left:?}"
+    );
     let _ = std::io::stderr().flush();
 }
 
@@ -246,7 +321,11 @@ extern "C" {
 #[test]
 fn a_50_mb_single_line_is_refused_quickly() {
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "words.nc", &format!("%\nO1\nG1 {}\nM30\n%\n", "X1 Y2 ".repeat(8 << 20)));
+    let p = write(
+        dir.path(),
+        "words.nc",
+        &format!("%\nO1\nG1 {}\nM30\n%\n", "X1 Y2 ".repeat(8 << 20)),
+    );
     let t = std::time::Instant::now();
     let out = check("fanuc", &p);
     ended_normally(&out);
@@ -257,42 +336,78 @@ fn a_50_mb_single_line_is_refused_quickly() {
 #[test]
 fn thousands_of_errors_on_a_long_line_print_a_window_and_a_count() {
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "rep.nc", &format!("%\nO1\nG0 {}\nM30\n%\n", "X1 ".repeat(50_000)));
+    let p = write(
+        dir.path(),
+        "rep.nc",
+        &format!("%\nO1\nG0 {}\nM30\n%\n", "X1 ".repeat(50_000)),
+    );
     let out = check("fanuc", &p);
     ended_normally(&out);
     let err = text(&out.stderr);
     assert!(err.len() < 200_000, "{} bytes of diagnostics", err.len());
-    assert!(err.contains("more E0205 repeated-word diagnostics not shown"), "{:.2000}", &err[err.len().saturating_sub(2000)..]);
+    assert!(
+        err.contains("more E0205 repeated-word diagnostics not shown"),
+        "{:.2000}",
+        &err[err.len().saturating_sub(2000)..]
+    );
 }
 
 #[test]
 fn a_tool_table_from_dev_zero_is_a_clear_error() {
     let dir = tempfile::tempdir().unwrap();
     let p = write(dir.path(), "a.ngc", "G0 X1\nM2\n");
-    let out = cncc(&["check", "--tool-table", "/dev/zero", &p.display().to_string()]);
+    let out = cncc(&[
+        "check",
+        "--tool-table",
+        "/dev/zero",
+        &p.display().to_string(),
+    ]);
     ended_normally(&out);
-    assert!(text(&out.stderr).contains("larger than 16 MiB"), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stderr).contains("larger than 16 MiB"),
+        "{}",
+        text(&out.stderr)
+    );
 }
 
 fn port(file: &Path, from: &str, to: &str) -> Output {
-    cncc(&["port", &file.display().to_string(), "--from", from, "--to", to, "--verify"])
+    cncc(&[
+        "port",
+        &file.display().to_string(),
+        "--from",
+        from,
+        "--to",
+        to,
+        "--verify",
+    ])
 }
 
 #[test]
 fn fanuc_logopen_ported_to_linuxcnc_is_neutralised_with_a_warning() {
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "a.nc", "%\nO1\n(LOGOPEN,/home/cnc/x.txt)\n( py ,print[1])\nG0 X1.\nM30\n%\n");
+    let p = write(
+        dir.path(),
+        "a.nc",
+        "%\nO1\n(LOGOPEN,/home/cnc/x.txt)\n( py ,print[1])\nG0 X1.\nM30\n%\n",
+    );
     let out = port(&p, "fanuc", "linuxcnc");
     let (o, e) = (text(&out.stdout), text(&out.stderr));
     assert!(e.contains("W0690") && e.contains("a.nc:3:1"), "{e}");
-    assert!(o.contains("(LOGOPEN:/home/cnc/x.txt)") && o.contains("( py :print[1])"), "{o}");
+    assert!(
+        o.contains("(LOGOPEN:/home/cnc/x.txt)") && o.contains("( py :print[1])"),
+        "{o}"
+    );
     assert!(!o.contains("LOGOPEN,") && !o.contains("py ,"), "{o}");
 }
 
 #[test]
 fn siemens_py_comment_ported_to_linuxcnc_is_neutralised() {
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "a.mpf", "G0 X0\n; py,__import__('os')\nG0 Z50\nM30\n");
+    let p = write(
+        dir.path(),
+        "a.mpf",
+        "G0 X0\n; py,__import__('os')\nG0 Z50\nM30\n",
+    );
     let out = port(&p, "siemens840d", "linuxcnc");
     let (o, e) = (text(&out.stdout), text(&out.stderr));
     assert!(e.contains("W0690") && e.contains("`PY`"), "{e}");
@@ -302,7 +417,11 @@ fn siemens_py_comment_ported_to_linuxcnc_is_neutralised() {
 #[test]
 fn a_fanuc_comment_ending_in_tilde_does_not_swallow_the_retract_in_klartext() {
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "a.nc", "%\nO1\nG0 X0. Y0. Z5.\n(RETRACT ~)\nG0 Z50.\nG0 X100.\nM30\n%\n");
+    let p = write(
+        dir.path(),
+        "a.nc",
+        "%\nO1\nG0 X0. Y0. Z5.\n(RETRACT ~)\nG0 Z50.\nG0 X100.\nM30\n%\n",
+    );
     let out = port(&p, "fanuc", "heidenhain");
     let (o, e) = (text(&out.stdout), text(&out.stderr));
     assert_eq!(out.status.code(), Some(0), "{e}");
@@ -312,18 +431,29 @@ fn a_fanuc_comment_ending_in_tilde_does_not_swallow_the_retract_in_klartext() {
     // Read back, the retract is still a move of its own.
     let h = write(dir.path(), "a.h", &o);
     let canon = cncc(&["canon", "--dialect", "heidenhain", &h.display().to_string()]);
-    assert!(text(&canon.stdout).contains("50.0000"), "{}", text(&canon.stdout));
+    assert!(
+        text(&canon.stdout).contains("50.0000"),
+        "{}",
+        text(&canon.stdout)
+    );
 }
 
 #[test]
 fn percent_and_non_ascii_in_fanuc_comments_are_escaped() {
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "a.ngc", "(50% OFF, Bohrung Ø12 für)\nG0 X1\nM2\n");
+    let p = write(
+        dir.path(),
+        "a.ngc",
+        "(50% OFF, Bohrung Ø12 für)\nG0 X1\nM2\n",
+    );
     for to in ["fanuc", "haas"] {
         let out = port(&p, "linuxcnc", to);
         let (o, e) = (text(&out.stdout), text(&out.stderr));
         let body: Vec<&str> = o.lines().filter(|l| l.starts_with('(')).collect();
-        assert!(body.iter().all(|l| !l.contains('%') && l.is_ascii()), "{to}: {o}");
+        assert!(
+            body.iter().all(|l| !l.contains('%') && l.is_ascii()),
+            "{to}: {o}"
+        );
         assert!(e.contains("W0690") || e.contains("W0691"), "{to}: {e}");
     }
 }
@@ -334,8 +464,14 @@ fn evil_stepnc(dir: &Path, id: &str, ws: &str, z: &str) -> PathBuf {
     let s = std::fs::read_to_string(root.join("tests/programs/stepnc/tapped_holes.stp")).unwrap();
     let s = s
         .replace("PROJECT('TAPPED HOLES'", &format!("PROJECT('{id}'"))
-        .replace("MACHINING_WORKINGSTEP('WS DRILL M8'", &format!("MACHINING_WORKINGSTEP('{ws}'"))
-        .replace("#62=CARTESIAN_POINT('',(0.,0.,-16.));", &format!("#62=CARTESIAN_POINT('',(0.,0.,{z}));"));
+        .replace(
+            "MACHINING_WORKINGSTEP('WS DRILL M8'",
+            &format!("MACHINING_WORKINGSTEP('{ws}'"),
+        )
+        .replace(
+            "#62=CARTESIAN_POINT('',(0.,0.,-16.));",
+            &format!("#62=CARTESIAN_POINT('',(0.,0.,{z}));"),
+        );
     write(dir, "evil.stp", &s)
 }
 
@@ -347,7 +483,10 @@ fn a_stepnc_project_id_never_becomes_a_linuxcnc_command() {
     let (o, e) = (text(&out.stdout), text(&out.stderr));
     assert_eq!(out.status.code(), Some(0), "{e}");
     assert!(e.contains("W0690"), "{e}");
-    assert!(o.contains("(LOGOPEN:/home/cnc/x)") && !o.contains("LOGOPEN,"), "{o}");
+    assert!(
+        o.contains("(LOGOPEN:/home/cnc/x)") && !o.contains("LOGOPEN,"),
+        "{o}"
+    );
     let out = cncc(&["post", &p.display().to_string(), "--to", "heidenhain"]);
     let o = text(&out.stdout);
     assert!(!o.lines().any(|l| l.trim_end().ends_with('~')), "{o}");
@@ -395,10 +534,19 @@ fn fuzz_entry_points_survive_hostile_samples() {
 #[test]
 fn a_plot_of_a_long_helix_is_bounded() {
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "helix.ngc", "G21 G90 G17 F100\nG0 X0 Y0 Z0\nG1 X5\nG2 X5 Y0 I-5 J0 Z-100 P100000000\nM2\n");
+    let p = write(
+        dir.path(),
+        "helix.ngc",
+        "G21 G90 G17 F100\nG0 X0 Y0 Z0\nG1 X5\nG2 X5 Y0 I-5 J0 Z-100 P100000000\nM2\n",
+    );
     let svg = dir.path().join("x.svg");
     let t = std::time::Instant::now();
-    let out = cncc(&["plot", &p.display().to_string(), "-o", &svg.display().to_string()]);
+    let out = cncc(&[
+        "plot",
+        &p.display().to_string(),
+        "-o",
+        &svg.display().to_string(),
+    ]);
     ended_normally(&out);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert!(std::fs::metadata(&svg).unwrap().len() < 10_000_000);

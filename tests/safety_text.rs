@@ -76,7 +76,13 @@ fn first_difference(a: &[String], b: &[String]) -> Option<String> {
 
 /// Ports `text` as a comment (or message) from `from` to `to` and reads
 /// the result back.
-fn port_one(text: &str, from: &str, to: &str, message: bool, style: CommentStyle) -> Result<(), TestCaseError> {
+fn port_one(
+    text: &str,
+    from: &str,
+    to: &str,
+    message: bool,
+    style: CommentStyle,
+) -> Result<(), TestCaseError> {
     let (mut p, errors) = read(base(from), from);
     prop_assert!(!errors);
     let (want_texts, want_rest) = {
@@ -92,13 +98,20 @@ fn port_one(text: &str, from: &str, to: &str, message: bool, style: CommentStyle
     let at = p
         .blocks
         .iter()
-        .position(|b| b.stmts.iter().any(|s| format!("{:?}", s.kind).starts_with("Motion")))
+        .position(|b| {
+            b.stmts
+                .iter()
+                .any(|s| format!("{:?}", s.kind).starts_with("Motion"))
+        })
         .unwrap();
     let span = p.blocks[at].stmts[0].span;
     let kind = if message {
         StmtKind::Message(Some(text.to_string()))
     } else {
-        StmtKind::Comment { text: text.to_string(), style }
+        StmtKind::Comment {
+            text: text.to_string(),
+            style,
+        }
     };
     p.blocks[at].stmts.push(Stmt::new(kind, span));
     let spec_from = builtin(from).unwrap();
@@ -111,7 +124,15 @@ fn port_one(text: &str, from: &str, to: &str, message: bool, style: CommentStyle
     let (back, errors) = read(&out, to);
     prop_assert!(!errors, "{from}->{to} {text:?}:\n{out}");
     let (texts, rest) = split(&back);
-    prop_assert_eq!(texts.len(), want_texts.len() + 1, "{}->{} {:?}:\n{}", from, to, text, out);
+    prop_assert_eq!(
+        texts.len(),
+        want_texts.len() + 1,
+        "{}->{} {:?}:\n{}",
+        from,
+        to,
+        text,
+        out
+    );
     let diff = first_difference(&rest, &want_rest);
     prop_assert!(diff.is_none(), "{from}->{to} {text:?}: {diff:?}\n{out}");
     // Not active on the target: what LinuxCNC would run is neutralised.
@@ -129,8 +150,32 @@ fn hostile() -> impl Strategy<Value = String> {
         "[ -~]{0,40}",
         prop::collection::vec(
             prop::sample::select(vec![
-                "LOGOPEN,", " py ,", "MSG,", "(", ")", ";", "%", "~", "\n", "\r", "\"", "'", "ABORT", "Ø", "é", " ",
-                "X10", "G0", "M30", "*", "\t", "\u{0}", "probeopen", "LOGCLOSE", "debug ,", "END PGM",
+                "LOGOPEN,",
+                " py ,",
+                "MSG,",
+                "(",
+                ")",
+                ";",
+                "%",
+                "~",
+                "\n",
+                "\r",
+                "\"",
+                "'",
+                "ABORT",
+                "Ø",
+                "é",
+                " ",
+                "X10",
+                "G0",
+                "M30",
+                "*",
+                "\t",
+                "\u{0}",
+                "probeopen",
+                "LOGCLOSE",
+                "debug ,",
+                "END PGM",
             ]),
             0..8,
         )

@@ -237,7 +237,11 @@ fn raise_cc2(file: &str, dialect: &str, extra: &[&str]) -> String {
 #[test]
 fn fanuc_and_heidenhain_give_the_same_cc2_features() {
     let table = ["--tool-table", "tests/programs/builtin.tbl"];
-    let fanuc = raise_cc2("part.nc", "fanuc", &["--stock", "100x50x20", table[0], table[1]]);
+    let fanuc = raise_cc2(
+        "part.nc",
+        "fanuc",
+        &["--stock", "100x50x20", table[0], table[1]],
+    );
     let tnc = raise_cc2("part.h", "heidenhain", &table);
     let tmp = std::env::temp_dir();
     let a = tmp.join(format!("cncc-samepart-{}-a.stp", std::process::id()));

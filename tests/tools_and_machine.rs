@@ -18,7 +18,10 @@ fn a_fanuc_tool_missing_from_the_table_runs_with_no_size() {
     assert_eq!(code, 0, "{err}");
     // Compensation needed the radius: said once, with what was not checked.
     assert!(err.contains("W0592"), "{err}");
-    assert!(err.contains("T23 ran with no length and no diameter"), "{err}");
+    assert!(
+        err.contains("T23 ran with no length and no diameter"),
+        "{err}"
+    );
     assert!(err.contains("gouges were not checked"), "{err}");
 }
 
@@ -32,10 +35,34 @@ fn linuxcnc_still_needs_the_tool_in_its_table() {
 #[test]
 fn a_short_entry_move_is_linuxcncs_rule_only() {
     let table = format!("{T}/mm.tbl");
-    let args = |f: &str| vec!["check".to_string(), format!("{T}/{f}"), "--tool-table".into(), table.clone(), "--machine-units".into(), "mm".into()];
-    let o = cncc(&args("short_entry.nc").iter().map(String::as_str).collect::<Vec<_>>());
-    assert_eq!(o.status.code(), Some(0), "Fanuc starts up on a short entry: {}", stderr(&o));
-    let o = cncc(&args("short_entry.ngc").iter().map(String::as_str).collect::<Vec<_>>());
+    let args = |f: &str| {
+        vec![
+            "check".to_string(),
+            format!("{T}/{f}"),
+            "--tool-table".into(),
+            table.clone(),
+            "--machine-units".into(),
+            "mm".into(),
+        ]
+    };
+    let o = cncc(
+        &args("short_entry.nc")
+            .iter()
+            .map(String::as_str)
+            .collect::<Vec<_>>(),
+    );
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "Fanuc starts up on a short entry: {}",
+        stderr(&o)
+    );
+    let o = cncc(
+        &args("short_entry.ngc")
+            .iter()
+            .map(String::as_str)
+            .collect::<Vec<_>>(),
+    );
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     assert!(stderr(&o).contains("E0552"), "{}", stderr(&o));
 }
@@ -57,7 +84,12 @@ fn g41_while_on_changes_the_offset_on_fanuc() {
 fn the_programs_tool_list_gives_the_sizes() {
     let (code, out, err) = run(&["stats", "tests/programs/fusion/bracket.nc"]);
     assert_eq!(code, 0, "{err}");
-    let row = |t: &str| out.lines().find(|l| l.starts_with(t)).unwrap_or("").to_string();
+    let row = |t: &str| {
+        out.lines()
+            .find(|l| l.starts_with(t))
+            .unwrap_or("")
+            .to_string()
+    };
     assert!(row("T1 ").split_whitespace().nth(1) == Some("10"), "{out}");
     assert!(row("T2 ").split_whitespace().nth(1) == Some("6.8"), "{out}");
     assert!(!err.contains("W0592"), "no invented sizes: {err}");
@@ -89,7 +121,12 @@ fn a_reference_return_goes_up_to_the_machines_reference_point() {
 
 #[test]
 fn a_wrong_machine_file_is_a_usage_error() {
-    let (code, _, err) = run(&["check", &format!("{T}/home.nc"), "--machine", &format!("{T}/bad.toml")]);
+    let (code, _, err) = run(&[
+        "check",
+        &format!("{T}/home.nc"),
+        "--machine",
+        &format!("{T}/bad.toml"),
+    ]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("bad.toml"), "{err}");
     assert!(err.contains("unknown field"), "{err}");
@@ -101,7 +138,10 @@ fn canon_keeps_rs274s_machine_without_a_file() {
     // work Z0 less the tool length. canon stays comparable with it.
     let (code, out, err) = run(&["canon", "--dialect", "fanuc", &format!("{T}/home.nc")]);
     assert_eq!(code, 0, "{err}");
-    assert!(out.contains("SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000"), "{out}");
+    assert!(
+        out.contains("SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000"),
+        "{out}"
+    );
 }
 
 #[test]
@@ -115,6 +155,11 @@ fn one_check_reports_every_independent_run_time_mistake() {
     assert!(err.contains("three_mistakes.nc:10:"), "{err}");
     assert!(err.contains("3 errors"), "{err}");
     // canon stops at the first, as rs274 does.
-    let o = cncc(&["canon", "--dialect", "fanuc", &format!("{T}/three_mistakes.nc")]);
+    let o = cncc(&[
+        "canon",
+        "--dialect",
+        "fanuc",
+        &format!("{T}/three_mistakes.nc"),
+    ]);
     assert_eq!(stderr(&o).matches("error[").count(), 1, "{}", stderr(&o));
 }

@@ -13,7 +13,8 @@ use std::sync::atomic::{AtomicPtr, AtomicU32, Ordering};
 /// Temporary files to remove if a signal ends the run: leaked C strings,
 /// read by the signal handler without locking.
 const SLOTS: usize = 8;
-static TEMPS: [AtomicPtr<libc::c_char>; SLOTS] = [const { AtomicPtr::new(std::ptr::null_mut()) }; SLOTS];
+static TEMPS: [AtomicPtr<libc::c_char>; SLOTS] =
+    [const { AtomicPtr::new(std::ptr::null_mut()) }; SLOTS];
 static COUNTER: AtomicU32 = AtomicU32::new(0);
 
 /// A temporary file that becomes `target` on [`AtomicFile::commit`].
@@ -30,7 +31,10 @@ impl AtomicFile {
             Some(p) if !p.as_os_str().is_empty() => p,
             _ => Path::new("."),
         };
-        let name = target.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let name = target
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
         let mut last = None;
         for _ in 0..16 {
             let n = COUNTER.fetch_add(1, Ordering::Relaxed);
@@ -45,18 +49,28 @@ impl AtomicFile {
             match o.open(&tmp) {
                 Ok(file) => {
                     let slot = register(&tmp);
-                    return Ok(AtomicFile { target: target.to_path_buf(), tmp, file: Some(file), slot });
+                    return Ok(AtomicFile {
+                        target: target.to_path_buf(),
+                        tmp,
+                        file: Some(file),
+                        slot,
+                    });
                 }
                 Err(e) if e.kind() == ErrorKind::AlreadyExists => last = Some(e),
                 Err(e) => return Err(named(target, e)),
             }
         }
-        Err(named(target, last.unwrap_or_else(|| Error::other("no temporary name"))))
+        Err(named(
+            target,
+            last.unwrap_or_else(|| Error::other("no temporary name")),
+        ))
     }
 
     pub fn file(&mut self) -> &mut File {
         // Only `commit`, which consumes self, takes the file.
-        self.file.as_mut().expect("an output file is open until committed")
+        self.file
+            .as_mut()
+            .expect("an output file is open until committed")
     }
 
     /// Flushes to disk and renames into place, keeping an existing
@@ -149,7 +163,10 @@ pub fn install_signal_handlers() {
     unsafe {
         libc::signal(libc::SIGPIPE, libc::SIG_DFL);
         for sig in [libc::SIGINT, libc::SIGTERM, libc::SIGHUP] {
-            libc::signal(sig, on_signal as extern "C" fn(libc::c_int) as libc::sighandler_t);
+            libc::signal(
+                sig,
+                on_signal as extern "C" fn(libc::c_int) as libc::sighandler_t,
+            );
         }
     }
 }

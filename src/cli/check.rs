@@ -189,14 +189,8 @@ fn run_as_fragment(
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
     let mut discard = |_: crate::canon::Canon, _: crate::span::Span| {};
-    let mut d = crate::interp::fragment::run(
-        program,
-        &fragment,
-        spec,
-        options,
-        &mut loader,
-        &mut discard,
-    );
+    let mut d =
+        crate::interp::fragment::run(program, &fragment, spec, options, &mut loader, &mut discard);
     d.append(&mut loader.diags);
     Ok(Some(d))
 }

@@ -140,7 +140,8 @@ pub fn read_text(path: &Path) -> Result<String, Failure> {
 /// [`read_text`] with a size limit: a larger file (or an endless one such
 /// as `/dev/zero`) is a clear error, never memory exhausted.
 pub fn read_text_limited(path: &Path, limit: u64) -> Result<String, Failure> {
-    let bytes = read_limited(path, limit).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    let bytes =
+        read_limited(path, limit).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
     Ok(crate::driver::decode(&bytes))
 }
 

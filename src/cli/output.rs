@@ -59,7 +59,9 @@ pub fn emit_output_with(
         Some(path) => {
             let mut tmp = AtomicFile::create(path)?;
             let mut out = std::io::BufWriter::new(tmp.file());
-            write(&mut out).and_then(|()| out.flush()).map_err(|e| named(path, e))?;
+            write(&mut out)
+                .and_then(|()| out.flush())
+                .map_err(|e| named(path, e))?;
             drop(out);
             tmp.commit()
         }

@@ -9,12 +9,12 @@ use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS,
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::DialectSpec;
 use crate::driver::{read_program, FsLoader};
+use crate::emit::write_program_warned;
 use crate::ir::Program;
 use crate::port::subload::PortingLoader;
 use crate::port::verify::{self, Difference, Verdict};
 use crate::port::{port_program, PortOptions, ToolMap};
 use crate::span::{FileId, Span};
-use crate::emit::write_program_warned;
 use std::path::Path;
 use std::rc::Rc;
 use std::sync::Arc;

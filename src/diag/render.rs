@@ -78,7 +78,10 @@ pub fn human(diags: &[Diagnostic], files: &SourceMap, color: bool) -> String {
             );
         }
     }
-    let mut more: Vec<_> = shown.into_iter().filter(|(_, n)| *n > MAX_PER_CODE).collect();
+    let mut more: Vec<_> = shown
+        .into_iter()
+        .filter(|(_, n)| *n > MAX_PER_CODE)
+        .collect();
     more.sort();
     for (code, n) in more {
         use std::io::Write;
@@ -117,7 +120,10 @@ fn windowed(d: &Diagnostic, files: &SourceMap) -> Option<String> {
     let (line, col) = files.line_col(f, l.span.start as usize);
     let lead = if from > start { "…" } else { "" };
     let tail = if to < end { "…" } else { "" };
-    let window: String = text[from..to].chars().map(|c| if c.is_control() { ' ' } else { c }).collect();
+    let window: String = text[from..to]
+        .chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .collect();
     let caret = " ".repeat(lead.chars().count() + text[from..v].chars().count());
     let mut out = format!(
         "{}[{} {}]: {}\n  --> {}:{line}:{col}\n   | {lead}{window}{tail}\n   | {caret}^ {}\n",

@@ -7,7 +7,10 @@ use super::text::{ActiveWord, Replace, TextForm, TextRules};
 use super::xml::Node;
 
 pub fn read_text(cx: &mut Ctx, n: &Node) -> TextRules {
-    cx.check_attrs(n, &["charset", "comma-with", "prefix-with", "doc", "confidence"]);
+    cx.check_attrs(
+        n,
+        &["charset", "comma-with", "prefix-with", "doc", "confidence"],
+    );
     let mut r = TextRules {
         comma_with: ":".into(),
         prefix_with: "_".into(),
@@ -19,11 +22,19 @@ pub fn read_text(cx: &mut Ctx, n: &Node) -> TextRules {
             "utf-8" => Some(false),
             _ => None,
         };
-        if let Some(v) = cx.parse(a, "`ascii` or `utf-8`", "the characters the target reads", parse) {
+        if let Some(v) = cx.parse(
+            a,
+            "`ascii` or `utf-8`",
+            "the characters the target reads",
+            parse,
+        ) {
             r.ascii = v;
         }
     }
-    for (name, slot) in [("comma-with", &mut r.comma_with), ("prefix-with", &mut r.prefix_with)] {
+    for (name, slot) in [
+        ("comma-with", &mut r.comma_with),
+        ("prefix-with", &mut r.prefix_with),
+    ] {
         if let Some(a) = n.attr(name) {
             *slot = a.value.clone();
         }
@@ -59,9 +70,17 @@ fn read_replace(cx: &mut Ctx, c: &Node) -> Option<Replace> {
             _ => None,
         }
     })?;
-    let with = c.attr("with").map(|a| a.value.clone()).unwrap_or_else(|| " ".into());
+    let with = c
+        .attr("with")
+        .map(|a| a.value.clone())
+        .unwrap_or_else(|| " ".into());
     let form = match c.attr("in") {
-        Some(a) => Some(cx.parse(a, "a text form", "paren, semicolon, quoted or plain", TextForm::parse)?),
+        Some(a) => Some(cx.parse(
+            a,
+            "a text form",
+            "paren, semicolon, quoted or plain",
+            TextForm::parse,
+        )?),
         None => None,
     };
     Some(Replace { ch, with, form })

@@ -6,9 +6,9 @@ pub mod detect;
 pub mod listing;
 pub mod load;
 pub(crate) mod load_items;
-mod load_text;
 #[cfg(test)]
 mod load_tests;
+mod load_text;
 pub mod meaning;
 pub mod spec;
 pub mod text;

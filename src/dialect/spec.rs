@@ -173,7 +173,10 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("general-pocket-cycle", Capability::GeneralPocketCycle),
     ("power-on-rapid", Capability::PowerOnRapid),
     ("control-holds-tools", Capability::ControlHoldsTools),
-    ("comp-entry-longer-than-radius", Capability::CompEntryLongerThanRadius),
+    (
+        "comp-entry-longer-than-radius",
+        Capability::CompEntryLongerThanRadius,
+    ),
     ("comp-on-when-on-error", Capability::CompOnWhenOnError),
     ("power-on-linear", Capability::PowerOnLinear),
     ("cycle-words-required", Capability::CycleWordsRequired),

@@ -90,7 +90,13 @@ impl TextRules {
     /// [`Self::escape`]; with `keep_chars`, the text came from this same
     /// dialect, whose control read its characters: they are not
     /// transliterated, so a round trip keeps a comment's bytes.
-    pub fn escape_as(&self, text: &str, form: TextForm, keep_active: bool, keep_chars: bool) -> Escaped {
+    pub fn escape_as(
+        &self,
+        text: &str,
+        form: TextForm,
+        keep_active: bool,
+        keep_chars: bool,
+    ) -> Escaped {
         let mut out = Escaped::default();
         let mut s = String::with_capacity(text.len());
         for c in text.chars() {
@@ -126,7 +132,13 @@ impl TextRules {
         }
         Some(
             text.chars()
-                .map(|c| if c.is_ascii() { c.to_string() } else { transliterate(c).to_string() })
+                .map(|c| {
+                    if c.is_ascii() {
+                        c.to_string()
+                    } else {
+                        transliterate(c).to_string()
+                    }
+                })
                 .collect(),
         )
     }
@@ -262,7 +274,14 @@ mod tests {
     #[test]
     fn linuxcnc_active_comments_are_neutralised_in_any_case_and_spacing() {
         let r = linuxcnc();
-        for t in ["LOGOPEN,/home/cnc/x", "  py,__import__('os')", "msg ,hello", "Abort,", "LOGCLOSE", "probeopen f.txt"] {
+        for t in [
+            "LOGOPEN,/home/cnc/x",
+            "  py,__import__('os')",
+            "msg ,hello",
+            "Abort,",
+            "LOGCLOSE",
+            "probeopen f.txt",
+        ] {
             let e = r.escape(t, TextForm::Paren, false);
             assert!(e.neutralised.is_some(), "{t}");
             assert!(r.active_word(&e.text).is_none(), "{t} -> {}", e.text);

@@ -53,21 +53,37 @@ impl<'a> Writer<'a> {
 
     /// `text` made safe for the target's reader in `form` (its spec's
     /// `<text>` table), with a warning at `span` for what was changed.
-    pub fn safe_text(&mut self, text: &str, form: crate::dialect::text::TextForm, span: Span) -> String {
+    pub fn safe_text(
+        &mut self,
+        text: &str,
+        form: crate::dialect::text::TextForm,
+        span: Span,
+    ) -> String {
         let same = self.spec.answers_to(&self.prog.dialect);
         self.escaped(text, form, span, (same, same))
     }
 
     /// The text of a message (after `MSG,` or in `MSG("..")`): no word
     /// there makes it a command, only its characters are escaped.
-    pub fn safe_message(&mut self, text: &str, form: crate::dialect::text::TextForm, span: Span) -> String {
+    pub fn safe_message(
+        &mut self,
+        text: &str,
+        form: crate::dialect::text::TextForm,
+        span: Span,
+    ) -> String {
         let same = self.spec.answers_to(&self.prog.dialect);
         self.escaped(text, form, span, (true, same))
     }
 
     /// `keep`: keep active words, keep the characters (text from this
     /// same dialect).
-    fn escaped(&mut self, text: &str, form: crate::dialect::text::TextForm, span: Span, keep: (bool, bool)) -> String {
+    fn escaped(
+        &mut self,
+        text: &str,
+        form: crate::dialect::text::TextForm,
+        span: Span,
+        keep: (bool, bool),
+    ) -> String {
         let e = self.spec.text.escape_as(text, form, keep.0, keep.1);
         if let Some(d) = text_warning(&self.spec.name, &e, Some(span)) {
             self.diags.push(d);
@@ -272,7 +288,10 @@ pub fn text_warning(
             at(
                 Diagnostic::new(
                     Code::ActiveTextNeutralised,
-                    format!("characters {target} would read as syntax in a comment: {}", chars.join(" ")),
+                    format!(
+                        "characters {target} would read as syntax in a comment: {}",
+                        chars.join(" ")
+                    ),
                 ),
                 "replaced so that the text stays a comment",
             )

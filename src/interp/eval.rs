@@ -38,7 +38,9 @@ impl Interp<'_, '_> {
             // data of the machine): the run-time checks stop where it is
             // used, with a warning, never a false error.
             Some(v) if v.is_nan() && matches!(exprs[id].kind, ExprKind::Var(_)) => {
-                let ExprKind::Var(var) = &exprs[id].kind else { unreachable!() };
+                let ExprKind::Var(var) = &exprs[id].kind else {
+                    unreachable!()
+                };
                 Err(self.from_outside_at(exprs[id].span, &var_name(var)))
             }
             Some(v) if !v.is_finite() => {

@@ -46,7 +46,10 @@ pub fn run_file(
         _ if read_errors => stream.abandon(&mut it),
         None => stream.finish(&mut it),
         Some(_) => {
-            let text = decode(&crate::cli::context::read_limited(path.as_ref(), crate::cli::context::MAX_INPUT)?);
+            let text = decode(&crate::cli::context::read_limited(
+                path.as_ref(),
+                crate::cli::context::MAX_INPUT,
+            )?);
             let program = std::rc::Rc::new(read_program(&text, id, spec).0);
             drop(text);
             let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();

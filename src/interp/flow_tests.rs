@@ -203,5 +203,8 @@ fn heidenhain_sgn_log_neg_and_unknown_system_data() {
     assert!((q(3) + 3.0).abs() < 1e-12);
     assert_eq!(q(4), 0.0);
     assert!(q(5).is_nan());
-    assert!(!p.q_known(crate::ir::QBank::Q, 6), "the run stopped at Q5's first use");
+    assert!(
+        !p.q_known(crate::ir::QBank::Q, 6),
+        "the run stopped at Q5's first use"
+    );
 }

@@ -132,14 +132,20 @@ mod tests {
     fn a_main_program_is_not_a_fragment() {
         assert_eq!(fragment("fanuc", "O1\nG0 X1\nM30\n"), None);
         assert_eq!(
-            fragment("linuxcnc", "o<a> sub\nG0 X#1\no<a> endsub\no<a> call [1]\nM2\n"),
+            fragment(
+                "linuxcnc",
+                "o<a> sub\nG0 X#1\no<a> endsub\no<a> call [1]\nM2\n"
+            ),
             None
         );
     }
 
     #[test]
     fn a_macro_that_returns_is_called() {
-        assert_eq!(fragment("fanuc", "O9001\nG0 X#24\nM99\n"), Some(Fragment::Called));
+        assert_eq!(
+            fragment("fanuc", "O9001\nG0 X#24\nM99\n"),
+            Some(Fragment::Called)
+        );
         assert_eq!(
             fragment("siemens840d", "PROC P(REAL A)\nG0 X=A\nM17\n"),
             Some(Fragment::Called)
@@ -149,6 +155,9 @@ mod tests {
     #[test]
     fn a_file_of_sub_definitions_is_a_library() {
         let text = "(lib)\no<a> sub\nG0 X#1\no<a> endsub\no<b> sub\nG0 Y#1\no<b> endsub\n";
-        assert_eq!(fragment("linuxcnc", text), Some(Fragment::Library(vec![1, 4])));
+        assert_eq!(
+            fragment("linuxcnc", text),
+            Some(Fragment::Library(vec![1, 4]))
+        );
     }
 }

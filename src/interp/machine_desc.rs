@@ -123,7 +123,12 @@ impl Machine {
 
 /// `G54` → 1 .. `G59` → 6.
 fn work_offset_index(name: &str) -> Option<u32> {
-    let n: u32 = name.trim().to_ascii_uppercase().strip_prefix('G')?.parse().ok()?;
+    let n: u32 = name
+        .trim()
+        .to_ascii_uppercase()
+        .strip_prefix('G')?
+        .parse()
+        .ok()?;
     (54..=59).contains(&n).then(|| n - 53)
 }
 
@@ -146,7 +151,9 @@ mod tests {
         assert!(Machine::parse("[work-offsets]\nG60 = { x = 1 }\n")
             .unwrap_err()
             .contains("G54 .. G59"));
-        assert!(Machine::parse("units = \"cm\"\n").unwrap_err().contains("mm"));
+        assert!(Machine::parse("units = \"cm\"\n")
+            .unwrap_err()
+            .contains("mm"));
         assert!(Machine::parse("[reference]\nw = 1\n").is_err());
     }
 }

@@ -38,8 +38,8 @@ pub mod state;
 pub mod stream;
 pub mod target;
 pub mod threading;
-pub mod tools;
 pub mod tool_header;
+pub mod tools;
 pub mod tooltable;
 
 #[cfg(test)]
@@ -134,7 +134,8 @@ impl<'a, 's> Interp<'a, 's> {
         }
         let mut comp = comp::RadiusComp::new();
         comp.rules = comp::CompRules {
-            entry_longer_than_radius: spec.has(crate::dialect::Capability::CompEntryLongerThanRadius),
+            entry_longer_than_radius: spec
+                .has(crate::dialect::Capability::CompEntryLongerThanRadius),
             on_when_on_error: spec.has(crate::dialect::Capability::CompOnWhenOnError),
         };
         if spec.has(crate::dialect::Capability::PowerOnLinear) {
@@ -249,7 +250,9 @@ impl Interp<'_, '_> {
     /// Cutter compensation is switched off after a mistake, so that one
     /// bad corner does not report every corner after it.
     pub fn recover(&mut self, stop: Stop) -> Result<(), Stop> {
-        let Stop::Error(d) = stop else { return Err(stop) };
+        let Stop::Error(d) = stop else {
+            return Err(stop);
+        };
         if !self.opts.keep_going || !recoverable(&d) || self.recovered >= MAX_RECOVERED {
             return Err(Stop::Error(d));
         }
@@ -258,9 +261,8 @@ impl Interp<'_, '_> {
         self.comp = comp::RadiusComp::new();
         self.comp.rules = rules;
         self.state.comp_side = crate::ir::CompSide::Off;
-        self.diags.push(d.note(
-            "the run went on with the next block, as if this one had not been given",
-        ));
+        self.diags
+            .push(d.note("the run went on with the next block, as if this one had not been given"));
         Ok(())
     }
 }

@@ -96,7 +96,9 @@ fn comments(line: &str) -> Vec<&str> {
     let mut out = Vec::new();
     let mut rest = line;
     while let Some(open) = rest.find('(') {
-        let Some(close) = rest[open..].find(')') else { break };
+        let Some(close) = rest[open..].find(')') else {
+            break;
+        };
         out.push(&rest[open + 1..open + close]);
         rest = &rest[open + close + 1..];
     }
@@ -110,12 +112,25 @@ fn comments(line: &str) -> Vec<&str> {
 /// `BEGIN PGM .. INCH`); millimetres when it says neither.
 fn program_units(head: &str) -> LengthUnit {
     for line in head.lines() {
-        let code = line.split('(').next().unwrap_or("").split(';').next().unwrap_or("");
+        let code = line
+            .split('(')
+            .next()
+            .unwrap_or("")
+            .split(';')
+            .next()
+            .unwrap_or("");
         let upper = code.to_ascii_uppercase();
         if upper.contains("BEGIN PGM") {
-            return if upper.contains("INCH") { LengthUnit::Inch } else { LengthUnit::Mm };
+            return if upper.contains("INCH") {
+                LengthUnit::Inch
+            } else {
+                LengthUnit::Mm
+            };
         }
-        for w in upper.split(|c: char| !c.is_ascii_alphanumeric() && c != '.').flat_map(g_words) {
+        for w in upper
+            .split(|c: char| !c.is_ascii_alphanumeric() && c != '.')
+            .flat_map(g_words)
+        {
             match w {
                 "G20" | "G70" => return LengthUnit::Inch,
                 "G21" | "G71" => return LengthUnit::Mm,

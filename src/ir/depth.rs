@@ -45,7 +45,13 @@ pub fn first_too_deep(exprs: &Arena<Expr>, from: usize) -> Option<ExprId> {
         children(&e.kind, &mut kids);
         let deepest = kids
             .iter()
-            .map(|k| k.index().checked_sub(from).and_then(|j| depth.get(j)).copied().unwrap_or(1))
+            .map(|k| {
+                k.index()
+                    .checked_sub(from)
+                    .and_then(|j| depth.get(j))
+                    .copied()
+                    .unwrap_or(1)
+            })
             .max()
             .unwrap_or(0);
         depth[i - from] = deepest + 1;

@@ -42,9 +42,10 @@ impl ToolMap {
     pub fn from_arg(arg: &str) -> Result<ToolMap, String> {
         let p = std::path::Path::new(arg);
         if p.is_file() {
-            let text = crate::cli::context::read_limited(p.as_ref(), crate::cli::context::MAX_SIDE_FILE)
-                .map(|b| String::from_utf8_lossy(&b).into_owned())
-                .map_err(|e| format!("{arg}: {e}"))?;
+            let text =
+                crate::cli::context::read_limited(p.as_ref(), crate::cli::context::MAX_SIDE_FILE)
+                    .map(|b| String::from_utf8_lossy(&b).into_owned())
+                    .map_err(|e| format!("{arg}: {e}"))?;
             return Self::parse(&text);
         }
         Self::parse(arg)

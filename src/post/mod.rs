@@ -139,7 +139,9 @@ pub fn post(project: &Project, target: &DialectSpec) -> Result<Posted, Vec<Diagn
                 target.name, target.numbers.integer_digits
             ),
         )
-        .help("check the units and the values of the STEP-NC file; nothing was posted")]);
+        .help(
+            "check the units and the values of the STEP-NC file; nothing was posted",
+        )]);
     }
     read_back(&w.out, target)?;
     Ok(Posted {
@@ -228,7 +230,11 @@ impl Writer<'_> {
         use crate::dialect::text::TextForm;
         let paren = self.post.source(template).contains('(');
         let text = values::comment_text_in(text, !paren);
-        let form = if paren { TextForm::Paren } else { TextForm::Semicolon };
+        let form = if paren {
+            TextForm::Paren
+        } else {
+            TextForm::Semicolon
+        };
         let e = self.target.text.escape(&text, form, false);
         if let Some(d) = crate::emit::writer::text_warning(&self.target.name, &e, None) {
             self.warnings.push(d);

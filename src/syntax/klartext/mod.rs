@@ -119,7 +119,10 @@ impl KlartextFrontEnd {
                     Code::BlockTooLong,
                     format!("a block longer than {} bytes", MAX_BLOCK),
                 )
-                .primary(Span::new(input.file, start, end.min(start + 80)), "this block is not read")
+                .primary(
+                    Span::new(input.file, start, end.min(start + 80)),
+                    "this block is not read",
+                )
                 .help("split it into several blocks"),
             );
         }
