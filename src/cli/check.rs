@@ -131,13 +131,13 @@ fn check_file(
             Some(_) => Some(read_whole(path, id, &spec)?),
         };
         let fragment = program.as_deref().and_then(crate::interp::fragment::detect);
-        let mut run = match program {
-            None => stream.finish(&mut it),
-            Some(_) if fragment.is_some() => Vec::new(),
-            Some(program) => {
+        let mut run = match (&program, &fragment) {
+            (None, _) => stream.finish(&mut it),
+            (Some(_), Some(_)) => Vec::new(),
+            (Some(program), None) => {
                 let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
                 let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
-                let mut d = stream.continue_with(&mut it, program, &mut loader);
+                let mut d = stream.continue_with(&mut it, program.clone(), &mut loader);
                 d.append(&mut loader.diags);
                 d
             }
@@ -145,11 +145,18 @@ fn check_file(
         drop(it);
         // A subprogram or library checked alone runs again from its top
         // with its caller's values unknown: at once when it has control
-        // flow, after a failed run when it has none (a feed from the caller).
-        if fragment.is_some() || run.iter().any(Diagnostic::is_error) {
-            if let Some(again) = run_as_fragment(ctx, path, id, &spec, &options)? {
-                run = again;
+        // flow (read whole already), after a failed run when it has none
+        // (a feed from the caller; only then is it read whole).
+        let fragment = match (program, fragment) {
+            (Some(p), Some(f)) => Some((p, f)),
+            (None, None) if run.iter().any(Diagnostic::is_error) => {
+                let p = read_whole(path, id, &spec)?;
+                crate::interp::fragment::detect(&p).map(|f| (p, f))
             }
+            _ => None,
+        };
+        if let Some((program, fragment)) = fragment {
+            run = run_as_fragment(ctx, path, &spec, &options, program, &fragment);
         }
         // A statement cncc cannot run yet is our limit, not the program's
         // mistake: said as a warning that the run-time checks stop there.
@@ -172,27 +179,23 @@ fn check_file(
     Ok(diags)
 }
 
-/// A run that failed may be a subprogram's or a library's, checked alone:
-/// if the file is one, its run again with the caller's values unknown
-/// ([`crate::interp::fragment`]).
+/// Runs a subprogram or library checked alone with its caller's values
+/// unknown ([`crate::interp::fragment`]).
 fn run_as_fragment(
     ctx: &mut Context,
     path: &Path,
-    id: crate::span::FileId,
     spec: &std::sync::Arc<DialectSpec>,
     options: &Options,
-) -> Result<Option<Vec<Diagnostic>>, Failure> {
-    let program = read_whole(path, id, spec)?;
-    let Some(fragment) = crate::interp::fragment::detect(&program) else {
-        return Ok(None);
-    };
+    program: std::rc::Rc<crate::ir::Program>,
+    fragment: &crate::interp::fragment::Fragment,
+) -> Vec<Diagnostic> {
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
     let mut discard = |_: crate::canon::Canon, _: crate::span::Span| {};
     let mut d =
-        crate::interp::fragment::run(program, &fragment, spec, options, &mut loader, &mut discard);
+        crate::interp::fragment::run(program, fragment, spec, options, &mut loader, &mut discard);
     d.append(&mut loader.diags);
-    Ok(Some(d))
+    d
 }
 
 /// The run options for one program: the tools its header comments list

@@ -38,10 +38,7 @@ impl Interp<'_, '_> {
             // data of the machine): the run-time checks stop where it is
             // used, with a warning, never a false error.
             Some(v) if v.is_nan() && matches!(exprs[id].kind, ExprKind::Var(_)) => {
-                let ExprKind::Var(var) = &exprs[id].kind else {
-                    unreachable!()
-                };
-                Err(self.from_outside_at(exprs[id].span, &var_name(var)))
+                Err(self.from_outside_at(exprs[id].span, &expr_name(&exprs[id].kind)))
             }
             Some(v) if !v.is_finite() => {
                 let what = if v.is_nan() {
@@ -396,8 +393,11 @@ fn bank_name(bank: crate::ir::QBank) -> &'static str {
     }
 }
 
-/// How a variable is written, for messages.
-fn var_name(v: &Var) -> String {
+/// How a variable expression is written, for messages.
+fn expr_name(kind: &ExprKind) -> String {
+    let ExprKind::Var(v) = kind else {
+        return "this value".into();
+    };
     match v {
         Var::Numbered(n) => format!("#{n}"),
         Var::Named(n) => format!("#<{n}>"),

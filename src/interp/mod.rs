@@ -117,9 +117,6 @@ pub struct Interp<'a, 's> {
     /// Tools whose sizes no tool table gave: the first block that used
     /// each, and whether cncc's built-in table invented them (W0592).
     pub tools_without_data: std::collections::BTreeMap<i64, (Span, bool)>,
-    /// Tools whose sizes the program itself gives (a CAM tool-list
-    /// comment, TOOL DEF, $TC_DP): not invented.
-    pub program_tools: std::collections::BTreeSet<i64>,
     /// Radius compensation ran with a radius no tool table gave.
     pub comp_without_size: bool,
     /// Run-time mistakes reported so far while going on after them.
@@ -170,7 +167,6 @@ impl<'a, 's> Interp<'a, 's> {
             last_jump: None,
             from_outside: false,
             tools_without_data: Default::default(),
-            program_tools: Default::default(),
             comp_without_size: false,
             recovered: 0,
         }

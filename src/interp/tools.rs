@@ -73,7 +73,7 @@ pub fn known_tool(it: &mut Interp<'_, '_>, t: i64) -> Result<(), Stop> {
         let tool = crate::interp::tooltable::Tool::blank(t, String::new());
         it.tool_table.tools.push(tool);
     }
-    let given = it.program_tools.contains(&t) || it.tool_table.from_program.contains(&t);
+    let given = it.tool_table.from_program.contains(&t);
     if !given && (!listed || it.tool_table.invented) {
         let span = it.span;
         it.tools_without_data.entry(t).or_insert((span, listed));

@@ -40,7 +40,8 @@ pub struct ToolTable {
     pub tools: Vec<Tool>,
     /// cncc's built-in table: its sizes are invented, not the shop's.
     pub invented: bool,
-    /// Tools whose sizes the program's own header comments gave.
+    /// Tools whose sizes the program itself gives (a CAM tool-list
+    /// comment, TOOL DEF, $TC_DP): not invented.
     pub from_program: std::collections::BTreeSet<i64>,
 }
 

@@ -129,7 +129,7 @@ fn tool_def(
         None => None,
     };
     if l.is_some() || r.is_some() {
-        it.program_tools.insert(n);
+        it.tool_table.from_program.insert(n);
     }
     let table = &mut it.tool_table.tools;
     let i = match table.iter().position(|t| t.number == n) {

@@ -84,7 +84,7 @@ fn write(
         (LengthUnit::Inch, LengthUnit::Mm) => MM_PER_INCH,
         _ => 1.0,
     };
-    it.program_tools.insert(t as i64);
+    it.tool_table.from_program.insert(t as i64);
     let tool = tool_mut(&mut it.tool_table.tools, t as i64);
     match datum {
         Datum::Kind => {}
