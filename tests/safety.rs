@@ -1,16 +1,11 @@
 //! Issue 14: no input brings cncc down, and nothing a program says becomes
 //! code it did not mean. Each test is one reproducer of the issue.
 
+mod common;
+use common::cncc;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
-
-fn cncc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cncc"))
-        .args(args)
-        .output()
-        .unwrap()
-}
 
 fn text(b: &[u8]) -> String {
     String::from_utf8_lossy(b).into_owned()
