@@ -86,6 +86,10 @@ pub enum Command {
         /// Fallback: write every canned cycle as the moves it makes.
         #[arg(long = "expand-cycles")]
         expand_cycles: bool,
+        /// Refuse what the target has no form for instead of writing it as
+        /// the moves it makes (see `cncc explain W0612`).
+        #[arg(long)]
+        strict: bool,
         /// Run both programs and compare their cutting moves (with
         /// --features: their features); exit 1 if they differ.
         #[arg(long)]

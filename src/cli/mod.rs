@@ -74,6 +74,7 @@ pub fn run(cli: Cli) -> i32 {
             output,
             tool_map,
             expand_cycles,
+            strict,
             verify,
             features,
             tool_table,
@@ -89,6 +90,7 @@ pub fn run(cli: Cli) -> i32 {
                 output: output.as_deref(),
                 tool_map: tool_map.as_deref(),
                 expand_cycles: *expand_cycles,
+                strict: *strict,
                 verify: *verify,
                 format: *format,
                 features: features.then(|| port_features::FeatureArgs {

@@ -26,6 +26,8 @@ pub struct PortArgs<'a> {
     pub output: Option<&'a Path>,
     pub tool_map: Option<&'a str>,
     pub expand_cycles: bool,
+    /// Refuse instead of writing a construct as the moves it makes.
+    pub strict: bool,
     pub verify: bool,
     pub format: Format,
     /// `--features`: port through STEP-NC features instead.
@@ -60,44 +62,45 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
         ctx.print(&diags, a.format);
         return Ok(EXIT_INPUT_ERRORS);
     }
-    let (ported, port_diags) = port_program(&program, &spec, &target, &opts);
-    diags.extend(port_diags);
-    if diags.iter().any(|d| d.is_error()) {
-        ctx.print(&diags, a.format);
-        return Ok(EXIT_INPUT_ERRORS);
-    }
-    let out = match write_program_warned(&ported, &target) {
-        Ok((out, warnings)) => {
-            diags.extend(warnings);
-            out
+    let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
+    let first = attempt(ctx, &dir, &program, &spec, &target, &opts);
+    let (ported, out, expanded) = match first {
+        Ok((ported, out, d)) => {
+            diags.extend(d);
+            (ported, out, false)
         }
-        Err(errs) => {
-            diags.extend(errs);
+        Err(errors) if a.strict => {
+            diags.extend(errors);
             ctx.print(&diags, a.format);
             return Ok(EXIT_INPUT_ERRORS);
         }
+        Err(errors) => {
+            let mut scratch = crate::source::SourceMap::new();
+            let mut loader = FsLoader::new(dir.clone(), spec.clone(), &mut scratch);
+            let tried = crate::port::expand_range::legalize(
+                &program,
+                &spec,
+                &target,
+                &mut loader,
+                errors,
+                |p| attempt(ctx, &dir, p, &spec, &target, &opts),
+            );
+            match tried {
+                Ok(((ported, out, d), notes)) => {
+                    diags.extend(notes);
+                    diags.extend(d);
+                    (ported, out, true)
+                }
+                Err(errors) => {
+                    diags.extend(errors);
+                    ctx.print(&diags, a.format);
+                    return Ok(EXIT_INPUT_ERRORS);
+                }
+            }
+        }
     };
-    // Subprograms the target keeps in the same file (Heidenhain `LBL`).
-    let out = {
-        let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
-        let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
-        let out = crate::port::to_tnc::sub_text::append(
-            &ported,
-            out,
-            &spec,
-            &target,
-            &opts,
-            &mut loader,
-            &mut diags,
-        );
-        diags.append(&mut loader.diags);
-        out
-    };
-    if diags.iter().any(|d| d.is_error()) {
-        ctx.print(&diags, a.format);
-        return Ok(EXIT_INPUT_ERRORS);
-    }
-    if a.verify {
+    let _ = &ported;
+    if a.verify || expanded {
         let name = match a.output {
             Some(p) => p.display().to_string(),
             None => format!("{} (ported to {})", a.file.display(), target.id),
@@ -239,4 +242,43 @@ fn mismatch(d: &Difference) -> Diagnostic {
         };
     }
     diag.help("the port is not written; report the construct, or use --expand-cycles for cycles")
+}
+
+/// Ports, writes and (for Heidenhain) appends the label subprograms:
+/// the target's text with its warnings, or every error.
+fn attempt(
+    ctx: &mut Context,
+    dir: &Path,
+    program: &Program,
+    spec: &Arc<DialectSpec>,
+    target: &Arc<DialectSpec>,
+    opts: &PortOptions,
+) -> Result<(Program, String, Vec<Diagnostic>), Vec<Diagnostic>> {
+    let (ported, mut diags) = port_program(program, spec, target, opts);
+    if diags.iter().any(|d| d.is_error()) {
+        return Err(diags.into_iter().filter(|d| d.is_error()).collect());
+    }
+    let out = match write_program_warned(&ported, target) {
+        Ok((out, warnings)) => {
+            diags.extend(warnings);
+            out
+        }
+        Err(errs) => return Err(errs),
+    };
+    // Subprograms the target keeps in the same file (Heidenhain `LBL`).
+    let mut loader = FsLoader::new(dir.to_path_buf(), spec.clone(), &mut ctx.files);
+    let out = crate::port::to_tnc::sub_text::append(
+        &ported,
+        out,
+        spec,
+        target,
+        opts,
+        &mut loader,
+        &mut diags,
+    );
+    diags.append(&mut loader.diags);
+    if diags.iter().any(|d| d.is_error()) {
+        return Err(diags.into_iter().filter(|d| d.is_error()).collect());
+    }
+    Ok((ported, out, diags))
 }

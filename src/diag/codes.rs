@@ -235,6 +235,9 @@ codes! {
     PortApproximate = "W0610", "port-approximate", Warning,
         "a construct carried to the target with a documented difference",
         "The target's form of this construct does the same cutting but differs in something the port cannot make equal (a spindle orientation, a register the target derives itself, a re-entry distance). Read the message; `--verify` shows whether the cutting moves still match.";
+    PortExpanded = "W0612", "port-expanded", Warning,
+        "a part of the program written as the moves it makes",
+        "The target has no form for a construct here (a cycle, a subprogram, a loop, a function), so `cncc port` ran the program and wrote the smallest part around it that starts and ends in a plain modal state as the moves, arcs, feeds, speeds, tool changes and coolant it makes, in absolute coordinates, followed by the modes and variables it leaves. The cut is the same (the port verifies it), but the target's program no longer shows the construct. `--strict` refuses instead; rewrite the construct by hand if the target's own idiom is wanted.";
     VerifyRapids = "W0611", "verify-rapids-differ", Warning,
         "the ported program's rapid moves differ from the source's",
         "`--verify` found the same cutting moves, but some rapid (G0) moves go elsewhere (for example a cycle that returns to another level). They do not cut, but check them for collisions.";

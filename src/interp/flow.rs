@@ -147,6 +147,7 @@ impl<'l> Walker<'l> {
                 (prog, pc) = at;
                 continue;
             }
+            observe(it, prog, pc, self.frames.len());
             it.hold();
             let next = self.block(it, prog, pc, entered);
             let next = match it.settle(next) {
@@ -1091,4 +1092,12 @@ fn missing_call(span: crate::span::Span, target: &CallTarget) -> Diagnostic {
     )
     .primary(span, "called here")
     .help("the run goes on after the call as if it returned without moving; put the called program beside this file to check it too")
+}
+
+/// Tells the run's observer, if any, which block runs next.
+fn observe(it: &mut Interp<'_, '_>, prog: usize, pc: usize, depth: usize) {
+    if let Some(mut f) = it.observer.take() {
+        f(&super::BlockEvent { prog, pc, depth }, &it.state, &it.params);
+        it.observer = Some(f);
+    }
 }

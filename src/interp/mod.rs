@@ -121,7 +121,22 @@ pub struct Interp<'a, 's> {
     pub comp_without_size: bool,
     /// Run-time mistakes reported so far while going on after them.
     pub recovered: u32,
+    /// Told of every block before it runs (see [`BlockObserver`]).
+    pub observer: Option<Box<BlockObserver>>,
 }
+
+/// Where the walker is about to run a block: which program (0: the main
+/// one), which block, how many calls deep. The port's expansion fallback
+/// records its run with it.
+#[derive(Clone, Copy, Debug)]
+pub struct BlockEvent {
+    pub prog: usize,
+    pub pc: usize,
+    pub depth: usize,
+}
+
+/// Called before each block with the state in force before it.
+pub type BlockObserver = dyn FnMut(&BlockEvent, &State, &params::Params);
 
 impl<'a, 's> Interp<'a, 's> {
     pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
@@ -169,6 +184,7 @@ impl<'a, 's> Interp<'a, 's> {
             tools_without_data: Default::default(),
             comp_without_size: false,
             recovered: 0,
+            observer: None,
         }
     }
 

@@ -131,7 +131,41 @@ impl Params {
         }
     }
 
+    /// Every variable of the outermost level with its value: what a
+    /// caller can read after a call (the port's expansion writes back the
+    /// ones a replaced part of the program changed).
+    pub fn outer_values(&self) -> HashMap<OuterVar, f64> {
+        let mut m = HashMap::new();
+        m.extend(self.numbered.iter().map(|(&n, &v)| (OuterVar::Numbered(n), v)));
+        m.extend(self.r.iter().map(|(&n, &v)| (OuterVar::R(n), v)));
+        m.extend(self.q.iter().map(|(&(b, n), &v)| (OuterVar::Q(b, n), v)));
+        m.extend(
+            self.global_named
+                .iter()
+                .map(|(k, &v)| (OuterVar::Named(k.clone()), v)),
+        );
+        if let Some(top) = self.local_named.first() {
+            m.extend(top.iter().map(|(k, &v)| (OuterVar::Named(k.clone()), v)));
+        }
+        if let Some(top) = self.user.first() {
+            m.extend(top.iter().map(|(k, &v)| (OuterVar::User(k.clone()), v)));
+        }
+        m
+    }
+
     pub fn depth(&self) -> usize {
         self.local_named.len()
     }
+}
+
+/// A variable of the outermost call level, by kind and name.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum OuterVar {
+    Numbered(u32),
+    R(u32),
+    Q(crate::ir::QBank, u32),
+    /// `#<name>` (global or the main program's local), as stored.
+    Named(String),
+    /// A Siemens `DEF` variable of the main program (upper case).
+    User(String),
 }

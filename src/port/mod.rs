@@ -40,6 +40,7 @@
 mod arcs;
 mod decls;
 pub mod expand;
+pub mod expand_range;
 mod flow_ids;
 pub mod forms;
 mod frame;

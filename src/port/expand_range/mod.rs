@@ -1,0 +1,462 @@
+//! The port's last resort before a refusal: a construct the target has no
+//! form for (and no exact rewrite gave one) is written as what it does.
+//! The program is run once ([`trace`]); around each construct the port
+//! refused, the smallest part of the main program that runs as one piece
+//! and starts and ends in a plain modal state is found ([`ranges`]) and
+//! replaced by the moves and state changes the run made in it
+//! ([`write`]), then the modes and variables it leaves. A construct in a
+//! subprogram is replaced at each call and the definition goes. The port
+//! is then tried again; what still fails, or depends on values known only
+//! while the machine runs, stays refused.
+
+mod ranges;
+mod trace;
+mod write;
+
+use crate::diag::{Code, Diagnostic};
+use crate::dialect::DialectSpec;
+use crate::interp::flow::ProgramLoader;
+use crate::interp::params::OuterVar;
+use crate::interp::state::ModalMotion;
+use crate::ir::{Block, ExprKind, MotionKind, Program, Stmt, StmtKind, Var};
+use crate::span::Span;
+use ranges::{Range, Structure};
+use std::collections::HashSet;
+use trace::Trace;
+
+/// A part of the program that was written as the moves it makes.
+#[derive(Clone, Debug)]
+pub struct Replaced {
+    /// The construct the target could not express, and why.
+    pub at: Span,
+    pub why: String,
+    /// How many blocks of the source the moves replace.
+    pub blocks: usize,
+}
+
+/// Tries `attempt` (port, write, read back) on `p`, and while it refuses
+/// constructs, replaces them by what they do and tries again. Returns
+/// the successful attempt's result and what was replaced, or the errors
+/// that remain (each with a note on why it could not be expanded).
+pub fn legalize<T>(
+    p: &Program,
+    from: &DialectSpec,
+    to: &DialectSpec,
+    loader: &mut dyn ProgramLoader,
+    errors: Vec<Diagnostic>,
+    mut attempt: impl FnMut(&Program) -> Result<T, Vec<Diagnostic>>,
+) -> Result<(T, Vec<Diagnostic>), Vec<Diagnostic>> {
+    let (mut cur, mut errors) = (p.clone(), errors);
+    let mut notes: Vec<Diagnostic> = Vec::new();
+    for _ in 0..8 {
+        let trace = trace::record(&cur, from, loader);
+        let (next, done) = match plan_and_apply(&cur, &trace, to, &errors) {
+            Ok(x) => x,
+            Err(refused) => return Err(refused),
+        };
+        notes.extend(done);
+        cur = next;
+        match attempt(&cur) {
+            Ok(t) => return Ok((t, notes)),
+            Err(e) => errors = e,
+        }
+    }
+    Err(errors)
+}
+
+/// Replaces the parts around every error, or returns the errors with
+/// why each could not be replaced.
+fn plan_and_apply(
+    p: &Program,
+    t: &Trace,
+    to: &DialectSpec,
+    errors: &[Diagnostic],
+) -> Result<(Program, Vec<Diagnostic>), Vec<Diagnostic>> {
+    let st = Structure::of(p);
+    let mut ranges: Vec<Range> = Vec::new();
+    let mut definitions: Vec<(usize, usize)> = Vec::new();
+    let mut notes = Vec::new();
+    let mut refused = Vec::new();
+    for e in errors.iter().filter(|d| d.is_error()) {
+        let found = block_of(p, e).ok_or_else(|| "it is not in this file".to_string());
+        match found.and_then(|j| targets(p, &st, t, j)) {
+            Ok((rs, def)) => {
+                ranges.extend(rs);
+                definitions.extend(def);
+                notes.push(note_for(e));
+            }
+            Err(why) => refused.push(e.clone().note(format!(
+                "it cannot be written as the moves it makes either: {why}"
+            ))),
+        }
+    }
+    if !refused.is_empty() {
+        return Err(refused);
+    }
+    let ranges = merge(t, &st, ranges).map_err(|why| {
+        errors
+            .iter()
+            .map(|e| e.clone().note(format!("it cannot be written as the moves it makes: {why}")))
+            .collect::<Vec<_>>()
+    })?;
+    let out = apply(p, t, to, &ranges, &definitions).map_err(|why| {
+        errors
+            .iter()
+            .map(|e| e.clone().note(format!("it cannot be written as the moves it makes: {why}")))
+            .collect::<Vec<_>>()
+    })?;
+    Ok((out, notes))
+}
+
+fn note_for(e: &Diagnostic) -> Diagnostic {
+    let mut d = Diagnostic::new(
+        Code::PortExpanded,
+        format!("written as the moves it makes: {}", e.message),
+    );
+    if let Some(l) = e.labels.iter().find(|l| l.primary).or(e.labels.first()) {
+        d = d.primary(l.span, "the target has no form for this");
+    }
+    d
+}
+
+/// The block of `p` that holds the error's primary place.
+fn block_of(p: &Program, e: &Diagnostic) -> Option<usize> {
+    let l = e.labels.iter().find(|l| l.primary).or(e.labels.first())?;
+    let sp = l.span;
+    p.blocks.iter().position(|b| {
+        b.span.file == sp.file && b.span.start <= sp.start && sp.start <= b.span.end.max(b.span.start)
+    })
+    .or_else(|| {
+        p.blocks
+            .iter()
+            .position(|b| b.stmts.iter().any(|s| s.span.file == sp.file && s.span.start <= sp.start && sp.start < s.span.end))
+    })
+}
+
+/// The parts to replace for an error at block `j`, and the subprogram
+/// definition that goes with them.
+fn targets(
+    p: &Program,
+    st: &Structure,
+    t: &Trace,
+    j: usize,
+) -> Result<(Vec<Range>, Option<(usize, usize)>), String> {
+    let at_top = t.steps.iter().any(|s| s.pc == j);
+    match t.deep.get(&j) {
+        Some(calls) if !at_top => {
+            let mut out = Vec::new();
+            let mut seen = HashSet::new();
+            for &k in calls {
+                let pc = t.steps[k].pc;
+                if seen.insert(pc) {
+                    out.push(ranges::grow(t, st, pc, pc)?);
+                }
+            }
+            let def = ranges::definition(p, st, t, j);
+            Ok((out, def))
+        }
+        _ => {
+            if !at_top {
+                if let Some(def) = ranges::definition(p, st, t, j) {
+                    if def.0 > 0 && !t.steps.iter().any(|s| (def.0..=def.1).contains(&s.pc)) {
+                        // A subprogram no one calls.
+                        return Ok((Vec::new(), Some(def)));
+                    }
+                }
+            }
+            Ok((vec![ranges::grow(t, st, j, j)?], None))
+        }
+    }
+}
+
+/// Sorts the ranges and joins the ones that overlap (grown again).
+fn merge(t: &Trace, st: &Structure, mut rs: Vec<Range>) -> Result<Vec<Range>, String> {
+    rs.sort_by_key(|r| (r.a, r.b));
+    let mut out: Vec<Range> = Vec::new();
+    for r in rs {
+        match out.last_mut() {
+            Some(last) if r.a <= last.b + 1 => {
+                if r.b > last.b {
+                    *last = ranges::grow(t, st, last.a, r.b)?;
+                }
+            }
+            _ => out.push(r),
+        }
+    }
+    Ok(out)
+}
+
+fn apply(
+    p: &Program,
+    t: &Trace,
+    to: &DialectSpec,
+    rs: &[Range],
+    defs: &[(usize, usize)],
+) -> Result<Program, String> {
+    let by_span = write::statements_by_span(p);
+    let mut out = p.clone();
+    let read = vars_read_outside(p, rs, defs);
+    let mut blocks = Vec::new();
+    let mut i = 0;
+    while i < p.blocks.len() {
+        if let Some(r) = rs.iter().find(|r| r.a == i) {
+            blocks.extend(expansion(&mut out, p, t, to, &by_span, r, &read)?);
+            i = r.b + 1;
+        } else if let Some(&(_, e)) = defs.iter().find(|d| d.0 == i) {
+            // The definition goes; a program end in it stays.
+            blocks.extend(p.blocks[i..=e].iter().filter(|b| ends(b)).cloned());
+            i = e + 1;
+        } else {
+            blocks.push(p.blocks[i].clone());
+            i += 1;
+        }
+    }
+    out.blocks = blocks;
+    Ok(out)
+}
+
+fn ends(b: &Block) -> bool {
+    b.stmts
+        .iter()
+        .any(|s| matches!(s.kind, StmtKind::ProgramEnd { .. }))
+}
+
+/// Statements a replaced part keeps where they were: the program's start
+/// and tape marks, declarations.
+fn kept(s: &Stmt) -> bool {
+    matches!(
+        s.kind,
+        StmtKind::ProgramStart { .. } | StmtKind::Tape | StmtKind::Declare { .. }
+    )
+}
+
+fn expansion(
+    out: &mut Program,
+    p: &Program,
+    t: &Trace,
+    to: &DialectSpec,
+    by_span: &std::collections::HashMap<Span, Stmt>,
+    r: &Range,
+    read: &Reads,
+) -> Result<Vec<Block>, String> {
+    let like = &p.blocks[r.a];
+    let mut blocks: Vec<Block> = Vec::new();
+    for b in &p.blocks[r.a..=r.b] {
+        let keep: Vec<Stmt> = b.stmts.iter().filter(|s| kept(s)).cloned().collect();
+        if !keep.is_empty() {
+            blocks.push(super::follow_block(b, keep));
+        }
+    }
+    let before = &t.steps[r.first].before;
+    let mut w = write::Writer::new(by_span, to);
+    let start = t.steps[r.first].first;
+    for (c, _) in &t.calls[..start] {
+        w.follow(c);
+    }
+    (w.plane, w.inch) = (before.plane, before.inch);
+    w.begin();
+    let mut head = vec![Stmt::new(
+        StmtKind::Comment {
+            text: "cncc: written as the moves it makes".into(),
+            style: crate::ir::CommentStyle::Paren,
+        },
+        like.span,
+    )];
+    if !before.absolute {
+        head.push(Stmt::new(StmtKind::Distance(crate::ir::DimMode::Absolute), like.span));
+    }
+    if before.arc_absolute {
+        head.push(Stmt::new(StmtKind::ArcDistance(crate::ir::DimMode::Incremental), like.span));
+    }
+    w.out.extend(head);
+    write_calls(&mut w, p, t, r)?;
+    if w.g92 != w.g92_base {
+        return Err("it leaves a G92/G52 shift other than the one it started in".into());
+    }
+    let after = t.after(r.last).ok_or("the run ended inside it")?;
+    restore(&mut w, out, after, before, read, like.span);
+    for b in &p.blocks[r.a..=r.b] {
+        if ends(b) {
+            blocks.push(b.clone());
+        }
+    }
+    let body = group(like, std::mem::take(&mut w.out));
+    let split = blocks.iter().position(ends).unwrap_or(blocks.len());
+    blocks.splice(split..split, body);
+    Ok(blocks)
+}
+
+/// The calls of the range, with each visited block's comments before the
+/// calls it made.
+fn write_calls(w: &mut write::Writer<'_>, p: &Program, t: &Trace, r: &Range) -> Result<(), String> {
+    let from = t.steps[r.first].visit;
+    let to = t
+        .steps
+        .get(r.last + 1)
+        .map_or(t.visits.len(), |s| s.visit);
+    let end = t.steps.get(r.last + 1).map_or(t.calls.len(), |s| s.first);
+    let mut cursor = t.steps[r.first].first;
+    for &(first, pc) in &t.visits[from..to] {
+        for (c, sp) in &t.calls[cursor..first.max(cursor)] {
+            w.call(c, *sp)?;
+        }
+        cursor = cursor.max(first);
+        for s in &p.blocks[pc].stmts {
+            if matches!(s.kind, StmtKind::Comment { .. }) {
+                w.out.push(s.clone());
+            }
+        }
+    }
+    for (c, sp) in &t.calls[cursor..end] {
+        w.call(c, *sp)?;
+    }
+    Ok(())
+}
+
+/// The modes and variables the replaced part leaves for what follows.
+fn restore(
+    w: &mut write::Writer<'_>,
+    out: &mut Program,
+    after: &trace::Modes,
+    before: &trace::Modes,
+    read: &Reads,
+    span: Span,
+) {
+    let push = |w: &mut write::Writer<'_>, k| w.out.push(Stmt::new(k, span));
+    if after.plane != w.plane {
+        push(w, StmtKind::Plane(write::plane_of(after.plane)));
+    }
+    if !after.absolute {
+        push(w, StmtKind::Distance(crate::ir::DimMode::Incremental));
+    }
+    if after.arc_absolute {
+        push(w, StmtKind::ArcDistance(crate::ir::DimMode::Absolute));
+    }
+    if let ModalMotion::Move(k @ (MotionKind::Rapid | MotionKind::Linear)) = after.motion {
+        if w.last_motion != Some(k) {
+            push(w, StmtKind::Motion(Box::new(crate::ir::Motion::new(k))));
+        }
+    }
+    let mut changed: Vec<(&OuterVar, f64)> = after
+        .vars
+        .iter()
+        .filter(|(k, v)| before.vars.get(*k) != Some(*v) && read.wants(k))
+        .map(|(k, v)| (k, *v))
+        .collect();
+    changed.sort_by(|a, b| format!("{:?}", a.0).cmp(&format!("{:?}", b.0)));
+    for (k, v) in changed {
+        let Some(var) = var_of(k) else { continue };
+        let value = super::number_expr(out, super::decimal(v), span);
+        push(w, StmtKind::Assign { var, value });
+    }
+}
+
+fn var_of(k: &OuterVar) -> Option<Var> {
+    Some(match k {
+        OuterVar::Numbered(n) => Var::Numbered(*n),
+        OuterVar::R(n) => Var::R(*n),
+        OuterVar::Q(b, n) => Var::Q(*b, *n),
+        OuterVar::Named(s) => Var::Named(s.clone()),
+        OuterVar::User(s) if !s.contains('[') => Var::User(s.clone(), Vec::new()),
+        OuterVar::User(_) => return None,
+    })
+}
+
+/// Statements in blocks: a feed goes on the move after it, the rest one
+/// to a block.
+fn group(like: &Block, stmts: Vec<Stmt>) -> Vec<Block> {
+    let mut out: Vec<Block> = Vec::new();
+    let mut pending: Vec<Stmt> = Vec::new();
+    for s in stmts {
+        let is_feed = matches!(s.kind, StmtKind::Feed(_));
+        let is_move = matches!(s.kind, StmtKind::Motion(_));
+        if is_move {
+            pending.push(s);
+            out.push(super::follow_block(like, std::mem::take(&mut pending)));
+        } else if is_feed {
+            if !pending.is_empty() {
+                out.push(super::follow_block(like, std::mem::take(&mut pending)));
+            }
+            pending.push(s);
+        } else {
+            if !pending.is_empty() {
+                out.push(super::follow_block(like, std::mem::take(&mut pending)));
+            }
+            out.push(super::follow_block(like, vec![s]));
+        }
+    }
+    if !pending.is_empty() {
+        out.push(super::follow_block(like, pending));
+    }
+    out
+}
+
+/// Variables read by the part of the program that stays.
+struct Reads {
+    numbered: HashSet<u32>,
+    any_numbered: bool,
+    r: HashSet<u32>,
+    any_r: bool,
+    q: HashSet<(crate::ir::QBank, u32)>,
+    named: HashSet<String>,
+    user: HashSet<String>,
+}
+
+impl Reads {
+    fn wants(&self, k: &OuterVar) -> bool {
+        match k {
+            OuterVar::Numbered(n) => self.any_numbered || self.numbered.contains(n),
+            OuterVar::R(n) => self.any_r || self.r.contains(n),
+            OuterVar::Q(b, n) => self.q.contains(&(*b, *n)),
+            OuterVar::Named(s) => self.named.contains(&s.to_ascii_lowercase()),
+            OuterVar::User(s) => self.user.contains(&s.to_ascii_uppercase()),
+        }
+    }
+}
+
+fn vars_read_outside(p: &Program, rs: &[Range], defs: &[(usize, usize)]) -> Reads {
+    let span_of = |a: usize, b: usize| (p.blocks[a].span.start, p.blocks[b].span.end);
+    let gone: Vec<(u32, u32)> = rs
+        .iter()
+        .map(|r| span_of(r.a, r.b))
+        .chain(defs.iter().map(|&(a, b)| span_of(a, b)))
+        .collect();
+    let inside = |s: Span| gone.iter().any(|&(a, b)| a <= s.start && s.end <= b);
+    let mut r = Reads {
+        numbered: HashSet::new(),
+        any_numbered: false,
+        r: HashSet::new(),
+        any_r: false,
+        q: HashSet::new(),
+        named: HashSet::new(),
+        user: HashSet::new(),
+    };
+    for (_, e) in p.exprs.iter() {
+        if e.span.file != p.file || inside(e.span) {
+            continue;
+        }
+        if let ExprKind::Var(v) = &e.kind {
+            match v {
+                Var::Numbered(n) => {
+                    r.numbered.insert(*n);
+                }
+                Var::Indirect(_) => r.any_numbered = true,
+                Var::Named(s) => {
+                    r.named.insert(s.to_ascii_lowercase());
+                }
+                Var::R(n) => {
+                    r.r.insert(*n);
+                }
+                Var::RIndirect(_) => r.any_r = true,
+                Var::User(s, _) => {
+                    r.user.insert(s.to_ascii_uppercase());
+                }
+                Var::System(..) => {}
+                Var::Q(b, n) => {
+                    r.q.insert((*b, *n));
+                }
+            }
+        }
+    }
+    r
+}
