@@ -91,6 +91,7 @@ pub fn run(cli: Cli) -> i32 {
                 tool_map: tool_map.as_deref(),
                 expand_cycles: *expand_cycles,
                 strict: *strict,
+                options: run.analysis_options(),
                 verify: *verify,
                 format: *format,
                 features: features.then(|| port_features::FeatureArgs {

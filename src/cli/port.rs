@@ -28,6 +28,8 @@ pub struct PortArgs<'a> {
     pub expand_cycles: bool,
     /// Refuse instead of writing a construct as the moves it makes.
     pub strict: bool,
+    /// How programs run for the expansion and the proof.
+    pub options: crate::interp::Options,
     pub verify: bool,
     pub format: Format,
     /// `--features`: port through STEP-NC features instead.
@@ -81,6 +83,7 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
                 &program,
                 &spec,
                 &target,
+                &a.options,
                 &mut loader,
                 errors,
                 |p| attempt(ctx, &dir, p, &spec, &target, &opts),
@@ -108,6 +111,7 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
         let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
         let sides = Sides {
             dir: &dir,
+            run: &a.options,
             source: (program, &spec),
             target: &target,
             opts: &opts,
@@ -128,6 +132,8 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
 
 struct Sides<'a> {
     dir: &'a Path,
+    /// How both programs run (the analysis commands' machine).
+    run: &'a crate::interp::Options,
     source: (Program, &'a Arc<DialectSpec>),
     target: &'a Arc<DialectSpec>,
     opts: &'a PortOptions,
@@ -151,11 +157,12 @@ fn verify_port(
         );
         return false;
     }
-    let opts = crate::interp::Options::default();
+    let opts = s.run.clone();
     let (src_prog, src_spec) = (&s.source.0, s.source.1);
+    let fragment = crate::interp::fragment::detect(src_prog).is_some();
     let (ea, da) = {
         let mut loader = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
-        verify::events(Rc::new(src_prog.clone()), src_spec, &opts, &mut loader)
+        run_events(Rc::new(src_prog.clone()), src_spec, &opts, &mut loader, fragment)
     };
     let (eb, mut db) = {
         let source = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
@@ -166,7 +173,7 @@ fn verify_port(
             opts: s.opts,
             diags: Vec::new(),
         };
-        let (e, mut d) = verify::events(Rc::new(reread), s.target, &opts, &mut loader);
+        let (e, mut d) = run_events(Rc::new(reread), s.target, &opts, &mut loader, fragment);
         d.extend(loader.diags.into_iter().filter(Diagnostic::is_error));
         (e, d)
     };
@@ -281,4 +288,27 @@ fn attempt(
         return Err(diags.into_iter().filter(|d| d.is_error()).collect());
     }
     Ok((ported, out, diags))
+}
+
+/// The moves of a run, as `--verify` compares them. A subprogram or
+/// macro ported alone runs as `check` runs it: from its first block, with
+/// the values it gets from its caller unknown.
+fn run_events(
+    p: Rc<Program>,
+    spec: &DialectSpec,
+    opts: &crate::interp::Options,
+    loader: &mut dyn crate::interp::flow::ProgramLoader,
+    fragment: bool,
+) -> (Vec<crate::toolpath::Event>, Vec<Diagnostic>) {
+    if !fragment {
+        return verify::events(p, spec, opts, loader);
+    }
+    let kind = crate::interp::fragment::detect(&p).unwrap_or(crate::interp::fragment::Fragment::Called);
+    let mut tracker = crate::toolpath::Tracker::new();
+    let mut out = Vec::new();
+    let mut sink = |call: crate::canon::Canon, span: Span| {
+        tracker.push(&call, span, |e| out.push(e));
+    };
+    let diags = crate::interp::fragment::run(p, &kind, spec, opts, loader, &mut sink);
+    (out, diags)
 }

@@ -42,14 +42,26 @@ pub fn legalize<T>(
     p: &Program,
     from: &DialectSpec,
     to: &DialectSpec,
+    opts: &crate::interp::Options,
     loader: &mut dyn ProgramLoader,
     errors: Vec<Diagnostic>,
     mut attempt: impl FnMut(&Program) -> Result<T, Vec<Diagnostic>>,
 ) -> Result<(T, Vec<Diagnostic>), Vec<Diagnostic>> {
     let (mut cur, mut errors) = (p.clone(), errors);
     let mut notes: Vec<Diagnostic> = Vec::new();
+    let mut seen: HashSet<Vec<(Code, Option<Span>)>> = HashSet::new();
     for _ in 0..8 {
-        let trace = trace::record(&cur, from, loader);
+        if !seen.insert(places(&errors)) {
+            // Writing it as moves gave the same refusals: the construct is
+            // a state the target has no form for, not a path.
+            return Err(errors
+                .into_iter()
+                .map(|e| {
+                    e.note("writing it as the moves it makes does not help: the target has no form for what it sets")
+                })
+                .collect());
+        }
+        let trace = trace::record(&cur, from, opts, loader);
         let (next, done) = match plan_and_apply(&cur, &trace, to, &errors) {
             Ok(x) => x,
             Err(refused) => return Err(refused),
@@ -106,6 +118,15 @@ fn plan_and_apply(
             .collect::<Vec<_>>()
     })?;
     Ok((out, notes))
+}
+
+fn places(errors: &[Diagnostic]) -> Vec<(Code, Option<Span>)> {
+    let mut v: Vec<(Code, Option<Span>)> = errors
+        .iter()
+        .map(|e| (e.code, e.labels.first().map(|l| l.span)))
+        .collect();
+    v.sort_by_key(|(c, s)| (*c, s.map(|s| (s.file.0, s.start))));
+    v
 }
 
 fn note_for(e: &Diagnostic) -> Diagnostic {
@@ -302,7 +323,7 @@ fn write_calls(w: &mut write::Writer<'_>, p: &Program, t: &Trace, r: &Range) -> 
         }
         cursor = cursor.max(first);
         for s in &p.blocks[pc].stmts {
-            if matches!(s.kind, StmtKind::Comment { .. }) {
+            if said_not_run(s) {
                 w.out.push(s.clone());
             }
         }
@@ -311,6 +332,14 @@ fn write_calls(w: &mut write::Writer<'_>, p: &Program, t: &Trace, r: &Range) -> 
         w.call(c, *sp)?;
     }
     Ok(())
+}
+
+/// What a block says that makes no canonical call but must not be lost:
+/// comments, and machine functions cncc passes through (a builder's M
+/// code). If the target cannot hold one, the port refuses again.
+fn said_not_run(s: &Stmt) -> bool {
+    matches!(s.kind, StmtKind::Comment { .. })
+        || (matches!(s.kind, StmtKind::Aux { .. } | StmtKind::Command { .. }) && write::literal(s))
 }
 
 /// The modes and variables the replaced part leaves for what follows.

@@ -90,13 +90,13 @@ impl Trace {
 pub fn record(
     p: &Program,
     spec: &DialectSpec,
+    opts: &Options,
     loader: &mut dyn ProgramLoader,
 ) -> Trace {
     let trace = Rc::new(RefCell::new(Trace {
         in_main: true,
         ..Trace::default()
     }));
-    let opts = Options::default();
     let t = trace.clone();
     let mut sink = move |c: Canon, s: Span| {
         let mut t = t.borrow_mut();
@@ -104,7 +104,7 @@ pub fn record(
         t.calls.push((c, s));
     };
     let mut sink_ref: &mut dyn FnMut(Canon, Span) = &mut sink;
-    let (end, stopped) = run(p, spec, &opts, loader, &mut sink_ref, &trace);
+    let (end, stopped) = run(p, spec, opts, loader, &mut sink_ref, &trace);
     drop(sink);
     let mut t = Rc::try_unwrap(trace)
         .map(RefCell::into_inner)
@@ -125,6 +125,9 @@ fn run<'a>(
     trace: &Rc<RefCell<Trace>>,
 ) -> (Modes, bool) {
     let mut it = Interp::new(spec, opts, sink);
+    // A subprogram ported alone runs from its top with its caller's
+    // values unknown, as `check` runs it.
+    it.from_outside = crate::interp::fragment::detect(p).is_some();
     let t = trace.clone();
     it.observer = Some(Box::new(move |e: &BlockEvent, s: &State, params| {
         let mut t = t.borrow_mut();
