@@ -411,3 +411,25 @@ fn oword_subroutines_are_inlined_for_siemens() {
     assert!(err.contains("E0617"), "{err}");
     assert!(err.contains("read after it calls another"), "{err}");
 }
+
+/// A construct the target has no form for (Fanuc's G52 local shift for
+/// the 840D) is written as the moves it makes, with the shift folded into
+/// the coordinates, a W0612 warning per construct and a proof; `--strict`
+/// refuses it instead.
+#[test]
+fn a_construct_without_a_target_form_is_written_as_its_moves() {
+    let src = root().join("tests/programs/port/g52_shift.nc");
+    let src = src.to_str().unwrap();
+    let o = cncc(&["port", "--from", "fanuc", "--to", "siemens840d", src]);
+    let (out, err) = (text(&o.stdout), text(&o.stderr));
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(err.contains("W0612 port-expanded"), "{err}");
+    assert!(err.contains("verify: OK"), "the expansion is always verified: {err}");
+    assert!(!out.contains("G52"), "{out}");
+    for want in ["G0 X20 Y10 Z10", "G1 X20 Y10 Z-1 F200", "G2 X40 Y10 Z-1 I5 J0", "G0 X0 Y0"] {
+        assert!(out.contains(want), "want `{want}` in:\n{out}");
+    }
+    let strict = cncc(&["port", "--strict", "--from", "fanuc", "--to", "siemens840d", src]);
+    assert_eq!(strict.status.code(), Some(1));
+    assert!(text(&strict.stderr).contains("E0601"), "{}", text(&strict.stderr));
+}

@@ -400,7 +400,8 @@ fn group(like: &Block, stmts: Vec<Stmt>) -> Vec<Block> {
         let is_feed = matches!(s.kind, StmtKind::Feed(_));
         let is_move = matches!(s.kind, StmtKind::Motion(_));
         if is_move {
-            pending.push(s);
+            // The move first, its feed after it: `G1 X10 F400`.
+            pending.insert(0, s);
             out.push(super::follow_block(like, std::mem::take(&mut pending)));
         } else if is_feed {
             if !pending.is_empty() {

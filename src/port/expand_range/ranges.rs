@@ -141,8 +141,15 @@ fn widen(t: &Trace, st: &Structure, a: usize, b: usize) -> Result<(usize, usize)
         } else if next > nb + 1 {
             nb = next - 1;
         }
-        if !t.after(k1).is_some_and(|m| m.is_plain()) {
-            nb = nb.max(next);
+        let shift = t.steps[k0].before.g92;
+        match t.after(k1) {
+            Some(m) if m.is_plain() && m.g92 == shift => {}
+            // It ends unshifted but began inside a shift: take the block
+            // that made the shift too.
+            Some(m) if m.is_plain() && m.g92 == [0.0; 9] && k0 > 0 => {
+                na = na.min(t.steps[k0 - 1].pc)
+            }
+            _ => nb = nb.max(next),
         }
     } else if !t.after(k1).is_some_and(|m| m.is_plain()) {
         return Err("the program ends in cutter compensation or a modal cycle".into());

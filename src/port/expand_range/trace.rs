@@ -23,6 +23,8 @@ pub struct Modes {
     pub inch: bool,
     pub motion: ModalMotion,
     pub comp: CompSide,
+    /// The G92/G52 offset (mm): a part must give back the one it got.
+    pub g92: [f64; 9],
     pub vars: HashMap<OuterVar, f64>,
 }
 
@@ -35,6 +37,7 @@ impl Modes {
             inch: s.units == crate::ir::LengthUnit::Inch,
             motion: s.motion,
             comp: s.comp_side,
+            g92: if s.g92_applied { s.g92 } else { [0.0; 9] },
             vars,
         }
     }

@@ -181,6 +181,12 @@ impl<'a> Writer<'a> {
                 Some(StmtKind::Comment { .. }) => {}
                 _ => self.push(StmtKind::Message(Some(m.clone())), span),
             },
+            // M30's exchange of pallets, written by writing the M30.
+            Canon::PalletShuttle
+                if matches!(
+                    self.by_span.get(&span).map(|s| &s.kind),
+                    Some(StmtKind::Stop(StopKind::End | StopKind::EndRewind))
+                ) => {}
             Canon::ProgramStop => self.push(StmtKind::Stop(StopKind::Program), span),
             Canon::OptionalProgramStop => self.push(StmtKind::Stop(StopKind::Optional), span),
             Canon::ProgramEnd => match self.own(span) {
