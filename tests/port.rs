@@ -116,7 +116,7 @@ fn reference_returns_between_g28_and_g74() {
     assert!(fanuc.contains("G91 G28 Z0.\nG90\nG1 X5. F100"), "{fanuc}");
     let nc = dir.path().join("through.nc");
     std::fs::write(&nc, "G21 G90\nG0 X1. Y1. Z5.\nG28 Z5.\nM30\n").unwrap();
-    let out = cncc(&["port", &nc.display().to_string(), "--to", "siemens840d"]);
+    let out = cncc(&["port", "--strict", &nc.display().to_string(), "--to", "siemens840d"]);
     let err = text(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{err}");
     assert!(err.contains("error[E0601 cannot-express]"), "{err}");
@@ -147,9 +147,13 @@ fn tool_map_renumbers_tools_and_registers() {
 fn chip_breaking_needs_the_fallback() {
     let src = root().join("tests/matrix/pecking/from-linuxcnc.ngc");
     let src = src.display().to_string();
-    let refused = cncc(&["port", &src, "--to", "siemens840d"]);
+    let refused = cncc(&["port", "--strict", &src, "--to", "siemens840d"]);
     assert_eq!(refused.status.code(), Some(1));
     assert!(text(&refused.stderr).contains("E0610"));
+    // Without --strict the port writes the cycle as its moves by itself.
+    let auto = cncc(&["port", &src, "--to", "siemens840d"]);
+    assert_eq!(auto.status.code(), Some(0), "{}", text(&auto.stderr));
+    assert!(text(&auto.stderr).contains("W0612"), "{}", text(&auto.stderr));
     let out = cncc(&[
         "port",
         &src,
@@ -216,7 +220,7 @@ fn siemens_pocket_and_face_cycles_expand_for_fanuc() {
     for topic in ["pockets", "faces"] {
         let src = root().join(format!("tests/matrix/{topic}/from-siemens840d.mpf"));
         let src = src.display().to_string();
-        let refused = cncc(&["port", &src, "--to", "fanuc"]);
+        let refused = cncc(&["port", "--strict", &src, "--to", "fanuc"]);
         assert_eq!(refused.status.code(), Some(1), "{topic}");
         let out = cncc(&["port", &src, "--to", "fanuc", "--expand-cycles", "--verify"]);
         let (o, e) = (text(&out.stdout), text(&out.stderr));
@@ -367,7 +371,7 @@ fn oword_subroutines_become_g65_programs() {
     ] {
         let bad = dir.path().join("bad.ngc");
         std::fs::write(&bad, program).unwrap();
-        let out = cncc(&["port", &bad.display().to_string(), "--to", "fanuc"]);
+        let out = cncc(&["port", "--strict", &bad.display().to_string(), "--to", "fanuc"]);
         let err = text(&out.stderr);
         assert_eq!(out.status.code(), Some(1), "{err}");
         assert!(err.contains("E0617"), "{err}");
@@ -405,7 +409,7 @@ fn oword_subroutines_are_inlined_for_siemens() {
         "o200 sub\n  o201 call [3]\n  G1 X[#1] F300\no200 endsub\no201 sub\n  G1 Z[-#1]\no201 endsub\nG0 X0 Y0 Z1\no200 call [20]\nM2\n",
     )
     .unwrap();
-    let out = cncc(&["port", &bad.display().to_string(), "--to", "siemens840d"]);
+    let out = cncc(&["port", "--strict", &bad.display().to_string(), "--to", "siemens840d"]);
     let err = text(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{err}");
     assert!(err.contains("E0617"), "{err}");
@@ -432,4 +436,38 @@ fn a_construct_without_a_target_form_is_written_as_its_moves() {
     let strict = cncc(&["port", "--strict", "--from", "fanuc", "--to", "siemens840d", src]);
     assert_eq!(strict.status.code(), Some(1));
     assert!(text(&strict.stderr).contains("E0601"), "{}", text(&strict.stderr));
+}
+
+/// A Fusion 360 style Fanuc program (tool header, `G28 G91 Z0.`, `G43 H`,
+/// a G41 D1 contour with arcs, G81/G83 over several holes) ports to the
+/// 840D and the TNC in their own idioms, verified, and both outputs port
+/// back to Fanuc, verified.
+#[test]
+fn a_fusion_style_program_ports_to_siemens_and_heidenhain_and_back() {
+    let src = root().join("tests/programs/port/fusion_style.nc");
+    let dir = tempfile::tempdir().unwrap();
+    let wants: &[(&str, &str, &[&str])] = &[
+        ("siemens840d", "mpf", &["G41 D1 X0 Y0 F800", "MCALL CYCLE81(", "MCALL CYCLE83(", "G74 Z1=0"]),
+        ("heidenhain", "h", &["L X+0 Y+0 RL F800", "CYCL DEF 200", "CYCL DEF 203", "TOOL CALL 1", "L X-10 Y-10 R0"]),
+    ];
+    for (to, ext, want) in wants {
+        let out = dir.path().join(format!("bracket.{ext}"));
+        let o = cncc(&[
+            "port", "--from", "fanuc", "--to", to, "--verify",
+            src.to_str().unwrap(), "-o", out.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{to}: {}", text(&o.stderr));
+        assert!(text(&o.stderr).contains("verify: OK"), "{}", text(&o.stderr));
+        let written = std::fs::read_to_string(&out).unwrap();
+        for w in *want {
+            assert!(written.contains(w), "{to}: want `{w}` in:\n{written}");
+        }
+        assert!(!written.lines().any(|l| l.trim_end().ends_with(" L R0")), "{written}");
+        let back = dir.path().join(format!("back-{to}.nc"));
+        let o = cncc(&[
+            "port", "--from", to, "--to", "fanuc", "--verify",
+            out.to_str().unwrap(), "-o", back.to_str().unwrap(),
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{to} back: {}", text(&o.stderr));
+    }
 }

@@ -38,6 +38,7 @@
 //! the rest.
 
 mod arcs;
+mod comp_register;
 mod decls;
 pub mod expand;
 pub mod expand_range;
@@ -53,6 +54,7 @@ mod loops;
 pub(crate) mod osubs;
 mod pockets;
 mod poles;
+mod program_name;
 mod ref_return;
 mod spf;
 pub mod subload;
@@ -97,6 +99,7 @@ pub fn port_program(
     pockets::run(&mut out, from, to, &mut diags);
     from_tnc::run(&mut out, from, to, &mut diags);
     frame::run(&mut out, from, to);
+    program_name::run(&mut out, to);
     from_tnc::subprograms::run(&mut out, from, to, &mut diags);
     poles::run(&mut out, from, to, &mut diags);
     to_named::run(&mut out, from, to, &mut diags);
@@ -114,6 +117,7 @@ pub fn port_program(
     spf::run(&mut out, from, to);
     groups::run(&mut out, to);
     tool_call::run(&mut out, from, to);
+    comp_register::run(&mut out, to);
     to_tnc::subprograms::run(&mut out, from, to, &mut diags);
     text::run(&mut out, from, to, &mut diags);
     out.dialect = to.id.clone();

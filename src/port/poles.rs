@@ -9,7 +9,7 @@
 use super::levels::Modal;
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec};
-use crate::ir::{Coord, MotionKind, Program, StmtKind, Value};
+use crate::ir::{Coord, DimMode, MotionKind, Program, StmtKind, Value};
 use crate::span::Span;
 
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
@@ -24,11 +24,21 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
             match &mut s.kind {
                 StmtKind::Pole(axes) => {
                     let here = (num(&modal.x), num(&modal.y));
-                    let x = axes.x.as_ref().map(|c| num(&Some(c.value.clone())));
-                    let y = axes.y.as_ref().map(|c| num(&Some(c.value.clone())));
-                    let inc = axes.iter().any(|(_, c)| c.dim.is_some());
-                    pole = match (x.unwrap_or(here.0), y.unwrap_or(here.1)) {
-                        (Some(x), Some(y)) if modal.absolute && !inc => Some((x, y)),
+                    // `CC IX+0 IY-10`: from the current position.
+                    let at = |c: Option<&Coord>, here: Option<f64>| match c {
+                        None => here,
+                        Some(c) => {
+                            let v = num(&Some(c.value.clone()))?;
+                            match c.dim {
+                                Some(DimMode::Incremental) => Some(here? + v),
+                                Some(DimMode::Absolute) => Some(v),
+                                None if modal.absolute => Some(v),
+                                None => Some(here? + v),
+                            }
+                        }
+                    };
+                    pole = match (at(axes.x.as_ref(), here.0), at(axes.y.as_ref(), here.1)) {
+                        (Some(x), Some(y)) => Some((x, y)),
                         _ => None,
                     };
                     if pole.is_none() {

@@ -243,12 +243,15 @@ fn ends(b: &Block) -> bool {
 }
 
 /// Statements a replaced part keeps where they were: the program's start
-/// and tape marks, declarations.
-fn kept(s: &Stmt) -> bool {
-    matches!(
-        s.kind,
-        StmtKind::ProgramStart { .. } | StmtKind::Tape | StmtKind::Declare { .. }
-    )
+/// and tape marks, and the declarations of variables the rest reads.
+fn kept(s: &Stmt, read: &Reads) -> bool {
+    match &s.kind {
+        StmtKind::ProgramStart { .. } | StmtKind::Tape => true,
+        StmtKind::Declare { vars, .. } => vars
+            .iter()
+            .any(|v| read.user.contains(&v.name.to_ascii_uppercase())),
+        _ => false,
+    }
 }
 
 fn expansion(
@@ -263,7 +266,7 @@ fn expansion(
     let like = &p.blocks[r.a];
     let mut blocks: Vec<Block> = Vec::new();
     for b in &p.blocks[r.a..=r.b] {
-        let keep: Vec<Stmt> = b.stmts.iter().filter(|s| kept(s)).cloned().collect();
+        let keep: Vec<Stmt> = b.stmts.iter().filter(|s| kept(s, read)).cloned().collect();
         if !keep.is_empty() {
             blocks.push(super::follow_block(b, keep));
         }

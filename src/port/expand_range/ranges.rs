@@ -169,6 +169,10 @@ fn finish(t: &Trace, a: usize, b: usize) -> Result<Range, String> {
     if !t.steps[first].before.is_plain() {
         return Err("it starts in cutter compensation or a modal cycle".into());
     }
+    let comp = |k: usize| t.steps[k].before.comp != crate::ir::CompSide::Off;
+    if (first..=last).any(comp) {
+        return Err("cutter radius compensation is on in it: its path depends on the radius the machine's tool has, which moves cannot carry".into());
+    }
     Ok(Range { a, b, first, last })
 }
 

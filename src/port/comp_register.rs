@@ -1,0 +1,80 @@
+//! `G41 D1` / `G42 D1` for a target whose compensation takes the radius of
+//! the tool in the spindle and names no register (Klartext `RL`/`RR`):
+//! the register goes where it is the tool's own (`D` equal to the number
+//! of the tool last selected, the usual convention), so the same radius is
+//! used. Any other register stays, and the writer refuses it.
+//!
+//! Klartext sets compensation on a positioning block: a `G40` alone in a
+//! block goes onto the next move (`L X.. Y.. R0`) instead of an empty
+//! `L R0`.
+
+use crate::dialect::{DialectSpec, Family};
+use crate::ir::{Program, StmtKind, ToolRef, Value};
+
+pub fn run(p: &mut Program, to: &DialectSpec) {
+    if to.family != Family::Klartext {
+        return;
+    }
+    off_onto_next_move(p);
+    let mut tool: Option<f64> = None;
+    for b in &mut p.blocks {
+        for s in &mut b.stmts {
+            match &mut s.kind {
+                StmtKind::ToolSelect(ToolRef::Number(Value::Number(n))) => {
+                    tool = Some(n.to_f64())
+                }
+                StmtKind::RadiusComp {
+                    register,
+                    diameter: false,
+                    ..
+                } => {
+                    let own = match register {
+                        Some(Value::Number(d)) => Some(d.to_f64()) == tool,
+                        Some(Value::Expr(_)) => false,
+                        None => true,
+                    };
+                    if own {
+                        *register = None;
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+}
+
+fn is_off(k: &StmtKind) -> bool {
+    matches!(
+        k,
+        StmtKind::RadiusComp {
+            side: crate::ir::CompSide::Off,
+            ..
+        }
+    )
+}
+
+/// A block with `G40` and no move gives it to the next block with a move
+/// (and no compensation of its own), before any other compensation.
+fn off_onto_next_move(p: &mut Program) {
+    let n = p.blocks.len();
+    for i in 0..n {
+        let comp = |k: &StmtKind| matches!(k, StmtKind::RadiusComp { .. });
+        let moves = |k: &StmtKind| matches!(k, StmtKind::Motion(_));
+        let b = &p.blocks[i];
+        let Some(at) = b.stmts.iter().position(|s| is_off(&s.kind)) else {
+            continue;
+        };
+        if b.stmts.iter().any(|s| moves(&s.kind)) {
+            continue;
+        }
+        let target = (i + 1..n).find(|&j| p.blocks[j].stmts.iter().any(|s| comp(&s.kind) || moves(&s.kind)));
+        if let Some(j) = target {
+            if !p.blocks[j].stmts.iter().any(|s| comp(&s.kind)) {
+                let s = p.blocks[i].stmts.remove(at);
+                p.blocks[j].stmts.push(s);
+            }
+        }
+    }
+    p.blocks
+        .retain(|b| !b.stmts.is_empty() || b.number.is_some() || b.label.is_some());
+}
