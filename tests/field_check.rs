@@ -85,16 +85,8 @@ const NO_ROUND_TRIP: &[(&str, &str)] = &[
         "E0603: an inch feed with 4 places; the Fanuc spec writes feeds with 3 [?]",
     ),
     (
-        "field/haas/NX_Haas_VF3_testpart.ptp",
-        "E0603: a value of 0.5 where the writer wants a whole number",
-    ),
-    (
         "field/haas/NX_Haas_VF3_testpart2.ptp",
         "E0603: a value of 0.5 where the writer wants a whole number",
-    ),
-    (
-        "field/heidenhain/DangaRPT_test.h",
-        "E0603: -1.44444 has 5 places; the Klartext spec writes 4 in mm [?]",
     ),
     (
         "field/siemens840d/NX_Huron_KX20_Training.MPF",
