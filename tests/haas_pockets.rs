@@ -247,7 +247,7 @@ fn port_refuses_g12_where_the_target_has_none_and_expands_it_on_request() {
     let p = save("port.nc", PROGRAM);
     let p = p.to_str().unwrap();
     for to in ["fanuc", "linuxcnc", "siemens840d", "heidenhain"] {
-        let o = common::cncc(&["port", "--from", "haas", "--to", to, p]);
+        let o = common::cncc(&["port", "--strict", "--from", "haas", "--to", to, p]);
         let err = common::stderr(&o);
         assert_eq!(o.status.code(), Some(1), "{to}: {err}");
         assert!(
@@ -255,9 +255,11 @@ fn port_refuses_g12_where_the_target_has_none_and_expands_it_on_request() {
             "{to}: {err}"
         );
     }
-    // --expand-cycles: the G90 G12 becomes its moves; the G91 G13 stays refused.
+    // --expand-cycles: the G90 G12 becomes its moves; the G91 G13 stays
+    // refused (with --strict: without it the port writes it as its moves).
     let o = common::cncc(&[
         "port",
+        "--strict",
         "--from",
         "haas",
         "--to",

@@ -20,7 +20,7 @@ fn port(name: &str, src: &str, to: &str) -> Ported {
     let path = dir.path().join(name);
     std::fs::write(&path, src).unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_cncc"))
-        .args(["port", "--to", to, "--verify"])
+        .args(["port", "--strict", "--to", to, "--verify"])
         .arg(&path)
         .output()
         .unwrap();

@@ -41,7 +41,7 @@ fn sources(dir: &Path) -> Vec<(PathBuf, String)> {
 
 fn port(src: &Path, from: &str, to: &str) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_cncc"))
-        .args(["port", "--from", from, "--to", to, "--verify"])
+        .args(["port", "--strict", "--from", from, "--to", to, "--verify"])
         .arg(src)
         .output()
         .unwrap();
