@@ -134,6 +134,14 @@ pub enum Capability {
     /// G5/G5.1/G5.2/G5.3 are LinuxCNC's splines, run as such (elsewhere
     /// G5/G5.1 are other functions, e.g. Fanuc's AI contour control).
     Splines,
+    /// Q and QR parameters belong to the control, not to the program: they
+    /// keep the values an earlier program left (TNC 640 / TNC7 manuals:
+    /// "Q parameters affect all NC programs in the control's memory"; QR
+    /// are kept even after a restart; QL are local to one program). A Q or
+    /// QR parameter this run has not set is a value from outside (W0590),
+    /// not 0. [?] iTNC 530 machine parameter MP7300 may reset Q parameters
+    /// at the end of a program; the default is taken as keeping them.
+    GlobalQParameters,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -183,6 +191,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("colon-program-number", Capability::ColonProgramNumber),
     ("no-nested-comments", Capability::NoNestedComments),
     ("splines", Capability::Splines),
+    ("global-q-parameters", Capability::GlobalQParameters),
 ];
 
 impl Capability {
