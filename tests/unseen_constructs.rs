@@ -54,3 +54,37 @@ fn a_subprogram_checked_alone_ends_at_its_return() {
     assert_eq!(code, Some(0), "{e}");
     assert!(!e.contains("E0506"), "{e}");
 }
+
+/// Mist and flood coolant may be on together (LinuxCNC: "M7 and M8 may be
+/// active at the same time"; the 840D passes both to the PLC): not a modal
+/// group conflict. M8 with M9 still is.
+#[test]
+fn mist_and_flood_in_one_block() {
+    let f = "tests/programs/linuxcnc/mist_and_flood.ngc";
+    let (code, e) = check("linuxcnc", f);
+    assert_eq!(code, Some(0), "{e}");
+    let out = stdout(&cncc(&["canon", "--dialect", "linuxcnc", f]));
+    assert!(out.contains("MIST_ON()\nFLOOD_ON()"), "{out}");
+    let dir = std::env::temp_dir().join(format!("cncc-coolant-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("m8m9.ngc");
+    std::fs::write(&bad, "G0 X1 M8 M9\nM2\n").unwrap();
+    let (code, e) = check("linuxcnc", bad.to_str().unwrap());
+    assert_eq!(code, Some(1), "{e}");
+    assert!(e.contains("E0202"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Machine functions nothing the run computes depends on (Haas chip
+/// conveyor M31/M33, rotary brake M10/M11; Fanuc rigid tapping mode M29;
+/// coolant through the tool) are passed to the machine and the run goes on
+/// to the end of the program.
+#[test]
+fn machine_functions_do_not_stop_the_run() {
+    let f = "tests/programs/haas/chip_conveyor.nc";
+    let (code, e) = check("haas", f);
+    assert_eq!(code, Some(0), "{e}");
+    assert!(!e.contains("W0511"), "{e}");
+    let out = stdout(&cncc(&["canon", "--dialect", "haas", f]));
+    assert!(out.contains("PROGRAM_END()"), "{out}");
+}

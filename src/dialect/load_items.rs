@@ -272,14 +272,28 @@ fn parse_class(s: &str) -> Option<VarClass> {
     }
 }
 
-/// `<group name= exclusive= doc=/>`.
+/// `<group name= exclusive= together= doc=/>`.
 pub fn read_group(cx: &mut Ctx, n: &Node) -> Option<GroupDef> {
-    cx.check_attrs(n, &["name", "exclusive", "doc", "confidence"]);
+    cx.check_attrs(n, &["name", "exclusive", "together", "doc", "confidence"]);
     let name = cx.req(n, "name")?.value.trim().to_string();
     let exclusive = cx.bool_attr(n, "exclusive", true);
+    let together = match n.attr("together") {
+        Some(a) => cx.parse(
+            a,
+            "meanings separated by spaces",
+            "meanings are listed in dialects/dialect.xsd (e.g. `coolant.mist coolant.flood`)",
+            |s| {
+                s.split_whitespace()
+                    .map(Meaning::parse)
+                    .collect::<Option<Vec<_>>>()
+            },
+        )?,
+        None => Vec::new(),
+    };
     Some(GroupDef {
         name,
         exclusive,
+        together,
         doc: cx.doc(n),
     })
 }

@@ -329,6 +329,9 @@ pub struct GroupDef {
     /// Two codes of an exclusive group may not share a block (E0202);
     /// codes of a non-exclusive group (machine M codes) may.
     pub exclusive: bool,
+    /// Codes of an exclusive group that may still share a block with each
+    /// other, by meaning (LinuxCNC: mist M7 and flood M8 together).
+    pub together: Vec<crate::dialect::Meaning>,
     pub doc: String,
 }
 
