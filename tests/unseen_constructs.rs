@@ -88,3 +88,20 @@ fn machine_functions_do_not_stop_the_run() {
     let out = stdout(&cncc(&["canon", "--dialect", "haas", f]));
     assert!(out.contains("PROGRAM_END()"), "{out}");
 }
+
+/// Operate's program blocks (GROUP_BEGIN/GROUP_END) and its blank
+/// (WORKPIECE) describe the program, they machine nothing: the run goes on
+/// through them silently and they are written back as read.
+#[test]
+fn operate_program_blocks_describe_and_run_on() {
+    let f = "tests/programs/siemens840d/operate_groups.mpf";
+    let (code, e) = check("siemens840d", f);
+    assert_eq!(code, Some(0), "{e}");
+    assert!(!e.contains("W0511") && !e.contains("W0510"), "{e}");
+    let out = stdout(&cncc(&["canon", "--dialect", "siemens840d", f]));
+    assert!(out.contains("STRAIGHT_FEED(100.0000"), "{out}");
+    let o = cncc(&["port", "--from", "siemens840d", "--to", "siemens840d", f]);
+    let out = stdout(&o);
+    assert!(out.contains("GROUP_BEGIN(0,\"FACE TOP\",0,0)"), "{out}");
+    assert!(out.contains("GROUP_END(0,0)"), "{out}");
+}

@@ -228,6 +228,7 @@ pub const CYCLE_KINDS: &[&str] = &[
     "tolerance",
     "swivel",
     "blank",
+    "structure",
     "other",
 ];
 
