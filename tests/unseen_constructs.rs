@@ -105,3 +105,36 @@ fn operate_program_blocks_describe_and_run_on() {
     assert!(out.contains("GROUP_BEGIN(0,\"FACE TOP\",0,0)"), "{out}");
     assert!(out.contains("GROUP_END(0,0)"), "{out}");
 }
+
+/// `TCH PROBE n ...` touch probe cycles (workpiece and tool measurement,
+/// datum setting) are read with their Q parameters, reported as not run
+/// (W0513), and written back as read; a result they leave (Q160) is a
+/// value from the machine.
+#[test]
+fn heidenhain_touch_probe_cycles() {
+    let f = "tests/programs/heidenhain/touch_probe.h";
+    let (code, e) = check("heidenhain", f);
+    assert_eq!(code, Some(0), "{e}");
+    assert!(e.contains("W0513") && e.contains("TCH PROBE 417"), "{e}");
+    assert!(e.contains("W0590") && e.contains("`Q160`"), "{e}");
+    let port = |file: &str| {
+        let o = cncc(&["port", "--from", "heidenhain", "--to", "heidenhain", file]);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        stdout(&o)
+    };
+    let once = port(f);
+    assert!(
+        once.contains("4 TCH PROBE 417 DATUM IN TS AXIS ~\n  Q263=-20 ;1ST POINT 1ST AXIS ~\n"),
+        "{once}"
+    );
+    assert!(
+        once.contains("  Q303=+1 ;MEAS. VALUE TRANSFER\n5 L Z+50 FMAX"),
+        "{once}"
+    );
+    let dir = std::env::temp_dir().join(format!("cncc-tch-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let again = dir.join("once.h");
+    std::fs::write(&again, &once).unwrap();
+    assert_eq!(port(again.to_str().unwrap()), once, "a fixpoint");
+    let _ = std::fs::remove_dir_all(&dir);
+}
