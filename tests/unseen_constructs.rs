@@ -138,3 +138,19 @@ fn heidenhain_touch_probe_cycles() {
     assert_eq!(port(again.to_str().unwrap()), once, "a fixpoint");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `L Z+0 R0 FMAX M92` (to the machine builder's tool change position):
+/// run as machine coordinates with one W0517 note, instead of stopping
+/// the run; written back as M92.
+#[test]
+fn heidenhain_m92_moves_run_in_machine_coordinates() {
+    let f = "tests/programs/heidenhain/machine_datum.h";
+    let (code, e) = check("heidenhain", f);
+    assert_eq!(code, Some(0), "{e}");
+    assert_eq!(e.matches("note[W0517").count(), 1, "{e}");
+    assert!(!e.contains("W0511"), "{e}");
+    let out = stdout(&cncc(&["canon", "--dialect", "heidenhain", f]));
+    assert!(out.contains("PROGRAM_END()"), "{out}");
+    let o = cncc(&["port", "--from", "heidenhain", "--to", "heidenhain", f]);
+    assert!(stdout(&o).contains("2 L Z+0 R0 FMAX M92"), "{}", stdout(&o));
+}

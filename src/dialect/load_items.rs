@@ -385,7 +385,7 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
     let run = match n.attr("run") {
         Some(a) => cx.parse(
             a,
-            "`stop`, `pass` or `kinematics`",
+            "`stop`, `pass`, `kinematics` or `machine-datum`",
             "`run` says what the canonical run does with an aux code",
             |s| {
                 use crate::dialect::spec::AuxRun;
@@ -393,6 +393,7 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
                     "stop" => Some(AuxRun::Stop),
                     "pass" => Some(AuxRun::Pass),
                     "kinematics" => Some(AuxRun::Kinematics),
+                    "machine-datum" => Some(AuxRun::MachineDatum),
                     _ => None,
                 }
             },

@@ -276,6 +276,19 @@ pub enum AuxRun {
     /// A function of the machine's kinematics (TCPM on): kept, not made,
     /// reported once (W0518); the run goes on.
     Kinematics,
+    /// The block's positions are machine coordinates from a datum the
+    /// machine builder sets (Heidenhain M92, a machine parameter): run as
+    /// machine coordinates (the machine datum, as M91), said once (W0517).
+    MachineDatum,
+}
+
+impl DialectSpec {
+    /// Does the block's statement `k` put the block's positions in machine
+    /// coordinates from a machine-builder datum ([`AuxRun::MachineDatum`])?
+    pub fn is_machine_datum(&self, k: &crate::ir::StmtKind) -> bool {
+        matches!(k, crate::ir::StmtKind::Aux { letter, code, .. }
+            if self.code(*letter, *code).is_some_and(|c| c.run == AuxRun::MachineDatum))
+    }
 }
 
 /// The kind of value a cycle parameter takes.
