@@ -192,12 +192,13 @@ fn without_block_numbers(f: &str) -> String {
 
 /// Heidenhain programs that stop on purpose: the program's own
 /// `FN 14: ERROR=` (its input check fails with the Q parameters at 0).
-const STOP_ON_OWN_ERROR: &[(&str, &str)] = &[(
-    "heidenhain/Plan.h",
-    // Q1840 (the number of passes) is 0: `FN 12: IF +Q1840 LT +1 GOTO
-    // LBL "1042"` reaches `FN 14: ERROR= 1042`.
-    "the program stopped with its error 1042",
-)];
+const STOP_ON_OWN_ERROR: &[(&str, &str)] = &[];
+
+/// Programs whose run stops (W0590, exit 0) at a value only the control
+/// has: Plan.h is called by Plan-Beispiel.h after it sets Q1800..Q1840,
+/// and Q parameters are the TNC's, kept between programs, so the Q1840 it
+/// reads first is the caller's.
+const STOP_ON_OUTSIDE_VALUE: &[(&str, &str)] = &[("heidenhain/Plan.h", "`Q1840`")];
 
 /// Every accepted Heidenhain program runs (`cncc canon`) to its end, or
 /// to the error it raises itself; none stops on something cncc cannot run.
@@ -213,6 +214,13 @@ fn heidenhain_corpus_programs_run_to_their_end() {
         let o = cncc(&["canon", "--dialect", "heidenhain", path.to_str().unwrap()]);
         let (out, err) = (stdout(&o), stderr(&o));
         let calls = out.lines().count();
+        if let Some((_, what)) = STOP_ON_OUTSIDE_VALUE.iter().find(|(f, _)| *f == name) {
+            if o.status.code() != Some(0) || !err.contains("W0590") || !err.contains(what) {
+                failures.push(format!("{name}: expected W0590 at {what}:\n{err}"));
+            }
+            ran += 1;
+            continue;
+        }
         match STOP_ON_OWN_ERROR.iter().find(|(f, _)| *f == name) {
             Some((_, why)) => {
                 if o.status.code() != Some(1) || !err.contains("E0519") || !err.contains(why) {

@@ -228,6 +228,7 @@ pub const CYCLE_KINDS: &[&str] = &[
     "tolerance",
     "swivel",
     "blank",
+    "structure",
     "other",
 ];
 
@@ -272,14 +273,28 @@ fn parse_class(s: &str) -> Option<VarClass> {
     }
 }
 
-/// `<group name= exclusive= doc=/>`.
+/// `<group name= exclusive= together= doc=/>`.
 pub fn read_group(cx: &mut Ctx, n: &Node) -> Option<GroupDef> {
-    cx.check_attrs(n, &["name", "exclusive", "doc", "confidence"]);
+    cx.check_attrs(n, &["name", "exclusive", "together", "doc", "confidence"]);
     let name = cx.req(n, "name")?.value.trim().to_string();
     let exclusive = cx.bool_attr(n, "exclusive", true);
+    let together = match n.attr("together") {
+        Some(a) => cx.parse(
+            a,
+            "meanings separated by spaces",
+            "meanings are listed in dialects/dialect.xsd (e.g. `coolant.mist coolant.flood`)",
+            |s| {
+                s.split_whitespace()
+                    .map(Meaning::parse)
+                    .collect::<Option<Vec<_>>>()
+            },
+        )?,
+        None => Vec::new(),
+    };
     Some(GroupDef {
         name,
         exclusive,
+        together,
         doc: cx.doc(n),
     })
 }
@@ -370,7 +385,7 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
     let run = match n.attr("run") {
         Some(a) => cx.parse(
             a,
-            "`stop`, `pass` or `kinematics`",
+            "`stop`, `pass`, `kinematics` or `machine-datum`",
             "`run` says what the canonical run does with an aux code",
             |s| {
                 use crate::dialect::spec::AuxRun;
@@ -378,6 +393,7 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
                     "stop" => Some(AuxRun::Stop),
                     "pass" => Some(AuxRun::Pass),
                     "kinematics" => Some(AuxRun::Kinematics),
+                    "machine-datum" => Some(AuxRun::MachineDatum),
                     _ => None,
                 }
             },

@@ -134,6 +134,14 @@ pub enum Capability {
     /// G5/G5.1/G5.2/G5.3 are LinuxCNC's splines, run as such (elsewhere
     /// G5/G5.1 are other functions, e.g. Fanuc's AI contour control).
     Splines,
+    /// Q and QR parameters belong to the control, not to the program: they
+    /// keep the values an earlier program left (TNC 640 / TNC7 manuals:
+    /// "Q parameters affect all NC programs in the control's memory"; QR
+    /// are kept even after a restart; QL are local to one program). A Q or
+    /// QR parameter this run has not set is a value from outside (W0590),
+    /// not 0. [?] iTNC 530 machine parameter MP7300 may reset Q parameters
+    /// at the end of a program; the default is taken as keeping them.
+    GlobalQParameters,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -183,6 +191,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("colon-program-number", Capability::ColonProgramNumber),
     ("no-nested-comments", Capability::NoNestedComments),
     ("splines", Capability::Splines),
+    ("global-q-parameters", Capability::GlobalQParameters),
 ];
 
 impl Capability {
@@ -267,6 +276,19 @@ pub enum AuxRun {
     /// A function of the machine's kinematics (TCPM on): kept, not made,
     /// reported once (W0518); the run goes on.
     Kinematics,
+    /// The block's positions are machine coordinates from a datum the
+    /// machine builder sets (Heidenhain M92, a machine parameter): run as
+    /// machine coordinates (the machine datum, as M91), said once (W0517).
+    MachineDatum,
+}
+
+impl DialectSpec {
+    /// Does the block's statement `k` put the block's positions in machine
+    /// coordinates from a machine-builder datum ([`AuxRun::MachineDatum`])?
+    pub fn is_machine_datum(&self, k: &crate::ir::StmtKind) -> bool {
+        matches!(k, crate::ir::StmtKind::Aux { letter, code, .. }
+            if self.code(*letter, *code).is_some_and(|c| c.run == AuxRun::MachineDatum))
+    }
 }
 
 /// The kind of value a cycle parameter takes.
@@ -320,6 +342,9 @@ pub struct GroupDef {
     /// Two codes of an exclusive group may not share a block (E0202);
     /// codes of a non-exclusive group (machine M codes) may.
     pub exclusive: bool,
+    /// Codes of an exclusive group that may still share a block with each
+    /// other, by meaning (LinuxCNC: mist M7 and flood M8 together).
+    pub together: Vec<crate::dialect::Meaning>,
     pub doc: String,
 }
 

@@ -102,15 +102,17 @@ pub fn declare(w: &mut Writer<'_>, ty: VarType, vars: &[VarDecl], words: &mut Ve
     let mut head = format!("DEF {}", type_name(ty));
     let string_len = ty == VarType::String;
     if string_len {
-        if let Some(len) = vars.first().and_then(|v| v.dims.first()) {
-            head.push_str(&format!("[{len}]"));
+        if let Some(v) = vars.first().filter(|v| !v.dims.is_empty()) {
+            head.push_str(&format!("[{}]", v.dim_text(0)));
         }
     }
     let mut parts = Vec::new();
     for v in vars {
         let mut s = v.name.clone();
-        if !string_len && !v.dims.is_empty() {
-            let dims: Vec<String> = v.dims.iter().map(u32::to_string).collect();
+        // A STRING's first "dimension" is its length, written after DEF.
+        let first = string_len as usize;
+        if v.dims.len() > first {
+            let dims: Vec<String> = (first..v.dims.len()).map(|i| v.dim_text(i)).collect();
             s.push_str(&format!("[{}]", dims.join(",")));
         }
         if let Some(init) = v.init {

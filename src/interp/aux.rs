@@ -6,7 +6,7 @@
 
 use super::{Interp, Stop};
 use crate::canon::Canon;
-use crate::diag::Code;
+use crate::diag::{Code, Diagnostic};
 use crate::ir::{Arena, Block, Expr, StmtKind, Word};
 
 /// What an M code does, by meaning.
@@ -198,6 +198,10 @@ pub fn exec(
                 super::heidenhain::kinematics_not_run(it, &what, span);
                 return Ok(());
             }
+            AuxRun::MachineDatum => {
+                machine_datum_note(it, letter, code);
+                return Ok(());
+            }
             AuxRun::Stop => {}
         }
         if smoothing(it, letter, code) {
@@ -322,4 +326,21 @@ pub fn dynamic(
 ) -> Result<(), Stop> {
     let _ = block;
     exec(it, letter, code, words, exprs)
+}
+
+/// `M92`: the block moved in machine coordinates (see
+/// [`crate::dialect::spec::AuxRun::MachineDatum`]); said once a run.
+fn machine_datum_note(it: &mut Interp<'_, '_>, letter: char, code: f64) {
+    if !it.heidenhain.once("machine datum".into()) {
+        return;
+    }
+    let span = it.span;
+    it.diags.push(
+        Diagnostic::new(
+            Code::UnknownAtCheckTime,
+            format!("{letter}{code} positions are measured from a datum the machine builder sets: not known at check time"),
+        )
+        .primary(span, "run as machine coordinates")
+        .help("the run takes the machine datum (as M91) for it; with --machine, the machine description's reference point and travel apply (see `cncc explain W0517`)"),
+    );
 }

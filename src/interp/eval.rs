@@ -247,7 +247,9 @@ impl Interp<'_, '_> {
                 Some(self.params.r(*n))
             }
             Var::Q(bank, n) => {
-                if self.from_outside && !self.params.q_known(*bank, *n) {
+                if (self.from_outside || self.q_from_control(*bank))
+                    && !self.params.q_known(*bank, *n)
+                {
                     return Err(self.from_outside_at(span, &format!("{}{n}", bank_name(*bank))));
                 }
                 Some(self.params.q(*bank, *n))
@@ -331,6 +333,16 @@ impl Interp<'_, '_> {
             return Err(self.from_outside_at(span, &format!("#{n}")));
         }
         Ok(())
+    }
+
+    /// A Q or QR parameter on a control whose Q parameters outlive the
+    /// program ([`Capability::GlobalQParameters`]): one this run has not
+    /// set holds what an earlier program left. QL are the program's own.
+    fn q_from_control(&self, bank: crate::ir::QBank) -> bool {
+        bank != crate::ir::QBank::Local
+            && self
+                .spec
+                .has(crate::dialect::spec::Capability::GlobalQParameters)
     }
 
     fn known_r(&self, n: u32, span: crate::span::Span) -> Result<(), Stop> {

@@ -64,6 +64,9 @@ pub struct Walker<'l> {
     modal: Option<(CallTarget, ArgValues)>,
     /// Where the main program starts (after a streamed beginning).
     start: usize,
+    /// The file is a subprogram run alone: a return with no caller ends
+    /// the run (it goes back to the caller cncc does not have).
+    called: bool,
 }
 
 /// What a block asks the walker to do next.
@@ -97,11 +100,18 @@ impl<'l> Walker<'l> {
             started_with_percent: false,
             modal: None,
             start: 0,
+            called: false,
         }
+    }
+
+    /// Runs the file as a subprogram checked alone (see `called`).
+    pub fn run_as_called(&mut self) {
+        self.called = true;
     }
 
     /// Starts at block `at` of the main program, after `blocks` blocks
     /// were run in sequence (see [`super::stream`]).
+
     pub fn resume(&mut self, at: usize, started_with_percent: bool, blocks: u64) {
         self.start = at;
         self.started_with_percent = started_with_percent;
@@ -607,6 +617,7 @@ impl<'l> Walker<'l> {
             }
             Declare { vars, .. } => {
                 for v in vars {
+                    machine_sized(it, v);
                     let val = match v.init {
                         Some(e) => it.eval(e, exprs)?.unwrap_or(0.0),
                         None => 0.0,
@@ -702,6 +713,10 @@ impl<'l> Walker<'l> {
         if self.frames.is_empty() && it.spec.has(crate::dialect::Capability::PolePaths) {
             // Heidenhain `LBL 0` met in the main program: it goes on.
             return Ok(Next::Step);
+        }
+        if self.frames.is_empty() && self.called {
+            // The end of a subprogram checked alone: back to its caller.
+            return Ok(Next::End);
         }
         if self.frames.is_empty() {
             // M99 in a main program: start again from the top (bounded).
@@ -1099,5 +1114,30 @@ fn observe(it: &mut Interp<'_, '_>, prog: usize, pc: usize, depth: usize) {
     if let Some(mut f) = it.observer.take() {
         f(&super::BlockEvent { prog, pc, depth }, &it.state, &it.params);
         it.observer = Some(f);
+    }
+}
+
+/// `DEF REAL A[MaxFaza]`: an array size given by a name of the machine's
+/// definition files (a DEFINE macro of _N_SMAC/_N_MMAC/_N_UMAC_DEF or a
+/// GUD constant, active in every program of the control). cncc does not
+/// have those files: the size is not known and not checked (W0517); the
+/// run goes on, since it does not bound array indices.
+fn machine_sized(it: &mut Interp<'_, '_>, v: &crate::ir::VarDecl) {
+    if it
+        .diags
+        .iter()
+        .any(|d| d.code == Code::UnknownAtCheckTime && d.labels.iter().any(|l| l.span == v.span))
+    {
+        return;
+    }
+    for (_, name) in &v.dim_names {
+        it.diags.push(
+            Diagnostic::new(
+                Code::UnknownAtCheckTime,
+                format!("the size of array {} is `{name}`, a name of the machine's definition files: not known at check time", v.name),
+            )
+            .primary(v.span, "size given by the machine")
+            .help("DEFINE macros and GUD constants live in the control's _N_DEF_DIR (SMAC/MMAC/UMAC, SGUD/MGUD/UGUD); the array's size and its indices are not checked"),
+        );
     }
 }

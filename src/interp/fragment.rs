@@ -104,6 +104,9 @@ pub fn run(
         it.start();
         let mut walker = Walker::new(program.clone(), loader);
         walker.resume(at, false, 0);
+        if *fragment == Fragment::Called {
+            walker.run_as_called();
+        }
         let result = walker.run(&mut it);
         diags.append(&mut it.take_diags());
         match result {

@@ -295,13 +295,9 @@ fn coolant(it: &mut Interp<'_, '_>, c: Coolant) -> Result<(), Stop> {
             it.out(Canon::MistOff);
             it.out(Canon::FloodOff);
         }
-        Coolant::ThroughTool => {
-            return Err(it.error_at(
-                it.span,
-                Code::UnsupportedHere,
-                "coolant through the tool has no canonical call",
-            ))
-        }
+        // rs274 has no canonical call for it and nothing the run computes
+        // depends on it: kept in the meta-model, passed to the machine.
+        Coolant::ThroughTool => {}
     }
     Ok(())
 }

@@ -195,7 +195,9 @@ fn straight(
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
     let axes = &m.target;
-    let machine = has(block, |k| matches!(k, StmtKind::MachineCoords));
+    let machine = has(block, |k| {
+        matches!(k, StmtKind::MachineCoords) || it.spec.is_machine_datum(k)
+    });
     let mut to = target(
         it,
         axes,

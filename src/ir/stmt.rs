@@ -626,8 +626,23 @@ pub struct VarDecl {
     pub name: String,
     /// Array dimensions; for STRING its length.
     pub dims: Vec<u32>,
+    /// Dimensions written as a name (a Siemens DEFINE macro or GUD
+    /// constant of the machine's definition files), by their index in
+    /// `dims` (which holds 0 there): the size is the machine's.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub dim_names: Vec<(usize, String)>,
     pub init: Option<ExprId>,
     pub span: Span,
+}
+
+impl VarDecl {
+    /// Dimension `i` as written: its number, or the name that gives it.
+    pub fn dim_text(&self, i: usize) -> String {
+        match self.dim_names.iter().find(|(j, _)| *j == i) {
+            Some((_, n)) => n.clone(),
+            None => self.dims.get(i).map(u32::to_string).unwrap_or_default(),
+        }
+    }
 }
 
 /// One arm of a Siemens CASE.

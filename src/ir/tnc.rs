@@ -51,6 +51,10 @@ pub enum TncFunctionKind {
     /// `MB MAX` / `MB 50` after `M140` (with its `F`, if any): retract in
     /// the tool axis by a distance, or to the end of travel (`None`).
     Retract(Option<Value>),
+    /// `TCH PROBE 417 DATUM IN TS AXIS ~ Q263=..`: a touch probe cycle,
+    /// run at once by the TNC: it measures the workpiece or the tool and
+    /// may set the datum or the tool table; the cycle number as written.
+    TouchProbe(String),
 }
 
 /// One item of `FN 15: PRINT`.
@@ -87,6 +91,7 @@ impl TncFunctionKind {
             TncFunctionKind::FreeContour(_) => "free-contour",
             TncFunctionKind::Function(_) => "function",
             TncFunctionKind::Retract(_) => "retract",
+            TncFunctionKind::TouchProbe(_) => "touch-probe",
         }
     }
 }

@@ -183,7 +183,14 @@ fn conflicts(a: &CodeWord<'_>, b: &CodeWord<'_>, spec: &DialectSpec) -> bool {
         return false;
     }
     let exclusive = |g: &str| spec.group(g).map(|d| d.exclusive).unwrap_or(true);
-    a.letter == b.letter && a.group().is_some_and(exclusive) && a.group() == b.group()
+    let together = |g: &str| {
+        let allowed = spec.group(g).map(|d| d.together.as_slice()).unwrap_or(&[]);
+        let ok = |m: Option<Meaning>| m.is_some_and(|m| allowed.contains(&m));
+        ok(a.meaning) && ok(b.meaning) && a.meaning != b.meaning
+    };
+    a.letter == b.letter
+        && a.group().is_some_and(|g| exclusive(g) && !together(g))
+        && a.group() == b.group()
 }
 
 /// Is `cancel` a cycle cancel (G80) sharing its modal group with the

@@ -586,18 +586,21 @@ pub fn siemens() -> Builder {
             VarDecl {
                 name: "A".into(),
                 dims: vec![],
+                dim_names: vec![],
                 init: None,
                 span: s1,
             },
             VarDecl {
                 name: "B".into(),
                 dims: vec![],
+                dim_names: vec![],
                 init: Some(init),
                 span: s2,
             },
             VarDecl {
                 name: "T".into(),
                 dims: vec![3, 4],
+                dim_names: vec![],
                 init: None,
                 span: s3,
             },
@@ -609,6 +612,7 @@ pub fn siemens() -> Builder {
         vars: vec![VarDecl {
             name: "S".into(),
             dims: vec![32],
+            dim_names: vec![],
             init: None,
             span: s4,
         }],

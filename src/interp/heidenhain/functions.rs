@@ -101,6 +101,17 @@ pub fn exec(
             Ok(())
         }
         TncFunctionKind::Retract(d) => retract(it, d.as_ref(), span, exprs),
+        TncFunctionKind::TouchProbe(n) => {
+            it.diags.push(
+                Diagnostic::new(
+                    Code::MachineFunctionNotRun,
+                    format!("TCH PROBE {n} measures with the touch probe: not run"),
+                )
+                .primary(span, "a probing cycle")
+                .help("what it measures (Q150 and up) and the datum or tool data it may set are known only on the machine: a later block that reads them stops the run (W0590); the tool is taken to end where it started"),
+            );
+            Ok(())
+        }
         TncFunctionKind::FreeContour(k) => Err(Stop::Error(
             Diagnostic::new(
                 Code::UnsupportedHere,

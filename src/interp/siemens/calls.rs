@@ -27,6 +27,10 @@ enum Kind {
     Milling,
     /// Known to the dialect spec but not expanded: W0510.
     Known,
+    /// A call that describes the program rather than machining it (the
+    /// blank for the simulation, the editor's program structure): the
+    /// spec's kinds `blank` and `structure`. Nothing to run.
+    Describes,
     Unknown,
 }
 
@@ -37,8 +41,11 @@ fn kind(it: &Interp<'_, '_>, name: &str) -> Kind {
         "HOLES1" | "HOLES2" | "CYCLE801" => Kind::Pattern,
         "CYCLE832" => Kind::Tolerance,
         _ if milling::expands(name) => Kind::Milling,
-        _ if it.spec.cycle(name).is_some() => Kind::Known,
-        _ => Kind::Unknown,
+        _ => match it.spec.cycle(name).map(|c| c.kind.as_str()) {
+            Some("blank" | "structure") => Kind::Describes,
+            Some(_) => Kind::Known,
+            None => Kind::Unknown,
+        },
     }
 }
 
@@ -148,6 +155,7 @@ fn run(
             tolerance(it, args);
             Ok(())
         }
+        Kind::Describes => Ok(()),
         Kind::Known | Kind::Unknown => {
             not_expanded(it, name, span);
             Ok(())

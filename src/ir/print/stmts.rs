@@ -320,7 +320,7 @@ impl Printer<'_> {
                 let dims = if d.dims.is_empty() {
                     String::new()
                 } else {
-                    let ds: Vec<String> = d.dims.iter().map(u32::to_string).collect();
+                    let ds: Vec<String> = (0..d.dims.len()).map(|i| d.dim_text(i)).collect();
                     format!("[{}]", ds.join(", "))
                 };
                 let init = d

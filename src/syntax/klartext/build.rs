@@ -75,6 +75,8 @@ pub enum Node {
     CyclDef(usize),
     CyclCall(Vec<WordNode>),
     PatternDef(usize),
+    /// `TCH PROBE n ...` from the tokens at the index.
+    TchProbe(usize),
     Stop(Vec<WordNode>),
     Words(Vec<WordNode>),
 }

@@ -290,3 +290,61 @@ pub fn pattern_def(ctx: &mut Ctx<'_>, from: usize, l: usize, r: usize) -> Vec<It
     }
     vec![ctx.stmt(StmtKind::PatternDef(items), l, r)]
 }
+
+/// `TCH PROBE 417 DATUM IN TS AXIS ~ Q263=-22.5 ;.. ~ ...` (and the old
+/// `TCH PROBE 0.0 REF. PLANE Z+`): a touch probe cycle, kept with its text
+/// (written back as read); its number must follow `PROBE`.
+pub fn tch_probe(ctx: &mut Ctx<'_>, from: usize, l: usize, r: usize) -> Vec<Item> {
+    let toks: Vec<Spanned3> = ctx.toks_from(from).to_vec();
+    let (number, nr) = match (toks.first(), toks.get(1)) {
+        (Some((_, Tok::Name(p), _)), Some((nl, Tok::Num(_), nr))) if p == "PROBE" => {
+            (ctx.slice(*nl, *nr).to_string(), *nr)
+        }
+        _ => {
+            ctx.error(
+                Code::KlartextBadCycle,
+                l,
+                r,
+                "TCH without `PROBE` and a cycle number",
+                "write `TCH PROBE 417 DATUM IN TS AXIS` with its Q parameters",
+            );
+            return Vec::new();
+        }
+    };
+    // The name runs up to the first parameter, as in CYCL DEF.
+    let mut i = 2;
+    while i < toks.len() && !matches!(toks[i].1, Tok::Q(..)) {
+        i += 1;
+    }
+    let name_end = toks.get(i).map(|t| t.0).unwrap_or(r);
+    let mut text = format!("TCH PROBE {number}");
+    for w in ctx.slice(nr, name_end).split_whitespace() {
+        text.push(' ');
+        text.push_str(w);
+    }
+    // Each `Qnnn=value ;label` on a line of its own, `~` between them.
+    while i < toks.len() {
+        let start = toks[i].0;
+        let Some(p) = q_param(ctx, &toks, &mut i) else {
+            let (a, _, b) = toks[i].clone();
+            ctx.error(
+                Code::KlartextBadCycle,
+                a,
+                b,
+                "expected a probing cycle parameter `Qnnn=value`",
+                "write one `Qnnn=value` per parameter",
+            );
+            return Vec::new();
+        };
+        let end = toks[i - 1].2;
+        text.push_str(&format!(" ~\n  {}", ctx.slice(start, end).replace(' ', "")));
+        if let Some(t) = &p.label {
+            text.push_str(&format!(" ;{t}"));
+        }
+    }
+    let f = crate::ir::TncFunction {
+        text,
+        kind: crate::ir::TncFunctionKind::TouchProbe(number),
+    };
+    vec![ctx.stmt(StmtKind::TncFunction(Box::new(f)), l, r)]
+}

@@ -29,6 +29,7 @@ pub(super) fn items(ctx: &mut Ctx<'_>, node: Node, l: usize, r: usize) -> Vec<It
         Node::CyclDef(at) => cycles::cycl_def(ctx, at, l, r),
         Node::CyclCall(w) => cycles::cycl_call(ctx, &w, l, r),
         Node::PatternDef(at) => cycles::pattern_def(ctx, at, l, r),
+        Node::TchProbe(at) => cycles::tch_probe(ctx, at, l, r),
         Node::Stop(w) => program::stop(ctx, &w, l, r),
         Node::Words(w) if w.first().is_some_and(|f| functions::starts_block(&f.name)) => {
             functions::word_block(ctx, &w, l, r)

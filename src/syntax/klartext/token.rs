@@ -32,6 +32,8 @@ pub enum Kw {
     Cycl,
     Pattern,
     Stop,
+    /// `TCH PROBE`: a touch probe cycle.
+    Tch,
 }
 
 impl Kw {
@@ -60,6 +62,7 @@ impl Kw {
             "CYCL" => Kw::Cycl,
             "PATTERN" => Kw::Pattern,
             "STOP" => Kw::Stop,
+            "TCH" => Kw::Tch,
             _ => return None,
         })
     }

@@ -151,6 +151,18 @@ impl Builder<'_> {
 }
 
 /// `()` is read as one empty slot; it means no arguments.
+/// Array sizes as read (a number, or a name the machine defines) split into
+/// the numbers and the named ones by index; `first` is the index of the
+/// first one (1 when a STRING length comes before them).
+pub fn split_dims(d: Vec<(u32, Option<String>)>, first: usize) -> (Vec<u32>, Vec<(usize, String)>) {
+    let names = d
+        .iter()
+        .enumerate()
+        .filter_map(|(i, (_, n))| n.clone().map(|n| (i + first, n)))
+        .collect();
+    (d.into_iter().map(|(v, _)| v).collect(), names)
+}
+
 pub fn args(list: Vec<Arg>) -> Vec<Arg> {
     if list.len() == 1 && list[0].value.is_none() {
         Vec::new()
