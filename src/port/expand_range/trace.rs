@@ -77,7 +77,13 @@ pub struct Trace {
     /// The block running is in the main program's file (calls made in
     /// another file keep no span: its statements are not this program's).
     in_main: bool,
+    /// More calls than [`MAX_CALLS`]: the rest was not recorded.
+    overflow: bool,
 }
+
+/// The most canonical calls one recorded run keeps (about 100 bytes
+/// each): a program that makes more is not written as its moves.
+pub const MAX_CALLS: usize = 2_000_000;
 
 impl Trace {
     /// The state after step `i`.
@@ -103,6 +109,10 @@ pub fn record(
     let t = trace.clone();
     let mut sink = move |c: Canon, s: Span| {
         let mut t = t.borrow_mut();
+        if t.calls.len() >= MAX_CALLS {
+            t.overflow = true;
+            return;
+        }
         let s = if t.in_main { s } else { elsewhere() };
         t.calls.push((c, s));
     };
@@ -113,7 +123,7 @@ pub fn record(
         .map(RefCell::into_inner)
         .unwrap_or_default();
     t.end = Some(end);
-    if stopped {
+    if stopped || t.overflow {
         t.stopped = t.steps.len().checked_sub(1);
     }
     t
