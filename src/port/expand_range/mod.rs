@@ -177,12 +177,11 @@ fn targets(
             Ok((out, def))
         }
         _ => {
-            if !at_top {
-                if let Some(def) = ranges::definition(p, st, t, j) {
-                    if def.0 > 0 && !t.steps.iter().any(|s| (def.0..=def.1).contains(&s.pc)) {
-                        // A subprogram no one calls.
-                        return Ok((Vec::new(), Some(def)));
-                    }
+            if !at_top && ranges::definition(p, st, t, j).is_some_and(|d| d.0 > 0) {
+                // A subprogram the run never calls: it has no moves to
+                // write, and dropping it would lose it.
+                if !t.steps.iter().any(|s| s.pc == j) && !t.deep.contains_key(&j) {
+                    return Err("it is in a subprogram this program never calls, so there are no moves to write it as".into());
                 }
             }
             Ok((vec![ranges::grow(t, st, j, j)?], None))
