@@ -30,6 +30,8 @@
 //! * [`osubs`]: LinuxCNC o-word subroutines as `O n` .. `M99` programs
 //!   called with `G65 P n` and argument letters (Fanuc, Haas), inlined
 //!   with their arguments in R parameters (Siemens).
+//! * [`funcs`]: rounding and power functions the target lacks, written
+//!   exactly with the ones it has (`POT(x)` → `x*x`, `FUP` → `INT` + `SGN`).
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
 //!   as the moves the interpreter makes for it.
 //!
@@ -43,6 +45,7 @@ pub mod expand;
 mod flow_ids;
 pub mod forms;
 mod frame;
+mod funcs;
 mod from_tnc;
 mod from_tnc_flow;
 mod groups;
@@ -93,6 +96,7 @@ pub fn port_program(
     if opts.expand_cycles {
         expand::expand_unmappable(&mut out, from, to, &mut diags);
     }
+    funcs::run(&mut out, to);
     pockets::run(&mut out, from, to, &mut diags);
     from_tnc::run(&mut out, from, to, &mut diags);
     frame::run(&mut out, from, to);

@@ -1,0 +1,63 @@
+//! Issue 13: the exact idiom rewrites of `cncc port` (keyed on the
+//! construct and on what the target lacks) and the holes of `--verify`.
+//! Each test ports a small program of its own with `--verify`.
+
+mod common;
+use common::{cncc, stderr, stdout};
+
+const DIALECTS: [&str; 5] = ["fanuc", "haas", "linuxcnc", "siemens840d", "heidenhain"];
+
+/// Ports `file` (read as `from`) to `to` with `--verify`; the output and
+/// stderr, or a panic naming what failed.
+fn port_verified(from: &str, to: &str, file: &str) -> (String, String) {
+    let out = cncc(&["port", "--from", from, "--to", to, "--verify", file]);
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(0), "{from} -> {to} {file}:\n{err}");
+    assert!(err.contains("verify: OK"), "{from} -> {to}: {err}");
+    (stdout(&out), err)
+}
+
+fn to_all_others(from: &str, file: &str) {
+    for to in DIALECTS.iter().filter(|t| **t != from) {
+        port_verified(from, to, file);
+    }
+}
+
+/// Fanuc FIX drops the fraction and FUP rounds away from zero:
+/// FIX[-1.5] = -1, FUP[-1.5] = -2 (not floor and ceiling).
+#[test]
+fn fanuc_fix_truncates_and_fup_rounds_away_from_zero() {
+    let out = cncc(&["canon", "tests/programs/fanuc/port_rounding.nc"]);
+    let canon = stdout(&out);
+    assert!(
+        canon.contains("STRAIGHT_FEED(-1.0000, -2.0000, -1.0000"),
+        "{canon}"
+    );
+    assert!(canon.contains("STRAIGHT_FEED(2.0000, 3.0000, -1.0000"), "{canon}");
+    assert!(canon.contains("STRAIGHT_FEED(-4.0000, -3.0000, -1.0000"), "{canon}");
+}
+
+#[test]
+fn rounding_functions_port_exactly_everywhere() {
+    to_all_others("fanuc", "tests/programs/fanuc/port_rounding.nc");
+    to_all_others("siemens840d", "tests/programs/siemens840d/port_rounding.mpf");
+    to_all_others("linuxcnc", "tests/programs/linuxcnc/port_rounding.ngc");
+}
+
+#[test]
+fn trunc_is_fix_and_pot_is_a_product() {
+    let (fanuc, _) = port_verified(
+        "siemens840d",
+        "fanuc",
+        "tests/programs/siemens840d/port_rounding.mpf",
+    );
+    assert!(fanuc.contains("#2=[FIX[#1]]"), "{fanuc}");
+    assert!(fanuc.contains("#4=[#1*#1]"), "{fanuc}");
+    let (tnc, _) = port_verified(
+        "fanuc",
+        "heidenhain",
+        "tests/programs/fanuc/port_rounding.nc",
+    );
+    // FUP as INT + SGN of the fraction.
+    assert!(tnc.contains("INT (Q1) + SGN (Q1 - INT (Q1))"), "{tnc}");
+}
