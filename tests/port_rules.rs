@@ -61,3 +61,17 @@ fn trunc_is_fix_and_pot_is_a_product() {
     // FUP as INT + SGN of the fraction.
     assert!(tnc.contains("INT (Q1) + SGN (Q1 - INT (Q1))"), "{tnc}");
 }
+
+/// `o<peck_at> sub` has no number: it becomes `O1000 (peck_at)`, called
+/// with `G65 P1000`, beside the numbered `o100` (`O0100`).
+#[test]
+fn named_subroutine_gets_a_free_program_number() {
+    let file = "tests/programs/linuxcnc/port_named_sub.ngc";
+    for to in ["fanuc", "haas"] {
+        let (out, _) = port_verified("linuxcnc", to, file);
+        assert!(out.contains("O1000 (peck_at)"), "{out}");
+        assert!(out.contains("G65 P1000 A10. B20. C-3."), "{out}");
+        assert!(out.contains("G65 P100 A50."), "{out}");
+    }
+    port_verified("linuxcnc", "siemens840d", file);
+}
