@@ -75,3 +75,53 @@ fn named_subroutine_gets_a_free_program_number() {
     }
     port_verified("linuxcnc", "siemens840d", file);
 }
+
+/// Five levels of subprograms each calling the next ten times: inlined for
+/// Siemens that is a million blocks. The budget (100 000 added blocks, all
+/// copies charged) refuses it instead of writing them.
+#[test]
+fn inlining_has_a_real_budget() {
+    let file = "tests/programs/heidenhain/port_inline_budget.h";
+    let start = std::time::Instant::now();
+    let out = cncc(&["port", "--from", "heidenhain", "--to", "siemens840d", file]);
+    let err = stderr(&out);
+    assert_ne!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("E0617"), "{err}");
+    assert!(err.contains("more than 100000 blocks"), "{err}");
+    assert!(stdout(&out).len() < 1_000_000, "the blocks were written");
+    assert!(start.elapsed().as_secs() < 20, "{:?}", start.elapsed());
+}
+
+/// `BLK FORM` for targets without a blank statement: a comment that reads
+/// back as one, and the `--stock` that gives the same blank; the old datum
+/// shift `CYCL DEF 7` as `G52`/`TRANS`, the dwell `CYCL DEF 9` as `G4`.
+#[test]
+fn blank_datum_shift_and_dwell_of_old_klartext() {
+    let file = "tests/programs/heidenhain/port_old_cycles.h";
+    for to in ["fanuc", "haas", "linuxcnc", "siemens840d"] {
+        let (out, err) = port_verified("heidenhain", to, file);
+        assert!(out.contains("BLANK MIN Z X0 Y0 Z-20"), "{out}");
+        assert!(err.contains("--stock 100x80x20+0+0-20"), "{err}");
+        let shift = if to == "siemens840d" {
+            "TRANS X20 Y10 Z0"
+        } else if to == "linuxcnc" {
+            "G52 X20 Y10 Z0"
+        } else {
+            "G52 X20. Y10. Z0."
+        };
+        assert!(out.contains(shift), "{out}");
+        assert!(out.contains("G4 "), "{out}");
+    }
+}
+
+/// The port of cncc's own Siemens cycle with an SDIS in a variable: the R
+/// plane is RFP + SDIS, which is no number here, so the cycle is refused
+/// (it was written with R = RFP, rapiding 2 mm lower than the source).
+#[test]
+fn cycle_with_sdis_in_a_variable_is_not_written_on_the_surface() {
+    let file = "tests/programs/siemens840d/port_sdis_variable.mpf";
+    let out = cncc(&["port", "--from", "siemens840d", "--to", "fanuc", file]);
+    let err = stderr(&out);
+    assert_ne!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("SDIS is an expression"), "{err}");
+}

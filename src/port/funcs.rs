@@ -14,6 +14,8 @@
 //!   `ceil(|x|) * s(x)`.
 //! * Floor and ceiling (LinuxCNC `FIX`/`FUP`, Siemens `ROUNDUP`):
 //!   `-ceil(-x)` / `-floor(-x)`, or `trunc(x) ∓ (|sf(d)| ∓ sf(d))/2`.
+//! * The sign (Klartext `SGN`): `sf(x/(|x|+1))`, the quotient being a
+//!   fraction of the sign of x.
 //! * `ROUND` (half away from zero) where the target lacks it (Klartext):
 //!   `trunc(x + sgn(x)/2)`. [?] Exact in decimal arithmetic; in binary
 //!   floating point x + 0.5 may round up for the largest double below a
@@ -51,6 +53,7 @@ pub fn run(p: &mut Program, to: &DialectSpec) {
             Func::Floor => b.floor(x),
             Func::Ceil => b.ceil(x),
             Func::Round => b.round(x),
+            Func::Sign => b.sign(x),
             _ => None,
         };
         if let Some(new) = new {
@@ -272,6 +275,20 @@ impl Build<'_> {
         self.step(x, true)
     }
 
+    /// sgn(x) = sf(x/(|x|+1)): the quotient is a fraction of x's sign.
+    fn sign(&mut self, x: ExprId) -> Option<ExprId> {
+        if !self.has(Func::Abs) {
+            return None;
+        }
+        let x1 = self.copy(x);
+        let x2 = self.copy(x);
+        let a = self.call(Func::Abs, x2);
+        let one = self.num(1);
+        let den = self.bin(BinaryOp::Add, a, one);
+        let q = self.bin(BinaryOp::Div, x1, den);
+        self.frac_sign(q)
+    }
+
     /// ROUND (half away from zero): trunc(x + sgn(x)/2).
     fn round(&mut self, x: ExprId) -> Option<ExprId> {
         if !self.has(Func::Sign) {
@@ -314,6 +331,9 @@ mod tests {
                 assert_eq!(t + (sf.abs() + sf) / 2.0, x.ceil(), "{x}");
             }
             let sg = if x == 0.0 { 0.0 } else { x.signum() };
+            let q = x / (x.abs() + 1.0);
+            assert_eq!(ceil(q) - ceil(-q), sg, "{x}");
+            assert_eq!(if q < 0.0 { q.floor() } else { q.ceil() }, sg, "{x}");
             assert_eq!((x + sg / 2.0).trunc(), x.round(), "{x}");
         }
     }

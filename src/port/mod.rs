@@ -30,6 +30,10 @@
 //! * [`osubs`]: LinuxCNC o-word subroutines as `O n` .. `M99` programs
 //!   called with `G65 P n` and argument letters (Fanuc, Haas), inlined
 //!   with their arguments in R parameters (Siemens).
+//! * [`blank`]: `BLK FORM` as a comment (and the `--stock` it implies)
+//!   where the target has no blank statement.
+//! * [`old_cycles`]: Heidenhain `CYCL DEF 7` (datum shift) as `TRANS` or
+//!   `G52`, `CYCL DEF 9` (dwell) as `G4`, where exact.
 //! * [`funcs`]: rounding and power functions the target lacks, written
 //!   exactly with the ones it has (`POT(x)` → `x*x`, `FUP` → `INT` + `SGN`).
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
@@ -40,6 +44,7 @@
 //! the rest.
 
 mod arcs;
+mod blank;
 mod decls;
 pub mod expand;
 mod flow_ids;
@@ -52,6 +57,7 @@ mod groups;
 mod haas_cycles;
 mod levels;
 mod loops;
+mod old_cycles;
 pub(crate) mod osubs;
 mod pockets;
 mod poles;
@@ -97,6 +103,8 @@ pub fn port_program(
         expand::expand_unmappable(&mut out, from, to, &mut diags);
     }
     funcs::run(&mut out, to);
+    blank::run(&mut out, to, &mut diags);
+    old_cycles::run(&mut out, to);
     pockets::run(&mut out, from, to, &mut diags);
     from_tnc::run(&mut out, from, to, &mut diags);
     frame::run(&mut out, from, to);
