@@ -125,3 +125,20 @@ fn cycle_with_sdis_in_a_variable_is_not_written_on_the_surface() {
     assert_ne!(out.status.code(), Some(0), "{err}");
     assert!(err.contains("SDIS is an expression"), "{err}");
 }
+
+/// Siemens `CASE` for Fanuc and Haas: one `IF [..] GOTO n` per block, then
+/// the default jump.
+#[test]
+fn case_is_a_chain_of_conditional_jumps() {
+    let file = "tests/programs/siemens840d/port_case.mpf";
+    for to in ["fanuc", "haas"] {
+        let (out, _) = port_verified("siemens840d", to, file);
+        let lines: Vec<&str> = out.lines().collect();
+        let i = lines
+            .iter()
+            .position(|l| l.starts_with("IF [#1+1 EQ 1] GOTO "))
+            .expect(&out);
+        assert!(lines[i + 1].starts_with("IF [#1+1 EQ 3] GOTO "), "{out}");
+        assert!(lines[i + 2].starts_with("GOTO "), "{out}");
+    }
+}

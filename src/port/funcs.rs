@@ -63,6 +63,12 @@ pub fn run(p: &mut Program, to: &DialectSpec) {
     }
 }
 
+/// A fresh copy of the expression tree at `e` (no node shared).
+pub(crate) fn copy_expr(p: &mut Program, to: &DialectSpec, e: ExprId) -> ExprId {
+    let span = p.exprs[e].span;
+    Build { p, to, span }.copy(e)
+}
+
 fn p_span(p: &Program, id: ExprId) -> Span {
     p.exprs[id].span
 }

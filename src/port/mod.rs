@@ -34,6 +34,8 @@
 //!   where the target has no blank statement.
 //! * [`old_cycles`]: Heidenhain `CYCL DEF 7` (datum shift) as `TRANS` or
 //!   `G52`, `CYCL DEF 9` (dwell) as `G4`, where exact.
+//! * [`case`]: Siemens `CASE` as a chain of conditional jumps where the
+//!   target has no structured control.
 //! * [`funcs`]: rounding and power functions the target lacks, written
 //!   exactly with the ones it has (`POT(x)` → `x*x`, `FUP` → `INT` + `SGN`).
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
@@ -45,6 +47,7 @@
 
 mod arcs;
 mod blank;
+mod case;
 mod decls;
 pub mod expand;
 mod flow_ids;
@@ -118,6 +121,7 @@ pub fn port_program(
     from_tnc_flow::run(&mut out, from, to, &mut diags);
     decls::run(&mut out, to, &mut diags);
     loops::run(&mut out, to, &mut diags);
+    case::run(&mut out, to);
     arcs::run(&mut out, from, to);
     ref_return::run(&mut out, from, to, &mut diags);
     osubs::run(&mut out, from, to, &mut diags);
