@@ -219,7 +219,7 @@ codes! {
         "`--tool-map` takes pairs `OLD=NEW` separated by commas (`1=5,2=7`) or a file with one pair per line (`#` starts a comment). Tool numbers are whole and not negative; each old number appears once.";
     VerifyMismatch = "E0616", "verify-mismatch", Error,
         "the ported program does not cut the same as the source",
-        "`cncc port --verify` runs both programs and compares their cutting moves (feed moves and arcs, within 1 micrometre, with their feed rates). The first difference is shown with the statement in each program. Rapids that differ are listed as notes only.";
+        "`cncc port --verify` runs both programs and compares their cutting moves (feed moves and arcs, within 1 micrometre, with their feed rates). The first difference is shown with the statement in each program. Rapids are compared too, from the first move to the last: a rapid below the highest cutting height that is not the same on both sides fails the verification (except the approach after a tool change or a move in machine coordinates, and a vertical rapid inside a place already cut deeper, such as a peck's retract).";
     PortSubprogram = "E0617", "port-subprogram", Error,
         "a subprogram call the port cannot carry to the target",
         "`cncc port` writes a called subprogram in the target's own form: for Heidenhain `CALL LBL n` with the subprogram as `LBL n` ... `LBL 0` after the main program's end (a repeat count becomes a program-section repeat around the call); from Heidenhain a label subprogram becomes the target's local subprogram. The called program must be found beside the program (`O1000.nc` for `M98 P1000`), be ported itself, and its number and repeat count must be known numbers. Give the count as a number, put the subprogram file beside the program, or expand the call in the source.";
@@ -231,13 +231,13 @@ codes! {
         "Porting to Klartext, loops and conditionals become labels and the conditional jumps `FN 9..12` (EQU, NE, GT, LT; the others as two jumps), combined with AND, OR and NOT. A condition of another kind (bitwise operators, a computed jump target, CASE) has no such form. Porting from Klartext to a target without jumps (LinuxCNC), a backward conditional jump becomes a `do`/`while` loop and a forward one an `if` block only when the jumps nest like loops and conditionals do; rewrite the others.";
     PortTncFormula = "E0623", "port-tnc-formula", Error,
         "a function or expression Klartext formulas have no counterpart for",
-        "A Klartext Q parameter formula has + - * / ^ and SIN COS TAN ASIN ACOS ATAN SQRT SQ ABS INT LN EXP; the angle of two values is `FN 13`, an assignment of its own. `cncc port` writes POW as `^` and an ATAN of two values that is a whole assignment as FN 13; ROUND, FIX, FUP, MIN, MAX, BIN, BCD and an ATAN of two values inside a larger formula have no counterpart. Rewrite them in the source.";
+        "A Klartext Q parameter formula has + - * / ^ and SIN COS TAN ASIN ACOS ATAN SQRT SQ ABS INT LN EXP; the angle of two values is `FN 13`, an assignment of its own. `cncc port` writes POW as `^`, an ATAN of two values that is a whole assignment as FN 13, and the rounding functions (ROUND, FIX, FUP, floor, ceiling) exactly with INT and SGN; MIN, MAX, BIN, BCD and an ATAN of two values inside a larger formula have no counterpart. Rewrite them in the source.";
     PortApproximate = "W0610", "port-approximate", Warning,
         "a construct carried to the target with a documented difference",
         "The target's form of this construct does the same cutting but differs in something the port cannot make equal (a spindle orientation, a register the target derives itself, a re-entry distance). Read the message; `--verify` shows whether the cutting moves still match.";
     VerifyRapids = "W0611", "verify-rapids-differ", Warning,
         "the ported program's rapid moves differ from the source's",
-        "`--verify` found the same cutting moves, but some rapid (G0) moves go elsewhere (for example a cycle that returns to another level). They do not cut, but check them for collisions.";
+        "`--verify` found the same cutting moves, but some rapid (G0) moves go elsewhere above the highest cutting height, or in the approach after a tool change (for example a cycle that returns to another clearance level). They do not cut, but check them for collisions. A differing rapid below the cutting height is an error (E0616).";
     LengthWithoutPoint = "W0001", "length-without-decimal-point", Warning,
         "a length written without a decimal point",
         "With the decimal-point rule of this dialect (Fanuc parameter 3401#0 = 0), `X10` means 10 least input increments (0.010 mm or 0.0010 in), not 10 mm. Write `X10.` if whole units are meant. Load a spec with `integer-lengths=\"units\"` for a control set to calculator-type input.";
