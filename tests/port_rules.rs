@@ -33,14 +33,23 @@ fn fanuc_fix_truncates_and_fup_rounds_away_from_zero() {
         canon.contains("STRAIGHT_FEED(-1.0000, -2.0000, -1.0000"),
         "{canon}"
     );
-    assert!(canon.contains("STRAIGHT_FEED(2.0000, 3.0000, -1.0000"), "{canon}");
-    assert!(canon.contains("STRAIGHT_FEED(-4.0000, -3.0000, -1.0000"), "{canon}");
+    assert!(
+        canon.contains("STRAIGHT_FEED(2.0000, 3.0000, -1.0000"),
+        "{canon}"
+    );
+    assert!(
+        canon.contains("STRAIGHT_FEED(-4.0000, -3.0000, -1.0000"),
+        "{canon}"
+    );
 }
 
 #[test]
 fn rounding_functions_port_exactly_everywhere() {
     to_all_others("fanuc", "tests/programs/fanuc/port_rounding.nc");
-    to_all_others("siemens840d", "tests/programs/siemens840d/port_rounding.mpf");
+    to_all_others(
+        "siemens840d",
+        "tests/programs/siemens840d/port_rounding.mpf",
+    );
     to_all_others("linuxcnc", "tests/programs/linuxcnc/port_rounding.ngc");
 }
 

@@ -63,7 +63,10 @@ fn number(v: &Value, exprs: &crate::ir::Arena<crate::ir::Expr>) -> Option<f64> {
 
 /// The corner's X Y Z, and whether each is incremental (`IX`: from the
 /// minimum corner).
-fn corner_values(axes: &Axes, exprs: &crate::ir::Arena<crate::ir::Expr>) -> [Option<(f64, bool)>; 3] {
+fn corner_values(
+    axes: &Axes,
+    exprs: &crate::ir::Arena<crate::ir::Expr>,
+) -> [Option<(f64, bool)>; 3] {
     let get = |a: char| {
         let c = axes.get(a)?;
         let inc = c.dim == Some(crate::ir::DimMode::Incremental);

@@ -22,7 +22,11 @@ pub fn run(p: &mut Program, to: &DialectSpec) {
     let blocks = std::mem::take(&mut p.blocks);
     let mut done = Vec::with_capacity(blocks.len());
     for mut b in blocks {
-        if !b.stmts.iter().any(|s| matches!(s.kind, StmtKind::Case { .. })) {
+        if !b
+            .stmts
+            .iter()
+            .any(|s| matches!(s.kind, StmtKind::Case { .. }))
+        {
             done.push(b);
             continue;
         }
@@ -71,7 +75,11 @@ pub fn run(p: &mut Program, to: &DialectSpec) {
         let mut rest: Vec<Stmt> = Vec::new();
         for s in jumps.by_ref() {
             let jump = matches!(s.kind, StmtKind::Goto { .. });
-            if jump && first.iter().any(|f| matches!(f.kind, StmtKind::Goto { .. })) {
+            if jump
+                && first
+                    .iter()
+                    .any(|f| matches!(f.kind, StmtKind::Goto { .. }))
+            {
                 rest.push(s);
             } else {
                 first.push(s);

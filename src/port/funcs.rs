@@ -118,7 +118,10 @@ impl Build<'_> {
             ExprKind::AtanSlash(a, b) => ExprKind::AtanSlash(self.copy(a), self.copy(b)),
             ExprKind::Call(f, args) => ExprKind::Call(f, self.copy_all(args)),
             ExprKind::Query(n, args) => ExprKind::Query(n, self.copy_all(args)),
-            k @ (ExprKind::Number(_) | ExprKind::Str(_) | ExprKind::Bool(_) | ExprKind::Exists(_)) => k,
+            k @ (ExprKind::Number(_)
+            | ExprKind::Str(_)
+            | ExprKind::Bool(_)
+            | ExprKind::Exists(_)) => k,
         };
         let span = self.p.exprs[e].span;
         self.p.exprs.alloc(Expr { kind, span })

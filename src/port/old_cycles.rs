@@ -27,7 +27,9 @@ pub fn run(p: &mut Program, to: &DialectSpec) {
         return;
     }
     let frames = to.has(Capability::Frames) && !has_other_frames(p);
-    let local = to.code_for(Meaning::CoordShift(CoordShift::Local)).is_some();
+    let local = to
+        .code_for(Meaning::CoordShift(CoordShift::Local))
+        .is_some();
     let mut i = 0;
     while i < p.blocks.len() {
         let Some(head) = line(&p.blocks[i]) else {
@@ -47,7 +49,14 @@ pub fn run(p: &mut Program, to: &DialectSpec) {
                 let block = crate::port::follow_block(&p.blocks[i], vec![Stmt::new(kind, span)]);
                 let number = p.blocks[i].number.take();
                 let label = p.blocks[i].label.take();
-                p.blocks.splice(i..end, [Block { number, label, ..block }]);
+                p.blocks.splice(
+                    i..end,
+                    [Block {
+                        number,
+                        label,
+                        ..block
+                    }],
+                );
             }
         }
         i += 1;
@@ -60,11 +69,14 @@ fn has_old_lines(p: &Program) -> bool {
 
 /// Cycles 8 (mirror), 10 (rotation), 11 and 26 (scaling).
 fn has_other_frames(p: &Program) -> bool {
-    p.blocks.iter().flat_map(|b| &b.stmts).any(|s| match &s.kind {
-        StmtKind::CycleLine(l) => matches!(l.cycle, 8 | 10 | 11 | 26),
-        StmtKind::Transform(_) => true,
-        _ => false,
-    })
+    p.blocks
+        .iter()
+        .flat_map(|b| &b.stmts)
+        .any(|s| match &s.kind {
+            StmtKind::CycleLine(l) => matches!(l.cycle, 8 | 10 | 11 | 26),
+            StmtKind::Transform(_) => true,
+            _ => false,
+        })
 }
 
 /// The block's old-style cycle line, when it holds only that.

@@ -173,7 +173,11 @@ fn rapids_below(ev: &[Event], top: f64) -> Vec<(P3, &Move)> {
             }
             Event::Dwell { .. } | Event::Stop { .. } | Event::Comment { .. } => continue,
         };
-        let from = if std::mem::take(&mut first) { m.to } else { m.from };
+        let from = if std::mem::take(&mut first) {
+            m.to
+        } else {
+            m.from
+        };
         approach &= !m.is_feed();
         if approach || crate::toolpath::dist(from, m.to) <= TOLERANCE_MM {
             continue;
@@ -293,7 +297,11 @@ mod tests {
         let v = verdict(&src, &bad);
         assert!(v.cutting.is_none(), "{v:?}");
         let d = v.low_rapid.as_ref().expect("the low rapid is found");
-        assert!(d.what.contains("below the highest cutting height"), "{}", d.what);
+        assert!(
+            d.what.contains("below the highest cutting height"),
+            "{}",
+            d.what
+        );
         assert!(!v.same());
         assert!(verdict(&src, &src).same());
     }
