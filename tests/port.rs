@@ -73,9 +73,10 @@ fn demo_to_siemens_and_back_verifies() {
     assert!(err.contains("verify: OK"), "{err}");
     let fanuc = std::fs::read_to_string(&back).unwrap();
     assert!(fanuc.contains("G99 G81 X10. Y10. Z-10. R2."), "{fanuc}");
-    // RTP 25 above R: a G98 cycle from Z25.
+    // RTP 25 above R: a G98 cycle from Z25, reached in the one rapid the
+    // source makes from the G99 holes' R plane (X Y and up to Z25).
     assert!(
-        fanuc.contains("G0 Z25.\nG98 G83 X50. Y40. Z-20. R2. Q5."),
+        fanuc.contains("G0 X50. Y40. Z25.\nG98 G83 X50. Y40. Z-20. R2. Q5."),
         "{fanuc}"
     );
     assert!(fanuc.contains("G80"), "{fanuc}");
@@ -363,7 +364,9 @@ fn oword_subroutines_become_g65_programs() {
     assert!(fanuc.trim_end().ends_with("M99"), "{fanuc}");
     assert_eq!(fanuc.matches("M99").count(), 1, "{fanuc}");
     for (program, why) in [
-        ("o<side> sub\nG1 X1 F100\no<side> endsub\no<side> call\nM2\n", "the subroutine `o<side>`"),
+        // A named subroutine of another file (one defined here gets a
+        // number: tests/port_rules.rs).
+        ("o100 sub\nG1 X1 F100\no100 endsub\no<side> call\nM2\n", "a call of `o<side>`"),
         (
             "o300 sub\nG1 X[#10] F100\no300 endsub\no300 call [1] [2] [3] [4] [5] [6] [7] [8] [9] [10]\nM2\n",
             "the argument #10",

@@ -200,7 +200,7 @@ fn verify_port(
         }
         diags.push(d);
     }
-    if let Some(first) = &v.cutting {
+    if let Some(first) = v.cutting.as_ref().or(v.low_rapid.as_ref()) {
         diags.push(mismatch(first));
     }
     v.same()
@@ -217,7 +217,7 @@ fn place(ctx: &Context, sp: Option<Span>) -> String {
 }
 
 fn report(ctx: &Context, v: &Verdict, _out: FileId) {
-    match &v.cutting {
+    match v.cutting.as_ref().or(v.low_rapid.as_ref()) {
         None => eprintln!(
             "verify: OK: the same {} operations (within {} mm); {} rapid(s) differ",
             v.cutting_moves,

@@ -179,6 +179,7 @@ pub const FUNCS: &[(&str, Func)] = &[
     ("floor", Func::Floor),
     ("ceil", Func::Ceil),
     ("trunc", Func::Trunc),
+    ("round-away", Func::RoundAway),
     ("ln", Func::Ln),
     ("exp", Func::Exp),
     ("pow", Func::Pow),

@@ -99,6 +99,9 @@ pub enum Capability {
     /// Heidenhain paths: circles round the pole `CC`, polar `LP`/`CP`/`CTP`,
     /// `RND`/`CHF` blocks between elements, cycles by `CYCL DEF` + call.
     PolePaths,
+    /// The blank as a statement of the program (Heidenhain `BLK FORM
+    /// 0.1/0.2`); elsewhere the port writes it as a comment.
+    BlankForm,
     /// Haas G12/G13 circular pocket milling (I K Q Z L D), run as a cycle.
     CircularPocketCycle,
     /// Haas G150 general pocket milling: read and kept, reported as not
@@ -177,6 +180,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ),
     ("semicolon-end-of-block", Capability::SemicolonEndOfBlock),
     ("pole-paths", Capability::PolePaths),
+    ("blank-form", Capability::BlankForm),
     ("circular-pocket-cycle", Capability::CircularPocketCycle),
     ("general-pocket-cycle", Capability::GeneralPocketCycle),
     ("power-on-rapid", Capability::PowerOnRapid),

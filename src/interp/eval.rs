@@ -188,6 +188,7 @@ impl Interp<'_, '_> {
             Func::Floor => a.floor(),
             Func::Ceil => a.ceil(),
             Func::Trunc => a.trunc(),
+            Func::RoundAway => round_away(a),
             Func::Ln if a > 0.0 => a.ln(),
             Func::Exp => a.exp(),
             Func::Pow => a.powf(b),
@@ -368,6 +369,15 @@ impl Interp<'_, '_> {
     /// A run-time error at a span: the run stops here.
     pub fn error_at(&self, span: crate::span::Span, code: Code, msg: impl Into<String>) -> Stop {
         Stop::Error(Diagnostic::new(code, msg).primary(span, "here"))
+    }
+}
+
+/// Fanuc `FUP`: the integer away from zero (`FUP[-1.2]` = -2).
+fn round_away(a: f64) -> f64 {
+    if a < 0.0 {
+        a.floor()
+    } else {
+        a.ceil()
     }
 }
 

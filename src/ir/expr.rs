@@ -165,12 +165,16 @@ pub enum Func {
     Sqrt,
     Abs,
     Round,
-    /// Round toward minus infinity (Fanuc/LinuxCNC `FIX`).
+    /// Round toward minus infinity (LinuxCNC `FIX`).
     Floor,
-    /// Round toward plus infinity (Fanuc/LinuxCNC `FUP`, Siemens `ROUNDUP`).
+    /// Round toward plus infinity (LinuxCNC `FUP`, Siemens `ROUNDUP`).
     Ceil,
-    /// Round toward zero (Siemens `TRUNC`).
+    /// Round toward zero: drop the fraction (Siemens `TRUNC`, Fanuc `FIX`,
+    /// Heidenhain `INT`).
     Trunc,
+    /// Round away from zero to an integer (Fanuc `FUP`: `FUP[1.2]` = 2,
+    /// `FUP[-1.2]` = -2).
+    RoundAway,
     Ln,
     Exp,
     /// `POW(a, b)` (Fanuc, Siemens `POT` is a square: see [`Func::Square`]).

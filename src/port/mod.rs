@@ -30,6 +30,14 @@
 //! * [`osubs`]: LinuxCNC o-word subroutines as `O n` .. `M99` programs
 //!   called with `G65 P n` and argument letters (Fanuc, Haas), inlined
 //!   with their arguments in R parameters (Siemens).
+//! * [`blank`]: `BLK FORM` as a comment (and the `--stock` it implies)
+//!   where the target has no blank statement.
+//! * [`old_cycles`]: Heidenhain `CYCL DEF 7` (datum shift) as `TRANS` or
+//!   `G52`, `CYCL DEF 9` (dwell) as `G4`, where exact.
+//! * [`case`]: Siemens `CASE` as a chain of conditional jumps where the
+//!   target has no structured control.
+//! * [`funcs`]: rounding and power functions the target lacks, written
+//!   exactly with the ones it has (`POT(x)` → `x*x`, `FUP` → `INT` + `SGN`).
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
 //!   as the moves the interpreter makes for it.
 //!
@@ -38,6 +46,8 @@
 //! the rest.
 
 mod arcs;
+mod blank;
+mod case;
 mod comp_register;
 mod decls;
 pub mod expand;
@@ -47,10 +57,12 @@ pub mod forms;
 mod frame;
 mod from_tnc;
 mod from_tnc_flow;
+mod funcs;
 mod groups;
 mod haas_cycles;
 mod levels;
 mod loops;
+mod old_cycles;
 pub(crate) mod osubs;
 mod pockets;
 mod poles;
@@ -96,6 +108,9 @@ pub fn port_program(
     if opts.expand_cycles {
         expand::expand_unmappable(&mut out, from, to, &mut diags);
     }
+    funcs::run(&mut out, to);
+    blank::run(&mut out, to, &mut diags);
+    old_cycles::run(&mut out, to);
     pockets::run(&mut out, from, to, &mut diags);
     from_tnc::run(&mut out, from, to, &mut diags);
     frame::run(&mut out, from, to);
@@ -110,6 +125,7 @@ pub fn port_program(
     from_tnc_flow::run(&mut out, from, to, &mut diags);
     decls::run(&mut out, to, &mut diags);
     loops::run(&mut out, to, &mut diags);
+    case::run(&mut out, to);
     arcs::run(&mut out, from, to);
     ref_return::run(&mut out, from, to, &mut diags);
     osubs::run(&mut out, from, to, &mut diags);

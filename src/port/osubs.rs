@@ -14,8 +14,13 @@
 //! * The main program needs a number to share its file: it keeps its own
 //!   `O` number, or gets the lowest one no subroutine uses.
 //!
-//! Refused (E0617): named subroutines (`o<name>`; Fanuc programs are
-//! numbered), numbers above 9999, returning a value, computed calls, and
+//! * A subroutine defined by name (`o<drill> sub`) gets a free program
+//!   number, the lowest from 1000 up that the file does not use, in the
+//!   order they are defined, with its name as a comment: `O1000 (drill)`;
+//!   its calls `G65 P1000`.
+//!
+//! Refused (E0617): a call of a named subroutine in another file (its
+//! number would be chosen when that file is ported), numbers above 9999, returning a value, computed calls, and
 //! an argument in `#10`, `#12`, `#14`, `#15`, `#16` or above `#26` (no
 //! letter reaches them).
 //!
@@ -77,14 +82,59 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
     if !applies || !has_subs(p) {
         return;
     }
-    let mut numbers = Vec::new();
-    let (main, subs) = split(p, &mut numbers, diags);
+    let names = name_numbers(p);
+    let mut numbers: Vec<u32> = names.iter().map(|(_, n)| *n).collect();
+    let (main, subs) = split(p, &names, &mut numbers, diags);
     p.blocks = main;
-    for s in p.blocks.iter_mut().flat_map(|b| &mut b.stmts) {
-        call(s, &p.exprs, diags);
-    }
     number_main(p, &numbers);
     p.blocks.extend(subs);
+    for s in p.blocks.iter_mut().flat_map(|b| &mut b.stmts) {
+        call(s, &names, &p.exprs, diags);
+    }
+}
+
+/// The lowest number a named subroutine may get: named ones are numbered
+/// from here up, past the numbers the file uses itself, so `O1000 (drill)`
+/// stands out from a main program's low number.
+const FIRST_FOR_NAMES: u32 = 1000;
+
+/// A free program number for each subroutine defined in the file by name
+/// (`o<drill> sub` → 1000), in the order they are defined, skipping the
+/// numbers of numbered subroutines and of the main program.
+fn name_numbers(p: &Program) -> Vec<(String, u32)> {
+    let mut used: Vec<u32> = Vec::new();
+    let mut named: Vec<String> = Vec::new();
+    for s in p.blocks.iter().flat_map(|b| &b.stmts) {
+        match &s.kind {
+            StmtKind::SubStart { name, .. } => match name.parse::<u32>() {
+                Ok(n) => used.push(n),
+                Err(_) if !named.contains(name) => named.push(name.clone()),
+                Err(_) => {}
+            },
+            StmtKind::ProgramStart {
+                number: Some(n), ..
+            } => used.push(*n),
+            _ => {}
+        }
+    }
+    let mut next = FIRST_FOR_NAMES;
+    let mut out = Vec::new();
+    for name in named {
+        while used.contains(&next) {
+            next += 1;
+        }
+        if next > MAX_PROGRAM {
+            break;
+        }
+        used.push(next);
+        out.push((name, next));
+        next += 1;
+    }
+    out
+}
+
+fn number_of(names: &[(String, u32)], name: &str) -> Option<u32> {
+    names.iter().find(|(n, _)| n == name).map(|(_, k)| *k)
 }
 
 fn has_subs(p: &Program) -> bool {
@@ -152,6 +202,7 @@ pub(super) fn split_subs(
 /// The main program's blocks and the subroutines' (as `O n` .. `M99`).
 fn split(
     p: &mut Program,
+    names: &[(String, u32)],
     numbers: &mut Vec<u32>,
     diags: &mut Vec<Diagnostic>,
 ) -> (Vec<Block>, Vec<Block>) {
@@ -167,7 +218,15 @@ fn split(
                     };
                 }
                 Ok(n) => diags.push(refusal(s.span, &format!("the subroutine `o{n}`"))),
-                Err(_) => diags.push(refusal(s.span, &format!("the subroutine `o<{name}>`"))),
+                Err(_) => match number_of(names, name) {
+                    Some(n) => {
+                        s.kind = StmtKind::ProgramStart {
+                            number: Some(n),
+                            name: Some(name.clone()),
+                        }
+                    }
+                    None => diags.push(refusal(s.span, &format!("the subroutine `o<{name}>`"))),
+                },
             },
             StmtKind::SubEnd { value, .. } | StmtKind::Return { value, .. } => {
                 if value.is_some() {
@@ -181,7 +240,12 @@ fn split(
 }
 
 /// `o100 call [a] [b]` → `G65 P100 A.. B..`.
-fn call(s: &mut Stmt, exprs: &crate::ir::Arena<crate::ir::Expr>, diags: &mut Vec<Diagnostic>) {
+fn call(
+    s: &mut Stmt,
+    names: &[(String, u32)],
+    exprs: &crate::ir::Arena<crate::ir::Expr>,
+    diags: &mut Vec<Diagnostic>,
+) {
     let StmtKind::Call {
         kind: kind @ CallKind::OWord,
         target,
@@ -191,9 +255,20 @@ fn call(s: &mut Stmt, exprs: &crate::ir::Arena<crate::ir::Expr>, diags: &mut Vec
     else {
         return;
     };
-    if !matches!(target, CallTarget::Number(_)) {
-        diags.push(refusal(s.span, "a call of a named or computed subroutine"));
-        return;
+    match target {
+        CallTarget::Number(_) => {}
+        CallTarget::Name(n) => match number_of(names, n) {
+            Some(k) => *target = CallTarget::Number(k),
+            None => {
+                let what = format!("a call of `o<{n}>`, a subroutine in another file,");
+                diags.push(refusal(s.span, &what));
+                return;
+            }
+        },
+        CallTarget::Computed(_) => {
+            diags.push(refusal(s.span, "a call of a computed subroutine"));
+            return;
+        }
     }
     let mut letters = Vec::new();
     if let CallArgs::Positional(list) = args {

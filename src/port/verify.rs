@@ -5,8 +5,24 @@
 //! ([`crate::toolpath`]) and the comparison engine ([`crate::compare`])
 //! compares them: feed moves and arcs within 1 µm with their feeds,
 //! drilling as holes (position and depth), tools by number (the source's
-//! renumbered by the tool map). Rapids that differ are listed; they do not
-//! fail the verification.
+//! renumbered by the tool map).
+//!
+//! Rapids are checked from the first move to the last (after the last cut
+//! too): every rapid that goes below the highest cutting height of the
+//! source (the highest Z of any feed move) must be the same rapid, in the
+//! same order, on both sides, or the verification fails. A vertical rapid
+//! at a place the program has already cut down to below the rapid's lowest
+//! point (a peck's retract and re-entry, the way out of a hole or pocket)
+//! moves in air and is not compared (G83 and CYCLE83 re-enter at their own
+//! clearances). Rapids that differ above that height are listed (W0611)
+//! and do not fail it, and so are the approach rapids between a tool
+//! change (or the start) and the first feed move after it: there the
+//! positions rest on what neither run knows (the tool's length, the
+//! machine's reference and tool-change positions), and controllers
+//! approach differently. The same holds after a move in machine
+//! coordinates or to a reference point ([`MACHINE_MARK`]). [?] An
+//! approach rapid below the cutting height on one side only is therefore
+//! not caught.
 
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
@@ -14,7 +30,8 @@ use crate::interp::flow::ProgramLoader;
 use crate::interp::Options;
 use crate::ir::Program;
 use crate::span::Span;
-use crate::toolpath::{Event, Tracker};
+use crate::toolpath::{Event, Move, Tracker, P3};
+use std::collections::HashMap;
 use std::rc::Rc;
 
 /// Positions and centres must agree within this (mm).
@@ -33,12 +50,16 @@ pub struct Verdict {
     /// The first cutting difference (None: the cutting moves match).
     pub cutting: Option<Difference>,
     pub cutting_moves: usize,
+    /// Rapids that differ above the highest cutting height (listed only).
     pub rapids: Vec<Difference>,
+    /// The first rapid below the highest cutting height that is not the
+    /// same on both sides (None: they match).
+    pub low_rapid: Option<Difference>,
 }
 
 impl Verdict {
     pub fn same(&self) -> bool {
-        self.cutting.is_none()
+        self.cutting.is_none() && self.low_rapid.is_none()
     }
 }
 
@@ -49,13 +70,45 @@ pub fn events(
     opts: &Options,
     loader: &mut dyn ProgramLoader,
 ) -> (Vec<Event>, Vec<Diagnostic>) {
+    let machine = machine_spans(&p);
     let mut tracker = Tracker::new();
     let mut out = Vec::new();
     let mut sink = |call: crate::canon::Canon, span: Span| {
-        tracker.push(&call, span, |e| out.push(e));
+        let mark = machine.contains(&span);
+        tracker.push(&call, span, |e| {
+            if mark && matches!(e, Event::Move(_)) {
+                out.push(Event::Comment {
+                    text: MACHINE_MARK.into(),
+                    span,
+                });
+            }
+            out.push(e)
+        });
     };
     let diags = crate::interp::run(p, spec, opts, loader, &mut sink);
     (out, diags)
+}
+
+/// A comment [`events`] puts before a move in machine coordinates or to
+/// a reference point (`G53`, `SUPA`, `M91`, `G28`, `G74`): where it ends
+/// in work coordinates rests on offsets and tool lengths the run does not
+/// know, so the rapids after it, up to the next feed move, are an
+/// approach (not compared). Comments are not compared.
+pub const MACHINE_MARK: &str = "\u{0}cncc: machine-referenced move";
+
+/// The statements of blocks that move in machine coordinates or to a
+/// reference point.
+fn machine_spans(p: &Program) -> std::collections::HashSet<Span> {
+    use crate::ir::StmtKind;
+    p.blocks
+        .iter()
+        .filter(|b| {
+            b.stmts
+                .iter()
+                .any(|s| matches!(s.kind, StmtKind::MachineCoords | StmtKind::RefReturn { .. }))
+        })
+        .flat_map(|b| b.stmts.iter().map(|s| s.span))
+        .collect()
 }
 
 /// Compares the events of the source (`a`) and the port (`b`) with the
@@ -77,7 +130,124 @@ pub fn compare(a: &[Event], b: &[Event], tools: &crate::port::ToolMap) -> Verdic
         },
         cutting_moves: c.ops_a,
         rapids: c.rapid_differences.iter().map(diff).collect(),
+        low_rapid: low_rapids(&a, b),
     }
+}
+
+/// The highest Z of any feed move (None: nothing is cut).
+fn cutting_height(ev: &[Event]) -> Option<f64> {
+    ev.iter()
+        .filter_map(|e| match e {
+            Event::Move(m) if m.is_feed() => Some(m.from[2].max(m.to[2])),
+            _ => None,
+        })
+        .reduce(f64::max)
+}
+
+/// The rapids of a run that go below `top` and do not move in a place
+/// already cut deeper (see the module doc), in order.
+fn rapids_below(ev: &[Event], top: f64) -> Vec<(P3, &Move)> {
+    let key = |p: &P3| {
+        let q = |v: f64| (v / TOLERANCE_MM).round() as i64;
+        (q(p[0]), q(p[1]))
+    };
+    // The deepest Z cut so far at each X Y a feed move reached.
+    let mut cut: HashMap<(i64, i64), f64> = HashMap::new();
+    let mut out = Vec::new();
+    // The first move starts where the machine happens to be (the run
+    // assumes zero): only where it goes counts.
+    let mut first = true;
+    // Between a tool change (or the start) and the first feed move: the
+    // approach, where positions rest on what the run cannot know.
+    let mut approach = true;
+    for e in ev {
+        let m = match e {
+            Event::Move(m) => m,
+            Event::ToolChange { .. } => {
+                approach = true;
+                continue;
+            }
+            Event::Comment { text, .. } if text == MACHINE_MARK => {
+                approach = true;
+                continue;
+            }
+            Event::Dwell { .. } | Event::Stop { .. } | Event::Comment { .. } => continue,
+        };
+        let from = if std::mem::take(&mut first) {
+            m.to
+        } else {
+            m.from
+        };
+        approach &= !m.is_feed();
+        if approach || crate::toolpath::dist(from, m.to) <= TOLERANCE_MM {
+            continue;
+        }
+        if m.is_feed() {
+            for p in [m.from, m.to] {
+                let d = cut.entry(key(&p)).or_insert(f64::INFINITY);
+                *d = d.min(p[2]);
+            }
+            continue;
+        }
+        let low = from[2].min(m.to[2]);
+        if low >= top - TOLERANCE_MM {
+            continue;
+        }
+        let vertical = key(&from) == key(&m.to);
+        let in_air = vertical
+            && cut
+                .get(&key(&from))
+                .is_some_and(|d| *d <= low + TOLERANCE_MM);
+        if !in_air {
+            out.push((from, m));
+        }
+    }
+    out
+}
+
+/// The first rapid below the source's highest cutting height that the
+/// two runs do not share.
+fn low_rapids(a: &[Event], b: &[Event]) -> Option<Difference> {
+    let top = cutting_height(a)?;
+    let (ra, rb) = (rapids_below(a, top), rapids_below(b, top));
+    let near = |p: &P3, q: &P3| crate::toolpath::dist(*p, *q) <= TOLERANCE_MM;
+    let show = |m: Option<&(P3, &Move)>| match m {
+        Some((from, m)) => format!("rapid from {} to {}", point(from), point(&m.to)),
+        None => "no such rapid".to_string(),
+    };
+    for i in 0..ra.len().max(rb.len()) {
+        let (x, y) = (ra.get(i), rb.get(i));
+        if let (Some((fx, x)), Some((fy, y))) = (x, y) {
+            if near(fx, fy) && near(&x.to, &y.to) {
+                continue;
+            }
+        }
+        return Some(Difference {
+            what: format!(
+                "a rapid below the highest cutting height Z{}: A: {}; B: {}",
+                num(top),
+                show(x),
+                show(y)
+            ),
+            a: x.map(|(_, m)| m.span),
+            b: y.map(|(_, m)| m.span),
+        });
+    }
+    None
+}
+
+fn num(v: f64) -> String {
+    let s = format!("{v:.3}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.into()
+    }
+}
+
+fn point(p: &P3) -> String {
+    format!("X{} Y{} Z{}", num(p[0]), num(p[1]), num(p[2]))
 }
 
 fn renumber(e: Event, tools: &crate::port::ToolMap) -> Event {
@@ -91,5 +261,78 @@ fn renumber(e: Event, tools: &crate::port::ToolMap) -> Event {
             span,
         },
         other => other,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::interp::flow::NoLoader;
+
+    fn run(text: &str, dialect: &str) -> Vec<Event> {
+        let spec = crate::dialect::builtin::builtin(dialect).unwrap();
+        let (p, d) = crate::driver::read_program(text, crate::span::FileId::default(), &spec);
+        assert!(!d.iter().any(Diagnostic::is_error), "{d:?}");
+        let (ev, d) = events(Rc::new(p), &spec, &Options::default(), &mut NoLoader);
+        assert!(!d.iter().any(Diagnostic::is_error), "{d:?}");
+        ev
+    }
+
+    fn verdict(a: &str, b: &str) -> Verdict {
+        compare(
+            &run(a, "fanuc"),
+            &run(b, "fanuc"),
+            &crate::port::ToolMap::default(),
+        )
+    }
+
+    const PART: &str = "G21 G90 G54 G17\nG0 X0 Y0 Z5.\nG1 Z-5. F100.\nG1 X50.\nG1 Y50.\n";
+
+    /// The port rapids across the part at Z-5 after the last cut: the
+    /// cuts are the same, the verification must still fail.
+    #[test]
+    fn a_rapid_through_the_part_after_the_last_cut_fails() {
+        let src = format!("{PART}G0 Z5.\nG0 X0 Y0\nM30\n");
+        let bad = format!("{PART}G0 X0 Y0\nG0 Z5.\nM30\n");
+        let v = verdict(&src, &bad);
+        assert!(v.cutting.is_none(), "{v:?}");
+        let d = v.low_rapid.as_ref().expect("the low rapid is found");
+        assert!(
+            d.what.contains("below the highest cutting height"),
+            "{}",
+            d.what
+        );
+        assert!(!v.same());
+        assert!(verdict(&src, &src).same());
+    }
+
+    /// A different rapid before a hole, below the top of the cuts (the
+    /// port goes to the hole at Z-2 instead of Z2): a failure, not a note.
+    #[test]
+    fn a_rapid_before_a_hole_below_the_cuts_fails() {
+        let src = format!("{PART}G0 Z5.\nG0 X20. Y20.\nG0 Z2.\nG1 Z-8.\nG0 Z5.\nM30\n");
+        let bad = format!("{PART}G0 Z-2.\nG0 X20. Y20.\nG0 Z2.\nG1 Z-8.\nG0 Z5.\nM30\n");
+        let v = verdict(&src, &bad);
+        assert!(v.cutting.is_none(), "{v:?}");
+        assert!(v.low_rapid.is_some(), "{v:?}");
+    }
+
+    /// A hole at another place is a cutting difference.
+    #[test]
+    fn a_hole_at_another_place_fails() {
+        let src = "G21 G90 G54 G17\nG0 X10. Y10. Z5.\nG81 Z-5. R2. F100.\nX20.\nG80\nM30\n";
+        let bad = "G21 G90 G54 G17\nG0 X10. Y10. Z5.\nG81 Z-5. R2. F100.\nX20.001\nG80\nM30\n";
+        let v = verdict(src, bad);
+        assert!(!v.same(), "{v:?}");
+    }
+
+    /// Peck retracts and re-entries inside the hole already drilled, and
+    /// rapids above the cuts, do not fail (G83 with another peck clearance).
+    #[test]
+    fn rapids_in_air_and_above_the_cuts_pass() {
+        let src = "G21 G90 G54 G17\nG0 X10. Y10. Z25.\nG83 Z-10. R2. Q3. F100.\nG80\nG0 Z25.\nX0 Y0\nM30\n";
+        let other = "G21 G90 G54 G17\nG0 X10. Y10. Z30.\nG0 Z2.\nG1 Z-3. F100.\nG0 Z2.\nG0 Z-2.5\nG1 Z-6.\nG0 Z2.\nG0 Z-5.5\nG1 Z-9.\nG0 Z2.\nG0 Z-8.5\nG1 Z-10.\nG0 Z2.\nG0 Z30.\nX0 Y0\nM30\n";
+        let v = verdict(src, other);
+        assert!(v.low_rapid.is_none(), "{v:?}");
     }
 }

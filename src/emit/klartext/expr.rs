@@ -110,6 +110,7 @@ pub fn formula(w: &mut Writer<'_>, e: ExprId) -> Option<String> {
                 | Func::Round
                 | Func::Floor
                 | Func::Ceil
+                | Func::RoundAway
                 | Func::Pow
                 | Func::Bin
                 | Func::Bcd

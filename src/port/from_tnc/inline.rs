@@ -7,8 +7,11 @@
 //! label up to the `REPEAT` block, run again k times): `LBL2:` ...
 //! `REPEAT LBL2 P=1`, the label made an identifier.
 //!
-//! Subprograms that call subprograms are inlined up to [`DEPTH`] levels;
-//! a call of a label that is not a subprogram is E0617.
+//! Subprograms that call subprograms are inlined up to [`DEPTH`] levels,
+//! and all the inlined copies together add at most [`MAX_BLOCKS`] blocks
+//! (every copy is charged, nested ones too: eight levels of ten calls
+//! would otherwise make a hundred million blocks); a call past either
+//! limit, or of a label that is not a subprogram, is E0617.
 
 use super::subprograms::refusal;
 use crate::diag::Diagnostic;
@@ -129,6 +132,15 @@ fn expand(
             out.push(b);
             continue;
         }
+        if body.len() > *budget {
+            diags.push(refusal(
+                span,
+                format!("inlining the subprograms would add more than {MAX_BLOCKS} blocks"),
+            ));
+            out.push(b);
+            continue;
+        }
+        *budget -= body.len();
         let mut rest = b;
         rest.stmts.retain(|s| s.span != span);
         let keep_rest = !rest.stmts.is_empty() || rest.label.is_some();

@@ -52,6 +52,8 @@ pub(super) struct Pass<'a> {
     /// The Z when cycle mode began: where G98 returns to (kept while one
     /// cycle follows another without G80, as the controls keep it).
     initial: Option<Value>,
+    /// A rapid to write before the next call (see [`Pass::cycle`]).
+    pre: Option<Stmt>,
     diags: &'a mut Vec<Diagnostic>,
 }
 
@@ -65,6 +67,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
         modal: Modal::new(from),
         active: None,
         initial: None,
+        pre: None,
         diags,
     };
     let blocks = std::mem::take(&mut p.blocks);
@@ -97,6 +100,11 @@ impl Pass<'_> {
                 }
                 StmtKind::Cycle(c) if mapped(self.to, Meaning::Cycle(c.kind)) => {
                     if let Some((call, pos)) = self.cycle(p, &c, s.span) {
+                        if let Some(pre) = self.pre.take() {
+                            let cancel = Stmt::new(StmtKind::ModalCallCancel, s.span);
+                            after.push(follow_block(&b, vec![cancel]));
+                            after.push(follow_block(&b, vec![pre]));
+                        }
                         after.push(follow_block(&b, vec![call]));
                         after.extend(pos.map(|m| follow_block(&b, vec![m])));
                     }
@@ -263,6 +271,34 @@ impl Pass<'_> {
             span,
         )?;
         let call = args.finish(self.diags)?;
+        // The interpreter reaches the first hole of a block at the level
+        // the tool is at when that is above R, otherwise in one rapid to
+        // the clearance level (a G98 cycle after G99 holes rises to the
+        // initial level on the way): the same rapid in the target.
+        let num = |v: &Value| v.number().map(|d| d.to_f64());
+        // It is written before the call, after cancelling the call in
+        // force (a move under MCALL would drill).
+        let rise = match (self.modal.z.as_ref().and_then(num), num(&r), num(&rtp)) {
+            (Some(cur), Some(rv), Some(t)) if self.active.is_some() && cur <= rv && t > cur => {
+                Some(rtp.clone())
+            }
+            _ => None,
+        };
+        self.pre = rise.and_then(|value| {
+            let (x, y) = (c.target.x.clone(), c.target.y.clone());
+            if x.is_none() && y.is_none() {
+                return None;
+            }
+            let mut m = Motion::new(MotionKind::Rapid);
+            m.target.x = x;
+            m.target.y = y;
+            m.target.z = Some(crate::ir::Coord {
+                value,
+                dim: None,
+                span,
+            });
+            Some(Stmt::new(StmtKind::Motion(Box::new(m)), span))
+        });
         self.active = Some(Active {
             kind: c.kind,
             r,

@@ -42,6 +42,7 @@ pub(super) fn run(p: &mut Program, diags: &mut Vec<Diagnostic>) {
                 Func::Round => "ROUND",
                 Func::Floor => "rounding down (FIX)",
                 Func::Ceil => "rounding up (FUP)",
+                Func::RoundAway => "rounding away from zero (FUP)",
                 Func::Min => "MIN",
                 Func::Max => "MAX",
                 Func::Bin => "BIN",

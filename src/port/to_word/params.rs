@@ -31,6 +31,19 @@ impl Pass<'_> {
             );
             return None;
         };
+        // SDIS or DPR given as an expression: R = RFP + SDIS and the
+        // depth cannot be written as numbers (taking them as 0 put the
+        // R plane on the surface).
+        for name in ["SDIS", "DPR"] {
+            if arg(name).is_some_and(|v| v.number().is_none()) {
+                self.refuse(
+                    span,
+                    format!("{}: {name} is an expression", c.name),
+                    "the R plane and the depth are computed from it",
+                );
+                return None;
+            }
+        }
         let sdis = num("SDIS").unwrap_or(0.0).abs();
         let r = if sdis == 0.0 {
             rfp.clone()

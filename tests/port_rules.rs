@@ -1,0 +1,153 @@
+//! Issue 13: the exact idiom rewrites of `cncc port` (keyed on the
+//! construct and on what the target lacks) and the holes of `--verify`.
+//! Each test ports a small program of its own with `--verify`.
+
+mod common;
+use common::{cncc, stderr, stdout};
+
+const DIALECTS: [&str; 5] = ["fanuc", "haas", "linuxcnc", "siemens840d", "heidenhain"];
+
+/// Ports `file` (read as `from`) to `to` with `--verify`; the output and
+/// stderr, or a panic naming what failed.
+fn port_verified(from: &str, to: &str, file: &str) -> (String, String) {
+    let out = cncc(&["port", "--from", from, "--to", to, "--verify", file]);
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(0), "{from} -> {to} {file}:\n{err}");
+    assert!(err.contains("verify: OK"), "{from} -> {to}: {err}");
+    (stdout(&out), err)
+}
+
+fn to_all_others(from: &str, file: &str) {
+    for to in DIALECTS.iter().filter(|t| **t != from) {
+        port_verified(from, to, file);
+    }
+}
+
+/// Fanuc FIX drops the fraction and FUP rounds away from zero:
+/// FIX[-1.5] = -1, FUP[-1.5] = -2 (not floor and ceiling).
+#[test]
+fn fanuc_fix_truncates_and_fup_rounds_away_from_zero() {
+    let out = cncc(&["canon", "tests/programs/fanuc/port_rounding.nc"]);
+    let canon = stdout(&out);
+    assert!(
+        canon.contains("STRAIGHT_FEED(-1.0000, -2.0000, -1.0000"),
+        "{canon}"
+    );
+    assert!(
+        canon.contains("STRAIGHT_FEED(2.0000, 3.0000, -1.0000"),
+        "{canon}"
+    );
+    assert!(
+        canon.contains("STRAIGHT_FEED(-4.0000, -3.0000, -1.0000"),
+        "{canon}"
+    );
+}
+
+#[test]
+fn rounding_functions_port_exactly_everywhere() {
+    to_all_others("fanuc", "tests/programs/fanuc/port_rounding.nc");
+    to_all_others(
+        "siemens840d",
+        "tests/programs/siemens840d/port_rounding.mpf",
+    );
+    to_all_others("linuxcnc", "tests/programs/linuxcnc/port_rounding.ngc");
+}
+
+#[test]
+fn trunc_is_fix_and_pot_is_a_product() {
+    let (fanuc, _) = port_verified(
+        "siemens840d",
+        "fanuc",
+        "tests/programs/siemens840d/port_rounding.mpf",
+    );
+    assert!(fanuc.contains("#2=[FIX[#1]]"), "{fanuc}");
+    assert!(fanuc.contains("#4=[#1*#1]"), "{fanuc}");
+    let (tnc, _) = port_verified(
+        "fanuc",
+        "heidenhain",
+        "tests/programs/fanuc/port_rounding.nc",
+    );
+    // FUP as INT + SGN of the fraction.
+    assert!(tnc.contains("INT (Q1) + SGN (Q1 - INT (Q1))"), "{tnc}");
+}
+
+/// `o<peck_at> sub` has no number: it becomes `O1000 (peck_at)`, called
+/// with `G65 P1000`, beside the numbered `o100` (`O0100`).
+#[test]
+fn named_subroutine_gets_a_free_program_number() {
+    let file = "tests/programs/linuxcnc/port_named_sub.ngc";
+    for to in ["fanuc", "haas"] {
+        let (out, _) = port_verified("linuxcnc", to, file);
+        assert!(out.contains("O1000 (peck_at)"), "{out}");
+        assert!(out.contains("G65 P1000 A10. B20. C-3."), "{out}");
+        assert!(out.contains("G65 P100 A50."), "{out}");
+    }
+    port_verified("linuxcnc", "siemens840d", file);
+}
+
+/// Five levels of subprograms each calling the next ten times: inlined for
+/// Siemens that is a million blocks. The budget (100 000 added blocks, all
+/// copies charged) refuses it instead of writing them.
+#[test]
+fn inlining_has_a_real_budget() {
+    let file = "tests/programs/heidenhain/port_inline_budget.h";
+    let start = std::time::Instant::now();
+    let out = cncc(&["port", "--from", "heidenhain", "--to", "siemens840d", file]);
+    let err = stderr(&out);
+    assert_ne!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("E0617"), "{err}");
+    assert!(err.contains("more than 100000 blocks"), "{err}");
+    assert!(stdout(&out).len() < 1_000_000, "the blocks were written");
+    assert!(start.elapsed().as_secs() < 20, "{:?}", start.elapsed());
+}
+
+/// `BLK FORM` for targets without a blank statement: a comment that reads
+/// back as one, and the `--stock` that gives the same blank; the old datum
+/// shift `CYCL DEF 7` as `G52`/`TRANS`, the dwell `CYCL DEF 9` as `G4`.
+#[test]
+fn blank_datum_shift_and_dwell_of_old_klartext() {
+    let file = "tests/programs/heidenhain/port_old_cycles.h";
+    for to in ["fanuc", "haas", "linuxcnc", "siemens840d"] {
+        let (out, err) = port_verified("heidenhain", to, file);
+        assert!(out.contains("BLANK MIN Z X0 Y0 Z-20"), "{out}");
+        assert!(err.contains("--stock 100x80x20+0+0-20"), "{err}");
+        let shift = if to == "siemens840d" {
+            "TRANS X20 Y10 Z0"
+        } else if to == "linuxcnc" {
+            "G52 X20 Y10 Z0"
+        } else {
+            "G52 X20. Y10. Z0."
+        };
+        assert!(out.contains(shift), "{out}");
+        assert!(out.contains("G4 "), "{out}");
+    }
+}
+
+/// The port of cncc's own Siemens cycle with an SDIS in a variable: the R
+/// plane is RFP + SDIS, which is no number here, so the cycle is refused
+/// (it was written with R = RFP, rapiding 2 mm lower than the source).
+#[test]
+fn cycle_with_sdis_in_a_variable_is_not_written_on_the_surface() {
+    let file = "tests/programs/siemens840d/port_sdis_variable.mpf";
+    let out = cncc(&["port", "--from", "siemens840d", "--to", "fanuc", file]);
+    let err = stderr(&out);
+    assert_ne!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("SDIS is an expression"), "{err}");
+}
+
+/// Siemens `CASE` for Fanuc and Haas: one `IF [..] GOTO n` per block, then
+/// the default jump.
+#[test]
+fn case_is_a_chain_of_conditional_jumps() {
+    let file = "tests/programs/siemens840d/port_case.mpf";
+    for to in ["fanuc", "haas"] {
+        let (out, _) = port_verified("siemens840d", to, file);
+        let lines: Vec<&str> = out.lines().collect();
+        let i = lines
+            .iter()
+            .position(|l| l.starts_with("IF [#1+1 EQ 1] GOTO "))
+            .expect(&out);
+        assert!(lines[i + 1].starts_with("IF [#1+1 EQ 3] GOTO "), "{out}");
+        assert!(lines[i + 2].starts_with("GOTO "), "{out}");
+    }
+}

@@ -1,0 +1,16 @@
+%
+O1000 (FIX AND FUP OF NEGATIVE VALUES)
+G21 G90 G54 G17
+#1 = -1.5
+#2 = FIX[#1]
+#3 = FUP[#1]
+#4 = FIX[2.5]
+#5 = FUP[2.25]
+G0 X0 Y0 Z5.
+G1 Z-1. F100.
+G1 X#2 Y#3
+G1 X#4 Y#5
+G1 X[FIX[#1*3]] Y[FUP[0.-#4-0.5]]
+G0 Z5.
+M30
+%
