@@ -177,7 +177,8 @@ fn targets(
             Ok((out, def))
         }
         _ => {
-            if !at_top && ranges::definition(p, st, t, j).is_some_and(|d| d.0 > 0) {
+            let sub = ranges::definition(p, st, t, j).filter(|d| d.0 > 0 && starts_sub(&p.blocks[d.0]));
+            if !at_top && sub.is_some() {
                 // A subprogram the run never calls: it has no moves to
                 // write, and dropping it would lose it.
                 if !t.steps.iter().any(|s| s.pc == j) && !t.deep.contains_key(&j) {
@@ -187,6 +188,17 @@ fn targets(
             Ok((vec![ranges::grow(t, st, j, j)?], None))
         }
     }
+}
+
+/// A block that opens a subprogram: `O1000`, `o100 sub`, `PROC`, a label.
+fn starts_sub(b: &Block) -> bool {
+    b.label.is_some()
+        || b.stmts.iter().any(|s| {
+            matches!(
+                s.kind,
+                StmtKind::ProgramStart { .. } | StmtKind::SubStart { .. }
+            )
+        })
 }
 
 /// Sorts the ranges and joins the ones that overlap (grown again).
