@@ -117,7 +117,11 @@ fn widen(t: &Trace, st: &Structure, a: usize, b: usize) -> Result<(usize, usize)
         // Never run at the top: take the construct around it.
         return match st.around(a) {
             Some((s, e)) if (s, e) != (a, b) => Ok((na.min(s), nb.max(e))),
-            _ => Err("it never runs".into()),
+            // Jumped over: take the block that jumped.
+            _ => match t.steps.iter().map(|s| s.pc).filter(|&pc| pc < a).max() {
+                Some(prev) => Ok((prev, nb)),
+                None => Err("it never runs".into()),
+            },
         };
     };
     // Everything run between the first and the last visit.
