@@ -117,7 +117,13 @@ fn reference_returns_between_g28_and_g74() {
     assert!(fanuc.contains("G91 G28 Z0.\nG90\nG1 X5. F100"), "{fanuc}");
     let nc = dir.path().join("through.nc");
     std::fs::write(&nc, "G21 G90\nG0 X1. Y1. Z5.\nG28 Z5.\nM30\n").unwrap();
-    let out = cncc(&["port", "--strict", &nc.display().to_string(), "--to", "siemens840d"]);
+    let out = cncc(&[
+        "port",
+        "--strict",
+        &nc.display().to_string(),
+        "--to",
+        "siemens840d",
+    ]);
     let err = text(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{err}");
     assert!(err.contains("error[E0601 cannot-express]"), "{err}");
@@ -154,7 +160,11 @@ fn chip_breaking_needs_the_fallback() {
     // Without --strict the port writes the cycle as its moves by itself.
     let auto = cncc(&["port", &src, "--to", "siemens840d"]);
     assert_eq!(auto.status.code(), Some(0), "{}", text(&auto.stderr));
-    assert!(text(&auto.stderr).contains("W0612"), "{}", text(&auto.stderr));
+    assert!(
+        text(&auto.stderr).contains("W0612"),
+        "{}",
+        text(&auto.stderr)
+    );
     let out = cncc(&[
         "port",
         &src,
@@ -412,7 +422,13 @@ fn oword_subroutines_are_inlined_for_siemens() {
         "o200 sub\n  o201 call [3]\n  G1 X[#1] F300\no200 endsub\no201 sub\n  G1 Z[-#1]\no201 endsub\nG0 X0 Y0 Z1\no200 call [20]\nM2\n",
     )
     .unwrap();
-    let out = cncc(&["port", "--strict", &bad.display().to_string(), "--to", "siemens840d"]);
+    let out = cncc(&[
+        "port",
+        "--strict",
+        &bad.display().to_string(),
+        "--to",
+        "siemens840d",
+    ]);
     let err = text(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{err}");
     assert!(err.contains("E0617"), "{err}");
@@ -431,14 +447,34 @@ fn a_construct_without_a_target_form_is_written_as_its_moves() {
     let (out, err) = (text(&o.stdout), text(&o.stderr));
     assert_eq!(o.status.code(), Some(0), "{err}");
     assert!(err.contains("W0612 port-expanded"), "{err}");
-    assert!(err.contains("verify: OK"), "the expansion is always verified: {err}");
+    assert!(
+        err.contains("verify: OK"),
+        "the expansion is always verified: {err}"
+    );
     assert!(!out.contains("G52"), "{out}");
-    for want in ["G0 X20 Y10 Z10", "G1 X20 Y10 Z-1 F200", "G2 X40 Y10 Z-1 I5 J0", "G0 X0 Y0"] {
+    for want in [
+        "G0 X20 Y10 Z10",
+        "G1 X20 Y10 Z-1 F200",
+        "G2 X40 Y10 Z-1 I5 J0",
+        "G0 X0 Y0",
+    ] {
         assert!(out.contains(want), "want `{want}` in:\n{out}");
     }
-    let strict = cncc(&["port", "--strict", "--from", "fanuc", "--to", "siemens840d", src]);
+    let strict = cncc(&[
+        "port",
+        "--strict",
+        "--from",
+        "fanuc",
+        "--to",
+        "siemens840d",
+        src,
+    ]);
     assert_eq!(strict.status.code(), Some(1));
-    assert!(text(&strict.stderr).contains("E0601"), "{}", text(&strict.stderr));
+    assert!(
+        text(&strict.stderr).contains("E0601"),
+        "{}",
+        text(&strict.stderr)
+    );
 }
 
 /// A Fusion 360 style Fanuc program (tool header, `G28 G91 Z0.`, `G43 H`,
@@ -450,26 +486,66 @@ fn a_fusion_style_program_ports_to_siemens_and_heidenhain_and_back() {
     let src = root().join("tests/programs/port/fusion_style.nc");
     let dir = tempfile::tempdir().unwrap();
     let wants: &[(&str, &str, &[&str])] = &[
-        ("siemens840d", "mpf", &["G41 D1 X0 Y0 F800", "MCALL CYCLE81(", "MCALL CYCLE83(", "G74 Z1=0"]),
-        ("heidenhain", "h", &["L X+0 Y+0 RL F800", "CYCL DEF 200", "CYCL DEF 203", "TOOL CALL 1", "L X-10 Y-10 R0"]),
+        (
+            "siemens840d",
+            "mpf",
+            &[
+                "G41 D1 X0 Y0 F800",
+                "MCALL CYCLE81(",
+                "MCALL CYCLE83(",
+                "G74 Z1=0",
+            ],
+        ),
+        (
+            "heidenhain",
+            "h",
+            &[
+                "L X+0 Y+0 RL F800",
+                "CYCL DEF 200",
+                "CYCL DEF 203",
+                "TOOL CALL 1",
+                "L X-10 Y-10 R0",
+            ],
+        ),
     ];
     for (to, ext, want) in wants {
         let out = dir.path().join(format!("bracket.{ext}"));
         let o = cncc(&[
-            "port", "--from", "fanuc", "--to", to, "--verify",
-            src.to_str().unwrap(), "-o", out.to_str().unwrap(),
+            "port",
+            "--from",
+            "fanuc",
+            "--to",
+            to,
+            "--verify",
+            src.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
         ]);
         assert_eq!(o.status.code(), Some(0), "{to}: {}", text(&o.stderr));
-        assert!(text(&o.stderr).contains("verify: OK"), "{}", text(&o.stderr));
+        assert!(
+            text(&o.stderr).contains("verify: OK"),
+            "{}",
+            text(&o.stderr)
+        );
         let written = std::fs::read_to_string(&out).unwrap();
         for w in *want {
             assert!(written.contains(w), "{to}: want `{w}` in:\n{written}");
         }
-        assert!(!written.lines().any(|l| l.trim_end().ends_with(" L R0")), "{written}");
+        assert!(
+            !written.lines().any(|l| l.trim_end().ends_with(" L R0")),
+            "{written}"
+        );
         let back = dir.path().join(format!("back-{to}.nc"));
         let o = cncc(&[
-            "port", "--from", to, "--to", "fanuc", "--verify",
-            out.to_str().unwrap(), "-o", back.to_str().unwrap(),
+            "port",
+            "--from",
+            to,
+            "--to",
+            "fanuc",
+            "--verify",
+            out.to_str().unwrap(),
+            "-o",
+            back.to_str().unwrap(),
         ]);
         assert_eq!(o.status.code(), Some(0), "{to} back: {}", text(&o.stderr));
     }

@@ -26,7 +26,11 @@ fn listed() -> BTreeMap<(String, String), String> {
             continue;
         }
         let f: Vec<&str> = line.splitn(4, '\t').collect();
-        assert!(f.len() == 4 && f[3].len() > 5, "port.expect:{}: want `file<TAB>target<TAB>code<TAB>construct`", n + 1);
+        assert!(
+            f.len() == 4 && f[3].len() > 5,
+            "port.expect:{}: want `file<TAB>target<TAB>code<TAB>construct`",
+            n + 1
+        );
         out.insert((f[0].to_string(), f[1].to_string()), f[2].to_string());
     }
     out
@@ -52,13 +56,26 @@ fn first_problem(stderr: &str) -> (String, String) {
 
 fn port(from: &str, to: &str, src: &Path, out: &Path) -> Cell {
     let o = cncc(&[
-        "port", "--from", from, "--to", to, "--verify",
-        src.to_str().unwrap(), "-o", out.to_str().unwrap(),
+        "port",
+        "--from",
+        from,
+        "--to",
+        to,
+        "--verify",
+        src.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
     ]);
     match o.status.code() {
         Some(0) => None,
         Some(1) => Some(first_problem(&stderr(&o))),
-        other => Some(("CRASH".into(), format!("exit {other:?}: {}", stderr(&o).lines().last().unwrap_or("")))),
+        other => Some((
+            "CRASH".into(),
+            format!(
+                "exit {other:?}: {}",
+                stderr(&o).lines().last().unwrap_or("")
+            ),
+        )),
     }
 }
 
@@ -72,7 +89,13 @@ fn extension(d: &str) -> &'static str {
 }
 
 /// The cells of one program: there and back for each other dialect.
-fn cells(shared: &Path, d: &str, file: &str, dir: &Path, i: usize) -> Vec<((String, String), Cell)> {
+fn cells(
+    shared: &Path,
+    d: &str,
+    file: &str,
+    dir: &Path,
+    i: usize,
+) -> Vec<((String, String), Cell)> {
     let src = shared.join(file);
     let mut out = Vec::new();
     for t in DIALECTS.iter().filter(|t| *t != &d) {
@@ -82,7 +105,10 @@ fn cells(shared: &Path, d: &str, file: &str, dir: &Path, i: usize) -> Vec<((Stri
         out.push(((file.to_string(), t.to_string()), cell));
         if ok {
             let back = dir.join(format!("{i}-{t}-back.{}", extension(d)));
-            out.push(((file.to_string(), format!("{t}+back")), port(t, d, &there, &back)));
+            out.push((
+                (file.to_string(), format!("{t}+back")),
+                port(t, d, &there, &back),
+            ));
         }
     }
     out
@@ -126,7 +152,10 @@ fn clean_field_programs_port_to_every_dialect_and_back() {
     }
     let list = listed();
     let mut failures = Vec::new();
-    let there: Vec<_> = results.iter().filter(|((_, t), _)| !t.ends_with("+back")).collect();
+    let there: Vec<_> = results
+        .iter()
+        .filter(|((_, t), _)| !t.ends_with("+back"))
+        .collect();
     let passed = there.iter().filter(|(_, c)| c.is_none()).count();
     let back = results.iter().filter(|((_, t), _)| t.ends_with("+back"));
     let back_passed = back.clone().filter(|(_, c)| c.is_none()).count();
@@ -154,7 +183,10 @@ fn clean_field_programs_port_to_every_dialect_and_back() {
     }
     for key in list.keys() {
         if !results.iter().any(|(k, _)| k == key) {
-            failures.push(format!("{} -> {} is listed but was not tried", key.0, key.1));
+            failures.push(format!(
+                "{} -> {} is listed but was not tried",
+                key.0, key.1
+            ));
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));

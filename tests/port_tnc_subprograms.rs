@@ -48,7 +48,15 @@ fn missing_subprogram_file_is_e0617() {
         "O1\nG21 G90\nT1 M6\nG0 X0 Y0 Z5.\nM98 P4321\nM30\n",
     );
     let p = p.to_string_lossy().into_owned();
-    let (code, _, err) = cncc(&["port", "--strict", "--from", "fanuc", "--to", "heidenhain", &p]);
+    let (code, _, err) = cncc(&[
+        "port",
+        "--strict",
+        "--from",
+        "fanuc",
+        "--to",
+        "heidenhain",
+        &p,
+    ]);
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("[E0617"), "{err}");
     assert!(err.contains("4321"), "{err}");
@@ -78,7 +86,15 @@ fn label_subprogram_to_siemens_is_inlined() {
         .replace("CALL LBL 1\n", "CALL LBL 7\n");
     let p = temp("sub.h", &text);
     let p = p.to_string_lossy().into_owned();
-    let (code, _, err) = cncc(&["port", "--strict", "--from", "heidenhain", "--to", "siemens840d", &p]);
+    let (code, _, err) = cncc(&[
+        "port",
+        "--strict",
+        "--from",
+        "heidenhain",
+        "--to",
+        "siemens840d",
+        &p,
+    ]);
     assert_eq!(code, 1);
     assert!(err.contains("[E0617") || err.contains("[E0321"), "{err}");
 }
@@ -92,7 +108,15 @@ fn face_with_a_stepover_other_than_the_radius_is_refused_from_heidenhain() {
     .replace("Q370=+1 ;", "Q370=+1.6 ;");
     let p = temp("face.h", &text);
     let p = p.to_string_lossy().into_owned();
-    let (code, _, err) = cncc(&["port", "--strict", "--from", "heidenhain", "--to", "siemens840d", &p]);
+    let (code, _, err) = cncc(&[
+        "port",
+        "--strict",
+        "--from",
+        "heidenhain",
+        "--to",
+        "siemens840d",
+        &p,
+    ]);
     assert_eq!(code, 1);
     assert!(err.contains("[E0610") && err.contains("Q370"), "{err}");
 }
@@ -119,7 +143,15 @@ fn cycle71_stepover_is_a_factor_of_q108() {
         .replace(",1000,31,0)", ",1000,41,0)");
     let p = temp("face.mpf", &text);
     let p = p.to_string_lossy().into_owned();
-    let (code, _, err) = cncc(&["port", "--strict", "--from", "siemens840d", "--to", "heidenhain", &p]);
+    let (code, _, err) = cncc(&[
+        "port",
+        "--strict",
+        "--from",
+        "siemens840d",
+        "--to",
+        "heidenhain",
+        &p,
+    ]);
     assert_eq!(code, 1);
     assert!(err.contains("[E0610") && err.contains("VARI 41"), "{err}");
 }
@@ -158,7 +190,15 @@ fn fanuc_tape_with_two_programs_to_heidenhain_labels() {
 #[test]
 fn heidenhain_face_expands_for_fanuc_only_when_allowed() {
     let src = "tests/matrix/faces/from-heidenhain.h";
-    let (code, _, err) = cncc(&["port", "--strict", "--from", "heidenhain", "--to", "fanuc", src]);
+    let (code, _, err) = cncc(&[
+        "port",
+        "--strict",
+        "--from",
+        "heidenhain",
+        "--to",
+        "fanuc",
+        src,
+    ]);
     assert_eq!(code, 1);
     assert!(err.contains("[E0610"), "{err}");
     let (code, out, err) = cncc(&[

@@ -14,7 +14,7 @@ use crate::ir::Program;
 use crate::port::subload::PortingLoader;
 use crate::port::verify::{self, Difference, Verdict};
 use crate::port::{port_program, PortOptions, ToolMap};
-use crate::span::{FileId, Span};
+use crate::span::Span;
 use std::path::Path;
 use std::rc::Rc;
 use std::sync::Arc;
@@ -162,7 +162,13 @@ fn verify_port(
     let fragment = crate::interp::fragment::detect(src_prog).is_some();
     let (ea, da) = {
         let mut loader = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
-        run_events(Rc::new(src_prog.clone()), src_spec, &opts, &mut loader, fragment)
+        run_events(
+            Rc::new(src_prog.clone()),
+            src_spec,
+            &opts,
+            &mut loader,
+            fragment,
+        )
     };
     let (eb, mut db) = {
         let source = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
@@ -191,8 +197,9 @@ fn verify_port(
         );
         return false;
     }
-    let v = verify::compare(&ea, &eb, &s.opts.tool_map);
-    report(ctx, &v, out_id);
+    let tolerance = verify::tolerance_for(s.target);
+    let v = verify::compare_within(&ea, &eb, &s.opts.tool_map, tolerance);
+    report(ctx, &v, tolerance);
     for r in &v.rapids {
         let mut d = Diagnostic::new(Code::VerifyRapids, r.what.clone());
         if let Some(sp) = r.b.or(r.a) {
@@ -216,12 +223,12 @@ fn place(ctx: &Context, sp: Option<Span>) -> String {
     }
 }
 
-fn report(ctx: &Context, v: &Verdict, _out: FileId) {
+fn report(ctx: &Context, v: &Verdict, tolerance: f64) {
     match v.cutting.as_ref().or(v.low_rapid.as_ref()) {
         None => eprintln!(
             "verify: OK: the same {} operations (within {} mm); {} rapid(s) differ",
             v.cutting_moves,
-            verify::TOLERANCE_MM,
+            (tolerance * 1e5).round() / 1e5,
             v.rapids.len()
         ),
         Some(d) => eprintln!(
@@ -303,7 +310,8 @@ fn run_events(
     if !fragment {
         return verify::events(p, spec, opts, loader);
     }
-    let kind = crate::interp::fragment::detect(&p).unwrap_or(crate::interp::fragment::Fragment::Called);
+    let kind =
+        crate::interp::fragment::detect(&p).unwrap_or(crate::interp::fragment::Fragment::Called);
     let mut tracker = crate::toolpath::Tracker::new();
     let mut out = Vec::new();
     let mut sink = |call: crate::canon::Canon, span: Span| {

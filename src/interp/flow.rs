@@ -1112,7 +1112,11 @@ fn missing_call(span: crate::span::Span, target: &CallTarget) -> Diagnostic {
 /// Tells the run's observer, if any, which block runs next.
 fn observe(it: &mut Interp<'_, '_>, prog: usize, pc: usize, depth: usize) {
     if let Some(mut f) = it.observer.take() {
-        f(&super::BlockEvent { prog, pc, depth }, &it.state, &it.params);
+        f(
+            &super::BlockEvent { prog, pc, depth },
+            &it.state,
+            &it.params,
+        );
         it.observer = Some(f);
     }
 }

@@ -136,7 +136,11 @@ impl Params {
     /// ones a replaced part of the program changed).
     pub fn outer_values(&self) -> HashMap<OuterVar, f64> {
         let mut m = HashMap::new();
-        m.extend(self.numbered.iter().map(|(&n, &v)| (OuterVar::Numbered(n), v)));
+        m.extend(
+            self.numbered
+                .iter()
+                .map(|(&n, &v)| (OuterVar::Numbered(n), v)),
+        );
         m.extend(self.r.iter().map(|(&n, &v)| (OuterVar::R(n), v)));
         m.extend(self.q.iter().map(|(&(b, n), &v)| (OuterVar::Q(b, n), v)));
         m.extend(

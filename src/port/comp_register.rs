@@ -20,9 +20,7 @@ pub fn run(p: &mut Program, to: &DialectSpec) {
     for b in &mut p.blocks {
         for s in &mut b.stmts {
             match &mut s.kind {
-                StmtKind::ToolSelect(ToolRef::Number(Value::Number(n))) => {
-                    tool = Some(n.to_f64())
-                }
+                StmtKind::ToolSelect(ToolRef::Number(Value::Number(n))) => tool = Some(n.to_f64()),
                 StmtKind::RadiusComp {
                     register,
                     diameter: false,
@@ -67,7 +65,12 @@ fn off_onto_next_move(p: &mut Program) {
         if b.stmts.iter().any(|s| moves(&s.kind)) {
             continue;
         }
-        let target = (i + 1..n).find(|&j| p.blocks[j].stmts.iter().any(|s| comp(&s.kind) || moves(&s.kind)));
+        let target = (i + 1..n).find(|&j| {
+            p.blocks[j]
+                .stmts
+                .iter()
+                .any(|s| comp(&s.kind) || moves(&s.kind))
+        });
         if let Some(j) = target {
             if !p.blocks[j].stmts.iter().any(|s| comp(&s.kind)) {
                 let s = p.blocks[i].stmts.remove(at);

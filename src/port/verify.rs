@@ -115,8 +115,34 @@ fn machine_spans(p: &Program) -> std::collections::HashSet<Span> {
 /// comparison engine ([`crate::compare`]); the source's tool numbers are
 /// renumbered by the tool map first.
 pub fn compare(a: &[Event], b: &[Event], tools: &crate::port::ToolMap) -> Verdict {
+    compare_within(a, b, tools, TOLERANCE_MM)
+}
+
+/// How close the port's points must be: 1 µm, or half the target's
+/// smallest increment where the target cannot write finer (a Fanuc inch
+/// program's 0.0001 in is 2.54 µm; a value the port rounds to it moves by
+/// up to 1.27 µm).
+pub fn tolerance_for(target: &crate::dialect::DialectSpec) -> f64 {
+    let step = |places: u8, mm: f64| mm * 10f64.powi(-(places as i32)) / 2.0;
+    let n = &target.numbers;
+    TOLERANCE_MM
+        .max(step(n.length_places_inch, 25.4))
+        .max(step(n.length_places_mm, 1.0))
+}
+
+/// [`compare`] with the points' tolerance given (mm).
+pub fn compare_within(
+    a: &[Event],
+    b: &[Event],
+    tools: &crate::port::ToolMap,
+    tolerance_mm: f64,
+) -> Verdict {
     let a: Vec<Event> = a.iter().cloned().map(|e| renumber(e, tools)).collect();
-    let c = crate::compare::compare(&a, b, &crate::compare::CompareOptions::default());
+    let opts = crate::compare::CompareOptions {
+        tolerance_mm,
+        ..crate::compare::CompareOptions::default()
+    };
+    let c = crate::compare::compare(&a, b, &opts);
     let diff = |d: &crate::compare::Difference| Difference {
         what: d.what.clone(),
         a: d.a,

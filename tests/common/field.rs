@@ -99,4 +99,3 @@ pub fn first_error(stderr: &str) -> Option<String> {
         Some(rest.split([' ', ']']).next()?.to_string())
     })
 }
-

@@ -108,13 +108,19 @@ fn plan_and_apply(
     let ranges = merge(t, &st, ranges).map_err(|why| {
         errors
             .iter()
-            .map(|e| e.clone().note(format!("it cannot be written as the moves it makes: {why}")))
+            .map(|e| {
+                e.clone()
+                    .note(format!("it cannot be written as the moves it makes: {why}"))
+            })
             .collect::<Vec<_>>()
     })?;
     let out = apply(p, t, to, &ranges, &definitions).map_err(|why| {
         errors
             .iter()
-            .map(|e| e.clone().note(format!("it cannot be written as the moves it makes: {why}")))
+            .map(|e| {
+                e.clone()
+                    .note(format!("it cannot be written as the moves it makes: {why}"))
+            })
             .collect::<Vec<_>>()
     })?;
     Ok((out, notes))
@@ -144,14 +150,20 @@ fn note_for(e: &Diagnostic) -> Diagnostic {
 fn block_of(p: &Program, e: &Diagnostic) -> Option<usize> {
     let l = e.labels.iter().find(|l| l.primary).or(e.labels.first())?;
     let sp = l.span;
-    p.blocks.iter().position(|b| {
-        b.span.file == sp.file && b.span.start <= sp.start && sp.start <= b.span.end.max(b.span.start)
-    })
-    .or_else(|| {
-        p.blocks
-            .iter()
-            .position(|b| b.stmts.iter().any(|s| s.span.file == sp.file && s.span.start <= sp.start && sp.start < s.span.end))
-    })
+    p.blocks
+        .iter()
+        .position(|b| {
+            b.span.file == sp.file
+                && b.span.start <= sp.start
+                && sp.start <= b.span.end.max(b.span.start)
+        })
+        .or_else(|| {
+            p.blocks.iter().position(|b| {
+                b.stmts.iter().any(|s| {
+                    s.span.file == sp.file && s.span.start <= sp.start && sp.start < s.span.end
+                })
+            })
+        })
 }
 
 /// The parts to replace for an error at block `j`, and the subprogram
@@ -177,7 +189,8 @@ fn targets(
             Ok((out, def))
         }
         _ => {
-            let sub = ranges::definition(p, st, t, j).filter(|d| d.0 > 0 && starts_sub(&p.blocks[d.0]));
+            let sub =
+                ranges::definition(p, st, t, j).filter(|d| d.0 > 0 && starts_sub(&p.blocks[d.0]));
             if !at_top && sub.is_some() {
                 // A subprogram the run never calls: it has no moves to
                 // write, and dropping it would lose it.
@@ -298,10 +311,16 @@ fn expansion(
         like.span,
     )];
     if !before.absolute {
-        head.push(Stmt::new(StmtKind::Distance(crate::ir::DimMode::Absolute), like.span));
+        head.push(Stmt::new(
+            StmtKind::Distance(crate::ir::DimMode::Absolute),
+            like.span,
+        ));
     }
     if before.arc_absolute {
-        head.push(Stmt::new(StmtKind::ArcDistance(crate::ir::DimMode::Incremental), like.span));
+        head.push(Stmt::new(
+            StmtKind::ArcDistance(crate::ir::DimMode::Incremental),
+            like.span,
+        ));
     }
     w.out.extend(head);
     write_calls(&mut w, p, t, r)?;
@@ -325,10 +344,7 @@ fn expansion(
 /// calls it made.
 fn write_calls(w: &mut write::Writer<'_>, p: &Program, t: &Trace, r: &Range) -> Result<(), String> {
     let from = t.steps[r.first].visit;
-    let to = t
-        .steps
-        .get(r.last + 1)
-        .map_or(t.visits.len(), |s| s.visit);
+    let to = t.steps.get(r.last + 1).map_or(t.visits.len(), |s| s.visit);
     let end = t.steps.get(r.last + 1).map_or(t.calls.len(), |s| s.first);
     let mut cursor = t.steps[r.first].first;
     for &(first, pc) in &t.visits[from..to] {

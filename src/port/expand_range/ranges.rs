@@ -28,7 +28,13 @@ fn opens(k: &StmtKind) -> bool {
     use StmtKind::*;
     matches!(
         k,
-        If { .. } | While { .. } | Do { .. } | Repeat { .. } | For { .. } | Loop | RepeatUntil
+        If { .. }
+            | While { .. }
+            | Do { .. }
+            | Repeat { .. }
+            | For { .. }
+            | Loop
+            | RepeatUntil
             | SubStart { .. }
     )
 }
@@ -167,7 +173,10 @@ fn finish(t: &Trace, a: usize, b: usize) -> Result<Range, String> {
     };
     if let Some(k) = t.stopped {
         if k <= last {
-            return Err("the run stops before it is done (an error or a value known only at run time)".into());
+            return Err(
+                "the run stops before it is done (an error or a value known only at run time)"
+                    .into(),
+            );
         }
     }
     if !t.steps[first].before.is_plain() {
@@ -197,7 +206,10 @@ pub fn definition(p: &Program, st: &Structure, t: &Trace, j: usize) -> Option<(u
         let b = &p.blocks[i];
         b.label.is_some()
             || b.stmts.iter().any(|x| {
-                matches!(x.kind, StmtKind::ProgramStart { .. } | StmtKind::SubStart { .. })
+                matches!(
+                    x.kind,
+                    StmtKind::ProgramStart { .. } | StmtKind::SubStart { .. }
+                )
             })
     };
     let ends = |i: usize| {

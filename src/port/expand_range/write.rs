@@ -132,10 +132,14 @@ impl<'a> Writer<'a> {
                 self.line(kind, &p, span);
             }
             Canon::ArcFeed { .. } => self.arc(c, span)?,
-            Canon::SetFeedRate(f) => self.push(StmtKind::Feed(Value::Number(super::super::decimal(*f))), span),
-            Canon::SetSpindleSpeed(s) => {
-                self.push(StmtKind::SpindleSpeed(Value::Number(super::super::decimal(*s))), span)
-            }
+            Canon::SetFeedRate(f) => self.push(
+                StmtKind::Feed(Value::Number(super::super::decimal(*f))),
+                span,
+            ),
+            Canon::SetSpindleSpeed(s) => self.push(
+                StmtKind::SpindleSpeed(Value::Number(super::super::decimal(*s))),
+                span,
+            ),
             Canon::SpindleCw => self.push(StmtKind::Spindle(SpindleState::Cw), span),
             Canon::SpindleCcw => self.push(StmtKind::Spindle(SpindleState::Ccw), span),
             Canon::StopSpindle => self.push(StmtKind::Spindle(SpindleState::Stop), span),
@@ -160,7 +164,11 @@ impl<'a> Writer<'a> {
             }
             Canon::UseLengthUnits(u) => {
                 self.inch = *u == CanonUnits::Inches;
-                let unit = if self.inch { LengthUnit::Inch } else { LengthUnit::Mm };
+                let unit = if self.inch {
+                    LengthUnit::Inch
+                } else {
+                    LengthUnit::Mm
+                };
                 self.push(
                     StmtKind::Units {
                         unit,
@@ -172,7 +180,9 @@ impl<'a> Writer<'a> {
             Canon::SelectTool(n) => match self.own(span) {
                 Some(s) if matches!(s.kind, StmtKind::ToolSelect(_)) => self.out.push(s),
                 _ => self.push(
-                    StmtKind::ToolSelect(ToolRef::Number(Value::Number(Decimal::from_f64(*n as f64, 0)))),
+                    StmtKind::ToolSelect(ToolRef::Number(Value::Number(Decimal::from_f64(
+                        *n as f64, 0,
+                    )))),
                     span,
                 ),
             },
@@ -199,7 +209,10 @@ impl<'a> Writer<'a> {
             | Canon::UseToolLengthOffset(_)
             | Canon::SetFeedMode(_) => self.state(c, span)?,
             Canon::SetMotionControlMode(_) => {
-                if let Some(s) = self.own(span).filter(|s| matches!(s.kind, StmtKind::PathMode { .. })) {
+                if let Some(s) = self
+                    .own(span)
+                    .filter(|s| matches!(s.kind, StmtKind::PathMode { .. }))
+                {
                     self.out.push(s);
                 }
             }
@@ -234,9 +247,10 @@ impl<'a> Writer<'a> {
         let own = self.by_span.get(&span);
         match (c, own.map(|s| &s.kind)) {
             // A tool change applies the new tool's length itself.
-            (Canon::UseToolLengthOffset(_), Some(StmtKind::ToolChange | StmtKind::ToolSelect(_))) => {
-                return Ok(())
-            }
+            (
+                Canon::UseToolLengthOffset(_),
+                Some(StmtKind::ToolChange | StmtKind::ToolSelect(_)),
+            ) => return Ok(()),
             (Canon::SetG5xOffset { index, .. }, Some(StmtKind::WorkOffset { .. }) | None)
                 if self.own(span).is_none() =>
             {
@@ -301,7 +315,11 @@ impl<'a> Writer<'a> {
         if rotation.abs() != 1 {
             return Err("it makes an arc of several turns".into());
         }
-        let dir = if *rotation < 0 { ArcDir::Cw } else { ArcDir::Ccw };
+        let dir = if *rotation < 0 {
+            ArcDir::Cw
+        } else {
+            ArcDir::Ccw
+        };
         let kind = MotionKind::Arc(dir);
         let (f, s, n) = plane_axes(self.plane);
         let mut end = [0.0; 6];
