@@ -105,24 +105,17 @@ fn plan_and_apply(
     if !refused.is_empty() {
         return Err(refused);
     }
-    let ranges = merge(t, &st, ranges).map_err(|why| {
+    let all_refused = |why: String| -> Vec<Diagnostic> {
         errors
             .iter()
             .map(|e| {
                 e.clone()
                     .note(format!("it cannot be written as the moves it makes: {why}"))
             })
-            .collect::<Vec<_>>()
-    })?;
-    let out = apply(p, t, to, &ranges, &definitions).map_err(|why| {
-        errors
-            .iter()
-            .map(|e| {
-                e.clone()
-                    .note(format!("it cannot be written as the moves it makes: {why}"))
-            })
-            .collect::<Vec<_>>()
-    })?;
+            .collect()
+    };
+    let ranges = merge(t, &st, ranges).map_err(all_refused)?;
+    let out = apply(p, t, to, &ranges, &definitions).map_err(all_refused)?;
     Ok((out, notes))
 }
 
