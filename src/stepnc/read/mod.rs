@@ -334,9 +334,14 @@ impl<'f> Rd<'f> {
 
     // ------------------------------------------------------------ reports
 
+    /// W0801 for each instance the project does not reach (at most
+    /// [`MAX_KEPT_PER_CODE`](crate::diag::MAX_KEPT_PER_CODE) kept).
     fn report_unused(&mut self) {
+        let mut cap = crate::diag::PerCode::default();
+        let from = self.diags.len();
         for (k, i) in self.file.instances.iter().enumerate() {
             if !self.used[k] && schema::canonical(&i.entity) != "PROJECT" {
+                let at = self.diags.len();
                 self.diags.push(
                     Diagnostic::new(
                         Code::UnusedInstance,
@@ -345,8 +350,10 @@ impl<'f> Rd<'f> {
                     .primary(i.span, "never referred to")
                     .help("a normalised file leaves it out; remove it or refer to it"),
                 );
+                cap.admit(&mut self.diags, at);
             }
         }
+        cap.finish(&mut self.diags[from..]);
     }
 
     fn report_duplicate_ids(&mut self) {
