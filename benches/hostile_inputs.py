@@ -58,7 +58,7 @@ def helix(folder):
         "G21 G90 G17 F100\nG0 X0 Y0 Z0\nG1 X5\n"
         "G2 X5 Y0 I-5 J0 Z-100 P100000000\n"
         "G18 G3 X5 Z-100 I-5 K0 Y-50 P10000000\n"
-        "G19 G2 Y0 Z-100 J5 K0 X9 P10000000\nM2\n",
+        "G19 G2 Y-50 Z-100 J5 K0 X9 P10000000\nM2\n",
     )
 
 
