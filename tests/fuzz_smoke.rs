@@ -5,7 +5,8 @@
 //! (`fuzz/dict/cncc.dict`): byte flips, dictionary words inserted, ranges
 //! deleted, repeated or spliced from another seed. The mutations are the
 //! same on every run; each target runs for `CNCC_FUZZ_SECONDS` seconds
-//! (default 2) or 2000 inputs. A panic prints the input that caused it.
+//! (default 2) or 2000 inputs, at least 100. A panic prints the input that
+//! caused it.
 
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -158,7 +159,8 @@ fn run(name: &str, target: Target, seeds: Vec<Vec<u8>>) {
     }
     let mut rng = Rng(0x14);
     let mut n = 0;
-    while n < 2000 && start.elapsed() < budget() {
+    // At least 100 mutations, however long the seeds took.
+    while n < 2000 && (n < 100 || start.elapsed() < budget()) {
         let base = &seeds[rng.below(seeds.len())];
         let input = mutate(&mut rng, base, &seeds, &dict);
         try_one(&input, &format!("mutation {n}"));
@@ -208,6 +210,9 @@ fn port_seeds() -> Vec<Vec<u8>> {
 
 const PROGRAMS: &[&str] = &["fanuc", "haas", "linuxcnc", "siemens840d", "heidenhain"];
 
+/// The Part 21 test files, good (`tests/programs/stepnc`) and bad (`tests/stepnc`).
+const STEPNC: &[&str] = &["stepnc", "../stepnc"];
+
 #[test]
 fn fuzz_word_address_briefly() {
     run(
@@ -237,12 +242,16 @@ fn fuzz_klartext_briefly() {
 
 #[test]
 fn fuzz_part21_briefly() {
-    run("part21", cncc::stepnc::fuzz_read_write, seeds(&["stepnc"]));
+    run("part21", cncc::stepnc::fuzz_read_write, seeds(STEPNC));
 }
 
 #[test]
 fn fuzz_interp_briefly() {
-    run("interp", interp, seeds(PROGRAMS));
+    let some: Vec<Vec<u8>> = PROGRAMS
+        .iter()
+        .flat_map(|d| seeds(&[d]).into_iter().take(8))
+        .collect();
+    run("interp", interp, some);
 }
 
 #[test]
@@ -252,5 +261,5 @@ fn fuzz_port_briefly() {
 
 #[test]
 fn fuzz_post_briefly() {
-    run("post", cncc::fuzzing::post, seeds(&["stepnc"]));
+    run("post", cncc::fuzzing::post, seeds(STEPNC));
 }
