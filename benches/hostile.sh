@@ -84,6 +84,7 @@ run "part21 10M query" "$cncc" query part21_10m.stp /project/its_id
 run "part21 2.2M points check" "$cncc" check part21_points.stp
 run "part21 2.2M points post" "$cncc" post --to siemens840d part21_points.stp
 run "part21 2.2M points stepnc" "$cncc" stepnc part21_points.stp
+run "part21 50M params check" "$cncc" check part21_params.stp
 # A dialect spec with 80k codes.
 run "dialect 80k codes check" "$cncc" check --dialect-file dialect80k.xml --dialect big-fanuc small.nc
 # Deep expressions.
@@ -91,5 +92,13 @@ run "sum 50k terms check" "$cncc" check --dialect fanuc sum50k.nc
 run "sum 50k terms port" "$cncc" port --from fanuc --to siemens840d sum50k.nc
 run "ABS[ 20k deep check" "$cncc" check --dialect fanuc abs20k.nc
 run "ABS[ 20k deep port" "$cncc" port --from fanuc --to heidenhain abs20k.nc
+# Large CAM programs (not hostile), when the shared generator is there.
+if [[ -f cam48mb.ngc ]]; then
+    run "cam 48MB check" "$cncc" check cam48mb.ngc
+    run "cam 48MB canon" "$cncc" canon cam48mb.ngc
+    run "cam 48MB stats" "$cncc" stats cam48mb.ngc
+    run "cam 48MB plot png" "$cncc" plot -o cam.png cam48mb.ngc
+    run "cam 24MB port linuxcnc>siemens" "$cncc" port --to siemens840d cam24mb.ngc
+fi
 printf '\ninputs: %s\n' "$(du -sh --apparent-size "$dir" | cut -f1)"
 exit $flagged

@@ -6,10 +6,12 @@
 Each input is deterministic. Sizes are those of the issue: a 50 MB single
 line, a 1 MB line of repeated words, 100k nested IF/WHILE (Siemens and
 LinuxCNC o-words), a helix of 10^8 turns, a 10M-entity Part 21 file, a
-dialect spec with 80k codes, a 50,000-term sum, ABS[ nested 20,000 deep.
+dialect spec with 80k codes, a 50,000-term sum, ABS[ nested 20,000 deep;
+and, for scale, large CAM programs of the shared generator.
 """
 
 import os
+import subprocess
 import sys
 
 
@@ -64,8 +66,8 @@ def helix(folder):
 
 def part21(folder, entities=10_000_000, points=2_200_000):
     # A valid project (two tapped holes) followed by filler: 10M of the
-    # shortest entity (unknown to the schema, about 130 MB), and 2.2M
-    # unused CARTESIAN_POINTs (valid, about 100 MB).
+    # shortest entity (unknown to the schema, about 130 MB), 2.2M unused
+    # CARTESIAN_POINTs (valid, about 100 MB), and long parameter lists.
     filler(folder, "part21_10m.stp", entities, lambda n: f"#{n}=A();")
     filler(
         folder,
@@ -73,6 +75,8 @@ def part21(folder, entities=10_000_000, points=2_200_000):
         points,
         lambda n: f"#{n}=CARTESIAN_POINT('',({n}.,0.,0.));",
     )
+    # 100 MB of unset parameters: 48 bytes in memory for 2 of text.
+    filler(folder, "part21_params.stp", 5_000, lambda n: f"#{n}=A(" + "$," * 10_000 + "$);")
 
 
 def filler(folder, name, count, entity):
@@ -116,10 +120,25 @@ def expressions(folder):
     write(folder, "abs20k.nc", f"%\nO1\n#1={abs_}\nG0 X#1\nM30\n%\n")
 
 
+def cam(folder):
+    # Not hostile: large CAM programs (../shared/bench/gen_program.py), of
+    # 48 MB for the streaming commands and 24 MB for the port, which holds
+    # the whole program.
+    here = os.path.dirname(os.path.abspath(__file__))
+    gen = os.path.join(here, "..", "..", "shared", "bench", "gen_program.py")
+    if not os.path.exists(gen):
+        print(f"no {gen}: the CAM program cases are skipped", file=sys.stderr)
+        return
+    for lines, name in ((3_500_000, "cam48mb.ngc"), (1_750_000, "cam24mb.ngc")):
+        out = os.path.join(folder, name)
+        subprocess.run([sys.executable, gen, "--lines", str(lines), "-o", out],
+                       check=True, stdout=subprocess.DEVNULL)
+
+
 def main():
     folder = sys.argv[1]
     os.makedirs(folder, exist_ok=True)
-    for make in (line_50mb, words_1mb, nested, helix, part21, dialect_80k, expressions):
+    for make in (line_50mb, words_1mb, nested, helix, part21, dialect_80k, expressions, cam):
         make(folder)
 
 

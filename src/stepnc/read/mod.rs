@@ -33,6 +33,10 @@ const MAX_DEPTH: usize = 200;
 const MAX_EXPANSION: usize = 1_000_000;
 /// How many times over a file's values may be visited.
 const EXPANSION_FACTOR: usize = 8;
+/// Most values expanded whatever the file's size (about 230 bytes each:
+/// a 4.7 KB bomb took 226 MB at a million; without this bound, 100 MB of
+/// filler parameters beside it would allow hundreds of millions).
+const MAX_NODES: usize = 4_000_000;
 
 /// Why a value could not be read as the typed model expects.
 #[derive(Debug)]
@@ -126,13 +130,14 @@ impl<'f> Rd<'f> {
             used: vec![false; file.instances.len()],
             depth: 0,
             raw_nodes: 0,
-            max_nodes: MAX_EXPANSION
+            max_nodes: (MAX_EXPANSION
                 + EXPANSION_FACTOR
                     * file
                         .instances
                         .iter()
                         .map(|i| i.params.len() + 1)
-                        .sum::<usize>(),
+                        .sum::<usize>())
+            .min(MAX_NODES),
             ids: Vec::new(),
             last_ref: None,
         }
