@@ -586,3 +586,14 @@ fn part21_diagnostics_of_one_kind_are_kept_to_a_thousand() {
     assert_eq!(out.status.code(), Some(0), "{err:.2000}");
     assert!(err.contains("1500 W0801 diagnostics in all"), "{err:.2000}");
 }
+
+/// Found by fuzzing (the `sinumerik` target, after 277 s, minimised): a D
+/// number with 19 places overflowed while checking it is an integer.
+#[test]
+fn a_d_number_with_19_places_is_no_overflow() {
+    cncc::fuzzing::read_and_write("siemens840d", b"D.0349334934933493493");
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "d.mpf", "D.0349334934933493493\nM30\n");
+    let out = check("siemens840d", &p);
+    ended_normally(&out);
+}
