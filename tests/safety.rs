@@ -547,3 +547,53 @@ fn a_plot_of_a_long_helix_is_bounded() {
     assert!(std::fs::metadata(&svg).unwrap().len() < 10_000_000);
     assert!(t.elapsed().as_secs() < 30);
 }
+
+/// The fixture with `count` more instances of `entity` (`{}` is the id).
+fn part21_with(dir: &Path, count: usize, entity: &str) -> PathBuf {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let s = std::fs::read_to_string(root.join("tests/programs/stepnc/tapped_holes.stp")).unwrap();
+    let (head, tail) = s.split_once("ENDSEC;\nEND-ISO-10303-21;").unwrap();
+    let filler: String = (1000..1000 + count)
+        .map(|n| entity.replace("{}", &n.to_string()))
+        .collect();
+    let body = format!("{head}{filler}\nENDSEC;\nEND-ISO-10303-21;{tail}");
+    write(dir, "many.stp", &body)
+}
+
+/// Ten million unknown entities made ten million diagnostics (over 3 GB
+/// and minutes); a thousand of one code are kept, the first says how many.
+#[test]
+fn part21_diagnostics_of_one_kind_are_kept_to_a_thousand() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = part21_with(dir.path(), 3000, "#{}=A();");
+    let out = cncc(&["check", &p.display().to_string()]);
+    ended_normally(&out);
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        err.contains("3000 E0805 diagnostics in all; the first 1000 are kept"),
+        "{err:.3000}"
+    );
+    assert!(
+        err.contains("1000 errors"),
+        "{}",
+        &err[err.len().saturating_sub(500)..]
+    );
+    // Unused (valid) instances: W0801, the same cap.
+    let p = part21_with(dir.path(), 1500, "#{}=CARTESIAN_POINT('',(0.,0.,0.));");
+    let out = cncc(&["check", &p.display().to_string()]);
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err:.2000}");
+    assert!(err.contains("1500 W0801 diagnostics in all"), "{err:.2000}");
+}
+
+/// Found by fuzzing (the `sinumerik` target, after 277 s, minimised): a D
+/// number with 19 places overflowed while checking it is an integer.
+#[test]
+fn a_d_number_with_19_places_is_no_overflow() {
+    cncc::fuzzing::read_and_write("siemens840d", b"D.0349334934933493493");
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "d.mpf", "D.0349334934933493493\nM30\n");
+    let out = check("siemens840d", &p);
+    ended_normally(&out);
+}

@@ -557,6 +557,9 @@ codes! {
     TextTransliterated = "W0691", "text-transliterated", Warning,
         "characters the target cannot read, replaced by the nearest ASCII",
         "The target reads 7-bit text (its `<text charset=\"ascii\">`): letters with accents are written without them, other characters as `?`.";
+    P21TooLarge = "E0813", "p21-too-large", Error,
+        "a Part 21 file holding more instance data than cncc reads",
+        "Read into memory, the file's instances and parameters would take more than 1.5 GB (about 30 million parameter values, or 10 million instances); cncc stops reading at the instance named and reports the file. ISO 14649 programs are far smaller; a file this large is usually a geometry export or a broken generator.";
 }
 
 impl Code {

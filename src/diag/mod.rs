@@ -173,3 +173,47 @@ impl Diagnostics {
         &self.list
     }
 }
+
+/// How many diagnostics of one code a long stream keeps (see [`PerCode`]).
+pub const MAX_KEPT_PER_CODE: usize = 1000;
+
+/// Keeps the first [`MAX_KEPT_PER_CODE`] diagnostics of each code of a
+/// stream and counts the rest, so that a file with millions of the same
+/// fault (ten million unknown Part 21 entities) holds a thousand
+/// diagnostics, not millions. The first kept diagnostic of a code with
+/// more gets a note with the full count ([`PerCode::finish`]).
+#[derive(Debug, Default)]
+pub struct PerCode {
+    seen: std::collections::HashMap<Code, usize>,
+}
+
+impl PerCode {
+    /// Keeps, of the diagnostics pushed since `from`, those under the cap.
+    pub fn admit(&mut self, diags: &mut Vec<Diagnostic>, from: usize) {
+        let mut kept = from;
+        for i in from..diags.len() {
+            let n = self.seen.entry(diags[i].code).or_default();
+            *n += 1;
+            if *n <= MAX_KEPT_PER_CODE {
+                diags.swap(kept, i);
+                kept += 1;
+            }
+        }
+        diags.truncate(kept);
+    }
+
+    /// Notes the count on the first diagnostic of each code over the cap.
+    pub fn finish(&self, diags: &mut [Diagnostic]) {
+        for (code, &n) in &self.seen {
+            if n <= MAX_KEPT_PER_CODE {
+                continue;
+            }
+            if let Some(d) = diags.iter_mut().find(|d| d.code == *code) {
+                d.notes.push(format!(
+                    "{n} {} diagnostics in all; the first {MAX_KEPT_PER_CODE} are kept",
+                    code.code()
+                ));
+            }
+        }
+    }
+}

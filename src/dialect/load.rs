@@ -4,11 +4,12 @@
 //! mistake as a diagnostic pointing into the XML file.
 
 use super::load_items::*;
+use super::load_seen::{code_key, Codes, Seen};
 use super::spec::*;
 use super::xml::{self, Node};
 use crate::diag::{Code, Diagnostic};
 use crate::ir::Decimal;
-use crate::span::{FileId, Span};
+use crate::span::FileId;
 use std::sync::Arc;
 
 const ROOT_ATTRS: &[&str] = &["id", "name", "family", "extends", "repeat-letter"];
@@ -157,29 +158,9 @@ pub fn default_numbers() -> NumberRules {
     }
 }
 
-/// Keys of entries defined in this file, for duplicate detection.
-#[derive(Default)]
-struct Seen {
-    items: Vec<(String, Span)>,
-}
-
-impl Seen {
-    fn check(&mut self, cx: &mut Ctx, key: String, what: &str, span: Span) {
-        if let Some((_, first)) = self.items.iter().find(|(k, _)| *k == key) {
-            cx.diags.push(
-                Diagnostic::new(Code::SpecDuplicate, format!("{what} is defined twice in this spec"))
-                    .primary(span, "defined again here")
-                    .secondary(*first, "first defined here")
-                    .help("remove one; to change an inherited entry, define it once in the extending spec"),
-            );
-        } else {
-            self.items.push((key, span));
-        }
-    }
-}
-
 fn read_children(cx: &mut Ctx, root: &Node, spec: &mut DialectSpec) {
     let mut seen = Seen::default();
+    let mut codes = Codes::new(std::mem::take(&mut spec.codes));
     // Groups first: codes refer to them wherever they are declared.
     for n in root.children.iter().filter(|n| n.name == "group") {
         if let Some(g) = read_group(cx, n) {
@@ -207,18 +188,19 @@ fn read_children(cx: &mut Ctx, root: &Node, spec: &mut DialectSpec) {
                 numbers_seen = true;
                 read_numbers(cx, n, &mut spec.numbers);
             }
-            "remove" => read_remove(cx, n, spec),
+            "remove" => read_remove(cx, n, spec, &mut codes),
             "text" => {
                 seen.check(cx, "text".into(), "`<text>`", n.span);
                 spec.text = super::load_text::read_text(cx, n);
             }
-            _ => read_entry(cx, n, spec, &mut seen),
+            _ => read_entry(cx, n, spec, &mut seen, &mut codes),
         }
     }
+    spec.codes = codes.finish();
 }
 
 /// Every element that adds or overrides one entry.
-fn read_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen) {
+fn read_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen, codes: &mut Codes) {
     match n.name.as_str() {
         "alias" | "extension" | "capability" | "command" => read_name_entry(cx, n, spec, seen),
         "address" => {
@@ -234,12 +216,12 @@ fn read_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen) {
         }
         "code" => {
             if let Some(c) = read_code(cx, n, &spec.groups) {
-                add_code(cx, spec, seen, c);
+                add_code(cx, codes, seen, c);
             }
         }
         "code-range" => {
             for c in read_code_range(cx, n, &spec.groups) {
-                add_code(cx, spec, seen, c);
+                add_code(cx, codes, seen, c);
             }
         }
         "cycle" => {
@@ -279,22 +261,15 @@ fn read_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen) {
     }
 }
 
-fn add_code(cx: &mut Ctx, spec: &mut DialectSpec, seen: &mut Seen, c: CodeDef) {
-    let key = format!("{}{}", c.letter, c.code.normalized().format(0, false));
+fn add_code(cx: &mut Ctx, codes: &mut Codes, seen: &mut Seen, c: CodeDef) {
+    let key = code_key(c.letter, c.code);
     seen.check(cx, format!("code {key}"), &format!("code `{key}`"), c.span);
-    upsert(&mut spec.codes, c, |x, y| {
-        (x.letter, x.code.normalized()) == (y.letter, y.code.normalized())
-    });
+    codes.upsert(c);
 }
 
 /// The first `<variables>` of a spec replaces the inherited list.
 fn add_variables(spec: &mut DialectSpec, v: VarRange, seen: &Seen) {
-    let first_here = seen
-        .items
-        .iter()
-        .filter(|(k, _)| k.starts_with("vars "))
-        .count()
-        == 1;
+    let first_here = seen.vars == 1;
     if first_here {
         spec.variables.clear();
     }
@@ -413,7 +388,7 @@ fn upsert<T>(list: &mut Vec<T>, item: T, same: impl Fn(&T, &T) -> bool) {
 }
 
 /// `<remove letter= number=/>` or `<remove cycle|function|capability|command|address|group=/>`.
-fn read_remove(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec) {
+fn read_remove(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, codes: &mut Codes) {
     const KINDS: &[&str] = &[
         "cycle",
         "function",
@@ -426,7 +401,7 @@ fn read_remove(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec) {
     allowed.extend(KINDS);
     cx.check_attrs(n, &allowed);
     let found = if n.attr("number").is_some() || n.attr("letter").is_some() {
-        remove_code(cx, n, spec)
+        remove_code(cx, n, codes)
     } else if let Some(kind) = KINDS.iter().find(|k| n.attr(k).is_some()) {
         remove_named(n, kind, spec)
     } else {
@@ -446,19 +421,12 @@ fn read_remove(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec) {
     }
 }
 
-fn remove_code<'n>(
-    cx: &mut Ctx,
-    n: &'n Node,
-    spec: &mut DialectSpec,
-) -> Option<(bool, &'n xml::Attr)> {
+fn remove_code<'n>(cx: &mut Ctx, n: &'n Node, codes: &mut Codes) -> Option<(bool, &'n xml::Attr)> {
     let letter = code_letter(cx, n);
     let num_attr = cx.req(n, "number")?;
     let code = code_number(cx, num_attr)?;
     let letter = letter?;
-    let before = spec.codes.len();
-    spec.codes
-        .retain(|c| !(c.letter == letter && c.code.normalized() == code.normalized()));
-    Some((spec.codes.len() < before, num_attr))
+    Some((codes.remove(letter, code), num_attr))
 }
 
 fn remove_named<'n>(

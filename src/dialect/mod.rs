@@ -6,6 +6,7 @@ pub mod detect;
 pub mod listing;
 pub mod load;
 pub(crate) mod load_items;
+mod load_seen;
 #[cfg(test)]
 mod load_tests;
 mod load_text;

@@ -3,7 +3,7 @@
 //! program before it runs.
 
 use crate::ir::{Block, CallTarget, FlowId, Program, StmtKind};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use crate::ir::FlowKind as Kind;
 
@@ -31,17 +31,20 @@ fn flow_key(kind: Kind, id: &FlowId) -> (Kind, FlowId) {
 }
 
 impl FlowIndex {
+    /// One pass over the blocks, linear in their number whatever the
+    /// nesting depth: openers are found by key, the innermost loop is the
+    /// top of a stack of loops.
     pub fn build(p: &Program) -> FlowIndex {
         let mut ix = FlowIndex::default();
-        let mut stack: Vec<((Kind, FlowId), usize)> = Vec::new();
+        let mut open = OpenStack::default();
         let mut last_branch: HashMap<usize, usize> = HashMap::new();
         for (i, b) in p.blocks.iter().enumerate() {
             ix.note_targets(i, b);
-            if let Some(&(_, top)) = stack.iter().rev().find(|((k, _), _)| k.is_loop()) {
+            if let Some(top) = open.innermost_loop() {
                 ix.loop_of.insert(i, top);
             }
             for s in &b.stmts {
-                ix.structure(i, &s.kind, &mut stack, &mut last_branch);
+                ix.structure(i, &s.kind, &mut open, &mut last_branch);
             }
         }
         ix
@@ -73,11 +76,11 @@ impl FlowIndex {
         &mut self,
         i: usize,
         kind: &StmtKind,
-        stack: &mut Vec<((Kind, FlowId), usize)>,
+        stack: &mut OpenStack,
         last_branch: &mut HashMap<usize, usize>,
     ) {
         use StmtKind::*;
-        let open = |k: Kind, id: &FlowId, stack: &mut Vec<_>| stack.push((flow_key(k, id), i));
+        let open = |k: Kind, id: &FlowId, stack: &mut OpenStack| stack.push(k, id, i);
         match kind {
             If { id, .. } => open(Kind::If, id, stack),
             While { id, .. } => open(Kind::While, id, stack),
@@ -88,7 +91,7 @@ impl FlowIndex {
             RepeatUntil => open(Kind::RepeatUntil, &FlowId::Nested, stack),
             SubStart { id, .. } => open(Kind::Sub, id, stack),
             ElseIf { id, .. } | Else { id } => {
-                if let Some(o) = find_open(stack, Kind::If, id) {
+                if let Some(o) = stack.find(Kind::If, id) {
                     let from = last_branch.get(&o).copied().unwrap_or(o);
                     self.next_branch.insert(from, i);
                     last_branch.insert(o, i);
@@ -111,13 +114,12 @@ impl FlowIndex {
         i: usize,
         kind: Kind,
         id: &FlowId,
-        stack: &mut Vec<((Kind, FlowId), usize)>,
+        stack: &mut OpenStack,
         last_branch: Option<&mut HashMap<usize, usize>>,
     ) {
-        let Some(pos) = stack.iter().rposition(|((k, f), _)| *k == kind && f == id) else {
+        let Some(o) = stack.close(kind, id) else {
             return;
         };
-        let (_, o) = stack.remove(pos);
         self.partner.insert(o, i);
         self.partner.insert(i, o);
         if let Some(lb) = last_branch {
@@ -140,10 +142,61 @@ impl FlowIndex {
     }
 }
 
-fn find_open(stack: &[((Kind, FlowId), usize)], kind: Kind, id: &FlowId) -> Option<usize> {
-    stack
-        .iter()
-        .rev()
-        .find(|((k, f), _)| *k == kind && f == id)
-        .map(|(_, i)| *i)
+/// The openers not yet closed. A closer closes the innermost open opener
+/// of its kind and id, which need not be the innermost of all (a stray
+/// closer skips over others), so openers are kept per key; the loops are
+/// kept in opening order with closed ones dropped when they reach the top.
+#[derive(Default)]
+struct OpenStack {
+    /// (kind, id) → its open openers (serial, block), innermost last.
+    by_key: HashMap<(Kind, FlowId), Vec<(usize, usize)>>,
+    /// Loop openers (serial, block) in opening order, some perhaps closed.
+    loops: Vec<(usize, usize)>,
+    /// Serials of loop openers closed but still in `loops`.
+    closed_loops: HashSet<usize>,
+    /// Openers pushed so far (a block may open more than one).
+    serial: usize,
 }
+
+impl OpenStack {
+    fn push(&mut self, kind: Kind, id: &FlowId, block: usize) {
+        self.serial += 1;
+        let entry = (self.serial, block);
+        self.by_key
+            .entry(flow_key(kind, id))
+            .or_default()
+            .push(entry);
+        if kind.is_loop() {
+            self.loops.push(entry);
+        }
+    }
+
+    /// The innermost open opener of this kind and id.
+    fn find(&self, kind: Kind, id: &FlowId) -> Option<usize> {
+        self.by_key.get(&flow_key(kind, id))?.last().map(|e| e.1)
+    }
+
+    /// Closes the innermost open opener of this kind and id.
+    fn close(&mut self, kind: Kind, id: &FlowId) -> Option<usize> {
+        let (serial, o) = self.by_key.get_mut(&flow_key(kind, id))?.pop()?;
+        if kind.is_loop() {
+            self.closed_loops.insert(serial);
+        }
+        Some(o)
+    }
+
+    /// The innermost loop still open (amortised constant time).
+    fn innermost_loop(&mut self) -> Option<usize> {
+        while let Some(&(serial, top)) = self.loops.last() {
+            if !self.closed_loops.remove(&serial) {
+                return Some(top);
+            }
+            self.loops.pop();
+        }
+        None
+    }
+}
+
+#[cfg(test)]
+#[path = "index_tests.rs"]
+mod tests;

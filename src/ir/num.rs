@@ -9,6 +9,9 @@ use std::fmt;
 
 /// Most significant digits kept exactly.
 pub const MAX_DIGITS: usize = 18;
+/// Most places after the point, leading zeros included (a scale of 256
+/// overflowed; past 18 places, 10^scale is past an i64).
+pub const MAX_SCALE: u8 = 36;
 
 /// `mantissa / 10^scale`, plus whether a decimal point was written.
 #[derive(Clone, Copy, Debug, Eq, Serialize)]
@@ -64,6 +67,10 @@ impl Decimal {
                     }
                     mantissa = mantissa * 10 + (b - b'0') as i64;
                     if point {
+                        // Zeros after the point count too: `0.000…01`.
+                        if scale >= MAX_SCALE {
+                            return Err(NumberError::TooLong);
+                        }
                         scale += 1;
                     }
                 }
@@ -110,13 +117,16 @@ impl Decimal {
 
     /// True when the value has no fractional part.
     pub fn is_integer(self) -> bool {
-        self.mantissa % 10i64.pow(self.scale as u32) == 0
+        self.as_int().is_some()
     }
 
     /// The value as an integer, if it is one.
     pub fn as_int(self) -> Option<i64> {
-        self.is_integer()
-            .then(|| self.mantissa / 10i64.pow(self.scale as u32))
+        match 10i64.checked_pow(self.scale as u32) {
+            Some(p) => (self.mantissa % p == 0).then(|| self.mantissa / p),
+            // 10^scale is past i64, so past the mantissa: a fraction, or 0.
+            None => (self.mantissa == 0).then_some(0),
+        }
     }
 
     pub fn is_negative(self) -> bool {
@@ -203,6 +213,19 @@ impl fmt::Display for Decimal {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Found by fuzzing (sinumerik, 277 s): `D.0349334934933493493` has 19
+    /// places; 10^19 overflowed an i64 in `as_int`.
+    #[test]
+    fn more_places_than_an_i64_holds_are_not_an_overflow() {
+        let d = Decimal::parse(".0349334934933493493").unwrap();
+        assert_eq!((d.as_int(), d.is_integer()), (None, false));
+        let zero = Decimal::parse("0.0000000000000000000000").unwrap();
+        assert_eq!(zero.as_int(), Some(0));
+        let tiny = format!("0.{}1", "0".repeat(300));
+        assert_eq!(Decimal::parse(&tiny), Err(NumberError::TooLong));
+        assert!(Decimal::parse(&format!("0.{}1", "0".repeat(34))).is_ok());
+    }
 
     #[test]
     fn reads_exactly() {

@@ -5,7 +5,7 @@
 //! text `schema_table.txt`, written from reference/stepnc.md section 3.
 
 use super::part21::{Instance, P21File, Param, Value};
-use crate::diag::{Code, Diagnostic};
+use crate::diag::{Code, Diagnostic, PerCode};
 use std::collections::HashMap;
 use std::sync::OnceLock;
 
@@ -142,16 +142,28 @@ pub fn entity_names() -> Vec<&'static str> {
     v
 }
 
-/// Checks every instance of a file against the schema.
+/// Checks every instance of a file against the schema (at most
+/// [`MAX_KEPT_PER_CODE`](crate::diag::MAX_KEPT_PER_CODE) diagnostics of
+/// one code are kept, the rest counted).
 pub fn validate(file: &P21File) -> Vec<Diagnostic> {
     let mut diags = Vec::new();
+    let mut cap = PerCode::default();
+    let mut suggestions = HashMap::new();
     for inst in &file.instances {
-        validate_instance(file, inst, &mut diags);
+        let from = diags.len();
+        validate_instance(file, inst, &mut diags, &mut suggestions);
+        cap.admit(&mut diags, from);
     }
+    cap.finish(&mut diags);
     diags
 }
 
-fn validate_instance(file: &P21File, inst: &Instance, diags: &mut Vec<Diagnostic>) {
+fn validate_instance(
+    file: &P21File,
+    inst: &Instance,
+    diags: &mut Vec<Diagnostic>,
+    suggestions: &mut HashMap<String, String>,
+) {
     if inst.is_complex() {
         diags.push(
             Diagnostic::new(
@@ -170,7 +182,12 @@ fn validate_instance(file: &P21File, inst: &Instance, diags: &mut Vec<Diagnostic
                 format!("unknown entity `{}`", inst.entity),
             )
             .primary(inst.entity_span, "not an ISO 14649 entity cncc knows")
-            .help(suggest(&inst.entity)),
+            .help(
+                suggestions
+                    .entry(inst.entity.clone())
+                    .or_insert_with(|| suggest(&inst.entity))
+                    .clone(),
+            ),
         );
         check_refs(file, &inst.params, diags);
         return;

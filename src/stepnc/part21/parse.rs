@@ -4,7 +4,7 @@
 //! own, so one bad instance costs only itself.
 
 use super::lexer::{tokens, Tok};
-use super::{Instance, P21File, Stmt};
+use super::{Instance, P21File, Stmt, Value};
 use crate::diag::{Code, Diagnostic};
 use crate::span::{FileId, Span};
 
@@ -68,13 +68,26 @@ pub fn parse(src: &str, file: FileId) -> (P21File, Vec<Diagnostic>) {
 /// [`parse`], with or without the fast path for well-formed statements
 /// (off only in the test comparing the two).
 pub fn parse_with(src: &str, file: FileId, fast_path: bool) -> (P21File, Vec<Diagnostic>) {
+    parse_within(src, file, fast_path, MAX_GRAPH_BYTES)
+}
+
+/// [`parse_with`], reading instances up to `budget` bytes of memory (E0813).
+fn parse_within(
+    src: &str,
+    file: FileId,
+    fast_path: bool,
+    budget: usize,
+) -> (P21File, Vec<Diagnostic>) {
     let mut diags = Vec::new();
     let mut out = P21File::default();
     let mut stmt: Vec<Spanned> = Vec::new();
     let mut section = Section::Before;
     let parser = grammar::StatementParser::new();
     let mut open_string = false;
+    let mut cap = crate::diag::PerCode::default();
+    let mut graph_bytes = 0usize;
     for t in tokens(src) {
+        let from = diags.len();
         match t {
             Err((a, b)) => diags.push(unreadable(file, a, b, "a character that starts no token")),
             Ok((a, Tok::OpenComment, _)) => {
@@ -94,11 +107,24 @@ pub fn parse_with(src: &str, file: FileId, fast_path: bool) -> (P21File, Vec<Dia
                     parser: &parser,
                     fast_path,
                 };
+                let n = out.instances.len();
                 section = statement(&cx, &s, b, section, &mut out, &mut diags);
+                if let Some(i) = out.instances.get(n) {
+                    graph_bytes += instance_bytes(i);
+                    if graph_bytes > budget {
+                        cap.finish(&mut diags);
+                        diags.push(too_large(i, budget));
+                        return (out, diags);
+                    }
+                }
             }
             Ok(t) => stmt.push(t),
         }
+        if diags.len() > from {
+            cap.admit(&mut diags, from);
+        }
     }
+    cap.finish(&mut diags);
     if let Some(&(a, _, b)) = stmt.first() {
         diags.push(syntax(
             file,
@@ -122,6 +148,47 @@ pub fn parse_with(src: &str, file: FileId, fast_path: bool) -> (P21File, Vec<Dia
         );
     }
     (out, diags)
+}
+
+/// The most memory the instances read may take (estimated by
+/// [`instance_bytes`]): with the text, a file stays under 2 GB.
+pub const MAX_GRAPH_BYTES: usize = 1536 << 20;
+
+/// About what an instance takes in memory: the record, its name and its
+/// parameters (48 bytes each for two bytes of `$,`).
+fn instance_bytes(i: &Instance) -> usize {
+    fn params(ps: &[super::Param]) -> usize {
+        ps.iter()
+            .map(|p| {
+                std::mem::size_of::<super::Param>()
+                    + match &p.value {
+                        Value::Str(s) | Value::Enum(s) | Value::Binary(s) => s.len(),
+                        Value::List(l) => params(l),
+                        Value::Typed(t, inner) => t.len() + params(std::slice::from_ref(inner)),
+                        _ => 0,
+                    }
+            })
+            .sum()
+    }
+    let parts: usize = i
+        .more_parts
+        .iter()
+        .map(|r| std::mem::size_of::<super::Record>() + r.entity.len() + params(&r.params))
+        .sum();
+    std::mem::size_of::<Instance>() + 32 + params(&i.params) + parts
+}
+
+/// E0813 at the instance that passed the budget.
+fn too_large(i: &Instance, budget: usize) -> Diagnostic {
+    Diagnostic::new(
+        Code::P21TooLarge,
+        format!(
+            "the file holds more instance data than cncc reads ({} MB in memory)",
+            budget >> 20
+        ),
+    )
+    .primary(i.span, "reading stops here")
+    .help("ISO 14649 programs are far smaller; check the generator, or split the file")
 }
 
 /// What every statement is read with.
@@ -233,13 +300,16 @@ fn add_instance(
         return;
     }
     let first = parts.remove(0);
+    // A simple instance keeps no allocation for the parts it does not have
+    // (80 bytes each, 800 MB in a file of ten million instances).
+    let more_parts = if parts.is_empty() { Vec::new() } else { parts };
     out.push(Instance {
         id,
         entity: first.entity,
         params: first.params,
         span,
         entity_span: first.span,
-        more_parts: parts,
+        more_parts,
     });
 }
 
@@ -330,5 +400,34 @@ fn expected_list(expected: &[String]) -> String {
         0 => "nothing more".to_string(),
         1 => names[0].clone(),
         _ => format!("one of {}", names.join(", ")),
+    }
+}
+
+#[cfg(test)]
+mod budget_tests {
+    use super::*;
+
+    /// `#1=A($,$,...)`: 48 bytes of memory for two of text; a file of
+    /// them stops at the budget (1.5 GB; 100 MB of them took 2.5 GB).
+    #[test]
+    fn instance_data_over_the_budget_is_e0813_not_gigabytes() {
+        let mut src = String::from("ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n");
+        for n in 1..=1000 {
+            src.push_str(&format!("#{n}=A({}$);\n", "$,".repeat(99)));
+        }
+        src.push_str("ENDSEC;\nEND-ISO-10303-21;\n");
+        let (whole, d) = parse_within(&src, FileId(0), true, usize::MAX);
+        assert_eq!(whole.instances.len(), 1000);
+        assert!(d.is_empty(), "{d:?}");
+        let one = instance_bytes(&whole.instances[0]);
+        assert!(
+            one > 100 * std::mem::size_of::<super::super::Param>(),
+            "{one}"
+        );
+        let (part, d) = parse_within(&src, FileId(0), true, 10 * one);
+        assert_eq!(part.instances.len(), 11, "stops at the one that passes");
+        assert_eq!(d.len(), 1, "{d:?}");
+        assert_eq!(d[0].code, Code::P21TooLarge);
+        assert_eq!(d[0].span(), Some(part.instances[10].span));
     }
 }

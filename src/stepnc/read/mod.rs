@@ -33,6 +33,10 @@ const MAX_DEPTH: usize = 200;
 const MAX_EXPANSION: usize = 1_000_000;
 /// How many times over a file's values may be visited.
 const EXPANSION_FACTOR: usize = 8;
+/// Most values expanded whatever the file's size (about 230 bytes each:
+/// a 4.7 KB bomb took 226 MB at a million; without this bound, 100 MB of
+/// filler parameters beside it would allow hundreds of millions).
+const MAX_NODES: usize = 4_000_000;
 
 /// Why a value could not be read as the typed model expects.
 #[derive(Debug)]
@@ -126,13 +130,14 @@ impl<'f> Rd<'f> {
             used: vec![false; file.instances.len()],
             depth: 0,
             raw_nodes: 0,
-            max_nodes: MAX_EXPANSION
+            max_nodes: (MAX_EXPANSION
                 + EXPANSION_FACTOR
                     * file
                         .instances
                         .iter()
                         .map(|i| i.params.len() + 1)
-                        .sum::<usize>(),
+                        .sum::<usize>())
+            .min(MAX_NODES),
             ids: Vec::new(),
             last_ref: None,
         }
@@ -334,9 +339,14 @@ impl<'f> Rd<'f> {
 
     // ------------------------------------------------------------ reports
 
+    /// W0801 for each instance the project does not reach (at most
+    /// [`MAX_KEPT_PER_CODE`](crate::diag::MAX_KEPT_PER_CODE) kept).
     fn report_unused(&mut self) {
+        let mut cap = crate::diag::PerCode::default();
+        let from = self.diags.len();
         for (k, i) in self.file.instances.iter().enumerate() {
             if !self.used[k] && schema::canonical(&i.entity) != "PROJECT" {
+                let at = self.diags.len();
                 self.diags.push(
                     Diagnostic::new(
                         Code::UnusedInstance,
@@ -345,8 +355,10 @@ impl<'f> Rd<'f> {
                     .primary(i.span, "never referred to")
                     .help("a normalised file leaves it out; remove it or refer to it"),
                 );
+                cap.admit(&mut self.diags, at);
             }
         }
+        cap.finish(&mut self.diags[from..]);
     }
 
     fn report_duplicate_ids(&mut self) {
