@@ -94,7 +94,15 @@ fn inlining_has_a_real_budget() {
     let start = std::time::Instant::now();
     // --strict: the inlining is refused (without it the port writes the
     // calls as the moves they make, bounded the same way).
-    let out = cncc(&["port", "--strict", "--from", "heidenhain", "--to", "siemens840d", file]);
+    let out = cncc(&[
+        "port",
+        "--strict",
+        "--from",
+        "heidenhain",
+        "--to",
+        "siemens840d",
+        file,
+    ]);
     let err = stderr(&out);
     assert_ne!(out.status.code(), Some(0), "{err}");
     assert!(err.contains("E0617"), "{err}");

@@ -66,10 +66,10 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
     }
     let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
     let first = attempt(ctx, &dir, &program, &spec, &target, &opts);
-    let (ported, out, expanded) = match first {
-        Ok((ported, out, d)) => {
+    let (out, expanded) = match first {
+        Ok((out, d)) => {
             diags.extend(d);
-            (ported, out, false)
+            (out, false)
         }
         Err(errors) if a.strict => {
             diags.extend(errors);
@@ -89,10 +89,10 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
                 |p| attempt(ctx, &dir, p, &spec, &target, &opts),
             );
             match tried {
-                Ok(((ported, out, d), notes)) => {
+                Ok(((out, d), notes)) => {
                     diags.extend(notes);
                     diags.extend(d);
-                    (ported, out, true)
+                    (out, true)
                 }
                 Err(errors) => {
                     diags.extend(errors);
@@ -102,7 +102,6 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
             }
         }
     };
-    let _ = &ported;
     if a.verify || expanded {
         let name = match a.output {
             Some(p) => p.display().to_string(),
@@ -267,7 +266,7 @@ fn attempt(
     spec: &Arc<DialectSpec>,
     target: &Arc<DialectSpec>,
     opts: &PortOptions,
-) -> Result<(Program, String, Vec<Diagnostic>), Vec<Diagnostic>> {
+) -> Result<(String, Vec<Diagnostic>), Vec<Diagnostic>> {
     let (ported, mut diags) = port_program(program, spec, target, opts);
     if diags.iter().any(|d| d.is_error()) {
         return Err(diags.into_iter().filter(|d| d.is_error()).collect());
@@ -294,7 +293,7 @@ fn attempt(
     if diags.iter().any(|d| d.is_error()) {
         return Err(diags.into_iter().filter(|d| d.is_error()).collect());
     }
-    Ok((ported, out, diags))
+    Ok((out, diags))
 }
 
 /// The moves of a run, as `--verify` compares them. A subprogram or

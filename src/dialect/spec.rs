@@ -137,6 +137,11 @@ pub enum Capability {
     /// G5/G5.1/G5.2/G5.3 are LinuxCNC's splines, run as such (elsewhere
     /// G5/G5.1 are other functions, e.g. Fanuc's AI contour control).
     Splines,
+    /// Cutter compensation takes the radius of the tool in the spindle and
+    /// names no register (Klartext `RL`/`RR` on a positioning block, `R0`
+    /// to cancel): a port drops a `D` that is the tool's own and puts a
+    /// lone cancel on the next move.
+    CompWithoutRegister,
     /// Q and QR parameters belong to the control, not to the program: they
     /// keep the values an earlier program left (TNC 640 / TNC7 manuals:
     /// "Q parameters affect all NC programs in the control's memory"; QR
@@ -196,6 +201,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("no-nested-comments", Capability::NoNestedComments),
     ("splines", Capability::Splines),
     ("global-q-parameters", Capability::GlobalQParameters),
+    ("comp-without-register", Capability::CompWithoutRegister),
 ];
 
 impl Capability {

@@ -1,5 +1,6 @@
 //! `G41 D1` / `G42 D1` for a target whose compensation takes the radius of
-//! the tool in the spindle and names no register (Klartext `RL`/`RR`):
+//! the tool in the spindle and names no register (capability
+//! `comp-without-register`: Klartext `RL`/`RR`):
 //! the register goes where it is the tool's own (`D` equal to the number
 //! of the tool last selected, the usual convention), so the same radius is
 //! used. Any other register stays, and the writer refuses it.
@@ -8,11 +9,11 @@
 //! block goes onto the next move (`L X.. Y.. R0`) instead of an empty
 //! `L R0`.
 
-use crate::dialect::{DialectSpec, Family};
+use crate::dialect::{Capability, DialectSpec};
 use crate::ir::{Program, StmtKind, ToolRef, Value};
 
 pub fn run(p: &mut Program, to: &DialectSpec) {
-    if to.family != Family::Klartext {
+    if !to.has(Capability::CompWithoutRegister) {
         return;
     }
     off_onto_next_move(p);

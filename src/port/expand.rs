@@ -2,33 +2,33 @@
 //! express one-to-one. Every cycle (word-address `G8x` and the position
 //! blocks that repeat it, `G80`; named calls such as `CYCLE83`, `POCKET1`,
 //! `CYCLE71`, the blocks under `MCALL` and the closing `MCALL`) is replaced
-//! by the moves the interpreter makes for it: `G0`/`G1 X Y Z` and XY-plane
-//! `G2`/`G3 X Y Z I J` in program coordinates, feed changes, dwells and
-//! spindle starts and stops. Coordinates are rounded to the target's
+//! by the moves the interpreter makes for it, written by the writer of
+//! [`super::expand_range`]: `G0`/`G1 X Y Z` and `G2`/`G3` with their
+//! centres in program coordinates, feed changes, dwells and spindle
+//! changes. Coordinates are rounded to the target's
 //! places (0.001 mm for Fanuc: within the 1 µm `--verify` allows). The
 //! cycle's exact-path wrapping (`G61.1` around it) is left out.
 //!
 //! A cycle statement that runs more than once (in a loop or a subprogram)
 //! or whose moves need a call with no statement form (rigid tapping, an
-//! oriented spindle stop, arcs outside XY, several turns) cannot be
-//! expanded: E0610. The program must be in G90 at the cycle.
+//! oriented spindle stop, arcs of several turns) cannot be expanded:
+//! E0610. The program must be in G90 at the cycle.
 
-use crate::canon::{Canon, CanonPlane, CanonUnits};
+use super::expand_range::write::Writer;
+use crate::canon::{Canon, CanonPlane};
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::DialectSpec;
 use crate::interp::{flow::NoLoader, Options};
-use crate::ir::{
-    ArcData, ArcDir, Coord, Decimal, DwellUnit, Motion, MotionKind, Program, SpindleState, Stmt,
-    StmtKind, Value,
-};
+use crate::ir::{Program, Stmt, StmtKind};
 use crate::span::Span;
 use std::collections::HashMap;
 
-/// One canonical call with the state it starts from.
+/// One canonical call with the state it starts from (position, plane,
+/// units), as the writer of [`super::expand_range`] follows them.
 struct Step {
     call: Canon,
-    from: [f64; 3],
-    plane_xy: bool,
+    from: [f64; 6],
+    plane: CanonPlane,
     inch: bool,
 }
 
@@ -38,40 +38,23 @@ struct Calls {
     repeated: Vec<Span>,
 }
 
-fn end_of(c: &Canon, from: [f64; 3]) -> [f64; 3] {
-    match c {
-        Canon::StraightTraverse(p) | Canon::StraightFeed(p) => [p[0], p[1], p[2]],
-        Canon::ArcFeed {
-            first_end,
-            second_end,
-            axis_end,
-            ..
-        } => [*first_end, *second_end, *axis_end],
-        _ => from,
-    }
-}
-
-fn collect(p: &Program, from: &DialectSpec) -> Calls {
+fn collect(p: &Program, from: &DialectSpec, to: &DialectSpec) -> Calls {
     let mut by_span: HashMap<Span, Vec<Step>> = HashMap::new();
     let mut order: Vec<Span> = Vec::new();
-    let (mut pos, mut plane_xy, mut inch) = ([0.0; 3], true, false);
+    let no_statements = HashMap::new();
+    let mut follow = Writer::new(&no_statements, to);
     let mut sink = |c: Canon, s: Span| {
-        match &c {
-            Canon::SelectPlane(pl) => plane_xy = *pl == CanonPlane::XY,
-            Canon::UseLengthUnits(u) => inch = *u == CanonUnits::Inches,
-            _ => {}
-        }
         if order.last() != Some(&s) {
             order.push(s);
         }
-        let next = end_of(&c, pos);
+        let (from, plane, inch) = (follow.pos, follow.plane, follow.inch);
+        follow.follow(&c);
         by_span.entry(s).or_default().push(Step {
             call: c,
-            from: pos,
-            plane_xy,
+            from,
+            plane,
             inch,
         });
-        pos = next;
     };
     let program = std::rc::Rc::new(p.clone());
     let _ = crate::interp::run(program, from, &Options::default(), &mut NoLoader, &mut sink);
@@ -114,7 +97,7 @@ pub fn expand_unmappable(
     to: &DialectSpec,
     diags: &mut Vec<Diagnostic>,
 ) {
-    let calls = collect(p, from);
+    let calls = collect(p, from, to);
     let mut modal = false;
     let blocks = std::mem::take(&mut p.blocks);
     for mut b in blocks {
@@ -150,93 +133,18 @@ pub fn expand_unmappable(
     }
 }
 
-fn coord(v: f64, places: u8, span: Span) -> Option<Coord> {
-    let mut d = Decimal::from_f64(v, places).normalized();
-    d.point = true;
-    Some(Coord {
-        value: Value::Number(d),
-        dim: None,
-        span,
-    })
-}
-
+/// The statements of the calls a cycle statement made, written by the
+/// expansion writer (its own statements are not reused: a cycle's calls
+/// are moves, feeds, dwells and spindle changes).
 fn moves(calls: &Calls, span: Span, to: &DialectSpec) -> Result<Vec<Stmt>, String> {
     if calls.repeated.contains(&span) {
         return Err("it runs more than once (loop or subprogram)".into());
     }
-    let mut out = Vec::new();
-    let stmt = |k| Stmt::new(k, span);
+    let no_statements = HashMap::new();
+    let mut w = Writer::new(&no_statements, to);
     for step in calls.by_span.get(&span).map(Vec::as_slice).unwrap_or(&[]) {
-        let places = if step.inch {
-            to.numbers.length_places_inch
-        } else {
-            to.numbers.length_places_mm
-        };
-        let at = |v: f64| coord(v, places, span);
-        let c = &step.call;
-        match c {
-            Canon::StraightTraverse(p) | Canon::StraightFeed(p) => {
-                let rapid = matches!(c, Canon::StraightTraverse(_));
-                let mut m = Motion::new(if rapid {
-                    MotionKind::Rapid
-                } else {
-                    MotionKind::Linear
-                });
-                (m.target.x, m.target.y, m.target.z) = (at(p[0]), at(p[1]), at(p[2]));
-                out.push(stmt(StmtKind::Motion(Box::new(m))));
-            }
-            Canon::ArcFeed {
-                first_end,
-                second_end,
-                first_axis,
-                second_axis,
-                rotation,
-                axis_end,
-                ..
-            } => {
-                if !step.plane_xy || rotation.abs() != 1 {
-                    return Err("an arc outside the XY plane or of several turns".into());
-                }
-                let dir = if *rotation < 0 {
-                    ArcDir::Cw
-                } else {
-                    ArcDir::Ccw
-                };
-                let mut m = Motion::new(MotionKind::Arc(dir));
-                (m.target.x, m.target.y, m.target.z) =
-                    (at(*first_end), at(*second_end), at(*axis_end));
-                m.arc = ArcData {
-                    i: at(first_axis - step.from[0]),
-                    j: at(second_axis - step.from[1]),
-                    ..ArcData::default()
-                };
-                out.push(stmt(StmtKind::Motion(Box::new(m))));
-            }
-            Canon::SetFeedRate(f) => {
-                out.push(stmt(StmtKind::Feed(Value::Number(super::decimal(*f)))))
-            }
-            Canon::Dwell(t) => out.push(stmt(StmtKind::Dwell {
-                value: Value::Number(super::decimal(*t)),
-                unit: DwellUnit::Seconds,
-            })),
-            Canon::StopSpindle => out.push(stmt(StmtKind::Spindle(SpindleState::Stop))),
-            Canon::SpindleCw => out.push(stmt(StmtKind::Spindle(SpindleState::Cw))),
-            Canon::SpindleCcw => out.push(stmt(StmtKind::Spindle(SpindleState::Ccw))),
-            Canon::SetMotionControlMode(_)
-            | Canon::SetNaivecamTolerance(_)
-            | Canon::Comment(_)
-            | Canon::SelectPlane(_) => {}
-            Canon::DisableFeedOverride
-            | Canon::DisableSpeedOverride
-            | Canon::EnableFeedOverride
-            | Canon::EnableSpeedOverride => {}
-            other => {
-                return Err(format!(
-                    "it makes `{}`, which has no statement form",
-                    crate::canon::format_call(other)
-                ))
-            }
-        }
+        (w.pos, w.plane, w.inch) = (step.from, step.plane, step.inch);
+        w.call(&step.call, span)?;
     }
-    Ok(out)
+    Ok(w.out)
 }

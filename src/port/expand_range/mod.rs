@@ -11,7 +11,7 @@
 
 mod ranges;
 mod trace;
-mod write;
+pub(super) mod write;
 
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::DialectSpec;
