@@ -53,6 +53,7 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
     let opts = PortOptions {
         tool_map,
         expand_cycles: a.expand_cycles,
+        tool_names: tool_names(&a.options),
     };
     let (id, text, encoding) = ctx.add_file_encoded(a.file)?;
     let (spec, reason) = ctx.spec_for(a.from, a.file, &text)?;
@@ -81,6 +82,7 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
             let mut loader = FsLoader::new(dir.clone(), spec.clone(), &mut scratch);
             let tried = crate::port::expand_range::legalize(
                 &program,
+                &text,
                 &spec,
                 &target,
                 &a.options,
@@ -318,4 +320,18 @@ fn run_events(
     };
     let diags = crate::interp::fragment::run(p, &kind, spec, opts, loader, &mut sink);
     (out, diags)
+}
+
+/// The tools of the run's tool table by name (a row's comment), when a
+/// table was given.
+fn tool_names(o: &crate::interp::Options) -> Vec<(String, i64)> {
+    if o.tool_table == crate::interp::tooltable::ToolTable::builtin() {
+        return Vec::new();
+    }
+    o.tool_table
+        .tools
+        .iter()
+        .filter(|t| !t.comment.trim().is_empty())
+        .map(|t| (t.comment.trim().to_string(), t.number))
+        .collect()
 }

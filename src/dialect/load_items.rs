@@ -386,7 +386,7 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
     let run = match n.attr("run") {
         Some(a) => cx.parse(
             a,
-            "`stop`, `pass`, `kinematics` or `machine-datum`",
+            "`stop`, `pass`, `kinematics`, `machine-datum` or `user-program`",
             "`run` says what the canonical run does with an aux code",
             |s| {
                 use crate::dialect::spec::AuxRun;
@@ -395,6 +395,7 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
                     "pass" => Some(AuxRun::Pass),
                     "kinematics" => Some(AuxRun::Kinematics),
                     "machine-datum" => Some(AuxRun::MachineDatum),
+                    "user-program" => Some(AuxRun::UserProgram),
                     _ => None,
                 }
             },

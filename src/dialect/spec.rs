@@ -114,6 +114,9 @@ pub enum Capability {
     /// list is not an error; its sizes are unknown (Fanuc, Haas, Siemens,
     /// Heidenhain). Without it (LinuxCNC) the tool must be in the table.
     ControlHoldsTools,
+    /// A program may select a tool by its name (Siemens `T="DRILL"`,
+    /// Heidenhain `TOOL CALL "DRILL"`); without it a tool is a number.
+    ToolsByName,
     /// Cutter compensation's entry move must be longer than the tool
     /// radius (LinuxCNC's rule; Fanuc and Siemens start up otherwise).
     CompEntryLongerThanRadius,
@@ -190,6 +193,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("general-pocket-cycle", Capability::GeneralPocketCycle),
     ("power-on-rapid", Capability::PowerOnRapid),
     ("control-holds-tools", Capability::ControlHoldsTools),
+    ("tools-by-name", Capability::ToolsByName),
     (
         "comp-entry-longer-than-radius",
         Capability::CompEntryLongerThanRadius,
@@ -290,6 +294,10 @@ pub enum AuxRun {
     /// machine builder sets (Heidenhain M92, a machine parameter): run as
     /// machine coordinates (the machine datum, as M91), said once (W0517).
     MachineDatum,
+    /// Runs a program the machine's user wrote for that number (LinuxCNC
+    /// M100..M199): not run; the run stops there as for `Stop`. No other
+    /// control's code of the same number means the same.
+    UserProgram,
 }
 
 impl DialectSpec {

@@ -175,6 +175,24 @@ fn smoothing(it: &Interp<'_, '_>, letter: char, code: f64) -> bool {
         .is_some_and(|c| c.meaning == crate::dialect::Meaning::PathSmoothing)
 }
 
+/// An M code the spec does not know (a machine builder's): run as a
+/// switch that moves nothing (W0519, once per run) [?: the code may do
+/// more on its machine; a dialect file says what].
+fn assumed_static(it: &mut Interp<'_, '_>, letter: char, code: f64) {
+    if !it.heidenhain.once("assumed machine function".into()) {
+        return;
+    }
+    let span = it.span;
+    it.diags.push(
+        crate::diag::Diagnostic::new(
+            Code::MachineFunctionAssumed,
+            format!("{letter}{code} and the other M codes this dialect does not know are run as machine functions that do not move the axes"),
+        )
+        .primary(span, "run as a switch of the machine")
+        .help("if it moves the machine or changes a mode, describe it in a dialect file (see `cncc explain W0519`)"),
+    );
+}
+
 /// Runs an Aux statement.
 pub fn exec(
     it: &mut Interp<'_, '_>,
@@ -185,11 +203,14 @@ pub fn exec(
 ) -> Result<(), Stop> {
     let Some(f) = lookup(letter, code) else {
         use crate::dialect::spec::AuxRun;
-        let run = crate::ir::Decimal::parse(&format!("{code}"))
+        let known = crate::ir::Decimal::parse(&format!("{code}"))
             .ok()
-            .and_then(|d| it.spec.code(letter, d))
-            .map(|c| c.run)
-            .unwrap_or_default();
+            .and_then(|d| it.spec.code(letter, d));
+        if known.is_none() && letter.eq_ignore_ascii_case(&'M') {
+            assumed_static(it, letter, code);
+            return Ok(());
+        }
+        let run = known.map(|c| c.run).unwrap_or_default();
         match run {
             AuxRun::Pass => return Ok(()),
             AuxRun::Kinematics => {
@@ -202,7 +223,7 @@ pub fn exec(
                 machine_datum_note(it, letter, code);
                 return Ok(());
             }
-            AuxRun::Stop => {}
+            AuxRun::Stop | AuxRun::UserProgram => {}
         }
         if smoothing(it, letter, code) {
             return Ok(());

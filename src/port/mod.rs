@@ -61,6 +61,8 @@ mod funcs;
 mod groups;
 mod haas_cycles;
 mod levels;
+mod machine_functions;
+mod named_tools;
 mod loops;
 mod old_cycles;
 pub(crate) mod osubs;
@@ -92,6 +94,8 @@ pub struct PortOptions {
     pub tool_map: ToolMap,
     /// Write cycles the target cannot express as the moves they make.
     pub expand_cycles: bool,
+    /// The tool table's tools by name (the comment of each row) and number.
+    pub tool_names: Vec<(String, i64)>,
 }
 
 /// Turns `p` (read as `from`) into the target's forms. Diagnostics may be
@@ -115,6 +119,8 @@ pub fn port_program(
     from_tnc::run(&mut out, from, to, &mut diags);
     frame::run(&mut out, from, to);
     program_name::run(&mut out, to);
+    named_tools::run(&mut out, to, &opts.tool_names, &mut diags);
+    machine_functions::run(&mut out, from, to, &mut diags);
     from_tnc::subprograms::run(&mut out, from, to, &mut diags);
     poles::run(&mut out, from, to, &mut diags);
     to_named::run(&mut out, from, to, &mut diags);

@@ -303,5 +303,19 @@ fn plane(
         let what = format!("PLANE {} tilts the working plane", p.how);
         kinematics_not_run(it, &what, span);
     }
+    axis_angles(it, flat);
     Ok(())
+}
+
+/// The TNC leaves the rotary axis angles it computed for a `PLANE` in
+/// Q120 (A), Q121 (B), Q122 (C), which programs with `STAY` then move to
+/// (`L B+Q121 C+Q122`) [K: TNC 640 user's manual, "PLANE function:
+/// positioning"]. Untilted, every rotary axis is at 0 [?: a kinematics
+/// with a free axis may keep another C]; tilted, the angles depend on
+/// the machine's kinematics and are unknown here.
+fn axis_angles(it: &mut Interp<'_, '_>, flat: bool) {
+    let v = if flat { 0.0 } else { f64::NAN };
+    for n in 120..=122 {
+        it.params.set_q(crate::ir::QBank::Q, n, v);
+    }
 }

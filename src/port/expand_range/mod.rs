@@ -9,6 +9,7 @@
 //! is then tried again; what still fails, or depends on values known only
 //! while the machine runs, stays refused.
 
+mod dead;
 mod ranges;
 mod trace;
 pub(super) mod write;
@@ -40,6 +41,7 @@ pub struct Replaced {
 /// that remain (each with a note on why it could not be expanded).
 pub fn legalize<T>(
     p: &Program,
+    source: &str,
     from: &DialectSpec,
     to: &DialectSpec,
     opts: &crate::interp::Options,
@@ -62,7 +64,7 @@ pub fn legalize<T>(
                 .collect());
         }
         let trace = trace::record(&cur, from, opts, loader);
-        let (next, done) = match plan_and_apply(&cur, &trace, to, &errors) {
+        let (next, done) = match plan_and_apply(&cur, source, &trace, to, &errors) {
             Ok(x) => x,
             Err(refused) => return Err(refused),
         };
@@ -80,6 +82,7 @@ pub fn legalize<T>(
 /// why each could not be replaced.
 fn plan_and_apply(
     p: &Program,
+    source: &str,
     t: &Trace,
     to: &DialectSpec,
     errors: &[Diagnostic],
@@ -87,15 +90,22 @@ fn plan_and_apply(
     let st = Structure::of(p);
     let mut ranges: Vec<Range> = Vec::new();
     let mut definitions: Vec<(usize, usize)> = Vec::new();
+    let mut dead: Vec<(usize, usize)> = Vec::new();
     let mut notes = Vec::new();
     let mut refused = Vec::new();
     for e in errors.iter().filter(|d| d.is_error()) {
         let found = block_of(p, e).ok_or_else(|| "it is not in this file".to_string());
         match found.and_then(|j| targets(p, &st, t, j)) {
-            Ok((rs, def)) => {
+            Ok(Target::Moves(rs, def)) => {
                 ranges.extend(rs);
                 definitions.extend(def);
                 notes.push(note_for(e));
+            }
+            Ok(Target::Dead(d)) => {
+                if !dead.contains(&d) {
+                    dead.push(d);
+                    notes.push(dead::note(p, d));
+                }
             }
             Err(why) => refused.push(e.clone().note(format!(
                 "it cannot be written as the moves it makes either: {why}"
@@ -115,7 +125,12 @@ fn plan_and_apply(
             .collect()
     };
     let ranges = merge(t, &st, ranges).map_err(all_refused)?;
-    let out = apply(p, t, to, &ranges, &definitions).map_err(all_refused)?;
+    let parts = Parts {
+        ranges: &ranges,
+        defs: &definitions,
+        dead: &dead,
+    };
+    let out = apply(p, t, to, &parts, source).map_err(all_refused)?;
     Ok((out, notes))
 }
 
@@ -159,14 +174,18 @@ fn block_of(p: &Program, e: &Diagnostic) -> Option<usize> {
         })
 }
 
-/// The parts to replace for an error at block `j`, and the subprogram
-/// definition that goes with them.
-fn targets(
-    p: &Program,
-    st: &Structure,
-    t: &Trace,
-    j: usize,
-) -> Result<(Vec<Range>, Option<(usize, usize)>), String> {
+/// What replaces the place of an error.
+enum Target {
+    /// The parts to write as moves, and the subprogram definition that
+    /// goes with them.
+    Moves(Vec<Range>, Option<(usize, usize)>),
+    /// A subprogram definition the program never calls (first and last
+    /// block), carried as comments.
+    Dead((usize, usize)),
+}
+
+/// What replaces the place of an error at block `j`.
+fn targets(p: &Program, st: &Structure, t: &Trace, j: usize) -> Result<Target, String> {
     let at_top = t.steps.iter().any(|s| s.pc == j);
     match t.deep.get(&j) {
         Some(calls) if !at_top => {
@@ -179,19 +198,20 @@ fn targets(
                 }
             }
             let def = ranges::definition(p, st, t, j);
-            Ok((out, def))
+            Ok(Target::Moves(out, def))
         }
         _ => {
             let sub =
                 ranges::definition(p, st, t, j).filter(|d| d.0 > 0 && starts_sub(&p.blocks[d.0]));
-            if !at_top && sub.is_some() {
+            if let Some(d) = sub.filter(|_| !at_top && !t.deep.contains_key(&j)) {
                 // A subprogram the run never calls: it has no moves to
                 // write, and dropping it would lose it.
-                if !t.steps.iter().any(|s| s.pc == j) && !t.deep.contains_key(&j) {
-                    return Err("it is in a subprogram this program never calls, so there are no moves to write it as".into());
-                }
+                return match dead::definition(p, t, d) {
+                    true => Ok(Target::Dead(d)),
+                    false => Err("it is in a subprogram this program never calls, so there are no moves to write it as".into()),
+                };
             }
-            Ok((vec![ranges::grow(t, st, j, j)?], None))
+            Ok(Target::Moves(vec![ranges::grow(t, st, j, j)?], None))
         }
     }
 }
@@ -224,13 +244,22 @@ fn merge(t: &Trace, st: &Structure, mut rs: Vec<Range>) -> Result<Vec<Range>, St
     Ok(out)
 }
 
+/// What [`apply`] replaces: parts written as moves, the definitions that
+/// go with them, and never-called definitions carried as comments.
+struct Parts<'a> {
+    ranges: &'a [Range],
+    defs: &'a [(usize, usize)],
+    dead: &'a [(usize, usize)],
+}
+
 fn apply(
     p: &Program,
     t: &Trace,
     to: &DialectSpec,
-    rs: &[Range],
-    defs: &[(usize, usize)],
+    parts: &Parts<'_>,
+    source: &str,
 ) -> Result<Program, String> {
+    let (rs, defs) = (parts.ranges, parts.defs);
     let by_span = write::statements_by_span(p);
     let mut out = p.clone();
     let read = vars_read_outside(p, rs, defs);
@@ -240,6 +269,9 @@ fn apply(
         if let Some(r) = rs.iter().find(|r| r.a == i) {
             blocks.extend(expansion(&mut out, p, t, to, &by_span, r, &read)?);
             i = r.b + 1;
+        } else if let Some(&d) = parts.dead.iter().find(|d| d.0 == i) {
+            blocks.extend(dead::as_comments(p, source, d));
+            i = d.1 + 1;
         } else if let Some(&(_, e)) = defs.iter().find(|d| d.0 == i) {
             // The definition goes; a program end in it stays.
             blocks.extend(p.blocks[i..=e].iter().filter(|b| ends(b)).cloned());
@@ -250,7 +282,41 @@ fn apply(
         }
     }
     out.blocks = blocks;
+    forget_removed_exprs(&mut out, p, parts, &read);
     Ok(out)
+}
+
+/// The expressions of the blocks that went stay in the arena; passes that
+/// scan the arena (which variables a program uses) must not find them, so
+/// they become the number 0. Statements kept from a replaced part keep
+/// theirs.
+fn forget_removed_exprs(out: &mut Program, p: &Program, parts: &Parts<'_>, read: &Reads) {
+    let mut gone: Vec<Span> = Vec::new();
+    let mut kept_spans: Vec<Span> = Vec::new();
+    let regions = parts
+        .ranges
+        .iter()
+        .map(|r| (r.a, r.b))
+        .chain(parts.defs.iter().copied())
+        .chain(parts.dead.iter().copied());
+    for (a, b) in regions {
+        for blk in &p.blocks[a..=b] {
+            gone.push(blk.span);
+            kept_spans.extend(blk.stmts.iter().filter(|s| kept(s, read)).map(|s| s.span));
+        }
+    }
+    let inside = |x: Span, r: &Span| x.file == r.file && r.start <= x.start && x.end <= r.end;
+    let handles: Vec<_> = out
+        .exprs
+        .iter()
+        .filter(|(_, e)| {
+            gone.iter().any(|g| inside(e.span, g)) && !kept_spans.iter().any(|k| inside(e.span, k))
+        })
+        .map(|(h, _)| h)
+        .collect();
+    for h in handles {
+        out.exprs[h].kind = ExprKind::Number(crate::ir::Decimal::from_int(0));
+    }
 }
 
 fn ends(b: &Block) -> bool {

@@ -1,0 +1,84 @@
+//! The source machine's own functions (`aux` M codes) on a target that does
+//! not know them. A code is a number on one control: the same number on
+//! another control is another function, or none, so a code the target's
+//! spec does not list is not written as a live code where that would do
+//! harm:
+//!
+//! * a machine-datum code (`run="machine-datum"`, Heidenhain M92) puts
+//!   the block in machine coordinates: the target's machine-coordinate
+//!   form (G53, SUPA) carries that [?: M92's datum is the builder's, not
+//!   machine zero; the run treats it as M91 too]; W0610;
+//! * a code the source knows as a function that changes nothing the run
+//!   computes (`run="pass"`, Heidenhain M126 shortest rotary path) and the
+//!   target does not list becomes a comment naming it; W0610;
+//! * a code neither spec knows (a builder's) stays a code where the target
+//!   takes unknown M codes (reading it back warns, E0204), and becomes a
+//!   comment where the target refuses them (capability `strict-m-codes`:
+//!   LinuxCNC runs M100..M199 as user programs: a target's user-program
+//!   code of the same number, `run="user-program"`, counts as not
+//!   listed); W0610;
+//! * any other code the source knows (one that changes what the run
+//!   computes, or a kinematics function such as M128) stays as written:
+//!   the target's reading of it decides, and dropping it could change
+//!   what the machine does.
+
+use crate::diag::{Code, Diagnostic};
+use crate::dialect::spec::AuxRun;
+use crate::dialect::{Capability, DialectSpec, Meaning};
+use crate::ir::{CommentStyle, Program, Stmt, StmtKind};
+
+pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
+    for s in p.blocks.iter_mut().flat_map(|b| b.stmts.iter_mut()) {
+        if let Some(k) = replacement(s, from, to) {
+            diags.push(note(s, &k, from));
+            s.kind = k;
+        }
+    }
+}
+
+/// What an Aux code of the source becomes on the target, if not itself.
+fn replacement(s: &Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<StmtKind> {
+    let StmtKind::Aux { letter, code, words } = &s.kind else {
+        return None;
+    };
+    // A target's user-program code of the same number is not this code.
+    let target = to
+        .code(*letter, *code)
+        .filter(|c| c.run != AuxRun::UserProgram);
+    if *letter != 'M' || !words.is_empty() || target.is_some() {
+        return None;
+    }
+    let source = from.code(*letter, *code);
+    if from.is_machine_datum(&s.kind) && to.code_for(Meaning::MachineCoords).is_some() {
+        return Some(StmtKind::MachineCoords);
+    }
+    let harmless = source.is_some_and(|c| c.run == AuxRun::Pass);
+    if harmless || (source.is_none() && to.has(Capability::StrictMCodes)) {
+        let what = source.map_or(String::new(), |c| format!(": {}", c.doc));
+        return Some(StmtKind::Comment {
+            text: format!("M{}{what}", code.format(0, false)),
+            style: CommentStyle::Paren,
+        });
+    }
+    None
+}
+
+fn note(s: &Stmt, k: &StmtKind, from: &DialectSpec) -> Diagnostic {
+    let StmtKind::Aux { code, .. } = &s.kind else {
+        unreachable!("only Aux statements are replaced")
+    };
+    let m = format!("M{}", code.format(0, false));
+    let (msg, help) = match k {
+        StmtKind::MachineCoords => (
+            format!("{m} moves in machine coordinates from a datum of the machine builder: written in the target's machine coordinates"),
+            "check the position on the target machine: its machine zero may not be the builder's datum of the source".to_string(),
+        ),
+        _ => (
+            format!("{m} is a function of the {} machine the target does not list: written as a comment", from.name),
+            "if the target machine has a code for the same function, write it there by hand".to_string(),
+        ),
+    };
+    Diagnostic::new(Code::PortApproximate, msg)
+        .primary(s.span, "not carried as a code")
+        .help(help)
+}
