@@ -180,7 +180,8 @@ fn verify_port(
             opts: s.opts,
             diags: Vec::new(),
         };
-        let (e, mut d) = run_events(Rc::new(reread), s.target, &opts, &mut loader, fragment);
+        let topts = with_source_tools(&opts, s.target, &ea, diags);
+        let (e, mut d) = run_events(Rc::new(reread), s.target, &topts, &mut loader, fragment);
         d.extend(loader.diags.into_iter().filter(Diagnostic::is_error));
         (e, d)
     };
@@ -320,6 +321,44 @@ fn run_events(
     };
     let diags = crate::interp::fragment::run(p, &kind, spec, opts, loader, &mut sink);
     (out, diags)
+}
+
+/// The options of the ported program's run: a target that needs every
+/// tool in its tool table (no capability `control-holds-tools`: LinuxCNC)
+/// gets the tools the source's run changed to that the table lacks, as
+/// tools of no size (what the source's control held for them is not
+/// known either), so the comparison is of the paths. Each is reported:
+/// the target machine's table must list it.
+fn with_source_tools(
+    opts: &crate::interp::Options,
+    target: &DialectSpec,
+    source: &[crate::toolpath::Event],
+    diags: &mut Vec<Diagnostic>,
+) -> crate::interp::Options {
+    let mut o = opts.clone();
+    if target.has(crate::dialect::Capability::ControlHoldsTools) {
+        return o;
+    }
+    for e in source {
+        let crate::toolpath::Event::ToolChange { tool, span } = e else {
+            continue;
+        };
+        if *tool <= 0 || o.tool_table.get(*tool).is_some() {
+            continue;
+        }
+        o.tool_table
+            .tools
+            .push(crate::interp::tooltable::Tool::blank(*tool, String::new()));
+        diags.push(
+            Diagnostic::new(
+                Code::PortApproximate,
+                format!("{} needs tool {tool} in its tool table; the proof ran it as a tool of no size", target.name),
+            )
+            .primary(*span, "the source changes to this tool")
+            .help("add the tool to the machine's tool table (`--tool-table` gives the proof its sizes)"),
+        );
+    }
+    o
 }
 
 /// The tools of the run's tool table by name (a row's comment), when a

@@ -227,6 +227,7 @@ pub const CYCLE_KINDS: &[&str] = &[
     "contour",
     "thread-mill",
     "tolerance",
+    "datum-preset",
     "swivel",
     "blank",
     "structure",

@@ -61,7 +61,7 @@ fn machine_scale(it: &Interp<'_, '_>) -> f64 {
     }
 }
 
-fn work_offset(it: &mut Interp<'_, '_>, index: u32) {
+pub(crate) fn work_offset(it: &mut Interp<'_, '_>, index: u32) {
     if index == it.state.g5x_index {
         it.out(Canon::Comment(
             "interpreter: continuing to use same coordinate system".into(),

@@ -28,9 +28,16 @@ use crate::dialect::{Capability, DialectSpec, Meaning};
 use crate::ir::{CommentStyle, Program, Stmt, StmtKind};
 
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
+    let mut said: Vec<crate::ir::Decimal> = Vec::new();
     for s in p.blocks.iter_mut().flat_map(|b| b.stmts.iter_mut()) {
         if let Some(k) = replacement(s, from, to) {
-            diags.push(note(s, &k, from));
+            if let StmtKind::Aux { code, .. } = &s.kind {
+                // Once per code: the first place stands for the others.
+                if !said.contains(code) {
+                    said.push(*code);
+                    diags.push(note(s, &k, from));
+                }
+            }
             s.kind = k;
         }
     }

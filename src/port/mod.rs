@@ -45,6 +45,7 @@
 //! where it is (E0601, E0610..E0614, E0621..E0623); the writer reports
 //! the rest.
 
+mod after_cycle;
 mod arcs;
 mod blank;
 mod case;
@@ -115,18 +116,21 @@ pub fn port_program(
     funcs::run(&mut out, to);
     blank::run(&mut out, to, &mut diags);
     old_cycles::run(&mut out, to);
+    to_tnc::modes::presets_to_codes(&mut out, from, to);
     pockets::run(&mut out, from, to, &mut diags);
     from_tnc::run(&mut out, from, to, &mut diags);
     frame::run(&mut out, from, to);
     program_name::run(&mut out, to);
     named_tools::run(&mut out, to, &opts.tool_names, &mut diags);
     machine_functions::run(&mut out, from, to, &mut diags);
+    after_cycle::run(&mut out, from, to);
     from_tnc::subprograms::run(&mut out, from, to, &mut diags);
     poles::run(&mut out, from, to, &mut diags);
     to_named::run(&mut out, from, to, &mut diags);
     to_tnc::named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
     to_tnc::run(&mut out, from, to, &mut diags);
+    to_tnc::modes::run(&mut out, to, &mut diags);
     to_tnc::variables_and_flow(&mut out, to, &mut diags);
     from_tnc_flow::run(&mut out, from, to, &mut diags);
     decls::run(&mut out, to, &mut diags);

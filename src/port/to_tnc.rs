@@ -56,6 +56,7 @@ mod formulas;
 mod jumps;
 mod labels;
 mod loops;
+pub mod modes;
 pub mod named;
 mod osubs;
 pub mod sub_text;

@@ -62,6 +62,10 @@ pub fn define(
     for p in &def.params {
         vals.push((p.q, it.value(&p.value, exprs)?));
     }
+    if preset(it, def, &vals) {
+        it.heidenhain.cycle = None;
+        return Ok(());
+    }
     if def.number == 247 && it.heidenhain.once("preset".into()) {
         it.diags.push(
             crate::diag::Diagnostic::new(
@@ -78,6 +82,28 @@ pub fn define(
     });
     it.heidenhain.old_cycle = None;
     Ok(())
+}
+
+/// A `datum-preset` cycle (247) activating preset 1..9: the machine's
+/// work offset of that number, as G54..G59.3 select them (preset 1 is
+/// G54's, the convention ports and CAM posts use [?: the machine's
+/// preset table decides]). Another preset number is not run (W0517).
+fn preset(it: &mut Interp<'_, '_>, def: &crate::ir::CycleDef, vals: &[(u32, f64)]) -> bool {
+    let Some(sig) = it.spec.cycle(&def.number.to_string()) else {
+        return false;
+    };
+    if sig.kind != "datum-preset" {
+        return false;
+    }
+    let first = sig.params.first().and_then(|p| p.name.trim_start_matches('Q').parse::<u32>().ok());
+    let n = vals.iter().find(|(q, _)| Some(*q) == first).map(|(_, v)| *v);
+    match n {
+        Some(n) if n.fract() == 0.0 && (1.0..=9.0).contains(&n) => {
+            crate::interp::offsets::work_offset(it, n as u32);
+            true
+        }
+        _ => false,
+    }
 }
 
 /// A numbered cycle as the Siemens cycle that does the same.
