@@ -67,6 +67,11 @@ pub(super) fn differ(x: f64, y: f64) -> bool {
     (x - y).abs() > 1e-6 * x.abs().max(y.abs()).max(1.0)
 }
 
+/// Feeds and speeds: equal within [`super::RATE_TOLERANCE`] of the larger.
+pub(super) fn rates_differ(x: f64, y: f64) -> bool {
+    (x - y).abs() > super::RATE_TOLERANCE * x.abs().max(y.abs()).max(1.0)
+}
+
 impl<'a> Aligner<'a> {
     pub fn new(a: &'a Ops, b: &'a Ops, opts: &'a CompareOptions) -> Self {
         let out = Comparison {

@@ -31,6 +31,11 @@
 //! statement on each side. It stops after
 //! [`align::MAX_DIFFERENCES`] differences (`truncated`).
 
+/// Feeds and spindle speeds are the same within this fraction of their
+/// value (0.02 %): a target writing fewer decimal places rounds them
+/// (W0614), and no machine's feed or speed control resolves finer.
+pub const RATE_TOLERANCE: f64 = 2e-4;
+
 pub mod align;
 pub mod describe;
 pub mod ops;

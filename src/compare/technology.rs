@@ -27,7 +27,11 @@ impl Aligner<'_> {
         ];
         let mut found = None;
         for (kind, p, q) in checks {
-            if differ(p, q) {
+            let off = match kind {
+                DiffKind::Feed | DiffKind::Spindle => super::align::rates_differ(p, q),
+                _ => differ(p, q),
+            };
+            if off {
                 found = Some((kind, p, q));
                 break;
             }

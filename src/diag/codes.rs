@@ -241,6 +241,9 @@ codes! {
     PortDeadSubprogram = "W0613", "port-dead-subprogram", Warning,
         "a subprogram the program never calls, carried as comments",
         "The target has no form for something in a subprogram that this program never calls (a Heidenhain `LBL` after the program's end that no `CALL LBL` reaches, a LinuxCNC `o<name> sub` of the main file that no `call` reaches). Such a subprogram can only be called from its own program, so it never runs: `cncc port` writes its text as comments in the target, after the rest, so nothing is lost and nothing of it can run. The run must reach the program's end for this (a run that stops on an unknown value cannot show that the subprogram is never called). A numbered program of its own in the file (Fanuc `O2000`) may be called by other programs and is never treated so. Port it by hand, or delete it in the source, if the text is not wanted.";
+    RateRounded = "W0614", "rate-rounded", Warning,
+        "a feed or spindle speed rounded to the target's decimal places",
+        "The target writes feeds and speeds with fewer decimal places than the value has (a computed feed such as 33.333333, a CAM feed of 18.7734 for a control that writes three places). When rounding changes the value by less than 0.02 % (cncc's rate tolerance, the one `--verify` compares feeds and speeds with), it is written rounded and reported here: no machine resolves a feed that finely. A larger change is refused (E0603).";
     VerifyRapids = "W0611", "verify-rapids-differ", Warning,
         "the ported program's rapid moves differ from the source's",
         "`--verify` found the same cutting moves, but some rapid (G0) moves go elsewhere above the highest cutting height, or in the approach after a tool change (for example a cycle that returns to another clearance level). They do not cut, but check them for collisions. A differing rapid below the cutting height is an error (E0616).";

@@ -103,10 +103,40 @@ impl<'a> Writer<'a> {
         match format_number(d, kind, &self.spec.numbers, self.units) {
             Ok(s) => Some(s),
             Err(why) => {
+                if kind == NumKind::Feed {
+                    if let Some(s) = self.rounded_feed(d, span) {
+                        return Some(s);
+                    }
+                }
                 self.inexact(span, why);
                 None
             }
         }
+    }
+
+    /// A feed or speed with more decimal places than the target writes,
+    /// rounded to its places when that changes it by less than
+    /// [`crate::compare::RATE_TOLERANCE`] of its value (a feed of
+    /// 33.333333 as 33.333): far below what a machine's feed or speed
+    /// control resolves. W0614; a larger change stays E0603.
+    fn rounded_feed(&mut self, d: crate::ir::Decimal, span: Span) -> Option<String> {
+        let places = self.spec.numbers.feed_places;
+        let v = d.to_f64();
+        let r = crate::ir::Decimal::from_f64(v, places).normalized();
+        let off = (r.to_f64() - v).abs();
+        if !(off <= crate::compare::RATE_TOLERANCE * v.abs()) || r.to_f64() == 0.0 {
+            return None;
+        }
+        let text = format_number(r, NumKind::Feed, &self.spec.numbers, self.units).ok()?;
+        self.diags.push(
+            Diagnostic::new(
+                Code::RateRounded,
+                format!("`{d}` is written as `{text}`: {} writes feeds and speeds with {places} decimal places", self.spec.name),
+            )
+            .primary(span, "rounded")
+            .help("the difference is below what a machine resolves; round the value in the source to keep it exact"),
+        );
+        Some(text)
     }
 
     /// The code the target writes for a meaning (`G1`), or E0601.
