@@ -77,10 +77,6 @@ const NO_ROUND_TRIP: &[(&str, &str)] = &[
         "E0603: an inch feed with 4 places (F18.7734); the Fanuc spec writes feeds with 3 [?]",
     ),
     (
-        "field/fanuc/nick-burrill_SWCAM_CGIP09902.NC",
-        "E0603: an inch feed with 4 places; the Fanuc spec writes feeds with 3 [?]",
-    ),
-    (
         "field/fanuc/nick-burrill_SWCAM_CGIP11719.NC",
         "E0603: an inch feed with 4 places; the Fanuc spec writes feeds with 3 [?]",
     ),

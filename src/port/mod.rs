@@ -69,6 +69,7 @@ mod old_cycles;
 pub(crate) mod osubs;
 mod pockets;
 mod poles;
+mod program_end;
 mod program_name;
 mod ref_return;
 mod spf;
@@ -119,6 +120,7 @@ pub fn port_program(
     to_tnc::modes::presets_to_codes(&mut out, from, to);
     pockets::run(&mut out, from, to, &mut diags);
     from_tnc::run(&mut out, from, to, &mut diags);
+    program_end::run(&mut out, to);
     frame::run(&mut out, from, to);
     program_name::run(&mut out, to);
     named_tools::run(&mut out, to, &opts.tool_names, &mut diags);

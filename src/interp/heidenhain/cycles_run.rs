@@ -153,6 +153,11 @@ pub(super) fn call(
         surface,
     };
     let radius = super::mapping::tool_radius(it);
+    let mills = !matches!(def.number, 204 | 209 | 241);
+    if mills && radius == 0.0 && size_unknown(it) {
+        not_simulated(it, span, def.number);
+        return Ok(());
+    }
     let saved = it.state.feed;
     let (frame, scale) = (it.siemens.frame, it.state.scale());
     let mark = it.diags.len();
@@ -169,6 +174,29 @@ pub(super) fn call(
         }
     };
     finish(it, span, saved, mark, result)
+}
+
+/// The tool in the spindle is one the control holds and no table or
+/// program gave sizes for (W0592): its radius is not known here.
+fn size_unknown(it: &Interp<'_, '_>) -> bool {
+    it.spec.has(crate::dialect::Capability::ControlHoldsTools)
+        && it.tools_without_data.contains_key(&it.state.tool_in_spindle)
+}
+
+/// A milling cycle whose path depends on a radius not known here: its
+/// moves are not in the run (W0517), which goes on from where it was.
+fn not_simulated(it: &mut Interp<'_, '_>, span: Span, number: u32) {
+    if !it.heidenhain.once(format!("no radius {number}")) {
+        return;
+    }
+    it.diags.push(
+        crate::diag::Diagnostic::new(
+            crate::diag::Code::UnknownAtCheckTime,
+            format!("cycle {number} mills with the tool's radius, which is not known here: its moves are not in the run"),
+        )
+        .primary(span, "not simulated")
+        .help("give the tool's sizes (`--tool-table`, `TOOL DEF`) to check the cycle's path"),
+    );
 }
 
 /// After a cycle: the error with the call's span, the caller's feed rate
