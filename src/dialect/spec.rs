@@ -151,8 +151,9 @@ pub enum Capability {
     /// at the end of a program; the default is taken as keeping them.
     GlobalQParameters,
     /// The program itself must activate the tool length offset after a
-    /// tool change (G43 H on Fanuc, Haas, LinuxCNC); elsewhere the tool
-    /// call applies it (Siemens T/D, Heidenhain TOOL CALL). Lint W0702.
+    /// tool change (G43 H on Fanuc, Haas); elsewhere the tool call applies
+    /// it (Siemens T/D, Heidenhain TOOL CALL), or the shop touches off each
+    /// tool in the work offset (common on LinuxCNC). Lint W0702.
     LengthOffsetProgrammed,
     /// The length register of G43 names a tool: LinuxCNC reads tool H's
     /// table length; Fanuc and Haas shops number H as T by convention

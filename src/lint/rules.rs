@@ -53,7 +53,7 @@ pub const RULES: &[Rule] = &[
     Rule { code: Code::LintIncrementalToolChange, default: true, applies: always },
     Rule { code: Code::LintIncrementalCall, default: false, applies: always },
     Rule { code: Code::LintIncrementalAfterReturn, default: true, applies: always },
-    Rule { code: Code::LintRapidBelowCut, default: true, applies: always },
+    Rule { code: Code::LintRapidBelowCut, default: false, applies: always },
     Rule { code: Code::LintNoUnits, default: true, applies: always },
     Rule { code: Code::LintNoWorkOffset, default: false, applies: has_work_offsets },
     Rule { code: Code::LintCycleRBelowCut, default: true, applies: always },
@@ -85,6 +85,18 @@ fn is_feed(c: &Canon) -> bool {
         c,
         Canon::StraightFeed(_) | Canon::ArcFeed { .. } | Canon::NurbsFeed { .. } | Canon::RigidTap { .. }
     )
+}
+
+/// Where a motion call ends, x y z a b c in program units (None for a
+/// NURBS curve, whose end cncc does not keep here).
+fn pose_of(c: &Canon) -> Option<[f64; 6]> {
+    match c {
+        Canon::StraightTraverse(p) | Canon::StraightFeed(p) => Some(*p),
+        Canon::ArcFeed { first_end, second_end, axis_end, abc, .. } => {
+            Some([*first_end, *second_end, *axis_end, abc[0], abc[1], abc[2]])
+        }
+        _ => None,
+    }
 }
 
 /// The Z a motion call ends at, in program units (None: no Z in it).
@@ -122,14 +134,30 @@ impl Linter {
         if has(step, |k| matches!(k, StmtKind::WorkOffset { .. } | StmtKind::CoordShift { .. })) {
             self.work_offset_set = true;
         }
-        if moved {
+        // A block without axis words may still make a call that goes
+        // nowhere new (a resync after a tool change): not a move.
+        let written = has(step, |k| match k {
+            StmtKind::Motion(m) => {
+                !m.target.is_empty() || m.polar_radius.is_some() || m.polar_angle.is_some()
+            }
+            StmtKind::Approach(_) => true,
+            StmtKind::Cycle(_) | StmtKind::CycleCall(_) => true,
+            _ => false,
+        });
+        if moved && written {
             self.first_motion.get_or_insert(step.block.span);
             self.after_move(step, machine);
         }
         if has(step, |k| matches!(k, StmtKind::RefReturn { .. })) && !step.state.absolute {
             self.ref_return = Some(step.block.span);
         }
+        // `H..` alone while G43 is in force changes the offset register
+        // on Fanuc-like controls: the new tool's length is active.
+        if step.state.length_tool.is_some() && has(step, |k| matches!(k, StmtKind::OffsetRegister { letter: 'H', .. })) {
+            self.length_pending = None;
+        }
         self.last_z_mm = step.state.pos[2];
+        self.last_spindle = step.state.spindle;
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -148,16 +176,17 @@ impl Linter {
             Canon::ChangeTool(_) => {
                 self.length_pending = Some(span);
                 self.after_change = Some(span);
-                self.min_cut_mm = None;
+                self.forget_cuts();
             }
             Canon::UseToolLengthOffset(_) => {
                 self.length_pending = None;
                 self.other_tool(step, span);
             }
             Canon::UseLengthUnits(_) => self.units_set = true,
+            // (A program end resets to G54 with a call too: whether the
+            // program selects an offset is read from its statements.)
             Canon::SetG5xOffset { .. } | Canon::SetG92Offset(_) | Canon::SetXyRotation(_) => {
-                self.work_offset_set = true;
-                self.min_cut_mm = None;
+                self.forget_cuts()
             }
             Canon::SpindleCw | Canon::SpindleCcw => self.spindle_reported = false,
             Canon::ProgramEnd => self.ended = true,
@@ -166,7 +195,20 @@ impl Linter {
         if !is_motion(call) {
             return;
         }
-        *moved = true;
+        let pose = pose_of(call).map(|p| p.map(|v| v * scale));
+        if let (Some(p), Some(last)) = (pose, self.last_pose) {
+            if (3..6).any(|i| (p[i] / scale - last[i] / scale).abs() > 1e-6) {
+                // A rotary axis turned the part: heights of the cuts so
+                // far are in another orientation.
+                self.forget_cuts();
+            }
+        }
+        if pose.is_none_or(|p| self.last_pose.is_none_or(|l| (0..6).any(|i| (p[i] - l[i]).abs() > 1e-6))) {
+            *moved = true;
+        }
+        if pose.is_some() {
+            self.last_pose = pose;
+        }
         let z_mm = end_z(call).map(|z| z * scale);
         if let (Some(z), Some(s)) = (z_mm, self.length_pending) {
             if (z - self.last_z_mm).abs() > 1e-6 && !machine {
@@ -174,7 +216,7 @@ impl Linter {
                 self.report(
                     Diagnostic::new(
                         Code::LintNoLengthOffset,
-                        "Z moves after a tool change with no tool length offset active",
+                        "Z moves after a tool change before a length offset is activated for the new tool",
                     )
                     .primary(block, "first Z move of the new tool")
                     .secondary(s, "tool changed here")
@@ -183,23 +225,31 @@ impl Linter {
             }
         }
         if is_feed(call) {
-            self.spindle_stopped(step, block);
-            if let Some(z) = z_mm {
+            self.spindle_stopped(step, block, span);
+            if let (Some(z), Some(p)) = (z_mm, pose) {
                 if step.state.plane == CanonPlane::XY {
                     self.min_cut_mm = Some(self.min_cut_mm.map_or(z, |m: f64| m.min(z)));
+                    self.cut_box = Some(match self.cut_box {
+                        None => [p[0], p[1], p[0], p[1]],
+                        Some(b) => [b[0].min(p[0]), b[1].min(p[1]), b[2].max(p[0]), b[3].max(p[1])],
+                    });
                 }
             }
             self.below_reported = false;
-        } else if let (Some(z), false, false) = (z_mm, machine, cycle_ran) {
-            self.rapid_below(step, block, z);
+        } else if let (Some(z), Some(p), false, false) = (z_mm, pose, machine, cycle_ran) {
+            self.rapid_below(step, block, z, [p[0], p[1]]);
         }
         if let Some(z) = z_mm {
             self.last_z_mm = z;
         }
     }
 
-    fn spindle_stopped(&mut self, step: &Step<'_>, block: Span) {
-        if step.state.spindle != SpindleDir::Stopped || self.spindle_reported {
+    fn spindle_stopped(&mut self, step: &Step<'_>, block: Span, call: Span) {
+        // A move an earlier block made and a later one let out (a held
+        // corner) ran with the spindle as that earlier block left it.
+        let inside = call.file == block.file && block.start <= call.start && call.start <= block.end;
+        let spindle = if inside { step.state.spindle } else { self.last_spindle };
+        if spindle != SpindleDir::Stopped || self.spindle_reported {
             return;
         }
         self.spindle_reported = true;
@@ -210,11 +260,12 @@ impl Linter {
         );
     }
 
-    fn rapid_below(&mut self, step: &Step<'_>, block: Span, z: f64) {
+    fn rapid_below(&mut self, step: &Step<'_>, block: Span, z: f64, xy: [f64; 2]) {
         let Some(min) = self.min_cut_mm else { return };
         if step.state.plane != CanonPlane::XY
             || self.below_reported
             || z >= min - self.cfg.below_tolerance_mm
+            || !self.over_cuts(xy)
         {
             return;
         }
@@ -232,6 +283,22 @@ impl Linter {
             .primary(block, "rapid into material not cut yet")
             .help("retract, or feed (G1) down from the last cutting height"),
         );
+    }
+
+    /// Whether a point (mm) lies over the area this tool has cut (the box
+    /// round its feed moves): outside it the tool may well be in the air
+    /// beside the part, as CAM systems plunge for the next level.
+    fn over_cuts(&self, xy: [f64; 2]) -> bool {
+        let t = 1e-6;
+        self.cut_box
+            .is_some_and(|b| xy[0] >= b[0] - t && xy[1] >= b[1] - t && xy[0] <= b[2] + t && xy[1] <= b[3] + t)
+    }
+
+    /// The cuts so far no longer tell where material is (a tool change,
+    /// another work offset, a rotary axis turned).
+    pub(super) fn forget_cuts(&mut self) {
+        self.min_cut_mm = None;
+        self.cut_box = None;
     }
 
     fn other_tool(&mut self, step: &Step<'_>, span: Span) {
@@ -257,9 +324,14 @@ impl Linter {
         if !has(step, |k| matches!(k, StmtKind::Cycle(_))) {
             return;
         }
-        if let Some(min) = self.min_cut_mm {
+        let hole = step.calls.iter().find_map(|(c, _)| pose_of(c)).map(|p| [p[0] * scale, p[1] * scale]);
+        if let (Some(min), Some(xy)) = (self.min_cut_mm, hole) {
             let r = step.cycles.r * scale;
-            if step.state.absolute && step.state.plane == CanonPlane::XY && r < min - self.cfg.below_tolerance_mm {
+            if step.state.absolute
+                && step.state.plane == CanonPlane::XY
+                && r < min - self.cfg.below_tolerance_mm
+                && self.over_cuts(xy)
+            {
                 self.report(
                     Diagnostic::new(
                         Code::LintCycleRBelowCut,
