@@ -147,16 +147,16 @@ fn read_file(path: &Path) -> Result<LintTable, String> {
 }
 
 fn build(t: &LintTable, cli: &CliSelect) -> Result<LintConfig, String> {
-    let select = cli.select.as_ref().or(t.select.as_ref());
-    let mut extend: Vec<&String> = t.extend_select.iter().collect();
-    extend.extend(cli.extend_select.iter());
-    let ignore: Vec<&String> = t.ignore.iter().chain(cli.ignore.iter()).collect();
-    for s in select
-        .into_iter()
+    for s in t
+        .select
+        .iter()
         .flatten()
-        .chain(extend.iter().copied())
-        .chain(ignore.iter().copied())
-        .chain(t.error.iter())
+        .chain(&t.extend_select)
+        .chain(&t.ignore)
+        .chain(&t.error)
+        .chain(cli.select.iter().flatten())
+        .chain(&cli.extend_select)
+        .chain(&cli.ignore)
     {
         if !RULES.iter().any(|r| specificity(s, r).is_some()) {
             return Err(format!(
@@ -165,22 +165,10 @@ fn build(t: &LintTable, cli: &CliSelect) -> Result<LintConfig, String> {
         }
     }
     let mut cfg = LintConfig::default();
-    cfg.enabled = RULES
-        .iter()
-        .filter(|r| {
-            let chosen = match select {
-                Some(list) => best(list.iter(), r),
-                None => r.default.then_some(0),
-            };
-            let chosen = chosen.max(best(extend.iter().copied(), r));
-            let dropped = best(ignore.iter().copied(), r);
-            match (chosen, dropped) {
-                (Some(c), Some(d)) => c > d,
-                (c, _) => c.is_some(),
-            }
-        })
-        .map(|r| r.code)
-        .collect();
+    // Two layers, as ruff has them: the file's, then the command line's;
+    // in each the more specific selector wins.
+    let file: Vec<Code> = layer(&cfg.enabled, t.select.as_ref(), &t.extend_select, &t.ignore);
+    cfg.enabled = layer(&file, cli.select.as_ref(), &cli.extend_select, &cli.ignore);
     cfg.errors = RULES
         .iter()
         .filter(|r| best(t.error.iter(), r).is_some())
@@ -199,6 +187,25 @@ fn build(t: &LintTable, cli: &CliSelect) -> Result<LintConfig, String> {
         cfg.below_tolerance_mm = r.tolerance_mm;
     }
     Ok(cfg)
+}
+
+/// One layer of selection over the rules `before` it enabled.
+fn layer(before: &[Code], select: Option<&Vec<String>>, extend: &[String], ignore: &[String]) -> Vec<Code> {
+    RULES
+        .iter()
+        .filter(|r| {
+            let chosen = match select {
+                Some(list) => best(list.iter(), r),
+                None => before.contains(&r.code).then_some(0),
+            };
+            let chosen = chosen.max(best(extend.iter(), r));
+            match (chosen, best(ignore.iter(), r)) {
+                (Some(c), Some(d)) => c > d,
+                (c, _) => c.is_some(),
+            }
+        })
+        .map(|r| r.code)
+        .collect()
 }
 
 /// The most specific selector of `list` that picks `rule`.
