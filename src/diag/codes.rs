@@ -602,6 +602,15 @@ codes! {
     LintPeckTooDeep = "W0713", "peck-too-deep", Warning,
         "a peck drilling step deeper than 3 tool diameters",
         "The peck depth (Q of G83/G73) is larger than the tool diameter times a factor (3 by default; `[lint.peck-too-deep] max-diameters` in cncc.toml). Chips pack and small drills break. Checked only when the tool's diameter is known (a tool table or the program's tool list).\n\nBad:\n    (T1 D=3 drill)\n    G83 Z-30. R2. Q15. F60.\n\nGood:\n    G83 Z-30. R2. Q6. F60.";
+    LintStopWithoutMessage = "W0714", "stop-without-message", Warning,
+        "an M0/M1 stop with no message before it",
+        "The program stops (M0, or M1 with optional stop on) and nothing tells the operator why: no comment or message in the stop's block or the block before. Shops that want each stop explained select this rule; off by default.\n\nBad:\n    G0 Z50.\n    M0\n\nGood:\n    G0 Z50.\n    (TURN THE PART OVER)\n    M0";
+    LintCuttingWithoutCoolant = "W0715", "cutting-without-coolant", Warning,
+        "a tool cuts with coolant off after an earlier tool cut with it on",
+        "An earlier tool of the program cut with coolant (M7/M8) on, and this tool cuts with all coolant off: often an M8 forgotten after the tool change. Off by default: dry cutting (cast iron, graphite, some finishing passes) is a choice.\n\nBad:\n    T1 M6\n    S1000 M3 M8\n    G1 Z-1. F100.\n    T2 M6\n    S1000 M3\n    G1 Z-1. F100.\n\nGood:\n    T2 M6\n    S1000 M3 M8\n    G1 Z-1. F100.";
+    LintSpindleSpeedZero = "W0716", "spindle-speed-zero", Warning,
+        "a cutting move with the spindle on at speed 0",
+        "The spindle is switched on (M3/M4) but the programmed speed is 0 (`S0 M3`, or no S since the start), so the tool does not turn while it cuts. Usually a post that lost the speed of a tool.\n\nBad:\n    T1 M6\n    S0 M3\n    G1 Z-1. F100.\n\nGood:\n    T1 M6\n    S3000 M3\n    G1 Z-1. F100.";
 }
 
 impl Code {

@@ -46,6 +46,8 @@ struct Source {
     any_end: bool,
     content: bool,
     last: Option<Span>,
+    /// The last block with content had a comment or message (W0714).
+    told: bool,
 }
 
 /// The lint of one program's run.
@@ -69,6 +71,9 @@ pub struct Linter {
     last_spindle: crate::interp::host::SpindleDir,
     last_z_mm: f64,
     spindle_reported: bool,
+    speed_reported: bool,
+    had_coolant: bool,
+    coolant_reported: bool,
     below_reported: bool,
     units_set: bool,
     work_offset_set: bool,
@@ -117,6 +122,9 @@ impl Linter {
             last_spindle: crate::interp::host::SpindleDir::Stopped,
             last_z_mm: 0.0,
             spindle_reported: false,
+            speed_reported: false,
+            had_coolant: false,
+            coolant_reported: false,
             below_reported: false,
             units_set: false,
             work_offset_set: false,
@@ -158,10 +166,32 @@ impl Linter {
         for s in &b.stmts {
             self.read_stmt(&s.kind, b.span);
         }
+        self.stop_message(b);
         if !comments_only {
             self.src.content = true;
             self.src.last = Some(b.span);
         }
+    }
+
+    /// W0714: an M0/M1 with no comment or message in its block or the
+    /// block before.
+    fn stop_message(&mut self, b: &Block) {
+        let said = b
+            .stmts
+            .iter()
+            .any(|s| matches!(s.kind, StmtKind::Comment { .. } | StmtKind::Message(_)));
+        let stop = b
+            .stmts
+            .iter()
+            .any(|s| matches!(s.kind, StmtKind::Stop(StopKind::Program | StopKind::Optional)));
+        if stop && !said && !self.src.told {
+            self.report(
+                Diagnostic::new(Code::LintStopWithoutMessage, "the program stops with no message to the operator")
+                    .primary(b.span, "stop")
+                    .help("say why in a comment or message in this block or the one before"),
+            );
+        }
+        self.src.told = said;
     }
 
     fn read_stmt(&mut self, k: &StmtKind, block: Span) {

@@ -58,6 +58,9 @@ pub const RULES: &[Rule] = &[
     Rule { code: Code::LintNoWorkOffset, default: false, applies: has_work_offsets },
     Rule { code: Code::LintCycleRBelowCut, default: true, applies: always },
     Rule { code: Code::LintPeckTooDeep, default: true, applies: always },
+    Rule { code: Code::LintStopWithoutMessage, default: false, applies: always },
+    Rule { code: Code::LintCuttingWithoutCoolant, default: false, applies: always },
+    Rule { code: Code::LintSpindleSpeedZero, default: true, applies: always },
 ];
 
 /// The rule of a code, if it is a lint code.
@@ -176,6 +179,7 @@ impl Linter {
             Canon::ChangeTool(_) => {
                 self.length_pending = Some(span);
                 self.after_change = Some(span);
+                self.coolant_reported = false;
                 self.forget_cuts();
             }
             Canon::UseToolLengthOffset(_) => {
@@ -189,6 +193,7 @@ impl Linter {
                 self.forget_cuts()
             }
             Canon::SpindleCw | Canon::SpindleCcw => self.spindle_reported = false,
+            Canon::SetSpindleSpeed(_) => self.speed_reported = false,
             Canon::ProgramEnd => self.ended = true,
             _ => {}
         }
@@ -249,6 +254,7 @@ impl Linter {
         // corner) ran with the spindle as that earlier block left it.
         let inside = call.file == block.file && block.start <= call.start && call.start <= block.end;
         let spindle = if inside { step.state.spindle } else { self.last_spindle };
+        self.speed_and_coolant(step, block, spindle);
         if spindle != SpindleDir::Stopped || self.spindle_reported {
             return;
         }
@@ -258,6 +264,30 @@ impl Linter {
                 .primary(block, "feed move with no M3/M4 in force")
                 .help("start the spindle (S.. M3) before the first cutting move of each tool; later moves of this stretch are not reported"),
         );
+    }
+
+    /// W0716 and W0715, at a feed move.
+    fn speed_and_coolant(&mut self, step: &Step<'_>, block: Span, spindle: SpindleDir) {
+        let st = step.state;
+        if spindle != SpindleDir::Stopped && st.speed <= 0.0 && !self.speed_reported {
+            self.speed_reported = true;
+            self.report(
+                Diagnostic::new(Code::LintSpindleSpeedZero, "cutting move with the spindle on at speed 0")
+                    .primary(block, "feed move at S0")
+                    .help("program the tool's speed (S..) with M3/M4"),
+            );
+        }
+        let coolant = st.flood || st.mist;
+        if coolant {
+            self.had_coolant = true;
+        } else if self.had_coolant && !self.coolant_reported {
+            self.coolant_reported = true;
+            self.report(
+                Diagnostic::new(Code::LintCuttingWithoutCoolant, "this tool cuts with coolant off; an earlier tool had it on")
+                    .primary(block, "feed move with no M7/M8")
+                    .help("switch the coolant on (M8) after the tool change, or ignore W0715 for dry cutting"),
+            );
+        }
     }
 
     fn rapid_below(&mut self, step: &Step<'_>, block: Span, z: f64, xy: [f64; 2]) {
