@@ -610,7 +610,7 @@ codes! {
         "An earlier tool of the program cut with coolant (M7/M8) on, and this tool cuts with all coolant off: often an M8 forgotten after the tool change. Off by default: dry cutting (cast iron, graphite, some finishing passes) is a choice.\n\nBad:\n    T1 M6\n    S1000 M3 M8\n    G1 Z-1. F100.\n    T2 M6\n    S1000 M3\n    G1 Z-1. F100.\n\nGood:\n    T2 M6\n    S1000 M3 M8\n    G1 Z-1. F100.";
     LintSpindleSpeedZero = "W0716", "spindle-speed-zero", Warning,
         "a cutting move with the spindle on at speed 0",
-        "The spindle is switched on (M3/M4) but the programmed speed is 0 (`S0 M3`, or no S since the start), so the tool does not turn while it cuts. Usually a post that lost the speed of a tool.\n\nBad:\n    T1 M6\n    S0 M3\n    G1 Z-1. F100.\n\nGood:\n    T1 M6\n    S3000 M3\n    G1 Z-1. F100.";
+        "The spindle is switched on (M3/M4) but the program set the speed to 0 (`S0 M3`, `TOOL CALL 1 Z S0`), so the tool does not turn while it cuts. Usually a post that lost the speed of a tool. A program that never gives S runs at the control's last speed, which cncc cannot know: not reported.\n\nBad:\n    T1 M6\n    S0 M3\n    G1 Z-1. F100.\n\nGood:\n    T1 M6\n    S3000 M3\n    G1 Z-1. F100.";
 }
 
 impl Code {

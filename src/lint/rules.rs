@@ -193,7 +193,10 @@ impl Linter {
                 self.forget_cuts()
             }
             Canon::SpindleCw | Canon::SpindleCcw => self.spindle_reported = false,
-            Canon::SetSpindleSpeed(_) => self.speed_reported = false,
+            Canon::SetSpindleSpeed(_) => {
+                self.speed_reported = false;
+                self.speed_programmed = true;
+            }
             Canon::ProgramEnd => self.ended = true,
             _ => {}
         }
@@ -269,7 +272,8 @@ impl Linter {
     /// W0716 and W0715, at a feed move.
     fn speed_and_coolant(&mut self, step: &Step<'_>, block: Span, spindle: SpindleDir) {
         let st = step.state;
-        if spindle != SpindleDir::Stopped && st.speed <= 0.0 && !self.speed_reported {
+        // A speed the program never set is the control's last one, not 0.
+        if spindle != SpindleDir::Stopped && st.speed <= 0.0 && self.speed_programmed && !self.speed_reported {
             self.speed_reported = true;
             self.report(
                 Diagnostic::new(Code::LintSpindleSpeedZero, "cutting move with the spindle on at speed 0")
