@@ -12,7 +12,11 @@ fn lint_codes(args: &[&str]) -> BTreeSet<String> {
     let mut a = vec!["check", "--format", "json"];
     a.extend_from_slice(args);
     let o = cncc(&a);
-    assert!(matches!(o.status.code(), Some(0) | Some(1)), "{}", stderr(&o));
+    assert!(
+        matches!(o.status.code(), Some(0) | Some(1)),
+        "{}",
+        stderr(&o)
+    );
     stderr(&o)
         .lines()
         .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
@@ -29,15 +33,23 @@ fn every_rule_has_a_bad_and_a_good_program_in_two_dialects() {
         let path = e.unwrap().path();
         let name = path.file_stem().unwrap().to_str().unwrap().to_string();
         let parts: Vec<&str> = name.split('-').collect();
-        let [code, dialect, kind] = parts[..] else { panic!("{name}: CODE-DIALECT-bad|good") };
+        let [code, dialect, kind] = parts[..] else {
+            panic!("{name}: CODE-DIALECT-bad|good")
+        };
         let p = path.to_str().unwrap();
         let found = lint_codes(&["--dialect", dialect, "--select", "ALL", p]);
         match kind {
-            "bad" => assert!(found.contains(code), "{name}: {code} not reported ({found:?})"),
+            "bad" => assert!(
+                found.contains(code),
+                "{name}: {code} not reported ({found:?})"
+            ),
             "good" => assert!(found.is_empty(), "{name}: reported {found:?}"),
             _ => panic!("{name}"),
         }
-        dialects.entry(code.to_string()).or_default().insert(dialect.to_string());
+        dialects
+            .entry(code.to_string())
+            .or_default()
+            .insert(dialect.to_string());
     }
     for rule in cncc::lint::rules::RULES {
         let code = rule.code.code();
@@ -45,7 +57,10 @@ fn every_rule_has_a_bad_and_a_good_program_in_two_dialects() {
         assert!(n >= 2, "{code}: programs in {n} dialect(s)");
         let o = cncc(&["explain", code]);
         let text = stdout(&o);
-        assert!(text.contains("Bad:") && text.contains("Good:"), "{code}: explain text");
+        assert!(
+            text.contains("Bad:") && text.contains("Good:"),
+            "{code}: explain text"
+        );
     }
 }
 
@@ -58,9 +73,19 @@ fn defaults_leave_out_the_rules_often_wrong() {
     let p = "tests/programs/lint/W0701-fanuc-bad.nc";
     assert!(lint_codes(&["--dialect", "fanuc", p]).contains("W0701"));
     // A finding is a warning: the check still passes.
-    assert_eq!(cncc(&["check", "--dialect", "fanuc", p]).status.code(), Some(0));
+    assert_eq!(
+        cncc(&["check", "--dialect", "fanuc", p]).status.code(),
+        Some(0)
+    );
     assert!(lint_codes(&["--dialect", "fanuc", "--no-lint", p]).is_empty());
-    assert!(lint_codes(&["--dialect", "fanuc", "--ignore", "feed-with-spindle-stopped", p]).is_empty());
+    assert!(lint_codes(&[
+        "--dialect",
+        "fanuc",
+        "--ignore",
+        "feed-with-spindle-stopped",
+        p
+    ])
+    .is_empty());
 }
 
 #[test]
@@ -81,7 +106,11 @@ fn the_shops_cncc_toml_selects_ignores_and_raises() {
     assert!(stderr(&o).contains("error[W0711 no-work-offset]"));
     // The command line's --ignore comes after the file's selection.
     assert!(lint_codes(&["--dialect", "fanuc", "--ignore", "W07", p]).is_empty());
-    std::fs::write(dir.path().join("cncc.toml"), "[lint]\nselect = [\"E0201\"]\n").unwrap();
+    std::fs::write(
+        dir.path().join("cncc.toml"),
+        "[lint]\nselect = [\"E0201\"]\n",
+    )
+    .unwrap();
     let o = cncc(&["check", "--dialect", "fanuc", p]);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("not a lint rule"), "{}", stderr(&o));
@@ -103,7 +132,10 @@ fn inline_directives_in_each_comment_syntax() {
         assert!(lint_codes(&["--dialect", d, p]).is_empty(), "{name}");
         let plain = text.replace("cncc:", "note:");
         std::fs::write(p, plain).unwrap();
-        assert!(lint_codes(&["--dialect", d, p]).contains("W0701"), "{name} without the directive");
+        assert!(
+            lint_codes(&["--dialect", d, p]).contains("W0701"),
+            "{name} without the directive"
+        );
     }
 }
 
@@ -124,7 +156,14 @@ fn sarif_output_for_ci() {
     let idx = r["ruleIndex"].as_u64().unwrap() as usize;
     assert_eq!(run["tool"]["driver"]["rules"][idx]["id"], "W0703");
     // A clean program still gets a document, with no results.
-    let o = cncc(&["check", "--dialect", "fanuc", "--format", "sarif", "tests/programs/lint/W0703-fanuc-good.nc"]);
+    let o = cncc(&[
+        "check",
+        "--dialect",
+        "fanuc",
+        "--format",
+        "sarif",
+        "tests/programs/lint/W0703-fanuc-good.nc",
+    ]);
     let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(v["runs"][0]["results"].as_array().unwrap().len(), 0);
 }

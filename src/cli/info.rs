@@ -27,7 +27,15 @@ pub fn explain(code: Option<&str>) -> Result<i32, Failure> {
             None if Code::ALL.iter().any(|k| starts(k, c)) => Code::ALL
                 .iter()
                 .filter(|k| starts(k, c))
-                .map(|k| format!("{} {:<36} {}{}\n", k.code(), k.name(), k.summary(), lint_default(*k)))
+                .map(|k| {
+                    format!(
+                        "{} {:<36} {}{}\n",
+                        k.code(),
+                        k.name(),
+                        k.summary(),
+                        lint_default(*k)
+                    )
+                })
                 .collect(),
             None => {
                 eprintln!("error: no diagnostic code `{c}`; `cncc explain` lists them all");

@@ -83,7 +83,13 @@ fn result(d: &Diagnostic, rule_index: usize, files: &SourceMap) -> Value {
             "message": { "text": l.message },
         })
     };
-    let primary: Vec<Value> = d.labels.iter().filter(|l| l.primary).take(1).map(loc).collect();
+    let primary: Vec<Value> = d
+        .labels
+        .iter()
+        .filter(|l| l.primary)
+        .take(1)
+        .map(loc)
+        .collect();
     let related: Vec<Value> = d
         .labels
         .iter()

@@ -211,8 +211,14 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("splines", Capability::Splines),
     ("global-q-parameters", Capability::GlobalQParameters),
     ("comp-without-register", Capability::CompWithoutRegister),
-    ("length-offset-programmed", Capability::LengthOffsetProgrammed),
-    ("length-register-names-tool", Capability::LengthRegisterNamesTool),
+    (
+        "length-offset-programmed",
+        Capability::LengthOffsetProgrammed,
+    ),
+    (
+        "length-register-names-tool",
+        Capability::LengthRegisterNamesTool,
+    ),
 ];
 
 impl Capability {

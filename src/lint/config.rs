@@ -190,7 +190,12 @@ fn build(t: &LintTable, cli: &CliSelect) -> Result<LintConfig, String> {
 }
 
 /// One layer of selection over the rules `before` it enabled.
-fn layer(before: &[Code], select: Option<&Vec<String>>, extend: &[String], ignore: &[String]) -> Vec<Code> {
+fn layer(
+    before: &[Code],
+    select: Option<&Vec<String>>,
+    extend: &[String],
+    ignore: &[String],
+) -> Vec<Code> {
     RULES
         .iter()
         .filter(|r| {
@@ -269,7 +274,8 @@ mod tests {
             select: Some(vec!["W0710".into()]),
             ..Default::default()
         };
-        let c = LintConfig::from_toml("[lint]\nselect=[\"W0701\"]\nerror=[\"W0710\"]\n", &cli).unwrap();
+        let c =
+            LintConfig::from_toml("[lint]\nselect=[\"W0701\"]\nerror=[\"W0710\"]\n", &cli).unwrap();
         assert!(!c.is_enabled(Code::LintFeedSpindleStopped));
         assert!(c.is_enabled(Code::LintNoUnits));
         assert_eq!(c.severity(Code::LintNoUnits), Severity::Error);
@@ -277,8 +283,12 @@ mod tests {
 
     #[test]
     fn unknown_selectors_and_keys_are_refused() {
-        assert!(LintConfig::from_toml("[lint]\nselect=[\"E0201\"]\n", &CliSelect::default()).is_err());
-        assert!(LintConfig::from_toml("[lint]\nselekt=[\"W07\"]\n", &CliSelect::default()).is_err());
+        assert!(
+            LintConfig::from_toml("[lint]\nselect=[\"E0201\"]\n", &CliSelect::default()).is_err()
+        );
+        assert!(
+            LintConfig::from_toml("[lint]\nselekt=[\"W07\"]\n", &CliSelect::default()).is_err()
+        );
         let c = cfg("[lint.peck-too-deep]\nmax-diameters = 5\n");
         assert_eq!(c.peck_max_diameters, 5.0);
     }

@@ -60,7 +60,10 @@ impl Directives {
         }
         let Some(at) = d.span() else { return false };
         self.blocks.iter().any(|(s, c)| {
-            s.file == at.file && s.start <= at.start && at.start < s.end.max(s.start + 1) && names(c)
+            s.file == at.file
+                && s.start <= at.start
+                && at.start < s.end.max(s.start + 1)
+                && names(c)
         })
     }
 }
@@ -81,13 +84,16 @@ pub fn parse(text: &str) -> Vec<(bool, Codes)> {
         } else {
             continue;
         };
-        let codes = after.strip_prefix('[').and_then(|r| r.find(']').map(|j| &r[..j])).map(|list| {
-            list.split([',', ' '])
-                .filter(|s| !s.is_empty())
-                .filter_map(Code::lookup)
-                .filter(|c| super::rules::rule(*c).is_some())
-                .collect::<Vec<_>>()
-        });
+        let codes = after
+            .strip_prefix('[')
+            .and_then(|r| r.find(']').map(|j| &r[..j]))
+            .map(|list| {
+                list.split([',', ' '])
+                    .filter(|s| !s.is_empty())
+                    .filter_map(Code::lookup)
+                    .filter(|c| super::rules::rule(*c).is_some())
+                    .collect::<Vec<_>>()
+            });
         out.push((file, codes));
     }
     out
@@ -99,13 +105,22 @@ mod tests {
 
     #[test]
     fn directives_in_comment_text() {
-        assert_eq!(parse("cncc: ignore[W0701]"), vec![(false, Some(vec![Code::LintFeedSpindleStopped]))]);
+        assert_eq!(
+            parse("cncc: ignore[W0701]"),
+            vec![(false, Some(vec![Code::LintFeedSpindleStopped]))]
+        );
         assert_eq!(
             parse("probe move  CNCC: ignore[w0701, rapid-below-cut]"),
-            vec![(false, Some(vec![Code::LintFeedSpindleStopped, Code::LintRapidBelowCut]))]
+            vec![(
+                false,
+                Some(vec![Code::LintFeedSpindleStopped, Code::LintRapidBelowCut])
+            )]
         );
         assert_eq!(parse("cncc: ignore"), vec![(false, None)]);
-        assert_eq!(parse("cncc: ignore-file[W0710]"), vec![(true, Some(vec![Code::LintNoUnits]))]);
+        assert_eq!(
+            parse("cncc: ignore-file[W0710]"),
+            vec![(true, Some(vec![Code::LintNoUnits]))]
+        );
         assert!(parse("cncc is great").is_empty());
     }
 }

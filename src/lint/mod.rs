@@ -182,15 +182,20 @@ impl Linter {
             .stmts
             .iter()
             .any(|s| matches!(s.kind, StmtKind::Comment { .. } | StmtKind::Message(_)));
-        let stop = b
-            .stmts
-            .iter()
-            .any(|s| matches!(s.kind, StmtKind::Stop(StopKind::Program | StopKind::Optional)));
+        let stop = b.stmts.iter().any(|s| {
+            matches!(
+                s.kind,
+                StmtKind::Stop(StopKind::Program | StopKind::Optional)
+            )
+        });
         if stop && !said && !self.src.told {
             self.report(
-                Diagnostic::new(Code::LintStopWithoutMessage, "the program stops with no message to the operator")
-                    .primary(b.span, "stop")
-                    .help("say why in a comment or message in this block or the one before"),
+                Diagnostic::new(
+                    Code::LintStopWithoutMessage,
+                    "the program stops with no message to the operator",
+                )
+                .primary(b.span, "stop")
+                .help("say why in a comment or message in this block or the one before"),
             );
         }
         self.src.told = said;
@@ -238,7 +243,10 @@ impl Linter {
             .collect();
         for (code, n) in dropped {
             if let Some(d) = kept.iter_mut().find(|d| d.code == code) {
-                d.notes.push(format!("{n} {} findings in all; the first {MAX_PER_RULE} are kept", code.code()));
+                d.notes.push(format!(
+                    "{n} {} findings in all; the first {MAX_PER_RULE} are kept",
+                    code.code()
+                ));
             }
         }
         kept
@@ -258,24 +266,34 @@ impl Linter {
         }
         if !self.work_offset_set {
             self.report(
-                Diagnostic::new(Code::LintNoWorkOffset, "the program never selects a work offset")
-                    .primary(first, "first move, in whichever work offset is active")
-                    .help("select the work offset at the top (G54..)"),
+                Diagnostic::new(
+                    Code::LintNoWorkOffset,
+                    "the program never selects a work offset",
+                )
+                .primary(first, "first move, in whichever work offset is active")
+                .help("select the work offset at the top (G54..)"),
             );
         }
-        if let (Some(end), Some(mv), false) = (self.src.end, self.src.move_after_end, self.src.flow) {
+        if let (Some(end), Some(mv), false) = (self.src.end, self.src.move_after_end, self.src.flow)
+        {
             self.report(
-                Diagnostic::new(Code::LintMoveAfterEnd, "moves after the program end are never run")
-                    .primary(mv, "never run")
-                    .secondary(end, "the program ends here"),
+                Diagnostic::new(
+                    Code::LintMoveAfterEnd,
+                    "moves after the program end are never run",
+                )
+                .primary(mv, "never run")
+                .secondary(end, "the program ends here"),
             );
         }
         if end.complete && !self.ended && !self.src.any_end {
             if let Some(last) = self.src.last {
                 self.report(
-                    Diagnostic::new(Code::LintNoProgramEnd, "the program runs off its last block without a program end")
-                        .primary(last, "last block")
-                        .help("end the program with M30 (or M2)"),
+                    Diagnostic::new(
+                        Code::LintNoProgramEnd,
+                        "the program runs off its last block without a program end",
+                    )
+                    .primary(last, "last block")
+                    .help("end the program with M30 (or M2)"),
                 );
             }
         }

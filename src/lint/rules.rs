@@ -45,22 +45,86 @@ fn has_work_offsets(s: &DialectSpec) -> bool {
 }
 
 pub const RULES: &[Rule] = &[
-    Rule { code: Code::LintFeedSpindleStopped, default: true, applies: always },
-    Rule { code: Code::LintNoLengthOffset, default: true, applies: length_programmed },
-    Rule { code: Code::LintLengthOffsetOtherTool, default: true, applies: register_names_tool },
-    Rule { code: Code::LintNoProgramEnd, default: true, applies: end_optional },
-    Rule { code: Code::LintMoveAfterEnd, default: true, applies: always },
-    Rule { code: Code::LintIncrementalToolChange, default: true, applies: always },
-    Rule { code: Code::LintIncrementalCall, default: false, applies: always },
-    Rule { code: Code::LintIncrementalAfterReturn, default: true, applies: always },
-    Rule { code: Code::LintRapidBelowCut, default: false, applies: always },
-    Rule { code: Code::LintNoUnits, default: true, applies: always },
-    Rule { code: Code::LintNoWorkOffset, default: false, applies: has_work_offsets },
-    Rule { code: Code::LintCycleRBelowCut, default: true, applies: always },
-    Rule { code: Code::LintPeckTooDeep, default: true, applies: always },
-    Rule { code: Code::LintStopWithoutMessage, default: false, applies: always },
-    Rule { code: Code::LintCuttingWithoutCoolant, default: false, applies: always },
-    Rule { code: Code::LintSpindleSpeedZero, default: true, applies: always },
+    Rule {
+        code: Code::LintFeedSpindleStopped,
+        default: true,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintNoLengthOffset,
+        default: true,
+        applies: length_programmed,
+    },
+    Rule {
+        code: Code::LintLengthOffsetOtherTool,
+        default: true,
+        applies: register_names_tool,
+    },
+    Rule {
+        code: Code::LintNoProgramEnd,
+        default: true,
+        applies: end_optional,
+    },
+    Rule {
+        code: Code::LintMoveAfterEnd,
+        default: true,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintIncrementalToolChange,
+        default: true,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintIncrementalCall,
+        default: false,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintIncrementalAfterReturn,
+        default: true,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintRapidBelowCut,
+        default: false,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintNoUnits,
+        default: true,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintNoWorkOffset,
+        default: false,
+        applies: has_work_offsets,
+    },
+    Rule {
+        code: Code::LintCycleRBelowCut,
+        default: true,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintPeckTooDeep,
+        default: true,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintStopWithoutMessage,
+        default: false,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintCuttingWithoutCoolant,
+        default: false,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintSpindleSpeedZero,
+        default: true,
+        applies: always,
+    },
 ];
 
 /// The rule of a code, if it is a lint code.
@@ -86,7 +150,10 @@ fn is_motion(c: &Canon) -> bool {
 fn is_feed(c: &Canon) -> bool {
     matches!(
         c,
-        Canon::StraightFeed(_) | Canon::ArcFeed { .. } | Canon::NurbsFeed { .. } | Canon::RigidTap { .. }
+        Canon::StraightFeed(_)
+            | Canon::ArcFeed { .. }
+            | Canon::NurbsFeed { .. }
+            | Canon::RigidTap { .. }
     )
 }
 
@@ -95,9 +162,13 @@ fn is_feed(c: &Canon) -> bool {
 fn pose_of(c: &Canon) -> Option<[f64; 6]> {
     match c {
         Canon::StraightTraverse(p) | Canon::StraightFeed(p) => Some(*p),
-        Canon::ArcFeed { first_end, second_end, axis_end, abc, .. } => {
-            Some([*first_end, *second_end, *axis_end, abc[0], abc[1], abc[2]])
-        }
+        Canon::ArcFeed {
+            first_end,
+            second_end,
+            axis_end,
+            abc,
+            ..
+        } => Some([*first_end, *second_end, *axis_end, abc[0], abc[1], abc[2]]),
         _ => None,
     }
 }
@@ -134,7 +205,9 @@ impl Linter {
         if has(step, |k| matches!(k, StmtKind::Units { .. })) {
             self.units_set = true;
         }
-        if has(step, |k| matches!(k, StmtKind::WorkOffset { .. } | StmtKind::CoordShift { .. })) {
+        if has(step, |k| {
+            matches!(k, StmtKind::WorkOffset { .. } | StmtKind::CoordShift { .. })
+        }) {
             self.work_offset_set = true;
         }
         // A block without axis words may still make a call that goes
@@ -156,7 +229,11 @@ impl Linter {
         }
         // `H..` alone while G43 is in force changes the offset register
         // on Fanuc-like controls: the new tool's length is active.
-        if step.state.length_tool.is_some() && has(step, |k| matches!(k, StmtKind::OffsetRegister { letter: 'H', .. })) {
+        if step.state.length_tool.is_some()
+            && has(step, |k| {
+                matches!(k, StmtKind::OffsetRegister { letter: 'H', .. })
+            })
+        {
             self.length_pending = None;
         }
         self.last_z_mm = step.state.pos[2];
@@ -211,7 +288,10 @@ impl Linter {
                 self.forget_cuts();
             }
         }
-        if pose.is_none_or(|p| self.last_pose.is_none_or(|l| (0..6).any(|i| (p[i] - l[i]).abs() > 1e-6))) {
+        if pose.is_none_or(|p| {
+            self.last_pose
+                .is_none_or(|l| (0..6).any(|i| (p[i] - l[i]).abs() > 1e-6))
+        }) {
             *moved = true;
         }
         if pose.is_some() {
@@ -239,7 +319,12 @@ impl Linter {
                     self.min_cut_mm = Some(self.min_cut_mm.map_or(z, |m: f64| m.min(z)));
                     self.cut_box = Some(match self.cut_box {
                         None => [p[0], p[1], p[0], p[1]],
-                        Some(b) => [b[0].min(p[0]), b[1].min(p[1]), b[2].max(p[0]), b[3].max(p[1])],
+                        Some(b) => [
+                            b[0].min(p[0]),
+                            b[1].min(p[1]),
+                            b[2].max(p[0]),
+                            b[3].max(p[1]),
+                        ],
                     });
                 }
             }
@@ -255,8 +340,13 @@ impl Linter {
     fn spindle_stopped(&mut self, step: &Step<'_>, block: Span, call: Span) {
         // A move an earlier block made and a later one let out (a held
         // corner) ran with the spindle as that earlier block left it.
-        let inside = call.file == block.file && block.start <= call.start && call.start <= block.end;
-        let spindle = if inside { step.state.spindle } else { self.last_spindle };
+        let inside =
+            call.file == block.file && block.start <= call.start && call.start <= block.end;
+        let spindle = if inside {
+            step.state.spindle
+        } else {
+            self.last_spindle
+        };
         self.speed_and_coolant(step, block, spindle);
         if spindle != SpindleDir::Stopped || self.spindle_reported {
             return;
@@ -273,12 +363,19 @@ impl Linter {
     fn speed_and_coolant(&mut self, step: &Step<'_>, block: Span, spindle: SpindleDir) {
         let st = step.state;
         // A speed the program never set is the control's last one, not 0.
-        if spindle != SpindleDir::Stopped && st.speed <= 0.0 && self.speed_programmed && !self.speed_reported {
+        if spindle != SpindleDir::Stopped
+            && st.speed <= 0.0
+            && self.speed_programmed
+            && !self.speed_reported
+        {
             self.speed_reported = true;
             self.report(
-                Diagnostic::new(Code::LintSpindleSpeedZero, "cutting move with the spindle on at speed 0")
-                    .primary(block, "feed move at S0")
-                    .help("program the tool's speed (S..) with M3/M4"),
+                Diagnostic::new(
+                    Code::LintSpindleSpeedZero,
+                    "cutting move with the spindle on at speed 0",
+                )
+                .primary(block, "feed move at S0")
+                .help("program the tool's speed (S..) with M3/M4"),
             );
         }
         let coolant = st.flood || st.mist;
@@ -324,8 +421,9 @@ impl Linter {
     /// beside the part, as CAM systems plunge for the next level.
     fn over_cuts(&self, xy: [f64; 2]) -> bool {
         let t = 1e-6;
-        self.cut_box
-            .is_some_and(|b| xy[0] >= b[0] - t && xy[1] >= b[1] - t && xy[0] <= b[2] + t && xy[1] <= b[3] + t)
+        self.cut_box.is_some_and(|b| {
+            xy[0] >= b[0] - t && xy[1] >= b[1] - t && xy[0] <= b[2] + t && xy[1] <= b[3] + t
+        })
     }
 
     /// The cuts so far no longer tell where material is (a tool change,
@@ -348,7 +446,9 @@ impl Linter {
                 format!("length offset of tool {h} while tool {t} is in the spindle"),
             )
             .primary(span, format!("H{h} is not T{t}"))
-            .help(format!("use H{t}, or ignore W0703 if your shop numbers H registers otherwise")),
+            .help(format!(
+                "use H{t}, or ignore W0703 if your shop numbers H registers otherwise"
+            )),
         );
     }
 
@@ -358,7 +458,11 @@ impl Linter {
         if !has(step, |k| matches!(k, StmtKind::Cycle(_))) {
             return;
         }
-        let hole = step.calls.iter().find_map(|(c, _)| pose_of(c)).map(|p| [p[0] * scale, p[1] * scale]);
+        let hole = step
+            .calls
+            .iter()
+            .find_map(|(c, _)| pose_of(c))
+            .map(|p| [p[0] * scale, p[1] * scale]);
         if let (Some(min), Some(xy)) = (self.min_cut_mm, hole) {
             let r = step.cycles.r * scale;
             if step.state.absolute
@@ -384,14 +488,19 @@ impl Linter {
     }
 
     fn peck(&mut self, step: &Step<'_>, scale: f64) {
-        if !matches!(step.cycles.active, Some(CycleKind::Peck | CycleKind::ChipBreak)) {
+        if !matches!(
+            step.cycles.active,
+            Some(CycleKind::Peck | CycleKind::ChipBreak)
+        ) {
             return;
         }
         let t = step.state.tool_in_spindle;
         if t == 0 || step.tools_without_data.contains_key(&t) {
             return;
         }
-        let Some(tool) = step.tools.get(t) else { return };
+        let Some(tool) = step.tools.get(t) else {
+            return;
+        };
         let dia_mm = tool.diameter * self.machine_scale;
         let q_mm = step.cycles.q.abs() * scale;
         let max = dia_mm * self.cfg.peck_max_diameters;
@@ -425,20 +534,26 @@ impl Linter {
             if !step.state.absolute {
                 said = true;
                 self.report(
-                    Diagnostic::new(Code::LintIncrementalToolChange, "the new tool's first move runs in incremental mode (G91)")
-                        .primary(block, "moves relative to where the tool is")
-                        .secondary(s, "tool changed here")
-                        .help("program G90 before or in this block"),
+                    Diagnostic::new(
+                        Code::LintIncrementalToolChange,
+                        "the new tool's first move runs in incremental mode (G91)",
+                    )
+                    .primary(block, "moves relative to where the tool is")
+                    .secondary(s, "tool changed here")
+                    .help("program G90 before or in this block"),
                 );
             }
         }
         if let Some(s) = self.ref_return.take() {
             if !step.state.absolute && !said {
                 self.report(
-                    Diagnostic::new(Code::LintIncrementalAfterReturn, "G91 of the reference return is still on for this move")
-                        .primary(block, "moves incremental")
-                        .secondary(s, "G91 with the reference return")
-                        .help("program G90 after the reference return"),
+                    Diagnostic::new(
+                        Code::LintIncrementalAfterReturn,
+                        "G91 of the reference return is still on for this move",
+                    )
+                    .primary(block, "moves incremental")
+                    .secondary(s, "G91 with the reference return")
+                    .help("program G90 after the reference return"),
                 );
             }
         }
@@ -446,17 +561,25 @@ impl Linter {
     }
 
     fn incremental_in_sub(&mut self, step: &Step<'_>) {
-        let Some(frame) = self.frames.last_mut() else { return };
+        let Some(frame) = self.frames.last_mut() else {
+            return;
+        };
         if frame.reported || frame.sets_mode || !frame.entered_incremental || step.state.absolute {
             return;
         }
         frame.reported = true;
         let call = frame.call;
         self.report(
-            Diagnostic::new(Code::LintIncrementalCall, "the subprogram moves in the incremental mode its caller left on")
-                .primary(step.block.span, "moves incremental; the subprogram never sets G90/G91")
-                .secondary(call, "called in G91 here")
-                .help("program G90 before the call, or set the mode in the subprogram"),
+            Diagnostic::new(
+                Code::LintIncrementalCall,
+                "the subprogram moves in the incremental mode its caller left on",
+            )
+            .primary(
+                step.block.span,
+                "moves incremental; the subprogram never sets G90/G91",
+            )
+            .secondary(call, "called in G91 here")
+            .help("program G90 before the call, or set the mode in the subprogram"),
         );
     }
 
@@ -479,7 +602,9 @@ impl Linter {
                 f.sets_mode = true;
             }
         }
-        let g91 = has(step, |k| matches!(k, StmtKind::Distance(DimMode::Incremental)));
+        let g91 = has(step, |k| {
+            matches!(k, StmtKind::Distance(DimMode::Incremental))
+        });
         self.last_block = (step.block.span, g91);
         self.last_absolute = step.state.absolute;
     }
@@ -489,5 +614,9 @@ impl Linter {
 pub fn fmt(v: f64) -> String {
     let s = format!("{v:.4}");
     let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" { "0".into() } else { s.into() }
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.into()
+    }
 }
