@@ -247,6 +247,7 @@ mod tests {
         let c = LintConfig::default();
         assert!(c.is_enabled(Code::LintFeedSpindleStopped));
         assert!(!c.is_enabled(Code::LintNoWorkOffset));
+        assert!(!c.is_enabled(Code::LintNoUnits));
     }
 
     #[test]
@@ -257,7 +258,8 @@ mod tests {
         let c = cfg("[lint]\nextend-select = [\"no-work-offset\"]\nignore = [\"W0701\"]\n");
         assert!(c.is_enabled(Code::LintNoWorkOffset));
         assert!(!c.is_enabled(Code::LintFeedSpindleStopped));
-        assert!(c.is_enabled(Code::LintNoUnits));
+        assert!(c.is_enabled(Code::LintMoveAfterEnd));
+        assert!(!c.is_enabled(Code::LintNoUnits));
     }
 
     #[test]

@@ -92,7 +92,7 @@ pub const RULES: &[Rule] = &[
     },
     Rule {
         code: Code::LintNoUnits,
-        default: true,
+        default: false,
         applies: always,
     },
     Rule {
