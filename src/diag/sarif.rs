@@ -38,7 +38,6 @@ pub fn sarif(diags: &[Diagnostic], files: &SourceMap) -> String {
             "tool": { "driver": {
                 "name": "cncc",
                 "version": env!("CARGO_PKG_VERSION"),
-                "informationUri": "https://github.com/cncc/cncc",
                 "rules": rules,
             }},
             "columnKind": "unicodeCodePoints",

@@ -198,6 +198,16 @@ impl Linter {
         if cycle_ran {
             self.cycle(step, scale);
         }
+        // `H..` alone while G43 is in force changes the offset register
+        // on Fanuc-like controls [?: G43 kept through M6 by the machine's
+        // macro]: the new tool's length is active for this block's moves.
+        if step.state.length_tool.is_some()
+            && has(step, |k| {
+                matches!(k, StmtKind::OffsetRegister { letter: 'H', .. })
+            })
+        {
+            self.length_pending = None;
+        }
         let mut moved = false;
         for (call, span) in step.calls {
             self.call(step, call, *span, scale, machine, cycle_ran, &mut moved);
@@ -226,15 +236,6 @@ impl Linter {
         }
         if has(step, |k| matches!(k, StmtKind::RefReturn { .. })) && !step.state.absolute {
             self.ref_return = Some(step.block.span);
-        }
-        // `H..` alone while G43 is in force changes the offset register
-        // on Fanuc-like controls: the new tool's length is active.
-        if step.state.length_tool.is_some()
-            && has(step, |k| {
-                matches!(k, StmtKind::OffsetRegister { letter: 'H', .. })
-            })
-        {
-            self.length_pending = None;
         }
         self.last_z_mm = step.state.pos[2];
         self.last_spindle = step.state.spindle;
@@ -354,7 +355,7 @@ impl Linter {
         self.spindle_reported = true;
         self.report(
             Diagnostic::new(Code::LintFeedSpindleStopped, "cutting move while the spindle is stopped")
-                .primary(block, "feed move with no M3/M4 in force")
+                .primary(if inside { block } else { call }, "feed move with no M3/M4 in force")
                 .help("start the spindle (S.. M3) before the first cutting move of each tool; later moves of this stretch are not reported"),
         );
     }
