@@ -18,6 +18,7 @@ pub mod encoding;
 pub mod fuzzing;
 pub mod interp;
 pub mod ir;
+pub mod lint;
 pub mod lower;
 pub mod plot;
 pub mod port;

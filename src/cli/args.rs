@@ -1,7 +1,7 @@
 //! The command line, as clap reads it. DESIGN.md's contract: exit 0 on
 //! success, 1 when the input has errors, 2 on usage or I/O errors.
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 
 #[derive(Parser, Debug)]
@@ -35,6 +35,36 @@ pub enum ColorChoice {
 pub enum Format {
     Human,
     Json,
+    /// SARIF 2.1.0, one document on stdout (`check`; elsewhere on stderr).
+    Sarif,
+}
+
+/// Lint rule selection on the command line (after `cncc.toml`'s).
+#[derive(Args, Debug, Default, Clone)]
+pub struct LintArgs {
+    /// Lint rules to run instead of the configured set: codes, prefixes
+    /// (`W07`), names or ALL, comma-separated.
+    #[arg(long, value_delimiter = ',', value_name = "RULES")]
+    pub select: Option<Vec<String>>,
+    /// Lint rules to run besides the configured set.
+    #[arg(long = "extend-select", value_delimiter = ',', value_name = "RULES")]
+    pub extend_select: Vec<String>,
+    /// Lint rules not to run.
+    #[arg(long, value_delimiter = ',', value_name = "RULES")]
+    pub ignore: Vec<String>,
+    /// Run no lint rule (only what the language and the run refuse).
+    #[arg(long = "no-lint")]
+    pub no_lint: bool,
+}
+
+impl LintArgs {
+    pub fn selection(&self) -> crate::lint::CliSelect {
+        crate::lint::CliSelect {
+            select: self.select.clone(),
+            extend_select: self.extend_select.clone(),
+            ignore: self.ignore.clone(),
+        }
+    }
 }
 
 #[derive(Subcommand, Debug)]
@@ -57,6 +87,8 @@ pub enum Command {
         /// Only read the program (syntax, words, structure): do not run it.
         #[arg(long = "no-run")]
         no_run: bool,
+        #[command(flatten)]
+        lint: LintArgs,
         #[command(flatten)]
         run: RunArgs,
     },

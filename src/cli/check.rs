@@ -27,6 +27,8 @@ pub struct CheckArgs<'a> {
     pub tool_table: Option<&'a Path>,
     /// Run the program after reading it (run-time checks).
     pub run: bool,
+    /// Lint the run, with these command-line selectors (None: `--no-lint`).
+    pub lint: Option<crate::lint::CliSelect>,
     pub options: Options,
 }
 
@@ -53,7 +55,13 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
             }
         }
     }
-    ctx.print(&all, a.format);
+    if a.format == Format::Sarif {
+        // One document, on stdout, even when there is nothing to say.
+        let doc = crate::diag::sarif::sarif(&all, &ctx.files);
+        print!("{doc}");
+    } else {
+        ctx.print(&all, a.format);
+    }
     let errors = all.iter().filter(|d| d.severity == Severity::Error).count();
     let warnings = all
         .iter()
@@ -115,10 +123,18 @@ fn check_file(
     let id = ctx.files.add_sparse(path.display().to_string(), Vec::new());
     let mut discard = |_: crate::canon::Canon, _: crate::span::Span| {};
     let options = program_tools(&a.options, &head);
+    let linter = lint_for(path, a, &spec, &options)?;
     let mut it = Interp::new(&spec, &options, &mut discard);
+    if let Some(l) = &linter {
+        let l = l.clone();
+        it.watcher = Some(Box::new(move |step| l.borrow_mut().step(step)));
+    }
     it.start();
     let mut stream = StreamRun::default();
     let result = check_stream(input, id, &spec, |b, e| {
+        if let Some(l) = &linter {
+            l.borrow_mut().read_block(b);
+        }
         if a.run {
             stream.block(&mut it, b, e)
         }
@@ -155,6 +171,7 @@ fn check_file(
             }
             _ => None,
         };
+        let is_fragment = fragment.is_some();
         if let Some((program, fragment)) = fragment {
             run = run_as_fragment(ctx, path, &spec, &options, program, &fragment);
         }
@@ -168,7 +185,14 @@ fn check_file(
                     .into(),
             );
         }
+        let end = crate::lint::RunEnd {
+            complete: !run.iter().any(stopped_the_run),
+            fragment: is_fragment,
+        };
         diags.extend(run);
+        if let Some(l) = linter.and_then(|l| std::rc::Rc::try_unwrap(l).ok()) {
+            diags.extend(l.into_inner().finish(end));
+        }
     }
     keep_lines(ctx, path, id, &diags)?;
     if let Some(r) = reason {
@@ -177,6 +201,34 @@ fn check_file(
         }
     }
     Ok(diags)
+}
+
+/// The lint of one program (None with `--no-lint`, `--no-run`, or when
+/// no rule runs): its `cncc.toml` found beside or above it.
+type SharedLinter = std::rc::Rc<std::cell::RefCell<crate::lint::Linter>>;
+
+fn lint_for(
+    path: &Path,
+    a: &CheckArgs<'_>,
+    spec: &DialectSpec,
+    options: &Options,
+) -> Result<Option<SharedLinter>, Failure> {
+    let Some(sel) = a.lint.as_ref().filter(|_| a.run) else {
+        return Ok(None);
+    };
+    let cfg = crate::lint::LintConfig::for_program(path, sel).map_err(Failure)?;
+    let l = crate::lint::Linter::new(spec, cfg, options.machine_units);
+    Ok(l.is_active()
+        .then(|| std::rc::Rc::new(std::cell::RefCell::new(l))))
+}
+
+/// A diagnostic after which the run did not reach the program's end.
+fn stopped_the_run(d: &Diagnostic) -> bool {
+    d.is_error()
+        || matches!(
+            d.code,
+            Code::ValueFromOutside | Code::RunStoppedEarly | Code::LimitExceeded
+        )
 }
 
 /// Runs a subprogram or library checked alone with its caller's values

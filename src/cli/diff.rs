@@ -95,7 +95,7 @@ pub fn run(ctx: &mut Context, mut a: DiffArgs<'_>) -> Result<i32, Failure> {
     }
     let text = match a.format {
         Format::Human => human(&ctx.files, &c, [a.a, a.b]),
-        Format::Json => json(&ctx.files, &c),
+        Format::Json | Format::Sarif => json(&ctx.files, &c),
     };
     crate::cli::output::emit_output(None, &text)?;
     Ok(if c.same { EXIT_OK } else { EXIT_INPUT_ERRORS })

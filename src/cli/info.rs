@@ -23,6 +23,20 @@ pub fn explain(code: Option<&str>) -> Result<i32, Failure> {
                 c.summary(),
                 c.explanation()
             ),
+            // A prefix (`W07`: the lint rules) lists the codes under it.
+            None if Code::ALL.iter().any(|k| starts(k, c)) => Code::ALL
+                .iter()
+                .filter(|k| starts(k, c))
+                .map(|k| {
+                    format!(
+                        "{} {:<36} {}{}\n",
+                        k.code(),
+                        k.name(),
+                        k.summary(),
+                        lint_default(*k)
+                    )
+                })
+                .collect(),
             None => {
                 eprintln!("error: no diagnostic code `{c}`; `cncc explain` lists them all");
                 return Ok(EXIT_USAGE);
@@ -31,6 +45,19 @@ pub fn explain(code: Option<&str>) -> Result<i32, Failure> {
     };
     crate::cli::output::emit_output(None, &text)?;
     Ok(EXIT_OK)
+}
+
+fn starts(k: &Code, prefix: &str) -> bool {
+    !prefix.is_empty() && k.code().starts_with(&prefix.trim().to_ascii_uppercase())
+}
+
+/// For a lint rule, whether it runs by default.
+fn lint_default(c: Code) -> &'static str {
+    match crate::lint::rules::rule(c) {
+        Some(r) if r.default => " [lint, on by default]",
+        Some(_) => " [lint, off by default]",
+        None => "",
+    }
 }
 
 fn severity_word(c: Code) -> &'static str {

@@ -49,6 +49,7 @@ pub fn run(cli: Cli) -> i32 {
             verbose,
             tool_table,
             no_run,
+            lint,
             run,
         } => check::run(
             &mut ctx,
@@ -59,6 +60,7 @@ pub fn run(cli: Cli) -> i32 {
                 verbose: *verbose,
                 tool_table: tool_table.as_deref(),
                 run: !*no_run,
+                lint: (!lint.no_lint).then(|| lint.selection()),
                 options: run.analysis_options(),
             },
         ),

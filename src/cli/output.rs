@@ -85,6 +85,7 @@ pub fn print_diagnostics(
     }
     let text = match format {
         Format::Json => render::json(diags, files),
+        Format::Sarif => crate::diag::sarif::sarif(diags, files),
         Format::Human => {
             let use_color = match color {
                 ColorChoice::Always => true,

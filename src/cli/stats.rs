@@ -147,7 +147,7 @@ pub fn run(ctx: &mut Context, mut a: StatsArgs<'_>) -> Result<i32, Failure> {
     let stats = builder.finish(&a.options.tool_table, machine_mm(&a.options));
     let text = match a.format {
         Format::Human => report::human(&stats),
-        Format::Json => report::json(&stats),
+        Format::Json | Format::Sarif => report::json(&stats),
     };
     crate::cli::output::emit_output(None, &text)?;
     Ok(EXIT_OK)

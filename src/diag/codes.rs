@@ -5,7 +5,10 @@
 //! Ranges: E00xx reading characters and numbers, E01xx syntax, E02xx words
 //! and modal groups of a block, E03xx program structure and jumps, E04xx
 //! dialect specs, E05xx running the program, E06xx writing to a target;
-//! W-codes are warnings.
+//! W-codes are warnings. W07xx are the lint rules ([`crate::lint`]):
+//! mistakes a controller runs without complaint but that break tools or
+//! crash spindles; each is a warning a shop selects or ignores by code,
+//! prefix or name (`cncc.toml`, `--select`, `--ignore`).
 
 use super::Severity;
 
@@ -569,6 +572,54 @@ codes! {
     P21TooLarge = "E0813", "p21-too-large", Error,
         "a Part 21 file holding more instance data than cncc reads",
         "Read into memory, the file's instances and parameters would take more than 1.5 GB (about 30 million parameter values, or 10 million instances); cncc stops reading at the instance named and reports the file. ISO 14649 programs are far smaller; a file this large is usually a geometry export or a broken generator.";
+    LintFeedSpindleStopped = "W0701", "feed-with-spindle-stopped", Warning,
+        "a cutting move while the spindle is stopped",
+        "A feed move (G1, G2, G3, a cycle's feed) runs while the spindle is stopped: no M3/M4 since the start, a tool change or an M5. The control moves the tool into the part without turning it, which breaks the tool. Probing moves are not counted.\n\nBad:\n    T1 M6\n    G43 H1 Z5.\n    G1 Z-2. F100.   (spindle never started)\n\nGood:\n    T1 M6\n    S3000 M3\n    G43 H1 Z5.\n    G1 Z-2. F100.";
+    LintNoLengthOffset = "W0702", "no-length-offset-after-tool-change", Warning,
+        "a tool change without a length offset before the first Z move",
+        "After a tool change the program moves Z before it activates a tool length offset (G43 H). On controls whose spec says the program must activate the length offset (capability `length-offset-programmed`: Fanuc, Haas), Z then runs with no offset or the previous tool's, and a longer tool crashes. Siemens (D with T) and Heidenhain (TOOL CALL) apply the length with the tool call; LinuxCNC machines often touch off each tool in the work offset instead of G43; they are not checked. An `H..` alone while G43 is in force counts as the new offset.\n\nBad:\n    T2 M6\n    G0 X0 Y0 Z5.\n\nGood:\n    T2 M6\n    G0 G43 H2 X0 Y0 Z5.";
+    LintLengthOffsetOtherTool = "W0703", "length-offset-of-other-tool", Warning,
+        "a length offset taken from another tool than the one in the spindle",
+        "G43 names a length register (H) that is not the tool in the spindle. On controls whose spec says the H register names a tool (capability `length-register-names-tool`: LinuxCNC reads tool H's table length; Fanuc and Haas shops number H as T), the tool runs with another tool's length: a longer tool crashes. Shops that number offsets otherwise ignore this rule.\n\nBad:\n    T3 M6\n    G43 H5 Z25.\n\nGood:\n    T3 M6\n    G43 H3 Z25.";
+    LintNoProgramEnd = "W0704", "missing-program-end", Warning,
+        "a main program that runs to its last block without M2/M30",
+        "The program runs off its last block without a program end (M2, M30; M99 in a subprogram; END PGM). Depending on the control it stops with spindle and coolant on, with modal states left for the next program, or waits for more tape. (On controls whose spec requires an end, this is already an error, E0305.)\n\nBad:\n    G0 Z50.\n    (end of file)\n\nGood:\n    G0 Z50.\n    M30";
+    LintMoveAfterEnd = "W0705", "move-after-program-end", Warning,
+        "moves written after the program end are never run",
+        "M2/M30 ends the program, yet moves follow it that no jump or call reaches. They are never cut: usually an end left in the middle by an edit or by joining programs. (Files with jumps or local subprograms after the end are not checked.)\n\nBad:\n    G1 X10. F200.\n    M30\n    G1 X20.\n\nGood:\n    G1 X10. F200.\n    G1 X20.\n    M30";
+    LintIncrementalToolChange = "W0706", "incremental-across-tool-change", Warning,
+        "the first move after a tool change runs in incremental mode",
+        "G91 was left on through a tool change (often from `G91 G28 Z0`), and the new tool's first move is incremental. A program written in absolute coordinates then moves by its coordinates instead of to them.\n\nBad:\n    G91 G28 Z0.\n    T2 M6\n    G0 X10. Y10.\n\nGood:\n    G91 G28 Z0.\n    T2 M6\n    G90 G0 X10. Y10.";
+    LintIncrementalCall = "W0707", "incremental-into-subprogram", Warning,
+        "a subprogram moves in incremental mode left on by its caller",
+        "The caller left G91 on (not in the calling block), and the subprogram moves without setting G90 or G91 itself: it moves relatively where it was probably written absolute. Off by default: incremental subprograms for repeated patterns are a common, correct use.\n\nBad:\n    G91 G0 X10.\n    M98 P100   (O100 moves G0 X5 Y5 assuming G90)\n\nGood:\n    G90\n    M98 P100";
+    LintIncrementalAfterReturn = "W0708", "incremental-after-reference-return", Warning,
+        "G91 of a G91 G28 left on for the next move",
+        "`G91 G28 Z0` returns to the reference point and leaves G91 on. The next move (not another reference return) then runs incremental, where it was meant absolute.\n\nBad:\n    G91 G28 Z0.\n    G0 X0 Y0\n\nGood:\n    G91 G28 Z0.\n    G90 G0 X0 Y0";
+    LintRapidBelowCut = "W0709", "rapid-below-cut", Warning,
+        "a rapid goes below the lowest height the tool has cut",
+        "A rapid move goes lower on Z than any feed move of this tool since the tool change, with no feed move between: the tool rapids into material it has not cut. Usually a wrong Z, a missing retract or a lost G1. Only in the XY plane, only over the area the tool has cut (the box round its feed moves); cycle blocks are checked by W0712. Off by default: without a model of the stock cncc cannot tell air from material, and CAM systems step down from the air beside the part (a rapid to just above the next level) all the time.\n\nBad:\n    G1 Z-2. F100.\n    G0 Z5.\n    G0 X50.\n    G0 Z-5.\n\nGood:\n    G1 Z-2. F100.\n    G0 Z5.\n    G0 X50.\n    G0 Z1.\n    G1 Z-5. F100.";
+    LintNoUnits = "W0710", "no-units", Warning,
+        "a program that moves without ever setting its units",
+        "The program never sets its units (G20/G21, G70/G71, TNC MM/INCH), so it runs in whatever units the control was left in by the last program or by its parameter. An inch program on a control left in mm cuts 25.4 times too small, and the other way round crashes. Off by default: many shops set the units at the machine (a parameter or setting) and never in the program; select it where programs move between machines.\n\nBad:\n    G90 G54\n    G0 X1. Y1.\n\nGood:\n    G21 G90 G54\n    G0 X1. Y1.";
+    LintNoWorkOffset = "W0711", "no-work-offset", Warning,
+        "a program that moves without ever selecting a work offset",
+        "The program never selects a work offset (G54..G59, G154, G505.., G500), so it cuts in whichever the control has active. Applies to dialects whose spec has work-offset codes. Off by default: many shops set the work offset at the machine on purpose.\n\nBad:\n    G21 G90\n    G0 X0 Y0\n\nGood:\n    G21 G90 G54\n    G0 X0 Y0";
+    LintCycleRBelowCut = "W0712", "cycle-r-below-cut", Warning,
+        "a canned cycle whose R plane is below the lowest cut of this tool",
+        "The cycle rapids to its R plane, and the R plane is lower than any feed move of this tool since the tool change: the rapid goes into material not cut yet. Usually an R given incrementally by mistake or a sign error.\n\nBad:\n    G1 Z-1. F100.\n    G0 Z5.\n    G81 X10. Y10. Z-10. R-3. F80.\n\nGood:\n    G1 Z-1. F100.\n    G0 Z5.\n    G81 X10. Y10. Z-10. R2. F80.";
+    LintPeckTooDeep = "W0713", "peck-too-deep", Warning,
+        "a peck drilling step deeper than 3 tool diameters",
+        "The peck depth (Q of G83/G73) is larger than the tool diameter times a factor (3 by default; `[lint.peck-too-deep] max-diameters` in cncc.toml). Chips pack and small drills break. Checked only when the tool's diameter is known (a tool table or the program's tool list).\n\nBad:\n    (T1 D=3 drill)\n    G83 Z-30. R2. Q15. F60.\n\nGood:\n    G83 Z-30. R2. Q6. F60.";
+    LintStopWithoutMessage = "W0714", "stop-without-message", Warning,
+        "an M0/M1 stop with no message before it",
+        "The program stops (M0, or M1 with optional stop on) and nothing tells the operator why: no comment or message in the stop's block or the block before. Shops that want each stop explained select this rule; off by default.\n\nBad:\n    G0 Z50.\n    M0\n\nGood:\n    G0 Z50.\n    (TURN THE PART OVER)\n    M0";
+    LintCuttingWithoutCoolant = "W0715", "cutting-without-coolant", Warning,
+        "a tool cuts with coolant off after an earlier tool cut with it on",
+        "An earlier tool of the program cut with coolant (M7/M8) on, and this tool cuts with all coolant off: often an M8 forgotten after the tool change. Off by default: dry cutting (cast iron, graphite, some finishing passes) is a choice.\n\nBad:\n    T1 M6\n    S1000 M3 M8\n    G1 Z-1. F100.\n    T2 M6\n    S1000 M3\n    G1 Z-1. F100.\n\nGood:\n    T2 M6\n    S1000 M3 M8\n    G1 Z-1. F100.";
+    LintSpindleSpeedZero = "W0716", "spindle-speed-zero", Warning,
+        "a cutting move with the spindle on at speed 0",
+        "The spindle is switched on (M3/M4) but the program set the speed to 0 (`S0 M3`, `TOOL CALL 1 Z S0`), so the tool does not turn while it cuts. Usually a post that lost the speed of a tool. A program that never gives S runs at the control's last speed, which cncc cannot know: not reported.\n\nBad:\n    T1 M6\n    S0 M3\n    G1 Z-1. F100.\n\nGood:\n    T1 M6\n    S3000 M3\n    G1 Z-1. F100.";
 }
 
 impl Code {

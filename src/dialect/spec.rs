@@ -153,6 +153,15 @@ pub enum Capability {
     /// not 0. [?] iTNC 530 machine parameter MP7300 may reset Q parameters
     /// at the end of a program; the default is taken as keeping them.
     GlobalQParameters,
+    /// The program itself must activate the tool length offset after a
+    /// tool change (G43 H on Fanuc, Haas); elsewhere the tool call applies
+    /// it (Siemens T/D, Heidenhain TOOL CALL), or the shop touches off each
+    /// tool in the work offset (common on LinuxCNC). Lint W0702.
+    LengthOffsetProgrammed,
+    /// The length register of G43 names a tool: LinuxCNC reads tool H's
+    /// table length; Fanuc and Haas shops number H as T by convention
+    /// [?: the offset memory allows any numbering]. Lint W0703.
+    LengthRegisterNamesTool,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -206,6 +215,14 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("splines", Capability::Splines),
     ("global-q-parameters", Capability::GlobalQParameters),
     ("comp-without-register", Capability::CompWithoutRegister),
+    (
+        "length-offset-programmed",
+        Capability::LengthOffsetProgrammed,
+    ),
+    (
+        "length-register-names-tool",
+        Capability::LengthRegisterNamesTool,
+    ),
 ];
 
 impl Capability {

@@ -160,7 +160,7 @@ impl<'l> Walker<'l> {
             observe(it, prog, pc, self.frames.len());
             it.hold();
             let next = self.block(it, prog, pc, entered);
-            let next = match it.settle(next) {
+            let next = match it.settle_block(next, block, &program.exprs, self.frames.len()) {
                 Err(stop) => {
                     it.recover(stop)?;
                     Next::Step

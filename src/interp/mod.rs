@@ -41,6 +41,7 @@ pub mod threading;
 pub mod tool_header;
 pub mod tools;
 pub mod tooltable;
+pub mod watch;
 
 #[cfg(test)]
 mod hold_tests;
@@ -123,6 +124,8 @@ pub struct Interp<'a, 's> {
     pub recovered: u32,
     /// Told of every block before it runs (see [`BlockObserver`]).
     pub observer: Option<Box<BlockObserver>>,
+    /// Shown every block after it ran ([`watch::Watcher`]: the lint layer).
+    pub watcher: Option<Box<watch::Watcher>>,
 }
 
 /// Where the walker is about to run a block: which program (0: the main
@@ -185,6 +188,7 @@ impl<'a, 's> Interp<'a, 's> {
             comp_without_size: false,
             recovered: 0,
             observer: None,
+            watcher: None,
         }
     }
 

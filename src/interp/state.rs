@@ -77,6 +77,10 @@ pub struct State {
     pub sync_pitch: f64,
     /// The block of the last M61 (G43 in that block uses its tool).
     pub m61_block: Option<crate::span::Span>,
+    /// The tool whose table length the active length offset is (the H
+    /// register of G43/G44/G43.2, or the tool in the spindle); None when
+    /// no table length is active (G49, G43.1, power-on).
+    pub length_tool: Option<i64>,
     /// Where the canon layer last put the tool (program frame, mm): the
     /// current position without tool-length shifts since the last move.
     pub canon_pos: [f64; 9],
@@ -135,6 +139,7 @@ impl State {
             lathe_diameter: false,
             sync_pitch: 0.0,
             m61_block: None,
+            length_tool: None,
             canon_pos: [0.0; 9],
             resync: false,
             prog_cache: std::cell::Cell::new(ProgCache {

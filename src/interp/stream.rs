@@ -60,7 +60,7 @@ impl StreamRun {
         it.line = index as u32 + 1;
         it.hold();
         let r = it.block(b, exprs);
-        let r = match it.settle(r) {
+        let r = match it.settle_block(r, b, exprs, 0) {
             Err(stop) => it.recover(stop),
             ok => ok,
         };

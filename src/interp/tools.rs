@@ -356,13 +356,18 @@ fn length_comp(
             };
             let t = h.unwrap_or(spindle);
             let mut o = table_offset(it, t)?;
+            it.state.length_tool = (t != 0).then_some(t);
             if mode == LengthComp::Negative {
                 o.iter_mut().for_each(|v| *v = -*v);
             }
             o
         }
-        LengthComp::Cancel => [0.0; 9],
+        LengthComp::Cancel => {
+            it.state.length_tool = None;
+            [0.0; 9]
+        }
         LengthComp::Dynamic => {
+            it.state.length_tool = None;
             let mut o = [0.0; 9];
             for (i, letter) in crate::ir::AXIS_LETTERS.iter().enumerate() {
                 if let Some(c) = axes.get(*letter) {
