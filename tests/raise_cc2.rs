@@ -89,7 +89,7 @@ fn skeleton_with(tools: &[(&str, ToolBodyKind, f64)]) -> Project {
             extra: Vec::new(),
         },
         cutting_edges: vec![CuttingComponent {
-            tool_offset_length: 50.0,
+            tool_offset_length: Some(50.0),
             material: None,
             technological_data: None,
             expected_tool_life: None,

@@ -247,7 +247,7 @@ fn ex1_operations_tools_and_technology() {
     assert_eq!(tool.body.number_of_teeth, Some(4));
     assert_eq!(tool.body.hand_of_cut, Some(Hand::Right));
     assert_eq!(tool.overall_assembly_length, Some(80.0));
-    assert_eq!(tool.cutting_edges[0].tool_offset_length, 80.0);
+    assert_eq!(tool.cutting_edges[0].tool_offset_length, Some(80.0));
 
     let drill = op(1);
     assert_eq!(drill.technology.feed, Some(1800.0));

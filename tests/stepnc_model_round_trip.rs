@@ -197,7 +197,7 @@ fn tool(id: &str, kind: ToolBodyKind, d: f64) -> Tool {
             extra: vec![],
         },
         cutting_edges: vec![CuttingComponent {
-            tool_offset_length: 60.0,
+            tool_offset_length: Some(60.0),
             material: None,
             technological_data: None,
             expected_tool_life: Some(900.0),

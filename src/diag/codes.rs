@@ -497,6 +497,9 @@ codes! {
     TapHandAgainstSpindle = "W0805", "tap-hand-against-spindle", Warning,
         "a tap whose hand_of_cut disagrees with the spindle direction of its operation",
         "A right-hand tap cuts turning clockwise (M3; ISO 14649 writes that speed negative), a left-hand tap counter-clockwise (M4; positive in the file). The TAP tool's hand_of_cut and the tapping operation's spindle speed disagree. cncc reads on; posting it fails (E0907) until they agree.";
+    AbstractInstance = "W0806", "abstract-instance", Warning,
+        "an abstract ISO 14649 entity instantiated",
+        "The file instantiates an entity the schema declares ABSTRACT (JSDAI writers put `CUTTING_TOOL(id, body, edges, length)` where ISO 14649-111 asks for its subtype MILLING_CUTTING_TOOL). cncc reads it as that subtype, its added attributes unset, and writes the subtype back.";
     KeptRaw = "W0802", "kept-raw", Warning,
         "a value cncc could not read into its model, kept as written",
         "The instance does not have the form ISO 14649 gives it (a mandatory attribute unset, an unexpected entity), so the typed model keeps it as written and carries it to the output unchanged, but it takes no part in checks, differences or posting.";

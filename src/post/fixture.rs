@@ -74,7 +74,7 @@ fn tool(id: &str, kind: ToolBodyKind, d: f64, teeth: i64, len: f64, edge: f64) -
             extra: Vec::new(),
         },
         cutting_edges: vec![CuttingComponent {
-            tool_offset_length: len,
+            tool_offset_length: Some(len),
             material: None,
             technological_data: None,
             expected_tool_life: None,

@@ -321,6 +321,6 @@ fn tolerance(project: &Project, s: &Step<'_>) -> Option<f64> {
 
 pub(crate) fn tool_length(t: &Tool) -> f64 {
     t.overall_assembly_length
-        .or_else(|| t.cutting_edges.first().map(|c| c.tool_offset_length))
+        .or_else(|| t.cutting_edges.first().and_then(|c| c.tool_offset_length))
         .unwrap_or(0.0)
 }

@@ -58,7 +58,7 @@ pub fn summary(p: &Project) -> String {
         let len = t
             .cutting_edges
             .first()
-            .map(|c| c.tool_offset_length)
+            .and_then(|c| c.tool_offset_length)
             .unwrap_or(0.0);
         let _ = writeln!(
             out,

@@ -766,7 +766,10 @@ pub struct Tool {
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct CuttingComponent {
-    pub tool_offset_length: f64,
+    /// Mandatory in ISO 14649-111, but generators leave it `$` (GRIMA's
+    /// `CUTTING_COMPONENT($,$,$,$,$)`): read as unknown (W0803) rather
+    /// than dropping the tool and the workingstep with it.
+    pub tool_offset_length: Option<f64>,
     pub material: Option<Raw>,
     pub technological_data: Option<Raw>,
     pub expected_tool_life: Option<f64>,

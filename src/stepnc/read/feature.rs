@@ -8,11 +8,36 @@ use super::*;
 /// Parameters every machining feature starts with.
 pub(crate) const FEATURE_COMMON: usize = 5;
 
+/// Features of ISO 14649-10/11 read and carried as written (region and
+/// transition features, bosses, compound holes, spherical caps): their
+/// workingsteps are kept raw and posting refuses them by name.
+const CARRIED_FEATURES: &[&str] = &[
+    "REGION_SURFACE_LIST",
+    "REGION_PROJECTION",
+    "BOSS",
+    "SPHERICAL_CAP",
+    "CHAMFER",
+    "EDGE_ROUND",
+    "COUNTERBORE_HOLE",
+    "COUNTERSUNK_HOLE",
+];
+
 impl<'f> Rd<'f> {
     /// A feature, read once and shared.
     pub fn feature(&mut self, i: &'f Instance) -> R<FeatureId> {
         if let Some(&id) = self.features.get(&i.id) {
             return Ok(id);
+        }
+        if CARRIED_FEATURES.contains(&ent(i)) {
+            // Not invalid: the workingstep is kept as written (W0802) and
+            // posting names it.
+            return Err(fail(
+                i.entity_span,
+                format!(
+                    "{} (#{}) is an ISO 14649 feature cncc carries but does not model",
+                    i.entity, i.id
+                ),
+            ));
         }
         expect(
             i,
