@@ -15,16 +15,20 @@ pub fn run(
     to: &str,
     output: Option<&Path>,
     format: Format,
+    profiles_absolute: bool,
 ) -> Result<i32, Failure> {
     let target = ctx.spec(to)?;
     let (id, text) = ctx.add_file(file)?;
-    let project = match read_project(ctx, &text, id, format) {
+    let mut project = match read_project(ctx, &text, id, format) {
         Ok(p) => p,
         Err(diags) => {
             ctx.print(&diags, format);
             return Ok(EXIT_INPUT_ERRORS);
         }
     };
+    if profiles_absolute {
+        crate::post::validate::profiles_absolute(&mut project);
+    }
     match crate::post::post(&project, &target) {
         Ok(posted) => {
             ctx.print(&posted.warnings, format);

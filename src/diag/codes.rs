@@ -193,6 +193,15 @@ codes! {
     PostTapHand = "E0907", "post-tap-hand", Error,
         "a tap whose hand contradicts the spindle direction",
         "A right-hand tap cuts turning clockwise (M3, a positive spindle speed in cncc's model; ISO 14649 stores it negative), a left-hand tap counter-clockwise (M4). The TAP tool's hand_of_cut and the operation's spindle speed disagree, so the tapping cycle (G84 or G74, the sign of CYCLE84's PIT or CYCL DEF 207's Q239) cannot be chosen. Make them agree in the STEP-NC file.";
+    PostOutsideStock = "E0908", "post-outside-stock", Error,
+        "a STEP-NC feature outside the stock, or without depth",
+        "Before posting, cncc checks that every feature lies inside the workpiece's BLOCK (the rawpiece's when there is one), placed through the setup and workpiece setup, and goes down from its top. The message gives the feature's box and the stock's, both in machine coordinates, and the likely cause. A profile whose placement repeats its feature's (ISO 14649-10 places profiles in the feature's frame, so the two add) is the usual one: `cncc post --profiles-absolute` reads such profiles as placed at their feature's origin.";
+    ImplausibleFeed = "W0901", "implausible-feed", Warning,
+        "a feed that implies an implausible chip load for the tool",
+        "The feed over the spindle speed (and the tool's teeth) gives the chip load per tooth (milling) or the feed per revolution (drilling). A value far above what such a tool takes (more than a tenth of its diameter per revolution for a drill, a tenth of its diameter or 1 mm per tooth for a cutter) is usually a unit mistake in the file (feed in mm/s written as m/s). The post goes on; check the technology.";
+    ProfilePlacementRepeated = "W0902", "profile-placement-repeated", Warning,
+        "a profile placed at its feature's absolute position again",
+        "ISO 14649-10 places a feature's profile (and a slot's course of travel) in the feature's own frame. This profile's placement has the same non-zero location as the feature's, which generators that write absolute positions twice produce; cncc reads it as the standard says (the locations add). If the file meant one absolute position, post with `--profiles-absolute`.";
     PostNotCarried = "W0900", "post-not-carried", Warning,
         "a STEP-NC value the target's cycle or toolpath cannot carry",
         "The posted program cannot express this value (a drilling strategy's reduced feeds, a spindle stop at the bottom of a reaming pass...). It is named in a comment in the program at the workingstep it belongs to, so nothing is dropped silently; check whether the machining still meets the plan.";

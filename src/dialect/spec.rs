@@ -114,6 +114,10 @@ pub enum Capability {
     /// list is not an error; its sizes are unknown (Fanuc, Haas, Siemens,
     /// Heidenhain). Without it (LinuxCNC) the tool must be in the table.
     ControlHoldsTools,
+    /// The spindle speed word takes whole rpm only (Fanuc and Haas `S`:
+    /// `S350.141` is an alarm or is truncated [K]). A post rounds to the
+    /// nearest rpm and says so (W0900).
+    IntegerSpindleSpeed,
     /// Cutter compensation's entry move must be longer than the tool
     /// radius (LinuxCNC's rule; Fanuc and Siemens start up otherwise).
     CompEntryLongerThanRadius,
@@ -190,6 +194,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("general-pocket-cycle", Capability::GeneralPocketCycle),
     ("power-on-rapid", Capability::PowerOnRapid),
     ("control-holds-tools", Capability::ControlHoldsTools),
+    ("integer-spindle-speed", Capability::IntegerSpindleSpeed),
     (
         "comp-entry-longer-than-radius",
         Capability::CompEntryLongerThanRadius,

@@ -79,7 +79,9 @@ pub fn plan(project: &Project) -> Result<Vec<Item<'_>>, Vec<PostError>> {
     }
 }
 
-fn setup_frame(project: &Project) -> Frame {
+/// The setup chain (setup origin, then the first workpiece setup) as a
+/// frame: workpiece coordinates to machine coordinates.
+pub fn setup_frame(project: &Project) -> Frame {
     let mut f = Frame::identity();
     if let Some(setup) = &project.main_workplan.setup {
         if let Some(o) = &setup.origin {
@@ -161,7 +163,10 @@ fn resolve<'p>(
         ));
     }
     let top = frame.origin[2];
-    let bottom = frame.apply(feature.depth.position.location.xyz)[2];
+    let bottom = match &feature.depth {
+        Some(d) => frame.apply(d.position.location.xyz)[2],
+        None => through_bottom(project, feature, base)?,
+    };
     let clear = base.apply(ws.secplane.position.location.xyz)[2];
     let sdis = op.retract_plane.unwrap_or(DEFAULT_SDIS);
     if clear < top + sdis {
@@ -198,6 +203,19 @@ fn resolve<'p>(
         sdis,
         roughed_by,
     })
+}
+
+/// The bottom of a through feature whose depth plane is `$`: the stock's
+/// bottom (the feature ends where the material does).
+fn through_bottom(project: &Project, f: &Feature, base: &Frame) -> Result<f64, PostError> {
+    let stock = super::validate::stock(project, f.workpiece, base);
+    match stock {
+        Some(b) if super::validate::is_through(&f.kind) => Ok(b.min.z),
+        _ => Err(PostError::broken(
+            &f.id,
+            "its depth plane is `$`, and it is not a through feature of a workpiece with a BLOCK, so its depth is unknown",
+        )),
+    }
 }
 
 /// True for roughing milling operations.

@@ -147,11 +147,12 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
                     .set("radius", w.fmt.len(d / 2.0)),
             )?;
         }
+        let sw = w.spindle(spindle_rpm(s)?)?;
         w.emit(
             "tool_change.j2",
             Vals::new()
                 .set("t", s.tool_no.to_string())
-                .set_derived("s", w.fmt.feed(spindle_rpm(s)?.abs())),
+                .set_derived("s", sw),
         )?;
         w.current_tool = Some(s.tool_no);
         tool_called = true;
@@ -195,10 +196,11 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
             .set("t", s.tool_no.to_string()),
     )?;
     let rpm = spindle_rpm(s)?;
+    let sw = w.spindle(rpm)?;
     w.emit(
         "spindle.j2",
         Vals::new()
-            .set("s", w.fmt.feed(rpm.abs()))
+            .set("s", sw)
             .set("m", if rpm >= 0.0 { "3" } else { "4" })
             .set_derived("tool_called", if tool_called { "1" } else { "" }),
     )?;

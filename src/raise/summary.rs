@@ -161,7 +161,7 @@ fn element(out: &mut String, p: &Project, i: usize, e: &Executable) {
 
 fn feature(f: &Feature) -> String {
     let at = p3(f.placement.location.xyz);
-    let depth = n(-f.depth.position.location.xyz[2]);
+    let depth = n(-f.depth_z());
     match &f.kind {
         FeatureKind::RoundHole {
             diameter, bottom, ..
@@ -176,7 +176,7 @@ fn feature(f: &Feature) -> String {
         FeatureKind::ToolpathFeature => format!(
             "TOOLPATH_FEATURE {:?} lowest z {}",
             f.id,
-            n(f.depth.position.location.xyz[2])
+            n(f.depth_z())
         ),
         other => format!(
             "{:?} {} at {at} depth {depth}",

@@ -48,6 +48,15 @@ pub struct Project {
     pub tools: Vec<Tool>,
 }
 
+impl Feature {
+    /// The depth plane's z in the feature's frame (0 when unset).
+    pub fn depth_z(&self) -> f64 {
+        self.depth
+            .as_ref()
+            .map_or(0.0, |d| d.position.location.xyz[2])
+    }
+}
+
 impl Project {
     pub fn feature(&self, id: FeatureId) -> &Feature {
         &self.features[id.index()]
@@ -263,7 +272,10 @@ pub struct Feature {
     pub operations: Vec<OperationId>,
     pub placement: Axis2Placement,
     /// The depth plane (below the placement for pockets and holes).
-    pub depth: Plane,
+    /// Mandatory in ISO 14649-10, but generators leave it `$` on through
+    /// holes (read as unknown, W0803; posting takes the stock's bottom for
+    /// a through feature and refuses any other).
+    pub depth: Option<Plane>,
     pub kind: FeatureKind,
 }
 

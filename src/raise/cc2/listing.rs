@@ -45,7 +45,7 @@ fn feature(out: &mut String, f: &Feature) {
         .ref_direction
         .as_ref()
         .map_or([1.0, 0.0, 0.0], |d| d.ratios);
-    let depth = -f.depth.position.location.xyz[2];
+    let depth = -f.depth_z();
     let _ = writeln!(
         out,
         "{}: {} at {at} x {} depth {}",

@@ -76,8 +76,10 @@ impl<'f> Rd<'f> {
         }
         let pl = self.inst(arg(i, 3)?)?;
         let placement = self.placement(pl)?;
-        let d = self.inst(arg(i, 4)?)?;
-        let depth = self.plane(d)?;
+        let depth = match self.opt_inst(arg(i, 4)?)? {
+            Some(d) => Some(self.plane(d)?),
+            None => None,
+        };
         let kind = self.feature_kind(i)?;
         Ok(Feature {
             id,

@@ -15,7 +15,7 @@ impl<'p> W<'p> {
             self.workpiece(f.workpiece),
             list(f.operations.iter().map(|&o| self.operation(o)).collect()),
             self.placement(&f.placement),
-            self.plane(&f.depth),
+            opt(f.depth.as_ref().map(|d| self.plane(d))),
         ];
         let entity = self.feature_kind(&f.kind, &mut params);
         self.fill(n, &entity, params);
