@@ -40,6 +40,9 @@ pub struct Step<'p> {
     pub sdis: f64,
     /// An earlier roughing operation on the same feature, if any.
     pub roughed_by: Option<&'p Operation>,
+    /// The security plane below the retract plane (E0901), reported by
+    /// the validator.
+    pub plane_error: Option<PostError>,
 }
 
 /// Anything else in the workplan, in order.
@@ -169,15 +172,17 @@ fn resolve<'p>(
     };
     let clear = base.apply(ws.secplane.position.location.xyz)[2];
     let sdis = op.retract_plane.unwrap_or(DEFAULT_SDIS);
-    if clear < top + sdis {
-        return Err(PostError::broken(
+    // Reported by the validator, after the stock check (a feature placed
+    // outside the stock is the likelier cause).
+    let plane_error = (clear < top + sdis).then(|| {
+        PostError::broken(
             &ws.id,
             &format!(
                 "the security plane (z {clear}) is below the operation's retract plane (z {})",
                 top + sdis
             ),
-        ));
-    }
+        )
+    });
     let tool_no = match tools.iter().position(|t| *t == op.tool) {
         Some(i) => i as u32 + 1,
         None => {
@@ -202,6 +207,7 @@ fn resolve<'p>(
         clear,
         sdis,
         roughed_by,
+        plane_error,
     })
 }
 

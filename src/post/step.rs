@@ -306,7 +306,7 @@ fn tolerance(project: &Project, s: &Step<'_>) -> Option<f64> {
         .iter()
         .filter_map(|t| match t.tolerance {
             Tolerance::PlusMinus { upper, lower, .. } => Some(upper.abs().min(lower.abs())),
-            Tolerance::LimitsAndFits { .. } | Tolerance::Other(_) => None,
+            Tolerance::LimitsAndFits { .. } | Tolerance::Other(_) | Tolerance::Unset => None,
         })
         .filter(|v| *v > 0.0)
         .fold(None, |a: Option<f64>, v| Some(a.map_or(v, |a| a.min(v))));

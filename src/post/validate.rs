@@ -143,9 +143,11 @@ fn outline(kind: &FeatureKind) -> Option<Outline<'_>> {
             let d = Vector3::from(direction.ratios).try_normalize(1e-12)?;
             let end = d * distance.nominal;
             let n = Vector3::new(-d.y, d.x, 0.0) * half;
+            // Along the travel only the course itself: open ends leave
+            // the stock where the course meets its side.
             let pts = [Vector3::zeros(), end]
                 .iter()
-                .flat_map(|p| [p + n, p - n, p + d * half, p - d * half])
+                .flat_map(|p| [p + n, p - n])
                 .map(|p| [p.x, p.y])
                 .collect();
             Some((pts, placement))
@@ -237,11 +239,18 @@ pub struct Findings {
 /// Checks every workingstep of the plan.
 pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings {
     let mut out = Findings::default();
-    let mut named: Vec<&str> = Vec::new();
+    let mut named: Vec<&Feature> = Vec::new();
     for item in items {
         let Item::Step(s) = item else { continue };
-        if repeats_placement(s.feature) && !named.contains(&s.feature.id.as_str()) {
-            named.push(&s.feature.id);
+        // Once per feature, however many workingsteps cut it.
+        if named.iter().any(|f| std::ptr::eq(*f, s.feature)) {
+            if let Some(e) = &s.plane_error {
+                out.errors.push(e.clone());
+            }
+            continue;
+        }
+        named.push(s.feature);
+        if repeats_placement(s.feature) {
             out.warnings.push(repeated_placement(s.feature));
         }
         if s.bottom >= s.top - 1e-9 {
@@ -255,6 +264,9 @@ pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings
             ));
         }
         check_stock(project, s, base, &mut out);
+        if let Some(e) = &s.plane_error {
+            out.errors.push(e.clone());
+        }
         if let Some(w) = super::chipload::check(s) {
             out.warnings.push(w);
         }

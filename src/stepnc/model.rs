@@ -261,6 +261,8 @@ pub enum Tolerance {
         fitting: Option<String>,
     },
     Other(Raw),
+    /// `$`: generators leave the tolerance of a nominal size unset.
+    Unset,
 }
 
 // ---------------------------------------------------------------- features
