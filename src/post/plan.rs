@@ -131,11 +131,26 @@ fn walk<'p>(
                 // that every posted workingstep already starts with.
                 None => {}
             },
-            Executable::Other(raw) => {
-                errors.push(PostError::unsupported(&raw.entity, "this executable"))
-            }
+            Executable::Other(raw) => errors.push(other_executable(raw)),
         }
     }
+}
+
+/// E0900 for an executable kept as written: named by its its_id, with
+/// why (a workingstep kept raw when read: the W0802 warning gives the
+/// attribute).
+fn other_executable(raw: &Raw) -> PostError {
+    let id = match raw.params.first() {
+        Some(RawValue::String(s)) if !s.is_empty() => s.clone(),
+        _ => raw.entity.clone(),
+    };
+    let why = if raw.entity.eq_ignore_ascii_case("MACHINING_WORKINGSTEP") {
+        "a workingstep cncc kept as written when reading (the kept-raw warning W0802 names the attribute that does not fit ISO 14649)"
+            .to_string()
+    } else {
+        format!("a {} (an NC function cncc carries but does not post)", raw.entity)
+    };
+    PostError::unsupported(&id, &why)
 }
 
 fn resolve<'p>(

@@ -255,7 +255,7 @@ pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings
         }
         if s.bottom >= s.top - 1e-9 {
             out.errors.push(PostError::outside(
-                &s.feature.id,
+                name(s),
                 format!(
                     "its depth plane (z {}) is not below its top (z {})",
                     s.bottom, s.top
@@ -290,7 +290,7 @@ fn check_stock(project: &Project, s: &Step<'_>, base: &Frame, out: &mut Findings
         "check the feature's placement against the workpiece setup and the block's placement"
     };
     out.errors.push(PostError::outside(
-        &s.feature.id,
+        name(s),
         format!(
             "the feature ({}) lies outside the stock ({})",
             fb.describe(),
@@ -298,6 +298,16 @@ fn check_stock(project: &Project, s: &Step<'_>, base: &Frame, out: &mut Findings
         ),
         cause.into(),
     ));
+}
+
+/// The feature's its_id, or its workingstep's when the file leaves it
+/// empty (so the message can still be located).
+fn name<'s>(s: &'s Step<'_>) -> &'s str {
+    if s.feature.id.is_empty() {
+        &s.ws.id
+    } else {
+        &s.feature.id
+    }
 }
 
 /// Features that break through the stock's bottom.
