@@ -250,7 +250,7 @@ fn the_part_gives_exactly_its_features() {
 }
 
 fn depth(f: &Feature) -> f64 {
-    -f.depth.position.location.xyz[2]
+    -f.depth_z()
 }
 
 fn face(f: &Feature, p: &Project) {
