@@ -218,7 +218,8 @@ fn post_writes_the_output_file_whole() {
         out2.to_str().unwrap(),
     ]);
     assert_eq!(o.status.code(), Some(1));
-    assert!(common::stderr(&o).contains("E0900"));
+    // The validator runs first: its U slot lies outside the block (E0908).
+    assert!(common::stderr(&o).contains("E0908"));
     assert!(!out2.exists());
 }
 

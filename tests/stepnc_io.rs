@@ -594,12 +594,14 @@ fn normalised_ex1_snapshot() {
 #[test]
 fn a_feature_kept_raw_still_round_trips() {
     let Some(dir) = samples_dir() else { return };
-    // GRIMA-style: a mandatory name left `$` in the pocket's placement.
+    // A mandatory reference left `$`: the pocket's placement has no
+    // location. (A mandatory name left `$`, as GRIMA writes, reads as ''
+    // with W0803 only: see `a_name_left_unset_reads_as_empty`.)
     let text = std::fs::read_to_string(dir.join("ex1.stp"))
         .unwrap()
         .replace(
-            "#84= AXIS2_PLACEMENT_3D('POCKET1',",
-            "#84= AXIS2_PLACEMENT_3D($,",
+            "#84= AXIS2_PLACEMENT_3D('POCKET1',#115,",
+            "#84= AXIS2_PLACEMENT_3D('POCKET1',$,",
         );
     let r = read_str(&text);
     let codes: Vec<&str> = r.diagnostics.iter().map(|d| d.code.code()).collect();
@@ -644,4 +646,20 @@ fn fast_path_reads_exactly_what_the_grammar_reads() {
         assert_eq!(fast, slow, "{}", p.display());
         assert_eq!(fd, sd, "{}", p.display());
     }
+}
+
+#[test]
+fn a_name_left_unset_reads_as_empty() {
+    let Some(dir) = samples_dir() else { return };
+    let text = std::fs::read_to_string(dir.join("ex1.stp"))
+        .unwrap()
+        .replace(
+            "#84= AXIS2_PLACEMENT_3D('POCKET1',",
+            "#84= AXIS2_PLACEMENT_3D($,",
+        );
+    let r = read_str(&text);
+    let codes: Vec<&str> = r.diagnostics.iter().map(|d| d.code.code()).collect();
+    assert_eq!(codes, vec!["W0803"], "{codes:?}");
+    let p = r.project.expect("reads");
+    assert!(p.features.iter().any(|f| f.placement.name.is_empty()));
 }

@@ -175,7 +175,7 @@ fn feature(id: &str, ops: &[u32], kind: FeatureKind) -> Feature {
         workpiece: WorkpieceId(0),
         operations: ops.iter().map(|&o| OperationId(o)).collect(),
         placement: place(10.0, 20.0, 0.0),
-        depth: plane(-8.0),
+        depth: Some(plane(-8.0)),
         kind,
     }
 }

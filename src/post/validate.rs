@@ -253,7 +253,9 @@ pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings
         if repeats_placement(s.feature) {
             out.warnings.push(repeated_placement(s.feature));
         }
-        if s.bottom >= s.top - 1e-9 {
+        // Explicit toolpaths say their own depths.
+        let explicit = matches!(s.feature.kind, FeatureKind::ToolpathFeature);
+        if s.bottom >= s.top - 1e-9 && !explicit {
             out.errors.push(PostError::outside(
                 name(s),
                 format!(
