@@ -202,6 +202,9 @@ codes! {
     ProfilePlacementRepeated = "W0902", "profile-placement-repeated", Warning,
         "a profile placed at its feature's absolute position again",
         "ISO 14649-10 places a feature's profile (and a slot's course of travel) in the feature's own frame. This profile's placement has the same non-zero location as the feature's, which generators that write absolute positions twice produce; cncc reads it as the standard says (the locations add). If the file meant one absolute position, post with `--profiles-absolute`.";
+    StockUnknown = "W0903", "stock-unknown", Warning,
+        "a STEP-NC workpiece without a BLOCK: features not checked against the stock",
+        "The validator checks every feature against the workpiece's BLOCK bounding geometry (or its rawpiece's). This workpiece gives none (or another shape), so nothing says the features lie inside the material: check the placements yourself, or give the WORKPIECE a BLOCK.";
     PostNotCarried = "W0900", "post-not-carried", Warning,
         "a STEP-NC value the target's cycle or toolpath cannot carry",
         "The posted program cannot express this value (a drilling strategy's reduced feeds, a spindle stop at the bottom of a reaming pass...). It is named in a comment in the program at the workingstep it belongs to, so nothing is dropped silently; check whether the machining still meets the plan.";

@@ -278,6 +278,16 @@ pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings
 
 fn check_stock(project: &Project, s: &Step<'_>, base: &Frame, out: &mut Findings) {
     let Some(stock) = stock(project, s.feature.workpiece, base) else {
+        if !out.warnings.iter().any(|d| d.code == Code::StockUnknown) {
+            let wp = project.workpieces.get(s.feature.workpiece.index());
+            out.warnings.push(Diagnostic::new(
+                Code::StockUnknown,
+                format!(
+                    "`{}`: the workpiece gives no BLOCK, so no feature is checked against the stock",
+                    wp.map_or("", |w| w.id.as_str())
+                ),
+            ).help("give the WORKPIECE a BLOCK bounding geometry (its_bounding_geometry)"));
+        }
         return;
     };
     let Some(fb) = feature_box(s) else { return };
@@ -336,13 +346,15 @@ fn repeated_placement(f: &Feature) -> Diagnostic {
 }
 
 /// `--profiles-absolute`: a profile whose placement repeats its feature's
-/// is read as placed at the feature's origin (its own location cleared).
-/// Only such profiles change; the post says which (W0902).
+/// is read as written in workpiece coordinates: it is carried into the
+/// feature's frame (the feature's placement inverted, then the profile's;
+/// nalgebra isometries). Only such profiles change.
 pub fn profiles_absolute(project: &mut Project) {
     for f in &mut project.features {
         if !repeats_placement(f) {
             continue;
         }
+        let feature = Frame::from_placement(&f.placement);
         let p = match &mut f.kind {
             FeatureKind::ClosedPocket { boundary, .. } => match boundary {
                 ClosedProfile::Rectangular { placement, .. }
@@ -358,7 +370,16 @@ pub fn profiles_absolute(project: &mut Project) {
             _ => None,
         };
         if let Some(p) = p {
-            p.location.xyz = [0.0; 3];
+            let rel = feature.iso().inverse() * Frame::from_placement(p).iso();
+            let r = Frame::from_iso(&rel);
+            let clean = |v: P3| v.map(|c| if c.abs() < 1e-12 { 0.0 } else { c });
+            p.location.xyz = clean(r.origin);
+            if let Some(a) = p.axis.as_mut() {
+                a.ratios = clean(r.z);
+            }
+            if let Some(x) = p.ref_direction.as_mut() {
+                x.ratios = clean(r.x);
+            }
         }
     }
 }
