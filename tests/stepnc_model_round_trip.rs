@@ -399,10 +399,10 @@ fn project() -> Project {
                 open_boundary: OpenProfile::SquareU {
                     placement: None,
                     width: tl(20.0),
-                    first_radius: tl(2.0),
-                    first_angle: 90.0,
-                    second_radius: tl(2.5),
-                    second_angle: 85.0,
+                    first_radius: Some(tl(2.0)),
+                    first_angle: Some(90.0),
+                    second_radius: Some(tl(2.5)),
+                    second_angle: Some(85.0),
                 },
                 wall_boundary: Some(OpenProfile::Vee {
                     placement: Some(place(0.0, 0.0, 0.0)),

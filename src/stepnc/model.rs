@@ -362,13 +362,17 @@ pub enum OpenProfile {
         placement: Option<Axis2Placement>,
         length: NumericParameter,
     },
+    /// Radii and angles are mandatory in ISO 14649-10, but generators
+    /// leave them `$` (GRIMA's `SQUARE_U_PROFILE(#p,#w,$,$,$,$)`): read as
+    /// unset (W0803). Posting reads an unset radius as no fillet asked
+    /// and an unset angle as a vertical wall (90 degrees) [?].
     SquareU {
         placement: Option<Axis2Placement>,
         width: Toleranced,
-        first_radius: Toleranced,
-        first_angle: f64,
-        second_radius: Toleranced,
-        second_angle: f64,
+        first_radius: Option<Toleranced>,
+        first_angle: Option<f64>,
+        second_radius: Option<Toleranced>,
+        second_angle: Option<f64>,
     },
     RoundedU {
         placement: Option<Axis2Placement>,

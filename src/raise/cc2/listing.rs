@@ -144,7 +144,11 @@ pub fn kind(k: &FeatureKind) -> String {
                     width,
                     first_radius,
                     ..
-                } => format!("square U width {} radius {}", tl(width), tl(first_radius)),
+                } => format!(
+                    "square U width {} radius {}",
+                    tl(width),
+                    first_radius.as_ref().map_or("unset".into(), tl)
+                ),
                 other => format!("{other:?}"),
             };
             format!(

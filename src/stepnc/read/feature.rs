@@ -285,10 +285,16 @@ impl<'f> Rd<'f> {
             "SQUARE_U_PROFILE" => OpenProfile::SquareU {
                 placement,
                 width: self.toleranced_at(arg(i, 1)?)?,
-                first_radius: self.toleranced_at(arg(i, 2)?)?,
-                first_angle: real(arg(i, 3)?)?,
-                second_radius: self.toleranced_at(arg(i, 4)?)?,
-                second_angle: real(arg(i, 5)?)?,
+                first_radius: match self.opt_inst(arg(i, 2)?)? {
+                    Some(t) => Some(self.toleranced(t)?),
+                    None => None,
+                },
+                first_angle: opt_real(arg(i, 3)?)?,
+                second_radius: match self.opt_inst(arg(i, 4)?)? {
+                    Some(t) => Some(self.toleranced(t)?),
+                    None => None,
+                },
+                second_angle: opt_real(arg(i, 5)?)?,
             },
             "ROUNDED_U_PROFILE" => OpenProfile::RoundedU {
                 placement,
