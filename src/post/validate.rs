@@ -253,9 +253,17 @@ pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings
         if repeats_placement(s.feature) {
             out.warnings.push(repeated_placement(s.feature));
         }
-        // Explicit toolpaths say their own depths.
-        let explicit = matches!(s.feature.kind, FeatureKind::ToolpathFeature);
-        if s.bottom >= s.top - 1e-9 && !explicit {
+        // Holes, pockets and slots go down into the material; a face's or
+        // a step's depth plane may sit at its placement, and explicit
+        // toolpaths say their own depths.
+        let sinks = matches!(
+            s.feature.kind,
+            FeatureKind::RoundHole { .. }
+                | FeatureKind::ClosedPocket { .. }
+                | FeatureKind::OpenPocket { .. }
+                | FeatureKind::Slot { .. }
+        );
+        if s.bottom >= s.top - 1e-9 && sinks {
             out.errors.push(PostError::outside(
                 name(s),
                 format!(
