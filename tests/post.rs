@@ -87,7 +87,10 @@ fn siemens_cycles_carry_the_features() {
     // workpiece of ex1 gives no BLOCK, so the stock check says it could
     // not be made (W0903).
     assert_eq!(p.warnings.len(), 4, "{:#?}", p.warnings);
-    assert!(p.warnings.iter().any(|d| d.code == cncc::diag::Code::StockUnknown));
+    assert!(p
+        .warnings
+        .iter()
+        .any(|d| d.code == cncc::diag::Code::StockUnknown));
     assert!(p.text.contains("NOT POSTED: drilling strategy"));
     insta::assert_snapshot!("ex1_siemens840d", p.text);
 }

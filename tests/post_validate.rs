@@ -48,9 +48,20 @@ fn a_pocket_outside_the_block_is_refused_with_both_boxes() {
     let mut p = ex1_with_block();
     pocket(&mut p).placement.location.xyz[0] += 500.0;
     let errs = post(&p, "fanuc").expect_err("outside the stock");
-    let e = errs.iter().find(|d| d.code == Code::PostOutsideStock).expect("E0908");
-    assert!(e.message.contains("lies outside the stock"), "{}", e.message);
-    assert!(e.message.contains("stock (x 0..100, y 0..120, z -50..0)"), "{}", e.message);
+    let e = errs
+        .iter()
+        .find(|d| d.code == Code::PostOutsideStock)
+        .expect("E0908");
+    assert!(
+        e.message.contains("lies outside the stock"),
+        "{}",
+        e.message
+    );
+    assert!(
+        e.message.contains("stock (x 0..100, y 0..120, z -50..0)"),
+        "{}",
+        e.message
+    );
 }
 
 #[test]
@@ -60,9 +71,18 @@ fn a_repeated_profile_placement_is_named_and_can_be_read_as_absolute() {
     let at = f.placement.clone();
     *profile_placement(f) = Some(at);
     let errs = post(&p, "linuxcnc").expect_err("the two placements add up");
-    assert!(errs.iter().any(|d| d.code == Code::ProfilePlacementRepeated));
-    let e = errs.iter().find(|d| d.code == Code::PostOutsideStock).expect("E0908");
-    assert!(e.help.as_deref().unwrap_or("").contains("--profiles-absolute"));
+    assert!(errs
+        .iter()
+        .any(|d| d.code == Code::ProfilePlacementRepeated));
+    let e = errs
+        .iter()
+        .find(|d| d.code == Code::PostOutsideStock)
+        .expect("E0908");
+    assert!(e
+        .help
+        .as_deref()
+        .unwrap_or("")
+        .contains("--profiles-absolute"));
     cncc::post::validate::profiles_absolute(&mut p);
     let ok = post(&p, "linuxcnc").expect("posts once read as absolute");
     assert!(ok.warnings.iter().all(|d| d.code != Code::PostOutsideStock));
@@ -77,8 +97,17 @@ fn fanuc_and_haas_write_whole_rpm_and_say_so() {
     for t in ["fanuc", "haas"] {
         let posted = post(&p, t).expect("posts");
         assert!(!posted.text.contains("S350.141"), "{t}");
-        assert!(posted.text.contains("S350 ") || posted.text.contains("S350\n"), "{t}");
-        assert!(posted.warnings.iter().any(|d| d.message.contains("350.141")), "{t}");
+        assert!(
+            posted.text.contains("S350 ") || posted.text.contains("S350\n"),
+            "{t}"
+        );
+        assert!(
+            posted
+                .warnings
+                .iter()
+                .any(|d| d.message.contains("350.141")),
+            "{t}"
+        );
     }
     let siemens = post(&p, "siemens840d").expect("posts");
     assert!(siemens.text.contains("S350.141"));

@@ -57,13 +57,14 @@ fn dir() -> Option<PathBuf> {
 fn files(dir: &Path) -> Vec<PathBuf> {
     let mut out = Vec::new();
     for d in [dir.to_path_buf(), dir.join("field")] {
-        let Ok(rd) = std::fs::read_dir(&d) else { continue };
+        let Ok(rd) = std::fs::read_dir(&d) else {
+            continue;
+        };
         for e in rd.flatten() {
             let p = e.path();
             let name = p.file_name().unwrap().to_string_lossy().to_string();
-            let arm = name.starts_with("sanssouci__")
-                || name.ends_with(".stp")
-                || name.ends_with(".p21");
+            let arm =
+                name.starts_with("sanssouci__") || name.ends_with(".stp") || name.ends_with(".p21");
             if p.is_file() && arm {
                 out.push(p);
             }
@@ -86,12 +87,20 @@ fn every_field_file_reads_writes_and_reads_back() {
         let mut map = SourceMap::new();
         let r = stepnc::read_file(&path, &mut map).expect("readable");
         let name = path.display();
-        assert!(errors(&r.diagnostics).is_empty(), "{name}: {:?}", errors(&r.diagnostics));
+        assert!(
+            errors(&r.diagnostics).is_empty(),
+            "{name}: {:?}",
+            errors(&r.diagnostics)
+        );
         let p1 = r.project.unwrap_or_else(|| panic!("{name}: no model"));
         let text1 = stepnc::write_project(&p1);
         let id = map.add("again.stp", text1.clone());
         let r2 = stepnc::read_text(&text1, id);
-        assert!(errors(&r2.diagnostics).is_empty(), "{name} rewritten: {:?}", errors(&r2.diagnostics));
+        assert!(
+            errors(&r2.diagnostics).is_empty(),
+            "{name} rewritten: {:?}",
+            errors(&r2.diagnostics)
+        );
         let p2 = r2.project.expect("model of the rewritten file");
         assert_eq!(p1, p2, "{name}: the model changed through write and read");
         assert_eq!(text1, stepnc::write_project(&p2), "{name}: not a fixpoint");
@@ -135,7 +144,10 @@ fn every_field_file_posts_or_is_refused_at_a_located_entity() {
                         );
                     }
                     let located = errors(&d).iter().filter(|e| !e.labels.is_empty()).count();
-                    assert!(located > 0, "{fname}/{t}: no refusal points into the file: {d:?}");
+                    assert!(
+                        located > 0,
+                        "{fname}/{t}: no refusal points into the file: {d:?}"
+                    );
                 }
             }
         }

@@ -113,7 +113,10 @@ fn ex1_features_read_as_the_file_states_them() {
     let face = p.feature(steps[0].feature);
     assert_eq!(face.id, "PLANAR FACE1");
     assert_eq!(face.placement.location.xyz, [0.0, 0.0, 5.0]);
-    assert_eq!(face.depth.as_ref().unwrap().position.location.xyz, [0.0, 0.0, -5.0]);
+    assert_eq!(
+        face.depth.as_ref().unwrap().position.location.xyz,
+        [0.0, 0.0, -5.0]
+    );
     match &face.kind {
         FeatureKind::PlanarFace {
             course_of_travel:
@@ -140,7 +143,10 @@ fn ex1_features_read_as_the_file_states_them() {
     );
     assert_eq!(hole.id, "HOLE1 D=22MM");
     assert_eq!(hole.placement.location.xyz, [20.0, 60.0, 0.0]);
-    assert_eq!(hole.depth.as_ref().unwrap().position.location.xyz, [0.0, 0.0, -30.0]);
+    assert_eq!(
+        hole.depth.as_ref().unwrap().position.location.xyz,
+        [0.0, 0.0, -30.0]
+    );
     match &hole.kind {
         FeatureKind::RoundHole {
             diameter, bottom, ..

@@ -17,6 +17,7 @@
 //! PAT`, CYCL DEF 251/252 pockets, 232 faces, 253 slots
 //! (`slot_cycle.rs`), CYCL DEF 32 tolerance, TOOL DEF and BLK FORM.
 
+mod chipload;
 mod explicit;
 mod faces;
 pub mod features;
@@ -39,10 +40,9 @@ mod slot_cycles;
 mod slots;
 mod step;
 mod tapping;
-mod chipload;
-pub mod validate;
 mod templates;
 pub mod toolpaths;
+pub mod validate;
 pub mod values;
 
 use crate::diag::{Code, Diagnostic};

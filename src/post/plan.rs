@@ -148,7 +148,10 @@ fn other_executable(raw: &Raw) -> PostError {
         "a workingstep cncc kept as written when reading (the kept-raw warning W0802 names the attribute that does not fit ISO 14649)"
             .to_string()
     } else {
-        format!("a {} (an NC function cncc carries but does not post)", raw.entity)
+        format!(
+            "a {} (an NC function cncc carries but does not post)",
+            raw.entity
+        )
     };
     PostError::unsupported(&id, &why)
 }

@@ -75,8 +75,7 @@ pub fn parts<'p>(s: &Step<'p>) -> Result<Parts<'p>, PostError> {
         } => {
             let angle = |a: &Option<f64>| a.unwrap_or(90.0);
             let radius = |r: &Option<Toleranced>| r.as_ref().map_or(0.0, |t| t.nominal);
-            if (angle(first_angle) - 90.0).abs() > 1e-9
-                || (angle(second_angle) - 90.0).abs() > 1e-9
+            if (angle(first_angle) - 90.0).abs() > 1e-9 || (angle(second_angle) - 90.0).abs() > 1e-9
             {
                 return Err(PostError::unsupported(
                     &s.feature.id,

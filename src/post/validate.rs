@@ -131,11 +131,12 @@ fn outline(kind: &FeatureKind) -> Option<Outline<'_>> {
             ClosedProfile::Other(_) => None,
         },
         FeatureKind::Slot {
-            course_of_travel: TravelPath::Linear {
-                placement,
-                distance,
-                direction,
-            },
+            course_of_travel:
+                TravelPath::Linear {
+                    placement,
+                    distance,
+                    direction,
+                },
             swept_shape,
             ..
         } => {
@@ -180,18 +181,17 @@ fn curve_points(c: &Curve) -> Vec<[f64; 2]> {
     match c {
         Curve::Polyline { points, .. } => points.iter().map(|p| [p.xyz[0], p.xyz[1]]).collect(),
         Curve::Line { start, end, .. } => vec![xy(start), xy(end)],
-        Curve::Arc {
-            circle, radius, ..
-        } => {
+        Curve::Arc { circle, radius, .. } => {
             let c = circle.location.xyz;
             square(*radius)
                 .into_iter()
                 .map(|[x, y]| [c[0] + x, c[1] + y])
                 .collect()
         }
-        Curve::Composite { segments, .. } => {
-            segments.iter().flat_map(|s| curve_points(&s.curve)).collect()
-        }
+        Curve::Composite { segments, .. } => segments
+            .iter()
+            .flat_map(|s| curve_points(&s.curve))
+            .collect(),
         Curve::Other(_) => Vec::new(),
     }
 }
@@ -210,7 +210,8 @@ fn profile_placement(kind: &FeatureKind) -> Option<&Axis2Placement> {
             ClosedProfile::Other(_) => None,
         },
         FeatureKind::Slot {
-            course_of_travel: TravelPath::Linear { placement, .. } | TravelPath::General { placement, .. },
+            course_of_travel:
+                TravelPath::Linear { placement, .. } | TravelPath::General { placement, .. },
             ..
         } => placement.as_ref(),
         _ => None,

@@ -173,11 +173,9 @@ fn feature(f: &Feature) -> String {
                 super::cc2::listing::hole_bottom(bottom)
             )
         }
-        FeatureKind::ToolpathFeature => format!(
-            "TOOLPATH_FEATURE {:?} lowest z {}",
-            f.id,
-            n(f.depth_z())
-        ),
+        FeatureKind::ToolpathFeature => {
+            format!("TOOLPATH_FEATURE {:?} lowest z {}", f.id, n(f.depth_z()))
+        }
         other => format!(
             "{:?} {} at {at} depth {depth}",
             f.id,

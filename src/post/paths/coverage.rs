@@ -109,8 +109,14 @@ fn sweep(swept: &mut [bool], floor: &Floor, a: P2, b: P2, r: f64) {
     let cell = |v: f64, k: usize, n: usize| {
         (((v - floor.lo[k]) / floor.cell).floor().max(0.0) as usize).min(n - 1)
     };
-    let (i0, i1) = (cell(a[0].min(b[0]) - r, 0, nx), cell(a[0].max(b[0]) + r, 0, nx));
-    let (j0, j1) = (cell(a[1].min(b[1]) - r, 1, ny), cell(a[1].max(b[1]) + r, 1, ny));
+    let (i0, i1) = (
+        cell(a[0].min(b[0]) - r, 0, nx),
+        cell(a[0].max(b[0]) + r, 0, nx),
+    );
+    let (j0, j1) = (
+        cell(a[1].min(b[1]) - r, 1, ny),
+        cell(a[1].max(b[1]) + r, 1, ny),
+    );
     for j in j0..=j1 {
         for i in i0..=i1 {
             if segment_distance(floor.centre(i, j), a, b) <= r + 1e-9 {

@@ -230,7 +230,10 @@ fn slot_feature(r: &Raiser, name: &str, g: &SlotGeom, edge: f64) -> Feature {
         workpiece: WorkpieceId(0),
         operations: Vec::new(),
         placement: placement(name, [g.start[0], g.start[1], top], [1.0, 0.0]),
-        depth: Some(plane(&format!("{name} DEPTH"), [0.0, 0.0, r6(g.bottom - top)])),
+        depth: Some(plane(
+            &format!("{name} DEPTH"),
+            [0.0, 0.0, r6(g.bottom - top)],
+        )),
         kind: FeatureKind::Slot {
             course_of_travel: TravelPath::Linear {
                 placement: None,

@@ -89,9 +89,7 @@ impl<'f> Rd<'f> {
             },
             "PARALLEL" | "SELECTIVE" | "NON_SEQUENTIAL" | "SET_MARK" | "WAIT_FOR_MARK"
             | "LOAD_TOOL" | "UNLOAD_TOOL" | "RETURN_HOME" | "INDEX_TABLE" | "EXCHANGE_PALLET"
-            | "INDEX_PALLET" => {
-                Executable::Other(self.raw(i)?)
-            }
+            | "INDEX_PALLET" => Executable::Other(self.raw(i)?),
             _ => {
                 return Err(fail(
                     i.entity_span,

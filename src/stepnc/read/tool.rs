@@ -9,8 +9,11 @@ impl<'f> Rd<'f> {
         if let Some(&id) = self.tools.get(&i.id) {
             return Ok(id);
         }
-        if expect(i, &["MILLING_CUTTING_TOOL", "CUTTING_TOOL"], "a MILLING_CUTTING_TOOL")?
-            == "CUTTING_TOOL"
+        if expect(
+            i,
+            &["MILLING_CUTTING_TOOL", "CUTTING_TOOL"],
+            "a MILLING_CUTTING_TOOL",
+        )? == "CUTTING_TOOL"
         {
             self.diags.push(abstract_tool(i));
         }
@@ -111,7 +114,10 @@ impl<'f> Rd<'f> {
 fn abstract_tool(i: &Instance) -> Diagnostic {
     Diagnostic::new(
         Code::AbstractInstance,
-        format!("#{} CUTTING_TOOL is an abstract entity of ISO 14649-111", i.id),
+        format!(
+            "#{} CUTTING_TOOL is an abstract entity of ISO 14649-111",
+            i.id
+        ),
     )
     .primary(i.entity_span, "read as a MILLING_CUTTING_TOOL")
     .help("write MILLING_CUTTING_TOOL(its_id, body, edges, length, $, $); cncc writes it so")
