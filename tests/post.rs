@@ -83,8 +83,14 @@ fn siemens_cycles_carry_the_features() {
         l.contains(&";WS(4) WS ROUGH POCKET1 Feature=closed_pocket POCKET1")
             || l.contains(&"; WS(4) WS ROUGH POCKET1 Feature=closed_pocket POCKET1")
     );
-    // The drilling strategy and the reamer's spindle stop are named.
-    assert_eq!(p.warnings.len(), 3, "{:#?}", p.warnings);
+    // The drilling strategy and the reamer's spindle stop are named; the
+    // workpiece of ex1 gives no BLOCK, so the stock check says it could
+    // not be made (W0903).
+    assert_eq!(p.warnings.len(), 4, "{:#?}", p.warnings);
+    assert!(p
+        .warnings
+        .iter()
+        .any(|d| d.code == cncc::diag::Code::StockUnknown));
     assert!(p.text.contains("NOT POSTED: drilling strategy"));
     insta::assert_snapshot!("ex1_siemens840d", p.text);
 }
@@ -218,7 +224,8 @@ fn post_writes_the_output_file_whole() {
         out2.to_str().unwrap(),
     ]);
     assert_eq!(o.status.code(), Some(1));
-    assert!(common::stderr(&o).contains("E0900"));
+    // The validator runs first: its U slot lies outside the block (E0908).
+    assert!(common::stderr(&o).contains("E0908"));
     assert!(!out2.exists());
 }
 
@@ -388,7 +395,7 @@ fn ex1_with_slot() -> cncc::stepnc::model::Project {
     f.id = "SLOT1".into();
     f.placement.location.xyz = [50.0, 10.0, 0.0];
     f.placement.ref_direction.as_mut().unwrap().ratios = [1.0, 0.0, 0.0];
-    f.depth.position.location.xyz = [0.0, 0.0, -5.0];
+    f.depth.as_mut().unwrap().position.location.xyz = [0.0, 0.0, -5.0];
     f.kind = FeatureKind::Slot {
         course_of_travel: TravelPath::Linear {
             placement: None,

@@ -294,7 +294,7 @@ fn ex1_with_slot() -> Project {
     f.id = "SLOT1".into();
     f.placement.location.xyz = [50.0, 15.0, 0.0];
     f.placement.ref_direction.as_mut().unwrap().ratios = [1.0, 0.0, 0.0];
-    f.depth.position.location.xyz = [0.0, 0.0, -5.0];
+    f.depth.as_mut().unwrap().position.location.xyz = [0.0, 0.0, -5.0];
     f.kind = FeatureKind::Slot {
         course_of_travel: TravelPath::Linear {
             placement: None,

@@ -53,7 +53,7 @@ fn with_slots(width: f64, slots: &[([f64; 2], [f64; 3])], ends: Vec<SlotEnd>) ->
         f.id = name.clone();
         f.placement.location.xyz = [at[0], at[1], 0.0];
         f.placement.ref_direction.as_mut().unwrap().ratios = [1.0, 0.0, 0.0];
-        f.depth.position.location.xyz = [0.0, 0.0, -5.0];
+        f.depth.as_mut().unwrap().position.location.xyz = [0.0, 0.0, -5.0];
         let mut direction = p.features[0].placement.ref_direction.clone().unwrap();
         direction.ratios = *dir;
         f.kind = FeatureKind::Slot {

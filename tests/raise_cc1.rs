@@ -235,7 +235,7 @@ fn siemens_part_gives_the_same_holes_and_cuts() {
     let holes = |r: &Raised| {
         hole_ops(&r.project)
             .iter()
-            .map(|(f, _)| (f.placement.location.xyz, -f.depth.position.location.xyz[2]))
+            .map(|(f, _)| (f.placement.location.xyz, -f.depth_z()))
             .take(5)
             .collect::<Vec<_>>()
     };

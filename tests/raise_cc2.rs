@@ -89,7 +89,7 @@ fn skeleton_with(tools: &[(&str, ToolBodyKind, f64)]) -> Project {
             extra: Vec::new(),
         },
         cutting_edges: vec![CuttingComponent {
-            tool_offset_length: 50.0,
+            tool_offset_length: Some(50.0),
             material: None,
             technological_data: None,
             expected_tool_life: None,
@@ -250,7 +250,7 @@ fn the_part_gives_exactly_its_features() {
 }
 
 fn depth(f: &Feature) -> f64 {
-    -f.depth.position.location.xyz[2]
+    -f.depth_z()
 }
 
 fn face(f: &Feature, p: &Project) {

@@ -175,7 +175,7 @@ fn feature(id: &str, ops: &[u32], kind: FeatureKind) -> Feature {
         workpiece: WorkpieceId(0),
         operations: ops.iter().map(|&o| OperationId(o)).collect(),
         placement: place(10.0, 20.0, 0.0),
-        depth: plane(-8.0),
+        depth: Some(plane(-8.0)),
         kind,
     }
 }
@@ -197,7 +197,7 @@ fn tool(id: &str, kind: ToolBodyKind, d: f64) -> Tool {
             extra: vec![],
         },
         cutting_edges: vec![CuttingComponent {
-            tool_offset_length: 60.0,
+            tool_offset_length: Some(60.0),
             material: None,
             technological_data: None,
             expected_tool_life: Some(900.0),
@@ -399,10 +399,10 @@ fn project() -> Project {
                 open_boundary: OpenProfile::SquareU {
                     placement: None,
                     width: tl(20.0),
-                    first_radius: tl(2.0),
-                    first_angle: 90.0,
-                    second_radius: tl(2.5),
-                    second_angle: 85.0,
+                    first_radius: Some(tl(2.0)),
+                    first_angle: Some(90.0),
+                    second_radius: Some(tl(2.5)),
+                    second_angle: Some(85.0),
                 },
                 wall_boundary: Some(OpenProfile::Vee {
                     placement: Some(place(0.0, 0.0, 0.0)),

@@ -153,6 +153,11 @@ pub enum Command {
         output: Option<PathBuf>,
         #[arg(long, value_enum, default_value_t = Format::Human)]
         format: Format,
+        /// Read a profile whose placement repeats its feature's (some
+        /// generators write the absolute position twice) as placed at the
+        /// feature's origin, instead of adding the two as ISO 14649-10 says.
+        #[arg(long = "profiles-absolute")]
+        profiles_absolute: bool,
     },
     /// Run a program and print its canonical machining calls, one per line,
     /// as LinuxCNC's rs274 prints them.

@@ -108,7 +108,15 @@ pub fn run(cli: Cli) -> i32 {
             to,
             output,
             format,
-        } => post::run(&mut ctx, file, to, output.as_deref(), *format),
+            profiles_absolute,
+        } => post::run(
+            &mut ctx,
+            file,
+            to,
+            output.as_deref(),
+            *format,
+            *profiles_absolute,
+        ),
         Command::Canon {
             file,
             dialect,

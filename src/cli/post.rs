@@ -7,6 +7,8 @@ use crate::cli::context::{Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::diag::Diagnostic;
 use crate::span::FileId;
 use crate::stepnc::model::Project;
+use crate::stepnc::part21::P21File;
+use crate::stepnc::query::locate_diagnostics;
 use std::path::Path;
 
 pub fn run(
@@ -15,24 +17,30 @@ pub fn run(
     to: &str,
     output: Option<&Path>,
     format: Format,
+    profiles_absolute: bool,
 ) -> Result<i32, Failure> {
     let target = ctx.spec(to)?;
     let (id, text) = ctx.add_file(file)?;
-    let project = match read_project(ctx, &text, id, format) {
+    let (mut project, graph) = match read_project(ctx, &text, id, format) {
         Ok(p) => p,
         Err(diags) => {
             ctx.print(&diags, format);
             return Ok(EXIT_INPUT_ERRORS);
         }
     };
+    if profiles_absolute {
+        crate::post::validate::profiles_absolute(&mut project);
+    }
     match crate::post::post(&project, &target) {
-        Ok(posted) => {
+        Ok(mut posted) => {
+            locate_diagnostics(&graph, &mut posted.warnings);
             ctx.print(&posted.warnings, format);
             crate::cli::output::emit_output(output, &posted.text)
                 .map_err(|e| Failure(format!("cannot write the program: {e}")))?;
             Ok(EXIT_OK)
         }
-        Err(diags) => {
+        Err(mut diags) => {
+            locate_diagnostics(&graph, &mut diags);
             ctx.print(&diags, format);
             Ok(EXIT_INPUT_ERRORS)
         }
@@ -46,12 +54,12 @@ fn read_project(
     text: &str,
     file: FileId,
     format: Format,
-) -> Result<Project, Vec<Diagnostic>> {
+) -> Result<(Project, P21File), Vec<Diagnostic>> {
     let read = crate::stepnc::read_text(text, file);
     match read.project {
         Some(p) if !read.diagnostics.iter().any(Diagnostic::is_error) => {
             ctx.print(&read.diagnostics, format);
-            Ok(p)
+            Ok((p, read.graph))
         }
         _ => Err(read.diagnostics),
     }

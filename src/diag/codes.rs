@@ -196,6 +196,18 @@ codes! {
     PostTapHand = "E0907", "post-tap-hand", Error,
         "a tap whose hand contradicts the spindle direction",
         "A right-hand tap cuts turning clockwise (M3, a positive spindle speed in cncc's model; ISO 14649 stores it negative), a left-hand tap counter-clockwise (M4). The TAP tool's hand_of_cut and the operation's spindle speed disagree, so the tapping cycle (G84 or G74, the sign of CYCLE84's PIT or CYCL DEF 207's Q239) cannot be chosen. Make them agree in the STEP-NC file.";
+    PostOutsideStock = "E0908", "post-outside-stock", Error,
+        "a STEP-NC feature outside the stock, or without depth",
+        "Before posting, cncc checks that every feature lies inside the workpiece's BLOCK (the rawpiece's when there is one), placed through the setup and workpiece setup, and goes down from its top. The message gives the feature's box and the stock's, both in machine coordinates, and the likely cause. A profile whose placement repeats its feature's (ISO 14649-10 places profiles in the feature's frame, so the two add) is the usual one: `cncc post --profiles-absolute` reads such profiles as placed at their feature's origin.";
+    ImplausibleFeed = "W0901", "implausible-feed", Warning,
+        "a feed that implies an implausible chip load for the tool",
+        "The feed over the spindle speed (and the tool's teeth) gives the chip load per tooth (milling) or the feed per revolution (drilling). A value far above what such a tool takes (more than a tenth of its diameter per revolution for a drill, a tenth of its diameter or 1 mm per tooth for a cutter) is usually a unit mistake in the file (feed in mm/s written as m/s). The post goes on; check the technology.";
+    ProfilePlacementRepeated = "W0902", "profile-placement-repeated", Warning,
+        "a profile placed at its feature's absolute position again",
+        "ISO 14649-10 places a feature's profile (and a slot's course of travel) in the feature's own frame. This profile's placement has the same non-zero location as the feature's, which generators that write absolute positions twice produce; cncc reads it as the standard says (the locations add). If the file meant one absolute position, post with `--profiles-absolute`.";
+    StockUnknown = "W0903", "stock-unknown", Warning,
+        "a STEP-NC workpiece without a BLOCK: features not checked against the stock",
+        "The validator checks every feature against the workpiece's BLOCK bounding geometry (or its rawpiece's). This workpiece gives none (or another shape), so nothing says the features lie inside the material: check the placements yourself, or give the WORKPIECE a BLOCK.";
     PostNotCarried = "W0900", "post-not-carried", Warning,
         "a STEP-NC value the target's cycle or toolpath cannot carry",
         "The posted program cannot express this value (a drilling strategy's reduced feeds, a spindle stop at the bottom of a reaming pass...). It is named in a comment in the program at the workingstep it belongs to, so nothing is dropped silently; check whether the machining still meets the plan.";
@@ -509,6 +521,9 @@ codes! {
     TapHandAgainstSpindle = "W0805", "tap-hand-against-spindle", Warning,
         "a tap whose hand_of_cut disagrees with the spindle direction of its operation",
         "A right-hand tap cuts turning clockwise (M3; ISO 14649 writes that speed negative), a left-hand tap counter-clockwise (M4; positive in the file). The TAP tool's hand_of_cut and the tapping operation's spindle speed disagree. cncc reads on; posting it fails (E0907) until they agree.";
+    AbstractInstance = "W0806", "abstract-instance", Warning,
+        "an abstract ISO 14649 entity instantiated",
+        "The file instantiates an entity the schema declares ABSTRACT (JSDAI writers put `CUTTING_TOOL(id, body, edges, length)` where ISO 14649-111 asks for its subtype MILLING_CUTTING_TOOL). cncc reads it as that subtype, its added attributes unset, and writes the subtype back.";
     KeptRaw = "W0802", "kept-raw", Warning,
         "a value cncc could not read into its model, kept as written",
         "The instance does not have the form ISO 14649 gives it (a mandatory attribute unset, an unexpected entity), so the typed model keeps it as written and carries it to the output unchanged, but it takes no part in checks, differences or posting.";

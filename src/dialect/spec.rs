@@ -117,6 +117,10 @@ pub enum Capability {
     /// A program may select a tool by its name (Siemens `T="DRILL"`,
     /// Heidenhain `TOOL CALL "DRILL"`); without it a tool is a number.
     ToolsByName,
+    /// The spindle speed word takes whole rpm only (Fanuc and Haas `S`:
+    /// `S350.141` is an alarm or is truncated [K]). A post rounds to the
+    /// nearest rpm and says so (W0900).
+    IntegerSpindleSpeed,
     /// Cutter compensation's entry move must be longer than the tool
     /// radius (LinuxCNC's rule; Fanuc and Siemens start up otherwise).
     CompEntryLongerThanRadius,
@@ -203,6 +207,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("power-on-rapid", Capability::PowerOnRapid),
     ("control-holds-tools", Capability::ControlHoldsTools),
     ("tools-by-name", Capability::ToolsByName),
+    ("integer-spindle-speed", Capability::IntegerSpindleSpeed),
     (
         "comp-entry-longer-than-radius",
         Capability::CompEntryLongerThanRadius,

@@ -74,7 +74,7 @@ fn tool(id: &str, kind: ToolBodyKind, d: f64, teeth: i64, len: f64, edge: f64) -
             extra: Vec::new(),
         },
         cutting_edges: vec![CuttingComponent {
-            tool_offset_length: len,
+            tool_offset_length: Some(len),
             material: None,
             technological_data: None,
             expected_tool_life: None,
@@ -133,7 +133,7 @@ fn features() -> Vec<Feature> {
             workpiece: WorkpieceId(0),
             operations: vec![OperationId(0)],
             placement: place([0.0, 0.0, 5.0], [1.0, 0.0, 0.0]),
-            depth: plane("PLANAR FACE1-DEPTH PLANE", [0.0, 0.0, -5.0]),
+            depth: Some(plane("PLANAR FACE1-DEPTH PLANE", [0.0, 0.0, -5.0])),
             kind: FeatureKind::PlanarFace {
                 course_of_travel: TravelPath::Linear {
                     placement: None,
@@ -157,7 +157,7 @@ fn features() -> Vec<Feature> {
             workpiece: WorkpieceId(0),
             operations: vec![OperationId(1), OperationId(2)],
             placement: place([20.0, 60.0, 0.0], [1.0, 0.0, 0.0]),
-            depth: plane("DEPTH SURFACE FOR ROUND HOLE1", [0.0, 0.0, -30.0]),
+            depth: Some(plane("DEPTH SURFACE FOR ROUND HOLE1", [0.0, 0.0, -30.0])),
             kind: FeatureKind::RoundHole {
                 diameter: tol(22.0, 0.3),
                 change_in_diameter: None,
@@ -169,7 +169,7 @@ fn features() -> Vec<Feature> {
             workpiece: WorkpieceId(0),
             operations: vec![OperationId(3), OperationId(4)],
             placement: place([70.0, 70.0, 0.0], [0.0, 1.0, 0.0]),
-            depth: plane("DEPTH SURFACE FOR POCKET1", [0.0, 0.0, -30.0]),
+            depth: Some(plane("DEPTH SURFACE FOR POCKET1", [0.0, 0.0, -30.0])),
             kind: FeatureKind::ClosedPocket {
                 pocket: PocketCommon {
                     bosses: Vec::new(),

@@ -1,7 +1,10 @@
 //! Rigid frames (an origin and orthonormal axes) for the STEP-NC placement
-//! chain: setup → workpiece setup → feature → profile.
+//! chain: setup → workpiece setup → feature → profile. The transforms
+//! are nalgebra isometries; the fields are their origin and axes, for
+//! the writers that set cycle parameters from them.
 
 use crate::stepnc::model::{Axis2Placement, P3};
+use nalgebra::{IsometryMatrix3, Matrix3, Point3, Rotation3, Translation3, Vector3};
 
 /// A placement as a transform: `apply(p) = origin + x*p.x + y*p.y + z*p.z`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -14,12 +17,7 @@ pub struct Frame {
 
 impl Frame {
     pub fn identity() -> Self {
-        Frame {
-            origin: [0.0; 3],
-            x: [1.0, 0.0, 0.0],
-            y: [0.0, 1.0, 0.0],
-            z: [0.0, 0.0, 1.0],
-        }
+        Frame::from_iso(&IsometryMatrix3::identity())
     }
 
     /// From an `axis2_placement_3d` (axis default +Z, ref_direction +X;
@@ -28,45 +26,62 @@ impl Frame {
         let z = p
             .axis
             .as_ref()
-            .map(|d| unit(d.ratios))
-            .unwrap_or([0.0, 0.0, 1.0]);
+            .map(|d| v(d.ratios))
+            .and_then(|a| a.try_normalize(1e-12))
+            .unwrap_or_else(Vector3::z);
         let xr = p
             .ref_direction
             .as_ref()
-            .map(|d| d.ratios)
-            .unwrap_or([1.0, 0.0, 0.0]);
-        let x = unit(sub(xr, scale(z, dot(xr, z))));
-        let x = if norm(x) < 0.5 { any_orthogonal(z) } else { x };
-        let y = cross(z, x);
+            .map(|d| v(d.ratios))
+            .unwrap_or_else(Vector3::x);
+        let x = (xr - z * xr.dot(&z))
+            .try_normalize(1e-9)
+            .unwrap_or_else(|| any_orthogonal(&z));
+        let y = z.cross(&x);
+        let r = Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[x, y, z]));
+        Frame::from_iso(&IsometryMatrix3::from_parts(
+            Translation3::from(v(p.location.xyz)),
+            r,
+        ))
+    }
+
+    /// The frame as a rigid transform (nalgebra).
+    pub fn iso(&self) -> IsometryMatrix3<f64> {
+        let r = Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[
+            v(self.x),
+            v(self.y),
+            v(self.z),
+        ]));
+        IsometryMatrix3::from_parts(Translation3::from(v(self.origin)), r)
+    }
+
+    pub fn from_iso(i: &IsometryMatrix3<f64>) -> Self {
+        let m = i.rotation.matrix();
+        let col = |k: usize| -> P3 { [m[(0, k)], m[(1, k)], m[(2, k)]] };
+        let t = &i.translation.vector;
         Frame {
-            origin: p.location.xyz,
-            x,
-            y,
-            z,
+            origin: [t.x, t.y, t.z],
+            x: col(0),
+            y: col(1),
+            z: col(2),
         }
     }
 
     /// `inner` placed in this frame.
     pub fn then(&self, inner: &Frame) -> Frame {
-        Frame {
-            origin: self.apply(inner.origin),
-            x: self.rotate(inner.x),
-            y: self.rotate(inner.y),
-            z: self.rotate(inner.z),
-        }
+        Frame::from_iso(&(self.iso() * inner.iso()))
     }
 
     /// A point given in this frame, in the outer frame.
     pub fn apply(&self, p: P3) -> P3 {
-        add(self.origin, self.rotate(p))
+        let q = self.iso() * Point3::from(v(p));
+        [q.x, q.y, q.z]
     }
 
     /// A direction given in this frame, in the outer frame.
-    pub fn rotate(&self, v: P3) -> P3 {
-        add(
-            add(scale(self.x, v[0]), scale(self.y, v[1])),
-            scale(self.z, v[2]),
-        )
+    pub fn rotate(&self, d: P3) -> P3 {
+        let q = self.iso().rotation * v(d);
+        [q.x, q.y, q.z]
     }
 
     /// True when the local z axis is the outer +Z.
@@ -80,43 +95,17 @@ impl Frame {
     }
 }
 
-fn add(a: P3, b: P3) -> P3 {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+fn v(a: P3) -> Vector3<f64> {
+    Vector3::new(a[0], a[1], a[2])
 }
-fn sub(a: P3, b: P3) -> P3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn scale(a: P3, k: f64) -> P3 {
-    [a[0] * k, a[1] * k, a[2] * k]
-}
-fn dot(a: P3, b: P3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: P3, b: P3) -> P3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-fn norm(a: P3) -> f64 {
-    dot(a, a).sqrt()
-}
-fn unit(a: P3) -> P3 {
-    let n = norm(a);
-    if n < 1e-12 {
-        a
+
+fn any_orthogonal(z: &Vector3<f64>) -> Vector3<f64> {
+    let t = if z.x.abs() < 0.9 {
+        Vector3::x()
     } else {
-        scale(a, 1.0 / n)
-    }
-}
-fn any_orthogonal(z: P3) -> P3 {
-    let t = if z[0].abs() < 0.9 {
-        [1.0, 0.0, 0.0]
-    } else {
-        [0.0, 1.0, 0.0]
+        Vector3::y()
     };
-    unit(sub(t, scale(z, dot(t, z))))
+    (t - z * t.dot(z)).normalize()
 }
 
 #[cfg(test)]

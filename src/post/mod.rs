@@ -17,6 +17,7 @@
 //! PAT`, CYCL DEF 251/252 pockets, 232 faces, 253 slots
 //! (`slot_cycle.rs`), CYCL DEF 32 tolerance, TOOL DEF and BLK FORM.
 
+mod chipload;
 mod explicit;
 mod faces;
 pub mod features;
@@ -41,6 +42,7 @@ mod step;
 mod tapping;
 mod templates;
 pub mod toolpaths;
+pub mod validate;
 pub mod values;
 
 use crate::diag::{Code, Diagnostic};
@@ -78,6 +80,15 @@ impl PostError {
             code: Code::PostGeometry,
             message: format!("`{what}`: {why}"),
             help: "choose a smaller tool or another strategy".into(),
+        }
+    }
+    /// E0908: the validator found the feature outside the stock (or
+    /// with no depth).
+    pub fn outside(what: &str, why: String, help: String) -> Self {
+        PostError {
+            code: Code::PostOutsideStock,
+            message: format!("`{what}`: {why}"),
+            help,
         }
     }
     pub fn template(why: String) -> Self {
@@ -120,12 +131,18 @@ pub fn post(project: &Project, target: &DialectSpec) -> Result<Posted, Vec<Diagn
         Some(Ok(p)) => p,
     };
     let items = plan::plan(project).map_err(into_diags)?;
+    let found = validate::validate(project, &items, &plan::setup_frame(project));
+    if !found.errors.is_empty() {
+        let mut d = into_diags(found.errors);
+        d.extend(found.warnings);
+        return Err(d);
+    }
     let mut w = Writer {
         post: &post,
         target,
         fmt: Fmt::new(&target.numbers),
         out: String::new(),
-        warnings: Vec::new(),
+        warnings: found.warnings,
         current_tool: None,
         defined_tools: Vec::new(),
         coolant_on: false,
@@ -240,6 +257,31 @@ impl Writer<'_> {
             self.warnings.push(d);
         }
         e.text
+    }
+
+    /// The spindle speed word's value (rpm, unsigned): whole rpm where the
+    /// target's S takes no decimals (`integer-spindle-speed`), with a
+    /// warning when that rounds.
+    pub fn spindle(&mut self, rpm: f64) -> Result<String, PostError> {
+        let rpm = rpm.abs();
+        if !self
+            .target
+            .has(crate::dialect::Capability::IntegerSpindleSpeed)
+        {
+            return Ok(self.fmt.feed(rpm));
+        }
+        let whole = rpm.round();
+        if (whole - rpm).abs() > 1e-9 {
+            let what = format!(
+                "spindle speed {} rpm exactly: written S{} (the target's S takes whole rpm)",
+                self.fmt.plain(rpm, 3),
+                self.fmt.plain(whole, 0)
+            );
+            if !self.warnings.iter().any(|d| d.message.ends_with(&what)) {
+                self.not_carried(&what)?;
+            }
+        }
+        Ok(self.fmt.plain(whole, 0))
     }
 
     /// A value the target cannot carry: a comment in the program and a

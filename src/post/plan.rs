@@ -40,6 +40,9 @@ pub struct Step<'p> {
     pub sdis: f64,
     /// An earlier roughing operation on the same feature, if any.
     pub roughed_by: Option<&'p Operation>,
+    /// The security plane below the retract plane (E0901), reported by
+    /// the validator.
+    pub plane_error: Option<PostError>,
 }
 
 /// Anything else in the workplan, in order.
@@ -79,7 +82,9 @@ pub fn plan(project: &Project) -> Result<Vec<Item<'_>>, Vec<PostError>> {
     }
 }
 
-fn setup_frame(project: &Project) -> Frame {
+/// The setup chain (setup origin, then the first workpiece setup) as a
+/// frame: workpiece coordinates to machine coordinates.
+pub fn setup_frame(project: &Project) -> Frame {
     let mut f = Frame::identity();
     if let Some(setup) = &project.main_workplan.setup {
         if let Some(o) = &setup.origin {
@@ -126,11 +131,29 @@ fn walk<'p>(
                 // that every posted workingstep already starts with.
                 None => {}
             },
-            Executable::Other(raw) => {
-                errors.push(PostError::unsupported(&raw.entity, "this executable"))
-            }
+            Executable::Other(raw) => errors.push(other_executable(raw)),
         }
     }
+}
+
+/// E0900 for an executable kept as written: named by its its_id, with
+/// why (a workingstep kept raw when read: the W0802 warning gives the
+/// attribute).
+fn other_executable(raw: &Raw) -> PostError {
+    let id = match raw.params.first() {
+        Some(RawValue::String(s)) if !s.is_empty() => s.clone(),
+        _ => raw.entity.clone(),
+    };
+    let why = if raw.entity.eq_ignore_ascii_case("MACHINING_WORKINGSTEP") {
+        "a workingstep cncc kept as written when reading (the kept-raw warning W0802 names the attribute that does not fit ISO 14649)"
+            .to_string()
+    } else {
+        format!(
+            "a {} (an NC function cncc carries but does not post)",
+            raw.entity
+        )
+    };
+    PostError::unsupported(&id, &why)
 }
 
 fn resolve<'p>(
@@ -161,18 +184,23 @@ fn resolve<'p>(
         ));
     }
     let top = frame.origin[2];
-    let bottom = frame.apply(feature.depth.position.location.xyz)[2];
+    let bottom = match &feature.depth {
+        Some(d) => frame.apply(d.position.location.xyz)[2],
+        None => through_bottom(project, feature, base)?,
+    };
     let clear = base.apply(ws.secplane.position.location.xyz)[2];
     let sdis = op.retract_plane.unwrap_or(DEFAULT_SDIS);
-    if clear < top + sdis {
-        return Err(PostError::broken(
+    // Reported by the validator, after the stock check (a feature placed
+    // outside the stock is the likelier cause).
+    let plane_error = (clear < top + sdis).then(|| {
+        PostError::broken(
             &ws.id,
             &format!(
                 "the security plane (z {clear}) is below the operation's retract plane (z {})",
                 top + sdis
             ),
-        ));
-    }
+        )
+    });
     let tool_no = match tools.iter().position(|t| *t == op.tool) {
         Some(i) => i as u32 + 1,
         None => {
@@ -197,7 +225,21 @@ fn resolve<'p>(
         clear,
         sdis,
         roughed_by,
+        plane_error,
     })
+}
+
+/// The bottom of a through feature whose depth plane is `$`: the stock's
+/// bottom (the feature ends where the material does).
+fn through_bottom(project: &Project, f: &Feature, base: &Frame) -> Result<f64, PostError> {
+    let stock = super::validate::stock(project, f.workpiece, base);
+    match stock {
+        Some(b) if super::validate::is_through(&f.kind) => Ok(b.min.z),
+        _ => Err(PostError::broken(
+            &f.id,
+            "its depth plane is `$`, and it is not a through feature of a workpiece with a BLOCK, so its depth is unknown",
+        )),
+    }
 }
 
 /// True for roughing milling operations.

@@ -109,10 +109,10 @@ fn geometry(s: &Step<'_>) -> Option<(Frame, f64, f64)> {
             second_radius,
             second_angle,
             ..
-        } if (first_angle - 90.0).abs() < 1e-9
-            && (second_angle - 90.0).abs() < 1e-9
-            && first_radius.nominal <= 0.0
-            && second_radius.nominal <= 0.0 =>
+        } if (first_angle.unwrap_or(90.0) - 90.0).abs() < 1e-9
+            && (second_angle.unwrap_or(90.0) - 90.0).abs() < 1e-9
+            && first_radius.as_ref().map_or(0.0, |t| t.nominal) <= 0.0
+            && second_radius.as_ref().map_or(0.0, |t| t.nominal) <= 0.0 =>
         {
             width.nominal
         }

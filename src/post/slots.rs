@@ -73,7 +73,10 @@ pub fn parts<'p>(s: &Step<'p>) -> Result<Parts<'p>, PostError> {
             second_angle,
             ..
         } => {
-            if (first_angle - 90.0).abs() > 1e-9 || (second_angle - 90.0).abs() > 1e-9 {
+            let angle = |a: &Option<f64>| a.unwrap_or(90.0);
+            let radius = |r: &Option<Toleranced>| r.as_ref().map_or(0.0, |t| t.nominal);
+            if (angle(first_angle) - 90.0).abs() > 1e-9 || (angle(second_angle) - 90.0).abs() > 1e-9
+            {
                 return Err(PostError::unsupported(
                     &s.feature.id,
                     "a slot with sloped walls",
@@ -81,7 +84,7 @@ pub fn parts<'p>(s: &Step<'p>) -> Result<Parts<'p>, PostError> {
             }
             (
                 width.nominal,
-                first_radius.nominal > 0.0 || second_radius.nominal > 0.0,
+                radius(first_radius) > 0.0 || radius(second_radius) > 0.0,
             )
         }
         _ => {

@@ -96,6 +96,21 @@ fn blank(w: &Writer<'_>, project: &Project, v: Vals) -> Vals {
 /// One workingstep, or several that make the same hole at different
 /// places (one cycle, several positions).
 fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Result<(), PostError> {
+    write_step_body(w, project, steps).map_err(|mut e| {
+        // A feature or operation with an empty its_id: name the
+        // workingstep instead, so that the message can be located.
+        if let Some(rest) = e.message.strip_prefix("``") {
+            e.message = format!("`{}`{rest}", steps[0].ws.id);
+        }
+        e
+    })
+}
+
+fn write_step_body(
+    w: &mut Writer<'_>,
+    project: &Project,
+    steps: &[&Step<'_>],
+) -> Result<(), PostError> {
     let s = steps[0];
     for st in steps {
         let n = st.number;
@@ -147,11 +162,12 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
                     .set("radius", w.fmt.len(d / 2.0)),
             )?;
         }
+        let sw = w.spindle(spindle_rpm(s)?)?;
         w.emit(
             "tool_change.j2",
             Vals::new()
                 .set("t", s.tool_no.to_string())
-                .set_derived("s", w.fmt.feed(spindle_rpm(s)?.abs())),
+                .set_derived("s", sw),
         )?;
         w.current_tool = Some(s.tool_no);
         tool_called = true;
@@ -195,10 +211,11 @@ fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Res
             .set("t", s.tool_no.to_string()),
     )?;
     let rpm = spindle_rpm(s)?;
+    let sw = w.spindle(rpm)?;
     w.emit(
         "spindle.j2",
         Vals::new()
-            .set("s", w.fmt.feed(rpm.abs()))
+            .set("s", sw)
             .set("m", if rpm >= 0.0 { "3" } else { "4" })
             .set_derived("tool_called", if tool_called { "1" } else { "" }),
     )?;
@@ -304,7 +321,7 @@ fn tolerance(project: &Project, s: &Step<'_>) -> Option<f64> {
         .iter()
         .filter_map(|t| match t.tolerance {
             Tolerance::PlusMinus { upper, lower, .. } => Some(upper.abs().min(lower.abs())),
-            Tolerance::LimitsAndFits { .. } | Tolerance::Other(_) => None,
+            Tolerance::LimitsAndFits { .. } | Tolerance::Other(_) | Tolerance::Unset => None,
         })
         .filter(|v| *v > 0.0)
         .fold(None, |a: Option<f64>, v| Some(a.map_or(v, |a| a.min(v))));
@@ -321,6 +338,6 @@ fn tolerance(project: &Project, s: &Step<'_>) -> Option<f64> {
 
 pub(crate) fn tool_length(t: &Tool) -> f64 {
     t.overall_assembly_length
-        .or_else(|| t.cutting_edges.first().map(|c| c.tool_offset_length))
+        .or_else(|| t.cutting_edges.first().and_then(|c| c.tool_offset_length))
         .unwrap_or(0.0)
 }

@@ -142,7 +142,7 @@ impl Cc1Builder {
         }
         for (fid, min_z) in self.toolpath_features.values() {
             let f = &mut self.project.features[fid.index()];
-            f.depth = plane_at(&format!("{} DEPTH", f.id), *min_z);
+            f.depth = Some(plane_at(&format!("{} DEPTH", f.id), *min_z));
         }
         self.tools.settle_kinds(&mut self.project);
         (
@@ -312,7 +312,7 @@ impl Cc1Builder {
             workpiece: WorkpieceId(0),
             operations: Vec::new(),
             placement: placement(&name, [0.0; 3]),
-            depth: plane_at(&format!("{name} DEPTH"), min_z),
+            depth: Some(plane_at(&format!("{name} DEPTH"), min_z)),
             kind: FeatureKind::ToolpathFeature,
         });
         self.toolpath_features.insert(tool, (fid, min_z));

@@ -132,7 +132,7 @@ pub fn hole_feature(
         workpiece: WorkpieceId(0),
         operations: Vec::new(),
         placement: placement(&name, [h.x, h.y, top]),
-        depth: plane_at(&format!("{name} DEPTH"), -depth),
+        depth: Some(plane_at(&format!("{name} DEPTH"), -depth)),
         kind: FeatureKind::RoundHole {
             diameter: exact(diameter),
             change_in_diameter: None,

@@ -203,7 +203,7 @@ impl ToolRegistry {
                 extra: Vec::new(),
             },
             cutting_edges: vec![CuttingComponent {
-                tool_offset_length: length,
+                tool_offset_length: Some(length),
                 material: None,
                 technological_data: None,
                 expected_tool_life: None,

@@ -58,7 +58,7 @@ pub fn summary(p: &Project) -> String {
         let len = t
             .cutting_edges
             .first()
-            .map(|c| c.tool_offset_length)
+            .and_then(|c| c.tool_offset_length)
             .unwrap_or(0.0);
         let _ = writeln!(
             out,
@@ -161,7 +161,7 @@ fn element(out: &mut String, p: &Project, i: usize, e: &Executable) {
 
 fn feature(f: &Feature) -> String {
     let at = p3(f.placement.location.xyz);
-    let depth = n(-f.depth.position.location.xyz[2]);
+    let depth = n(-f.depth_z());
     match &f.kind {
         FeatureKind::RoundHole {
             diameter, bottom, ..
@@ -173,11 +173,9 @@ fn feature(f: &Feature) -> String {
                 super::cc2::listing::hole_bottom(bottom)
             )
         }
-        FeatureKind::ToolpathFeature => format!(
-            "TOOLPATH_FEATURE {:?} lowest z {}",
-            f.id,
-            n(f.depth.position.location.xyz[2])
-        ),
+        FeatureKind::ToolpathFeature => {
+            format!("TOOLPATH_FEATURE {:?} lowest z {}", f.id, n(f.depth_z()))
+        }
         other => format!(
             "{:?} {} at {at} depth {depth}",
             f.id,

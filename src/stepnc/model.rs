@@ -48,6 +48,15 @@ pub struct Project {
     pub tools: Vec<Tool>,
 }
 
+impl Feature {
+    /// The depth plane's z in the feature's frame (0 when unset).
+    pub fn depth_z(&self) -> f64 {
+        self.depth
+            .as_ref()
+            .map_or(0.0, |d| d.position.location.xyz[2])
+    }
+}
+
 impl Project {
     pub fn feature(&self, id: FeatureId) -> &Feature {
         &self.features[id.index()]
@@ -252,6 +261,8 @@ pub enum Tolerance {
         fitting: Option<String>,
     },
     Other(Raw),
+    /// `$`: generators leave the tolerance of a nominal size unset.
+    Unset,
 }
 
 // ---------------------------------------------------------------- features
@@ -263,7 +274,10 @@ pub struct Feature {
     pub operations: Vec<OperationId>,
     pub placement: Axis2Placement,
     /// The depth plane (below the placement for pockets and holes).
-    pub depth: Plane,
+    /// Mandatory in ISO 14649-10, but generators leave it `$` on through
+    /// holes (read as unknown, W0803; posting takes the stock's bottom for
+    /// a through feature and refuses any other).
+    pub depth: Option<Plane>,
     pub kind: FeatureKind,
 }
 
@@ -348,13 +362,17 @@ pub enum OpenProfile {
         placement: Option<Axis2Placement>,
         length: NumericParameter,
     },
+    /// Radii and angles are mandatory in ISO 14649-10, but generators
+    /// leave them `$` (GRIMA's `SQUARE_U_PROFILE(#p,#w,$,$,$,$)`): read as
+    /// unset (W0803). Posting reads an unset radius as no fillet asked
+    /// and an unset angle as a vertical wall (90 degrees) [?].
     SquareU {
         placement: Option<Axis2Placement>,
         width: Toleranced,
-        first_radius: Toleranced,
-        first_angle: f64,
-        second_radius: Toleranced,
-        second_angle: f64,
+        first_radius: Option<Toleranced>,
+        first_angle: Option<f64>,
+        second_radius: Option<Toleranced>,
+        second_angle: Option<f64>,
     },
     RoundedU {
         placement: Option<Axis2Placement>,
@@ -766,7 +784,10 @@ pub struct Tool {
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct CuttingComponent {
-    pub tool_offset_length: f64,
+    /// Mandatory in ISO 14649-111, but generators leave it `$` (GRIMA's
+    /// `CUTTING_COMPONENT($,$,$,$,$)`): read as unknown (W0803) rather
+    /// than dropping the tool and the workingstep with it.
+    pub tool_offset_length: Option<f64>,
     pub material: Option<Raw>,
     pub technological_data: Option<Raw>,
     pub expected_tool_life: Option<f64>,

@@ -223,3 +223,46 @@ fn instance_line(i: &Instance) -> String {
     super::part21::text::write_instance(&mut s, i);
     s.trim_end().trim_end_matches(';').to_string()
 }
+
+/// The `#id` line of the instance a post or check message names by its
+/// `its_id` (a feature first, then an operation, then a workingstep), so
+/// that every diagnostic about a project points into its Part 21 file.
+pub fn locate_its_id(file: &P21File, its_id: &str) -> Option<crate::span::Span> {
+    if its_id.is_empty() {
+        return None;
+    }
+    let rank = |i: &Instance| -> Option<u8> {
+        let def = super::schema::entity(&i.entity)?;
+        let k = def.attr_index("its_id")?;
+        match &i.params.get(k)?.value {
+            Value::Str(s) if s == its_id => {}
+            _ => return None,
+        }
+        Some(if def.attr_index("its_workpiece").is_some() {
+            0
+        } else if def.attr_index("its_tool").is_some() {
+            1
+        } else {
+            2
+        })
+    };
+    file.instances
+        .iter()
+        .filter_map(|i| rank(i).map(|r| (r, i.span)))
+        .min_by_key(|(r, _)| *r)
+        .map(|(_, s)| s)
+}
+
+/// Gives each diagnostic without a place the `#id` line of the entity its
+/// message names first (between backquotes).
+pub fn locate_diagnostics(file: &P21File, diags: &mut [crate::diag::Diagnostic]) {
+    for d in diags.iter_mut().filter(|d| d.labels.is_empty()) {
+        let mut parts = d.message.split('`');
+        let (Some(_), Some(name)) = (parts.next(), parts.next()) else {
+            continue;
+        };
+        if let Some(span) = locate_its_id(file, name) {
+            *d = d.clone().primary(span, "this entity");
+        }
+    }
+}

@@ -222,13 +222,22 @@ fn check_param(file: &P21File, def: &EntityDef, a: &Attr, p: &Param, diags: &mut
             // Real generators leave mandatory attributes unset (GRIMA's
             // SQUARE_U_PROFILE): read on, the model keeps such instances
             // as written.
+            let help = match &a.kind {
+                Kind::List(_) => {
+                    "read as the empty list `()`, which is what ISO 10303-21 writes for it"
+                }
+                Kind::Str => "read as the empty string",
+                Kind::Bool => "read as .F. (not asked for); give the attribute a value",
+                Kind::Enum if a.name == "feedrate_reference" => "read as .TCP.",
+                _ => "the instance is kept as written; give the attribute a value",
+            };
             diags.push(
                 Diagnostic::new(
                     Code::MandatoryUnset,
                     format!("{}.{} is mandatory but `$`", def.name, a.name),
                 )
                 .primary(p.span, format!("expected {}", expected(&a.kind)))
-                .help("the instance is kept as written; give the attribute a value"),
+                .help(help),
             );
         }
         return;

@@ -3,6 +3,7 @@
 //! milled zigzag ([`face`]). Geometry is made in the feature's plane
 //! (2-D, mm) and placed with the feature's frame.
 
+pub mod coverage;
 pub mod face;
 pub mod pocket;
 

@@ -32,11 +32,20 @@ impl Shape {
         }
     }
 
-    /// Half the length of the centre line (0 for a circle or a square).
-    fn centre_half(&self) -> f64 {
+    /// The ends of the centre line, along the longer side (one point for
+    /// a circle or a square): what is left once every loop is cut.
+    fn centre_line(&self) -> (P2, P2) {
         match self {
-            Shape::Rect(p) => (p.length / 2.0 - self.half()).max(0.0),
-            Shape::Circle { .. } => 0.0,
+            Shape::Rect(p) => {
+                let along_x = (p.length / 2.0 - self.half()).max(0.0);
+                let along_y = (p.width / 2.0 - self.half()).max(0.0);
+                if along_x >= along_y {
+                    ([-along_x, 0.0], [along_x, 0.0])
+                } else {
+                    ([0.0, -along_y], [0.0, along_y])
+                }
+            }
+            Shape::Circle { .. } => ([0.0, 0.0], [0.0, 0.0]),
         }
     }
 
@@ -157,6 +166,22 @@ fn push_line(segs: &mut Vec<Seg>, cur: &mut P2, to: P2) {
     }
 }
 
+/// Between loops with sharp corners the tool must reach the corner of
+/// the outer loop's inside from the inner loop's corner, a diagonal
+/// `step * sqrt 2` away: no island is left while `step <= r (1 + 1/sqrt 2)`.
+const SHARP_STEP: f64 = 1.0 + std::f64::consts::FRAC_1_SQRT_2;
+
+/// The stepover from the loop at offset `d` to the next one inwards: the
+/// strategy's, or less where the next loop's corners are sharp.
+fn step_after(shape: &Shape, c: &PocketCut, d: f64) -> f64 {
+    match shape {
+        Shape::Rect(p) if p.corner_radius - (d + c.stepover) <= 1e-9 => {
+            c.stepover.min(SHARP_STEP * c.tool_radius)
+        }
+        Shape::Rect(_) | Shape::Circle { .. } => c.stepover,
+    }
+}
+
 /// The offsets of the loops of a cleared layer, innermost first.
 pub fn loop_offsets(shape: &Shape, c: &PocketCut) -> Vec<f64> {
     let half = shape.half();
@@ -165,7 +190,7 @@ pub fn loop_offsets(shape: &Shape, c: &PocketCut) -> Vec<f64> {
     let mut d = last;
     while d < half - 1e-9 {
         out.push(d);
-        d += c.stepover;
+        d += step_after(shape, c, d);
     }
     out.reverse();
     out
@@ -173,8 +198,8 @@ pub fn loop_offsets(shape: &Shape, c: &PocketCut) -> Vec<f64> {
 
 /// All the moves, from above the pocket back to the clearance plane.
 pub fn moves(shape: &Shape, c: &PocketCut, sink: &mut MoveSink<'_>) {
-    let centre_x = shape.centre_half();
-    let start: P2 = [-centre_x, 0.0];
+    let (start, centre_end) = shape.centre_line();
+    let centre_line = start != centre_end;
     let offsets = loop_offsets(shape, c);
     let last = c.tool_radius + c.allowance_side;
     sink.rapid(start, c.clear);
@@ -185,8 +210,8 @@ pub fn moves(shape: &Shape, c: &PocketCut, sink: &mut MoveSink<'_>) {
         let loops: Vec<f64> = if c.walls_only_above_bottom && !bottom {
             vec![last]
         } else {
-            if centre_x > 0.0 {
-                sink.line([centre_x, 0.0], z);
+            if centre_line {
+                sink.line(centre_end, z);
             }
             offsets.clone()
         };
@@ -325,5 +350,65 @@ mod tests {
             assert!((p[0] * p[0] + p[1] * p[1]).sqrt() <= 20.5 + 1e-9, "{p:?}");
         }
         assert!(check(&Shape::Circle { diameter: 17.0 }, &c).is_err());
+    }
+
+    /// The floor a rectangular or circular pocket path leaves: islands
+    /// wider than `tol` (mm) where the tool could reach.
+    fn floor_islands(shape: &Shape, r: f64, step: f64) -> Vec<super::super::coverage::Island> {
+        use super::super::coverage::{in_rounded_rect, islands, Floor};
+        let c = PocketCut {
+            tool_radius: r,
+            stepover: step,
+            allowance_side: 0.0,
+            levels: vec![-5.0],
+            walls_only_above_bottom: false,
+            ccw: true,
+            clear: 10.0,
+            r_plane: 2.0,
+        };
+        let frame = Frame::identity();
+        let mut sink = MoveSink::new(&frame);
+        moves(shape, &c, &mut sink);
+        let (a, b, rho) = match shape {
+            Shape::Rect(p) => (p.length / 2.0, p.width / 2.0, p.corner_radius),
+            Shape::Circle { diameter } => (diameter / 2.0, diameter / 2.0, diameter / 2.0),
+        };
+        let floor = Floor {
+            lo: [-a, -b],
+            hi: [a, b],
+            cell: 0.05,
+        };
+        // Reachable: within r of the region the tool centre may visit.
+        let reach = |p: P2| in_rounded_rect(p, a - r, b - r, (rho - r).max(0.0), r);
+        islands(&sink.moves, -5.0, r, &floor, reach)
+    }
+
+    #[test]
+    fn pocket_paths_leave_no_rib_on_the_floor() {
+        let tol = 0.1;
+        let rect = |length, width, corner_radius| {
+            Shape::Rect(RectPocket {
+                length,
+                width,
+                corner_radius,
+            })
+        };
+        let cases = [
+            (rect(40.0, 50.0, 0.0), 3.0, 4.5),
+            (rect(50.0, 40.0, 0.0), 3.0, 4.5),
+            (rect(40.0, 50.0, 5.0), 3.0, 4.5),
+            (rect(80.0, 50.0, 10.0), 9.0, 5.0),
+            (rect(30.0, 30.0, 0.0), 3.0, 6.0),
+            (rect(23.0, 61.0, 4.0), 4.0, 7.9),
+            (Shape::Circle { diameter: 60.0 }, 9.0, 8.0),
+            (Shape::Circle { diameter: 41.0 }, 3.0, 5.9),
+        ];
+        for (shape, r, step) in cases {
+            let left: Vec<_> = floor_islands(&shape, r, step)
+                .into_iter()
+                .filter(|i| i.width() > tol)
+                .collect();
+            assert!(left.is_empty(), "{shape:?} r {r} step {step}: {left:?}");
+        }
     }
 }

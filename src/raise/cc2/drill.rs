@@ -152,7 +152,7 @@ fn new_hole(
         workpiece: WorkpieceId(0),
         operations: Vec::new(),
         placement: placement(name, [h.xy[0], h.xy[1], surface_at(r, h.xy)], [1.0, 0.0]),
-        depth: plane(&format!("{name} DEPTH"), [0.0, 0.0, -r6(depth)]),
+        depth: Some(plane(&format!("{name} DEPTH"), [0.0, 0.0, -r6(depth)])),
         kind: FeatureKind::RoundHole {
             diameter: tol(2.0 * rad),
             change_in_diameter: None,
@@ -223,8 +223,14 @@ fn deepen(
         if first || 2.0 * rad > diameter.nominal {
             *diameter = tol(2.0 * rad);
         }
-        if first || depth > -feat.depth.position.location.xyz[2] + 1e-6 {
-            feat.depth.position.location.xyz[2] = -r6(depth);
+        let z = feat
+            .depth
+            .as_ref()
+            .map_or(0.0, |d| d.position.location.xyz[2]);
+        if first || depth > -z + 1e-6 {
+            if let Some(d) = feat.depth.as_mut() {
+                d.position.location.xyz[2] = -r6(depth);
+            }
             *b = bottom;
         }
     }

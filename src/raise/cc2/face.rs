@@ -150,7 +150,7 @@ fn new_face(r: &mut Raiser, m: &MillCut, region: [f64; 4], z: f64) -> FeatureId 
         workpiece: WorkpieceId(0),
         operations: Vec::new(),
         placement: placement(&name, [region[0], region[1], top], [1.0, 0.0]),
-        depth: plane(&format!("{name} DEPTH"), [0.0, 0.0, r6(z - top)]),
+        depth: Some(plane(&format!("{name} DEPTH"), [0.0, 0.0, r6(z - top)])),
         kind: FeatureKind::PlanarFace {
             course_of_travel: TravelPath::Linear {
                 placement: None,
@@ -191,6 +191,8 @@ fn finish_existing(r: &mut Raiser, i: usize, z: f64) -> FeatureId {
     }
     let f = &mut r.project.features[feature.index()];
     let top = f.placement.location.xyz[2];
-    f.depth.position.location.xyz[2] = r6(z - top);
+    if let Some(d) = f.depth.as_mut() {
+        d.position.location.xyz[2] = r6(z - top);
+    }
     feature
 }

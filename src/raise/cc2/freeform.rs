@@ -21,7 +21,10 @@ pub fn raise(r: &mut Raiser, t: i64, moves: &[Move], what: &str) {
         workpiece: WorkpieceId(0),
         operations: Vec::new(),
         placement: placement(&name, [0.0, 0.0, 0.0], [1.0, 0.0]),
-        depth: plane(&format!("{name} DEPTH"), [0.0, 0.0, r6(low.min(0.0))]),
+        depth: Some(plane(
+            &format!("{name} DEPTH"),
+            [0.0, 0.0, r6(low.min(0.0))],
+        )),
         kind: FeatureKind::ToolpathFeature,
     };
     let feature = r.add_feature(f);

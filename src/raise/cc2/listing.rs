@@ -45,7 +45,7 @@ fn feature(out: &mut String, f: &Feature) {
         .ref_direction
         .as_ref()
         .map_or([1.0, 0.0, 0.0], |d| d.ratios);
-    let depth = -f.depth.position.location.xyz[2];
+    let depth = -f.depth_z();
     let _ = writeln!(
         out,
         "{}: {} at {at} x {} depth {}",
@@ -144,7 +144,11 @@ pub fn kind(k: &FeatureKind) -> String {
                     width,
                     first_radius,
                     ..
-                } => format!("square U width {} radius {}", tl(width), tl(first_radius)),
+                } => format!(
+                    "square U width {} radius {}",
+                    tl(width),
+                    first_radius.as_ref().map_or("unset".into(), tl)
+                ),
                 other => format!("{other:?}"),
             };
             format!(

@@ -67,7 +67,10 @@ fn step(
         workpiece: WorkpieceId(0),
         operations: Vec::new(),
         placement: placement(&name, [at[0], at[1], top], dir),
-        depth: plane(&format!("{name} DEPTH"), [0.0, 0.0, r6(bottom - top)]),
+        depth: Some(plane(
+            &format!("{name} DEPTH"),
+            [0.0, 0.0, r6(bottom - top)],
+        )),
         kind: FeatureKind::Step {
             open_boundary: TravelPath::Linear {
                 placement: None,
@@ -126,7 +129,10 @@ fn open_pocket(
         workpiece: WorkpieceId(0),
         operations: Vec::new(),
         placement: placement(&name, [centre[0], centre[1], top], [1.0, 0.0]),
-        depth: plane(&format!("{name} DEPTH"), [0.0, 0.0, r6(bottom - top)]),
+        depth: Some(plane(
+            &format!("{name} DEPTH"),
+            [0.0, 0.0, r6(bottom - top)],
+        )),
         kind: FeatureKind::OpenPocket {
             pocket: PocketCommon {
                 bosses: Vec::new(),

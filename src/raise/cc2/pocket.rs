@@ -198,7 +198,10 @@ fn pocket_feature(name: &str, wall: &Shape, bottom: f64, top: f64, edge: f64) ->
         workpiece: WorkpieceId(0),
         operations: Vec::new(),
         placement: placement(name, [c[0], c[1], top], x_dir),
-        depth: plane(&format!("{name} DEPTH"), [0.0, 0.0, r6(bottom - top)]),
+        depth: Some(plane(
+            &format!("{name} DEPTH"),
+            [0.0, 0.0, r6(bottom - top)],
+        )),
         kind: FeatureKind::ClosedPocket {
             pocket: PocketCommon {
                 bosses: Vec::new(),

@@ -185,7 +185,10 @@ fn profile_feature(name: &str, outline: &Shape, top: f64, bottom: f64) -> Featur
         workpiece: WorkpieceId(0),
         operations: Vec::new(),
         placement: placement(name, [c[0], c[1], top], x_dir),
-        depth: plane(&format!("{name} DEPTH"), [0.0, 0.0, r6(bottom - top)]),
+        depth: Some(plane(
+            &format!("{name} DEPTH"),
+            [0.0, 0.0, r6(bottom - top)],
+        )),
         kind: FeatureKind::GeneralOutsideProfile {
             swept_shape: TravelPath::Linear {
                 placement: None,

@@ -230,7 +230,10 @@ fn slot_feature(r: &Raiser, name: &str, g: &SlotGeom, edge: f64) -> Feature {
         workpiece: WorkpieceId(0),
         operations: Vec::new(),
         placement: placement(name, [g.start[0], g.start[1], top], [1.0, 0.0]),
-        depth: plane(&format!("{name} DEPTH"), [0.0, 0.0, r6(g.bottom - top)]),
+        depth: Some(plane(
+            &format!("{name} DEPTH"),
+            [0.0, 0.0, r6(g.bottom - top)],
+        )),
         kind: FeatureKind::Slot {
             course_of_travel: TravelPath::Linear {
                 placement: None,
@@ -240,10 +243,10 @@ fn slot_feature(r: &Raiser, name: &str, g: &SlotGeom, edge: f64) -> Feature {
             swept_shape: OpenProfile::SquareU {
                 placement: None,
                 width: tol(g.width),
-                first_radius: tol(edge),
-                first_angle: 90.0,
-                second_radius: tol(edge),
-                second_angle: 90.0,
+                first_radius: Some(tol(edge)),
+                first_angle: Some(90.0),
+                second_radius: Some(tol(edge)),
+                second_angle: Some(90.0),
             },
             end_conditions: vec![end_type(g.start, -1.0), end_type(end, 1.0)],
         },

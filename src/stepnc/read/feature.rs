@@ -8,11 +8,36 @@ use super::*;
 /// Parameters every machining feature starts with.
 pub(crate) const FEATURE_COMMON: usize = 5;
 
+/// Features of ISO 14649-10/11 read and carried as written (region and
+/// transition features, bosses, compound holes, spherical caps): their
+/// workingsteps are kept raw and posting refuses them by name.
+const CARRIED_FEATURES: &[&str] = &[
+    "REGION_SURFACE_LIST",
+    "REGION_PROJECTION",
+    "BOSS",
+    "SPHERICAL_CAP",
+    "CHAMFER",
+    "EDGE_ROUND",
+    "COUNTERBORE_HOLE",
+    "COUNTERSUNK_HOLE",
+];
+
 impl<'f> Rd<'f> {
     /// A feature, read once and shared.
     pub fn feature(&mut self, i: &'f Instance) -> R<FeatureId> {
         if let Some(&id) = self.features.get(&i.id) {
             return Ok(id);
+        }
+        if CARRIED_FEATURES.contains(&ent(i)) {
+            // Not invalid: the workingstep is kept as written (W0802) and
+            // posting names it.
+            return Err(fail(
+                i.entity_span,
+                format!(
+                    "{} (#{}) is an ISO 14649 feature cncc carries but does not model",
+                    i.entity, i.id
+                ),
+            ));
         }
         expect(
             i,
@@ -51,8 +76,10 @@ impl<'f> Rd<'f> {
         }
         let pl = self.inst(arg(i, 3)?)?;
         let placement = self.placement(pl)?;
-        let d = self.inst(arg(i, 4)?)?;
-        let depth = self.plane(d)?;
+        let depth = match self.opt_inst(arg(i, 4)?)? {
+            Some(d) => Some(self.plane(d)?),
+            None => None,
+        };
         let kind = self.feature_kind(i)?;
         Ok(Feature {
             id,
@@ -258,10 +285,16 @@ impl<'f> Rd<'f> {
             "SQUARE_U_PROFILE" => OpenProfile::SquareU {
                 placement,
                 width: self.toleranced_at(arg(i, 1)?)?,
-                first_radius: self.toleranced_at(arg(i, 2)?)?,
-                first_angle: real(arg(i, 3)?)?,
-                second_radius: self.toleranced_at(arg(i, 4)?)?,
-                second_angle: real(arg(i, 5)?)?,
+                first_radius: match self.opt_inst(arg(i, 2)?)? {
+                    Some(t) => Some(self.toleranced(t)?),
+                    None => None,
+                },
+                first_angle: opt_real(arg(i, 3)?)?,
+                second_radius: match self.opt_inst(arg(i, 4)?)? {
+                    Some(t) => Some(self.toleranced(t)?),
+                    None => None,
+                },
+                second_angle: opt_real(arg(i, 5)?)?,
             },
             "ROUNDED_U_PROFILE" => OpenProfile::RoundedU {
                 placement,

@@ -68,10 +68,14 @@ impl<'f> Rd<'f> {
             &["TOLERANCED_LENGTH_MEASURE"],
             "a TOLERANCED_LENGTH_MEASURE",
         )?;
-        let t = self.inst(arg(i, 1)?)?;
+        let tolerance = match self.opt_inst(arg(i, 1)?)? {
+            Some(t) => self.or_raw(t, |rd, t| rd.tolerance(t), Tolerance::Other)?,
+            // `$` (W0803): the nominal size holds, with no tolerance given.
+            None => Tolerance::Unset,
+        };
         Ok(Toleranced {
             nominal: real(arg(i, 0)?)?,
-            tolerance: self.or_raw(t, |rd, t| rd.tolerance(t), Tolerance::Other)?,
+            tolerance,
         })
     }
 

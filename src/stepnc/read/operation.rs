@@ -232,7 +232,9 @@ impl<'f> Rd<'f> {
     pub fn technology(&mut self, i: &'f Instance) -> R<Technology> {
         expect(i, &["MILLING_TECHNOLOGY"], "a MILLING_TECHNOLOGY")?;
         let reference = arg(i, 1)?;
-        let feed_at_tcp = match enumeration(reference)? {
+        // `$` (unset, W0803) reads as the tool centre point, the reference
+        // every posted cycle and path uses.
+        let feed_at_tcp = match opt_enum(reference)?.unwrap_or("TCP") {
             "TCP" => true,
             "CCP" => false,
             _ => return Err(fail(reference.span, "feedrate_reference is .TCP. or .CCP.")),

@@ -87,9 +87,9 @@ impl<'f> Rd<'f> {
                 id: self.exec_id(i)?,
                 text: string(arg(i, 1)?)?,
             },
-            "PARALLEL" | "SELECTIVE" | "NON_SEQUENTIAL" | "SET_MARK" | "WAIT_FOR_MARK" => {
-                Executable::Other(self.raw(i)?)
-            }
+            "PARALLEL" | "SELECTIVE" | "NON_SEQUENTIAL" | "SET_MARK" | "WAIT_FOR_MARK"
+            | "LOAD_TOOL" | "UNLOAD_TOOL" | "RETURN_HOME" | "INDEX_TABLE" | "EXCHANGE_PALLET"
+            | "INDEX_PALLET" => Executable::Other(self.raw(i)?),
             _ => {
                 return Err(fail(
                     i.entity_span,

@@ -9,7 +9,14 @@ impl<'f> Rd<'f> {
         if let Some(&id) = self.tools.get(&i.id) {
             return Ok(id);
         }
-        expect(i, &["MILLING_CUTTING_TOOL"], "a MILLING_CUTTING_TOOL")?;
+        if expect(
+            i,
+            &["MILLING_CUTTING_TOOL", "CUTTING_TOOL"],
+            "a MILLING_CUTTING_TOOL",
+        )? == "CUTTING_TOOL"
+        {
+            self.diags.push(abstract_tool(i));
+        }
         let b = self.inst(arg(i, 1)?)?;
         let body = self.body(b)?;
         let mut cutting_edges = Vec::new();
@@ -21,8 +28,14 @@ impl<'f> Rd<'f> {
             body,
             cutting_edges,
             overall_assembly_length: opt_real(arg(i, 3)?)?,
-            direction_for_spindle_orientation: self.opt_direction(arg(i, 4)?)?,
-            holder_diameter_for_spindle_orientation: opt_real(arg(i, 5)?)?,
+            direction_for_spindle_orientation: match i.params.get(4) {
+                Some(p) => self.opt_direction(p)?,
+                None => None,
+            },
+            holder_diameter_for_spindle_orientation: match i.params.get(5) {
+                Some(p) => opt_real(p)?,
+                None => None,
+            },
         };
         let id = ToolId(self.p.tools.len() as u32);
         self.p.tools.push(t);
@@ -87,13 +100,27 @@ impl<'f> Rd<'f> {
             None => None,
         };
         Ok(CuttingComponent {
-            tool_offset_length: real(arg(i, 0)?)?,
+            tool_offset_length: opt_real(arg(i, 0)?)?,
             material: self.opt_raw(arg(i, 1)?)?,
             technological_data: self.opt_raw(arg(i, 2)?)?,
             expected_tool_life: opt_real(arg(i, 3)?)?,
             technology,
         })
     }
+}
+
+/// W0806: `CUTTING_TOOL` is abstract in ISO 14649-111; read as the
+/// MILLING_CUTTING_TOOL it stands for (written back as one).
+fn abstract_tool(i: &Instance) -> Diagnostic {
+    Diagnostic::new(
+        Code::AbstractInstance,
+        format!(
+            "#{} CUTTING_TOOL is an abstract entity of ISO 14649-111",
+            i.id
+        ),
+    )
+    .primary(i.entity_span, "read as a MILLING_CUTTING_TOOL")
+    .help("write MILLING_CUTTING_TOOL(its_id, body, edges, length, $, $); cncc writes it so")
 }
 
 /// The body entity's kind; `CENTER_DRILL` reads as `CENTERDRILL`.

@@ -78,19 +78,23 @@ pub(crate) fn opt_int(p: &Param) -> R<Option<i64>> {
     }
 }
 
+/// A string. `$` reads as the empty string: generators leave names and
+/// labels unset (`CARTESIAN_POINT($,(...))`); validation warns (W0803).
 pub(crate) fn string(p: &Param) -> R<String> {
     match &p.value {
         Value::Str(s) => Ok(s.clone()),
-        Value::Null => Err(fail(p.span, "a mandatory string is `$`")),
+        Value::Null => Ok(String::new()),
         _ => Err(fail(p.span, "expected a string")),
     }
 }
 
+/// A boolean. `$` reads as `.F.` (the function is not asked for);
+/// validation warns (W0803) and says so.
 pub(crate) fn boolean(p: &Param) -> R<bool> {
     match &p.value {
         Value::Enum(e) if e == "T" => Ok(true),
         Value::Enum(e) if e == "F" => Ok(false),
-        Value::Null => Err(fail(p.span, "a mandatory boolean is `$`")),
+        Value::Null => Ok(false),
         _ => Err(fail(p.span, "expected .T. or .F.")),
     }
 }
@@ -117,9 +121,13 @@ pub(crate) fn opt_enum(p: &Param) -> R<Option<&str>> {
     }
 }
 
+/// A list parameter. `$` reads as the empty list: JSDAI writers put `$`
+/// for an empty aggregate, mandatory or not (validation warns, W0803, when
+/// the attribute is mandatory); the writer gives `()` back.
 pub(crate) fn list(p: &Param) -> R<&[Param]> {
     match &p.value {
         Value::List(l) => Ok(l),
+        Value::Null => Ok(&[]),
         _ => Err(fail(p.span, "expected a list")),
     }
 }

@@ -15,7 +15,7 @@ impl<'p> W<'p> {
             self.workpiece(f.workpiece),
             list(f.operations.iter().map(|&o| self.operation(o)).collect()),
             self.placement(&f.placement),
-            self.plane(&f.depth),
+            opt(f.depth.as_ref().map(|d| self.plane(d))),
         ];
         let entity = self.feature_kind(&f.kind, &mut params);
         self.fill(n, &entity, params);
@@ -219,10 +219,10 @@ impl<'p> W<'p> {
                 let params = vec![
                     self.opt_placement(placement),
                     self.toleranced(width),
-                    self.toleranced(first_radius),
-                    r(*first_angle),
-                    self.toleranced(second_radius),
-                    r(*second_angle),
+                    opt(first_radius.as_ref().map(|t| self.toleranced(t))),
+                    or(*first_angle),
+                    opt(second_radius.as_ref().map(|t| self.toleranced(t))),
+                    or(*second_angle),
                 ];
                 self.add("SQUARE_U_PROFILE", params)
             }

@@ -59,6 +59,7 @@ impl<'p> W<'p> {
                 vec![r(*deviation), r(*grade), oe(fitting.as_deref())],
             ),
             Tolerance::Other(raw) => self.raw(raw),
+            Tolerance::Unset => Value::Null,
         };
         self.add("TOLERANCED_LENGTH_MEASURE", vec![r(t.nominal), tol])
     }

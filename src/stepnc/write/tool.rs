@@ -61,7 +61,7 @@ impl<'p> W<'p> {
 
     fn cutting_component(&mut self, c: &CuttingComponent) -> Value {
         let params = vec![
-            r(c.tool_offset_length),
+            or(c.tool_offset_length),
             self.opt_raw(&c.material),
             self.opt_raw(&c.technological_data),
             or(c.expected_tool_life),

@@ -68,7 +68,7 @@ fn a_second_face_pass_finishes_and_the_first_leaves_its_allowance() {
     ev.extend(face(0.0, 600.0));
     let (p, _) = run(&ev, 10.0, Some(([0.0, 0.0, -10.0], [50.0, 16.0, 1.0])));
     assert_eq!(p.features.len(), 1);
-    assert_eq!(p.features[0].depth.position.location.xyz[2], -1.0);
+    assert_eq!(p.features[0].depth_z(), -1.0);
     let OperationKind::PlaneMilling {
         finish: false,
         allowance_bottom: Some(a),

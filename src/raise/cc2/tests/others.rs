@@ -158,7 +158,7 @@ fn strokes_along_one_stock_edge_are_a_step() {
         (50.0, [1.0, 0.0, 0.0])
     );
     assert_eq!(f.placement.location.xyz, [0.0, 13.0, 0.0]);
-    assert_eq!(f.depth.position.location.xyz[2], -3.0);
+    assert_eq!(f.depth_z(), -3.0);
 }
 
 #[test]
@@ -237,7 +237,7 @@ fn side_passes_widen_a_slot_and_a_later_pass_finishes_it() {
         panic!("{:?}", f.kind)
     };
     assert_eq!((distance.nominal, width.nominal), (40.0, 8.0));
-    assert_eq!(f.depth.position.location.xyz[2], -2.2);
+    assert_eq!(f.depth_z(), -2.2);
     let OperationKind::BottomAndSideMilling {
         finish: false,
         allowance_side,
@@ -456,6 +456,6 @@ fn a_hole_drilled_in_a_pocket_floor_starts_there() {
             ..
         }
     ));
-    assert_eq!(hole.depth.position.location.xyz[2], -6.0);
+    assert_eq!(hole.depth_z(), -6.0);
     assert_eq!(op(&p, 1, 0).retract_plane, Some(2.0));
 }
