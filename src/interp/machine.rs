@@ -303,7 +303,7 @@ pub fn program_end(it: &mut Interp<'_, '_>, rewind: bool) -> Result<(), Stop> {
         let sink = &mut it.sink;
         it.comp.flush(&mut |c| sink.call(c, span));
     }
-    let old = it.state.origin();
+    let old = it.state.placement();
     it.state.g5x_index = 1;
     it.state.reframe(old);
     it.emit(Canon::SetG5xOffset {

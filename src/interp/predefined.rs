@@ -71,7 +71,7 @@ fn modal(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
     let lower = name.to_ascii_lowercase();
     if let Some(axis) = lower.strip_prefix("_abs_") {
         let i = "xyzabcuvw".find(axis).filter(|_| axis.len() == 1)?;
-        let v = s.pos[i] + s.origin()[i];
+        let v = s.machine_pos()[i];
         return Some(if super::state::State::is_linear(i) {
             s.to_prog(v)
         } else {
