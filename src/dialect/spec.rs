@@ -150,6 +150,9 @@ pub enum Capability {
     /// not 0. [?] iTNC 530 machine parameter MP7300 may reset Q parameters
     /// at the end of a program; the default is taken as keeping them.
     GlobalQParameters,
+    /// An N word may have a fraction, which is dropped: `N4567.789` is N4567
+    /// (LinuxCNC, checked with rs274 2.9); elsewhere it is an error.
+    FractionalSequenceNumbers,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -198,6 +201,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("power-on-linear", Capability::PowerOnLinear),
     ("cycle-words-required", Capability::CycleWordsRequired),
     ("colon-program-number", Capability::ColonProgramNumber),
+    ("fractional-sequence-numbers", Capability::FractionalSequenceNumbers),
     ("no-nested-comments", Capability::NoNestedComments),
     ("splines", Capability::Splines),
     ("global-q-parameters", Capability::GlobalQParameters),

@@ -155,7 +155,12 @@ pub fn line_start(
     if let (Some(&(l, Tok::Letter(b'N'), _)), Some(&(nl, Tok::Number, nr))) =
         (feed.get(i), feed.get(i + 1))
     {
-        let n = seq_number(&input.text[nl..nr], span(input, nl, nr), diags);
+        let text = &input.text[nl..nr];
+        let text = match text.split_once('.') {
+            Some((whole, _)) if input.spec.has(Capability::FractionalSequenceNumbers) => whole,
+            _ => text,
+        };
+        let n = seq_number(text, span(input, nl, nr), diags);
         line.number = Some(At::new(n, span(input, l, nr)));
         i += 2;
     }
