@@ -202,6 +202,21 @@ impl<'a> Cx<'a> {
         }
     }
 
+    pub fn ocall_computed(&self, e: PExpr, args: Vec<PExpr>, l: usize, r: usize) {
+        let span = self.span(l, r);
+        if !self.require(Capability::OWords, span, "o-word statements") {
+            return;
+        }
+        let args = CallArgs::Positional(args.into_iter().map(|a| Some(self.id(a))).collect());
+        let kind = StmtKind::Call {
+            kind: CallKind::OWord,
+            target: CallTarget::Computed(self.id(e)),
+            args,
+            repeat: None,
+        };
+        self.push_stmt(kind, span);
+    }
+
     fn ocall(&self, n: OName, key: &str, args: Vec<PExpr>) -> StmtKind {
         let target = if n.named {
             CallTarget::Name(self.name_inside(n.l, n.r))
