@@ -153,6 +153,10 @@ pub enum Capability {
     /// An N word may have a fraction, which is dropped: `N4567.789` is N4567
     /// (LinuxCNC, checked with rs274 2.9); elsewhere it is an error.
     FractionalSequenceNumbers,
+    /// A program number given twice in one file is not an error: a call runs
+    /// the first one (LinuxCNC rs274 searches from the top; `O0002` and `O2`
+    /// are the same number, its 10-M98-P001 test).
+    FirstProgramWins,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -201,6 +205,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("power-on-linear", Capability::PowerOnLinear),
     ("cycle-words-required", Capability::CycleWordsRequired),
     ("colon-program-number", Capability::ColonProgramNumber),
+    ("first-program-wins", Capability::FirstProgramWins),
     ("fractional-sequence-numbers", Capability::FractionalSequenceNumbers),
     ("no-nested-comments", Capability::NoNestedComments),
     ("splines", Capability::Splines),
