@@ -55,6 +55,9 @@ pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
         // The standalone interpreter: no task, no remapping, no adaptive
         // feed; the overrides and feed hold are enabled (rs274 prints 1).
         "_task" | "_remap_level" | "_adaptive_feed" => Some(0.0),
+        // What the last o-word return gave: 0 before any (rs274 2.9, its
+        // return-value test); a return sets the parameters themselves.
+        "_value" | "_value_returned" => Some(0.0),
         "_speed_override" | "_feed_override" | "_feed_hold" => Some(1.0),
         // LinuxCNC 2.9 reports `_vmajor` 2.9 and `_vminor` 0 (rs274 2.9.x).
         "_vmajor" => Some(2.9),
