@@ -157,6 +157,12 @@ pub enum Capability {
     /// the first one (LinuxCNC rs274 searches from the top; `O0002` and `O2`
     /// are the same number, its 10-M98-P001 test).
     FirstProgramWins,
+    /// LinuxCNC's own bug, matched on purpose: in G18/G19 the feed moves of
+    /// G74/G84 have their axes permuted twice (rs274 2.9
+    /// `convert_cycle_g74_g84` permutes for the plane and `cycle_feed` again),
+    /// so `G18 G84 X1 Z1 Y-1` taps at X-1 Y1 Z1. Its g84 tests lock this in.
+    /// Other dialects tap along the right axis.
+    TapFeedAxesPermuted,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -205,6 +211,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("power-on-linear", Capability::PowerOnLinear),
     ("cycle-words-required", Capability::CycleWordsRequired),
     ("colon-program-number", Capability::ColonProgramNumber),
+    ("tap-feed-axes-permuted", Capability::TapFeedAxesPermuted),
     ("first-program-wins", Capability::FirstProgramWins),
     ("fractional-sequence-numbers", Capability::FractionalSequenceNumbers),
     ("no-nested-comments", Capability::NoNestedComments),

@@ -122,6 +122,10 @@ impl MotionHost for Interp<'_, '_> {
         }
     }
 
+    fn has(&self, c: crate::dialect::Capability) -> bool {
+        self.spec.has(c)
+    }
+
     fn assume_position(&mut self, to: Pose) {
         self.set_position(&to);
     }
