@@ -163,6 +163,11 @@ pub enum Capability {
     /// so `G18 G84 X1 Z1 Y-1` taps at X-1 Y1 Z1. Its g84 tests lock this in.
     /// Other dialects tap along the right axis.
     TapFeedAxesPermuted,
+    /// The offset parameters #5211..#5399 (G92, work offsets) read in machine
+    /// units, so G20/G21 leave them unchanged (LinuxCNC: they stay in the INI's
+    /// user units; rs274 2.9, its unit-conversion test). Otherwise they read in
+    /// the program's units.
+    OffsetParametersInMachineUnits,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -211,6 +216,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("power-on-linear", Capability::PowerOnLinear),
     ("cycle-words-required", Capability::CycleWordsRequired),
     ("colon-program-number", Capability::ColonProgramNumber),
+    ("offset-parameters-in-machine-units", Capability::OffsetParametersInMachineUnits),
     ("tap-feed-axes-permuted", Capability::TapFeedAxesPermuted),
     ("first-program-wins", Capability::FirstProgramWins),
     ("fractional-sequence-numbers", Capability::FractionalSequenceNumbers),

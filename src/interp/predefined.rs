@@ -158,11 +158,20 @@ fn motion_code(m: ModalMotion) -> f64 {
 /// parameters: the core writes them with `params.set_numbered`.
 pub fn numbered(it: &Interp<'_, '_>, n: u32) -> Option<f64> {
     let s = &it.state;
+    let machine = it
+        .spec
+        .has(crate::dialect::Capability::OffsetParametersInMachineUnits);
+    let scale = match it.opts.machine_units {
+        crate::ir::LengthUnit::Inch => super::state::MM_PER_INCH,
+        crate::ir::LengthUnit::Mm => 1.0,
+    };
     let len = |i: usize, v: f64| {
-        if super::state::State::is_linear(i) {
-            s.to_prog(v)
-        } else {
+        if !super::state::State::is_linear(i) {
             v
+        } else if machine {
+            v / scale
+        } else {
+            s.to_prog(v)
         }
     };
     match n {
