@@ -94,3 +94,18 @@ fn stored_offsets_tool_row_and_arc_tolerance() {
     assert!(out.contains("SET_TOOL_TABLE_ENTRY(0, 1, 0.0000 0.0000 0.0394"), "{out}");
     assert!(out.contains("ARC_FEED(50.0000, 0.0000, 24.9860"), "{out}");
 }
+
+/// An A word in a canned-cycle block: rs274's "Cannot put an a in canned
+/// cycle", on that line.
+#[test]
+fn rotary_word_in_a_cycle_is_refused() {
+    let o = cncc(&[
+        "canon",
+        "--dialect",
+        "linuxcnc",
+        "tests/programs/linuxcnc/rs274_rules/a_in_cycle.ngc",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let e = stderr(&o);
+    assert!(e.contains("Cannot put an a in canned cycle") && e.contains(":2:"), "{e}");
+}

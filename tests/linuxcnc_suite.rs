@@ -86,14 +86,6 @@ const KNOWN: &[(&str, &str)] = &[
         "a main-program M99 (task loops; standalone rs274 ends), and rs274 keeps only the last of two comments on a line",
     ),
     (
-        "interp/bad/a-in-canned-cycle",
-        "rs274's \"Cannot put an a in canned cycle\" is not checked",
-    ),
-    (
-        "interp/bad/a-in-canned-cycle2",
-        "rs274's \"Cannot put an a in canned cycle\" is not checked",
-    ),
-    (
         "interp/bad/nested",
         "rs274's \"Nested subroutine definition\" is not checked",
     ),

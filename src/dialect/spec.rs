@@ -168,6 +168,10 @@ pub enum Capability {
     /// user units; rs274 2.9, its unit-conversion test). Otherwise they read in
     /// the program's units.
     OffsetParametersInMachineUnits,
+    /// An A, B or C word in a canned-cycle block is an error (LinuxCNC:
+    /// "Cannot put an a in canned cycle"); elsewhere it moves with the
+    /// positioning.
+    CycleRotaryWordsRefused,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -216,6 +220,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("power-on-linear", Capability::PowerOnLinear),
     ("cycle-words-required", Capability::CycleWordsRequired),
     ("colon-program-number", Capability::ColonProgramNumber),
+    ("cycle-rotary-words-refused", Capability::CycleRotaryWordsRefused),
     ("offset-parameters-in-machine-units", Capability::OffsetParametersInMachineUnits),
     ("tap-feed-axes-permuted", Capability::TapFeedAxesPermuted),
     ("first-program-wins", Capability::FirstProgramWins),
