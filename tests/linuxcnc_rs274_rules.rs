@@ -24,10 +24,19 @@ fn rules(name: &str) -> String {
 #[test]
 fn xy_rotation_applies_to_machine_coordinates() {
     let out = rules("rotation.ngc");
-    assert!(out.contains("STRAIGHT_TRAVERSE(1.4142, 0.0000, 0.0000"), "{out}");
+    assert!(
+        out.contains("STRAIGHT_TRAVERSE(1.4142, 0.0000, 0.0000"),
+        "{out}"
+    );
     assert!(out.contains("MESSAGE(\" abs 1.000000 1.000000\")"), "{out}");
-    assert!(out.contains("SET_G5X_OFFSET(2, 0.7071, 0.7071, 0.0000"), "{out}");
-    assert!(out.contains("MESSAGE(\" now -1.000000 0.000000\")"), "{out}");
+    assert!(
+        out.contains("SET_G5X_OFFSET(2, 0.7071, 0.7071, 0.0000"),
+        "{out}"
+    );
+    assert!(
+        out.contains("MESSAGE(\" now -1.000000 0.000000\")"),
+        "{out}"
+    );
 }
 
 /// `EXISTS[#n]` (in the parameter range), `##1`, and `#atan[1]/[1]` as a
@@ -35,8 +44,14 @@ fn xy_rotation_applies_to_machine_coordinates() {
 #[test]
 fn numbered_exists_and_indirection() {
     let out = rules("parameters.ngc");
-    assert!(out.contains("STRAIGHT_TRAVERSE(1.0000, 0.0000, 1.0000"), "{out}");
-    assert!(out.contains("STRAIGHT_TRAVERSE(1.0000, 0.0000, 3.0000"), "{out}");
+    assert!(
+        out.contains("STRAIGHT_TRAVERSE(1.0000, 0.0000, 1.0000"),
+        "{out}"
+    );
+    assert!(
+        out.contains("STRAIGHT_TRAVERSE(1.0000, 0.0000, 3.0000"),
+        "{out}"
+    );
 }
 
 /// `o#<s> call` and `O[expr] call` call o2; `#<_value>` reads 0 before any
@@ -78,10 +93,19 @@ fn first_program_of_a_number_wins_in_linuxcnc_only() {
 #[test]
 fn g84_in_g18_keeps_linuxcncs_bug_only_there() {
     let out = rules("g84_g18.ngc");
-    assert!(out.contains("STRAIGHT_FEED(-1.0000, 1.0000, 1.0000"), "{out}");
-    assert!(out.contains("STRAIGHT_FEED(2.0000, 1.0000, 1.0000"), "{out}");
+    assert!(
+        out.contains("STRAIGHT_FEED(-1.0000, 1.0000, 1.0000"),
+        "{out}"
+    );
+    assert!(
+        out.contains("STRAIGHT_FEED(2.0000, 1.0000, 1.0000"),
+        "{out}"
+    );
     let out = canon("fanuc", "tests/programs/linuxcnc/rs274_rules/g84_g18.ngc");
-    assert!(out.contains("STRAIGHT_FEED(0.0010, -0.0010, 0.0010"), "{out}");
+    assert!(
+        out.contains("STRAIGHT_FEED(0.0010, -0.0010, 0.0010"),
+        "{out}"
+    );
 }
 
 /// #5221 stays in machine units across G21; G10 L1 on row 1 (rs274's
@@ -91,7 +115,10 @@ fn g84_in_g18_keeps_linuxcncs_bug_only_there() {
 fn stored_offsets_tool_row_and_arc_tolerance() {
     let out = rules("stored.ngc");
     assert_eq!(out.matches("MESSAGE(\" 1.000000\")").count(), 2, "{out}");
-    assert!(out.contains("SET_TOOL_TABLE_ENTRY(0, 1, 0.0000 0.0000 0.0394"), "{out}");
+    assert!(
+        out.contains("SET_TOOL_TABLE_ENTRY(0, 1, 0.0000 0.0000 0.0394"),
+        "{out}"
+    );
     assert!(out.contains("ARC_FEED(50.0000, 0.0000, 24.9860"), "{out}");
 }
 
@@ -107,5 +134,26 @@ fn rotary_word_in_a_cycle_is_refused() {
     ]);
     assert_eq!(o.status.code(), Some(1));
     let e = stderr(&o);
-    assert!(e.contains("Cannot put an a in canned cycle") && e.contains(":2:"), "{e}");
+    assert!(
+        e.contains("Cannot put an a in canned cycle") && e.contains(":2:"),
+        "{e}"
+    );
+}
+
+/// An o-word sub defined inside another: rs274's "Nested subroutine
+/// definition", at the inner `sub`.
+#[test]
+fn nested_sub_definition_is_refused() {
+    let o = cncc(&[
+        "canon",
+        "--dialect",
+        "linuxcnc",
+        "tests/programs/linuxcnc/rs274_rules/nested_sub.ngc",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let e = stderr(&o);
+    assert!(
+        e.contains("Nested subroutine definition") && e.contains(":3:"),
+        "{e}"
+    );
 }

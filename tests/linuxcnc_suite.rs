@@ -86,10 +86,6 @@ const KNOWN: &[(&str, &str)] = &[
         "a main-program M99 (task loops; standalone rs274 ends), and rs274 keeps only the last of two comments on a line",
     ),
     (
-        "interp/bad/nested",
-        "rs274's \"Nested subroutine definition\" is not checked",
-    ),
-    (
         "m70-m73/m73-flood-mist-restore.0",
         "M73's automatic restore does not restore mist and flood",
     ),
@@ -97,18 +93,39 @@ const KNOWN: &[(&str, &str)] = &[
 
 /// Cases `run.sh` cannot run, by id prefix, with the reason.
 const NOT_APPLICABLE: &[(&str, &str)] = &[
-    ("remap/", "REMAP= lines and embedded Python from the INI: out of scope"),
+    (
+        "remap/",
+        "REMAP= lines and embedded Python from the INI: out of scope",
+    ),
     ("abort/", "linuxcnc -r with HAL: a motion/task test"),
     ("mdi-queue/", "linuxcnc -r with HAL: a motion/task test"),
     ("motion-logger/", "linuxcnc -r with HAL: a motion/task test"),
     ("motion/", "linuxcnc -r with HAL: a motion/task test"),
     ("single-step", "linuxcnc -r with HAL: a motion/task test"),
-    ("statbuffer-g5x-abort", "linuxcnc -r with HAL: a motion/task test"),
-    ("trajectory-planner/", "linuxcnc -r with HAL: a motion/task test"),
-    ("interp_initcode", "linuxcnc -r with HAL (RS274NGC_STARTUP_CODE)"),
-    ("interp/mdi-oword-m66", "linuxcnc -r with HAL, MDI and a Python UI"),
-    ("interp/oword-mdi-sub-update", "linuxcnc -r with HAL, MDI and a Python UI"),
-    ("interp/subroutine-return", "linuxcnc -r with HAL, MDI and a Python UI"),
+    (
+        "statbuffer-g5x-abort",
+        "linuxcnc -r with HAL: a motion/task test",
+    ),
+    (
+        "trajectory-planner/",
+        "linuxcnc -r with HAL: a motion/task test",
+    ),
+    (
+        "interp_initcode",
+        "linuxcnc -r with HAL (RS274NGC_STARTUP_CODE)",
+    ),
+    (
+        "interp/mdi-oword-m66",
+        "linuxcnc -r with HAL, MDI and a Python UI",
+    ),
+    (
+        "interp/oword-mdi-sub-update",
+        "linuxcnc -r with HAL, MDI and a Python UI",
+    ),
+    (
+        "interp/subroutine-return",
+        "linuxcnc -r with HAL, MDI and a Python UI",
+    ),
     ("interp/pymove", "embedded Python o-word subs"),
     ("interp/python-self", "embedded Python o-word subs"),
     ("interp/value-returned", "embedded Python o-word subs"),
@@ -121,9 +138,18 @@ const NOT_APPLICABLE: &[(&str, &str)] = &[
         "interp/oword-unwind",
         "rs274 -n 0 (continue after errors); cncc stops at the first error",
     ),
-    ("interp/m19", "[RS274NGC]ORIENT_OFFSET from the INI (no --ini yet)"),
-    ("interp/abort-hot-comment", "INI_VARS #<_ini[..]> and the abort text on stderr"),
-    ("interp/iniparam", "INI_VARS #<_ini[..]> from the INI (no --ini yet)"),
+    (
+        "interp/m19",
+        "[RS274NGC]ORIENT_OFFSET from the INI (no --ini yet)",
+    ),
+    (
+        "interp/abort-hot-comment",
+        "INI_VARS #<_ini[..]> and the abort text on stderr",
+    ),
+    (
+        "interp/iniparam",
+        "INI_VARS #<_ini[..]> from the INI (no --ini yet)",
+    ),
     (
         "interp/nested-sub-error",
         "[RS274NGC]SUBROUTINE_PATH=subs from the INI (no --ini yet)",

@@ -306,6 +306,17 @@ impl StructureChecker {
     }
 
     fn sub_start(&mut self, name: &str, id: &FlowId, span: Span) {
+        // An o-word sub inside another: rs274's "Nested subroutine
+        // definition", at the inner `sub`.
+        let nested =
+            matches!(id, FlowId::OWord(_)) && self.stack.iter().any(|o| o.kind == Opener::Sub);
+        if nested {
+            self.misplaced(
+                span,
+                "Nested subroutine definition".into(),
+                "end the outer sub before defining this one",
+            );
+        }
         let first = self.subs.get(name).copied();
         self.duplicate(first, span, &format!("subroutine `{name}`"));
         self.subs.entry(name.to_string()).or_insert(span);

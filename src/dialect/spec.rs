@@ -220,11 +220,20 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("power-on-linear", Capability::PowerOnLinear),
     ("cycle-words-required", Capability::CycleWordsRequired),
     ("colon-program-number", Capability::ColonProgramNumber),
-    ("cycle-rotary-words-refused", Capability::CycleRotaryWordsRefused),
-    ("offset-parameters-in-machine-units", Capability::OffsetParametersInMachineUnits),
+    (
+        "cycle-rotary-words-refused",
+        Capability::CycleRotaryWordsRefused,
+    ),
+    (
+        "offset-parameters-in-machine-units",
+        Capability::OffsetParametersInMachineUnits,
+    ),
     ("tap-feed-axes-permuted", Capability::TapFeedAxesPermuted),
     ("first-program-wins", Capability::FirstProgramWins),
-    ("fractional-sequence-numbers", Capability::FractionalSequenceNumbers),
+    (
+        "fractional-sequence-numbers",
+        Capability::FractionalSequenceNumbers,
+    ),
     ("no-nested-comments", Capability::NoNestedComments),
     ("splines", Capability::Splines),
     ("global-q-parameters", Capability::GlobalQParameters),

@@ -255,7 +255,13 @@ fn set_work_offset(
     let r = word(it, words, 'R', exprs)?;
     let old = it.state.placement();
     let w: [Option<f64>; 9] = std::array::from_fn(|i| {
-        w[i].map(|v| if State::is_linear(i) { it.state.to_mm(v) } else { v })
+        w[i].map(|v| {
+            if State::is_linear(i) {
+                it.state.to_mm(v)
+            } else {
+                v
+            }
+        })
     });
     if l20 {
         l20_offset(&mut it.state, index, &w);
@@ -384,7 +390,13 @@ fn set_tool(
     let mut offset = tool.offset;
     let fixture = fixture_reading(&it.state);
     let w_mm: [Option<f64>; 9] = std::array::from_fn(|i| {
-        w[i].map(|v| if State::is_linear(i) { it.state.to_mm(v) } else { v })
+        w[i].map(|v| {
+            if State::is_linear(i) {
+                it.state.to_mm(v)
+            } else {
+                v
+            }
+        })
     });
     let table_mm: [f64; 9] = std::array::from_fn(|i| {
         if State::is_linear(i) {

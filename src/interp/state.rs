@@ -312,11 +312,7 @@ impl State {
         let ix = (index as usize).min(self.g5x.len() - 1);
         Placement {
             g5x: self.g5x[ix],
-            g92: if self.g92_applied {
-                self.g92
-            } else {
-                [0.0; 9]
-            },
+            g92: if self.g92_applied { self.g92 } else { [0.0; 9] },
             tool: self.tool_offset,
             rotation: self.g5x_rotation[ix],
         }

@@ -313,7 +313,11 @@ impl<'a> Cx<'a> {
         let kind = match v.0 {
             Var::Named(name) => ExprKind::Exists(name),
             Var::Numbered(n) => {
-                let num = self.node(ExprKind::Number(crate::ir::Decimal::from_int(n as i64)), v.1, false);
+                let num = self.node(
+                    ExprKind::Number(crate::ir::Decimal::from_int(n as i64)),
+                    v.1,
+                    false,
+                );
                 ExprKind::ExistsNumbered(self.id(num))
             }
             Var::Indirect(e) => ExprKind::ExistsNumbered(e),
