@@ -194,7 +194,7 @@ pub fn retag_owords(feed: &mut [Spanned]) -> usize {
     for i in 0..feed.len().saturating_sub(2) {
         if feed[i].1 == Tok::O {
             if let Some(k) = computed_oword_end(feed, i + 1) {
-                if feed[k].1 == Tok::Kw(Kw::Call) {
+                if feed.get(k).map(|t| t.1) == Some(Tok::Kw(Kw::Call)) {
                     feed[i].1 = Tok::OWord;
                     continue;
                 }
