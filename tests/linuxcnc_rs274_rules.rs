@@ -157,3 +157,13 @@ fn nested_sub_definition_is_refused() {
         "{e}"
     );
 }
+
+/// M73's restore turns back on the mist that was on when saved, and turns
+/// off nothing (rs274 2.9: the flood the sub turned on stays on).
+#[test]
+fn m73_restores_coolant_that_was_on() {
+    let out = rules("m73_coolant.ngc");
+    let tail = &out[out.find("FLOOD_ON()").expect("flood on in the sub")..];
+    assert!(tail.contains("MIST_ON()"), "{out}");
+    assert_eq!(out.matches("FLOOD_OFF()").count(), 2, "{out}");
+}

@@ -85,10 +85,6 @@ const KNOWN: &[(&str, &str)] = &[
         "interp/m98m99/12-M99-endless-main-program",
         "a main-program M99 (task loops; standalone rs274 ends), and rs274 keeps only the last of two comments on a line",
     ),
-    (
-        "m70-m73/m73-flood-mist-restore.0",
-        "M73's automatic restore does not restore mist and flood",
-    ),
 ];
 
 /// Cases `run.sh` cannot run, by id prefix, with the reason.
