@@ -63,6 +63,8 @@ struct Open {
 /// The streaming structure checker (see the module doc).
 pub struct StructureChecker {
     end_required: bool,
+    /// A program number given twice is no error (the first is called).
+    first_program_wins: bool,
     stack: Vec<Open>,
     /// How many `Sub` openers `stack` holds (kept so that asking is O(1)
     /// however deep the nesting).
@@ -83,6 +85,7 @@ impl StructureChecker {
     pub fn new(spec: &DialectSpec) -> Self {
         StructureChecker {
             end_required: spec.has(Capability::ProgramEndRequired),
+            first_program_wins: spec.has(Capability::FirstProgramWins),
             stack: Vec::new(),
             subs_open: 0,
             diags: Vec::new(),
@@ -201,7 +204,9 @@ impl StructureChecker {
                 number: Some(n), ..
             } => {
                 let first = self.programs.get(n).copied();
-                self.duplicate(first, sp, &format!("program O{n}"));
+                if !self.first_program_wins {
+                    self.duplicate(first, sp, &format!("program O{n}"));
+                }
                 self.programs.entry(*n).or_insert(sp);
             }
             _ => {}
@@ -301,6 +306,17 @@ impl StructureChecker {
     }
 
     fn sub_start(&mut self, name: &str, id: &FlowId, span: Span) {
+        // An o-word sub inside another: rs274's "Nested subroutine
+        // definition", at the inner `sub`.
+        let nested =
+            matches!(id, FlowId::OWord(_)) && self.stack.iter().any(|o| o.kind == Opener::Sub);
+        if nested {
+            self.misplaced(
+                span,
+                "Nested subroutine definition".into(),
+                "end the outer sub before defining this one",
+            );
+        }
         let first = self.subs.get(name).copied();
         self.duplicate(first, span, &format!("subroutine `{name}`"));
         self.subs.entry(name.to_string()).or_insert(span);

@@ -166,6 +166,28 @@ pub enum Capability {
     /// table length; Fanuc and Haas shops number H as T by convention
     /// [?: the offset memory allows any numbering]. Lint W0703.
     LengthRegisterNamesTool,
+    /// An N word may have a fraction, which is dropped: `N4567.789` is N4567
+    /// (LinuxCNC, checked with rs274 2.9); elsewhere it is an error.
+    FractionalSequenceNumbers,
+    /// A program number given twice in one file is not an error: a call runs
+    /// the first one (LinuxCNC rs274 searches from the top; `O0002` and `O2`
+    /// are the same number, its 10-M98-P001 test).
+    FirstProgramWins,
+    /// LinuxCNC's own bug, matched on purpose: in G18/G19 the feed moves of
+    /// G74/G84 have their axes permuted twice (rs274 2.9
+    /// `convert_cycle_g74_g84` permutes for the plane and `cycle_feed` again),
+    /// so `G18 G84 X1 Z1 Y-1` taps at X-1 Y1 Z1. Its g84 tests lock this in.
+    /// Other dialects tap along the right axis.
+    TapFeedAxesPermuted,
+    /// The offset parameters #5211..#5399 (G92, work offsets) read in machine
+    /// units, so G20/G21 leave them unchanged (LinuxCNC: they stay in the INI's
+    /// user units; rs274 2.9, its unit-conversion test). Otherwise they read in
+    /// the program's units.
+    OffsetParametersInMachineUnits,
+    /// An A, B or C word in a canned-cycle block is an error (LinuxCNC:
+    /// "Cannot put an a in canned cycle"); elsewhere it moves with the
+    /// positioning.
+    CycleRotaryWordsRefused,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -216,6 +238,20 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("power-on-linear", Capability::PowerOnLinear),
     ("cycle-words-required", Capability::CycleWordsRequired),
     ("colon-program-number", Capability::ColonProgramNumber),
+    (
+        "cycle-rotary-words-refused",
+        Capability::CycleRotaryWordsRefused,
+    ),
+    (
+        "offset-parameters-in-machine-units",
+        Capability::OffsetParametersInMachineUnits,
+    ),
+    ("tap-feed-axes-permuted", Capability::TapFeedAxesPermuted),
+    ("first-program-wins", Capability::FirstProgramWins),
+    (
+        "fractional-sequence-numbers",
+        Capability::FractionalSequenceNumbers,
+    ),
     ("no-nested-comments", Capability::NoNestedComments),
     ("splines", Capability::Splines),
     ("global-q-parameters", Capability::GlobalQParameters),

@@ -38,6 +38,17 @@ pub fn write_expr(w: &mut Writer<'_>, id: ExprId) -> Option<String> {
             }
             Some(format!("EXISTS[#<{name}>]"))
         }
+        ExprKind::ExistsNumbered(e) => {
+            if !w.need(
+                Capability::NamedParameters,
+                span,
+                "EXISTS[] on a numbered parameter",
+            ) {
+                return None;
+            }
+            let inner = write_expr(w, *e)?;
+            Some(format!("EXISTS[#[{inner}]]"))
+        }
         ExprKind::AtanSlash(a, b) => atan_slash(w, *a, *b, span),
         ExprKind::Query(name, args) => match w.style {
             Style::Sinumerik => {

@@ -14,12 +14,15 @@ use crate::ir::{ArcDir, Arena, Block, Coord, Expr, FeedMode, Motion};
 use std::f64::consts::PI;
 
 /// LinuxCNC's tolerance for the two radii of a centre-format arc
-/// (absolute, in program units) and its relative tolerance.
+/// (absolute, in program units) and its relative tolerance. rs274 scales
+/// its 0.002 in / 0.02 mm by sqrt(2) (`CENTER_ARC_RADIUS_TOLERANCE_*`): its
+/// `good/` and `bad/` arc tests sit on both sides of 0.002 * sqrt(2) * 100.
 fn radius_tolerance(units: CanonUnits) -> f64 {
-    match units {
+    let base = match units {
         CanonUnits::Inches => 0.002,
         CanonUnits::Mm => 0.02,
-    }
+    };
+    base * std::f64::consts::SQRT_2
 }
 const RELATIVE_TOLERANCE: f64 = 0.001;
 const TINY: f64 = 1e-12;

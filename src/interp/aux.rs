@@ -281,6 +281,7 @@ pub fn exec(
             let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0) as i64;
             let row = super::tools::row_of(it, q)?;
             it.state.tool_number = q;
+            it.state.spindle_row = row;
             it.state.m61_block = Some(it.block_span);
             it.out(Canon::ChangeToolNumber(row));
         }

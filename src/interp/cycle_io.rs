@@ -32,6 +32,9 @@ pub struct CycleBlock {
     /// (capability `cycle-words-required`, LinuxCNC); otherwise a missing
     /// R is the initial level and a missing P no dwell (Fanuc, Haas).
     pub words_required: bool,
+    /// An A, B or C word in a cycle block is an error (capability
+    /// `cycle-rotary-words-refused`, LinuxCNC).
+    pub rotary_refused: bool,
     /// This block wrote the cycle's G code (not only axis words).
     pub code_in_block: bool,
     /// LinuxCNC polar words under G91: the distance and the angle

@@ -89,6 +89,11 @@ impl Interp<'_, '_> {
                 Some(atan2_deg(y, x))
             }
             ExprKind::Exists(name) => Some(self.read_named(name).is_some() as i64 as f64),
+            ExprKind::ExistsNumbered(e) => {
+                let n = self.eval(*e, exprs)?.unwrap_or(0.0);
+                let whole = n.fract() == 0.0 && n >= 0.0 && n <= u32::MAX as f64;
+                Some((whole && self.check_number(n as u32, span).is_ok()) as i64 as f64)
+            }
             ExprKind::Query(name, _) => {
                 return Err(self.error_at(
                     span,

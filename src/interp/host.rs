@@ -46,6 +46,11 @@ pub trait MotionHost {
     fn overrides_enabled(&self) -> (bool, bool) {
         (true, true)
     }
+    /// Whether the dialect has a capability (default: none).
+    fn has(&self, c: crate::dialect::Capability) -> bool {
+        let _ = c;
+        false
+    }
 }
 
 /// Maps a plane's (first, second, normal) axis indices into a pose.

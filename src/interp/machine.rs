@@ -122,6 +122,10 @@ impl MotionHost for Interp<'_, '_> {
         }
     }
 
+    fn has(&self, c: crate::dialect::Capability) -> bool {
+        self.spec.has(c)
+    }
+
     fn assume_position(&mut self, to: Pose) {
         self.set_position(&to);
     }
@@ -303,7 +307,7 @@ pub fn program_end(it: &mut Interp<'_, '_>, rewind: bool) -> Result<(), Stop> {
         let sink = &mut it.sink;
         it.comp.flush(&mut |c| sink.call(c, span));
     }
-    let old = it.state.origin();
+    let old = it.state.placement();
     it.state.g5x_index = 1;
     it.state.reframe(old);
     it.emit(Canon::SetG5xOffset {

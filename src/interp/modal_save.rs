@@ -80,6 +80,18 @@ fn restore(it: &mut Interp<'_, '_>, s: &State) {
             SpindleDir::Stopped => Canon::StopSpindle,
         });
     }
+    // rs274 2.9 turns back on the coolant that was on when saved and is
+    // off now, and turns none off (probed: saved mist, now flood: MIST_ON
+    // only, the flood stays on). [?] Where these come among the other
+    // restores was not probed together with them.
+    if s.mist && !cur.mist {
+        it.state.mist = true;
+        it.out(Canon::MistOn);
+    }
+    if s.flood && !cur.flood {
+        it.state.flood = true;
+        it.out(Canon::FloodOn);
+    }
     if s.plane != cur.plane {
         it.state.plane = s.plane;
         it.out(Canon::SelectPlane(s.plane));

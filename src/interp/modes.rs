@@ -168,12 +168,63 @@ fn strip_prefix_ci<'t>(text: &'t str, prefix: &str) -> Option<&'t str> {
         .then(|| &t[prefix.len()..])
 }
 
+/// How a DEBUG text prints parameter values: rs274's `%.6f` until a
+/// `%d`, `%f` (4 decimals) or `%.Nf` in the text sets another for the
+/// values after it (the spec itself is not printed; rs274 2.9, its
+/// param_format_printing test and probes).
+#[derive(Clone, Copy)]
+enum ValueFormat {
+    Decimals(usize),
+    /// `%d`: rounded half up [?] (rs274 prints 2.7 as 3 and -2.5 as -2).
+    Integer,
+}
+
+impl ValueFormat {
+    fn show(self, v: f64) -> String {
+        match self {
+            ValueFormat::Decimals(n) => format!("{v:.n$}"),
+            ValueFormat::Integer => format!("{}", (v + 0.5).floor() as i64),
+        }
+    }
+
+    /// A format spec at the start of `s`, and its length.
+    fn spec(s: &str) -> Option<(ValueFormat, usize)> {
+        let b = s.as_bytes();
+        match b.get(1)? {
+            b'd' => Some((ValueFormat::Integer, 2)),
+            b'f' => Some((ValueFormat::Decimals(4), 2)),
+            b'.' => {
+                let digits = b[2..].iter().take_while(|c| c.is_ascii_digit()).count();
+                (digits > 0 && b.get(2 + digits) == Some(&b'f')).then(|| {
+                    let n = s[2..2 + digits].parse().unwrap_or(6);
+                    (ValueFormat::Decimals(n), 3 + digits)
+                })
+            }
+            _ => None,
+        }
+    }
+}
+
 /// `#<name>` and `#123` in a DEBUG text replaced by their values (`%f`).
 fn substitute(it: &Interp<'_, '_>, text: &str) -> String {
     let mut out = String::new();
     let mut rest = text;
-    while let Some(i) = rest.find('#') {
+    let mut fmt = ValueFormat::Decimals(6);
+    while let Some(i) = rest.find(['#', '%']) {
         out.push_str(&rest[..i]);
+        if rest[i..].starts_with('%') {
+            match ValueFormat::spec(&rest[i..]) {
+                Some((f, len)) => {
+                    fmt = f;
+                    rest = &rest[i + len..];
+                }
+                None => {
+                    out.push('%');
+                    rest = &rest[i + 1..];
+                }
+            }
+            continue;
+        }
         let after = &rest[i + 1..];
         if let Some(name) = after
             .strip_prefix('<')
@@ -186,7 +237,7 @@ fn substitute(it: &Interp<'_, '_>, text: &str) -> String {
                 .collect::<String>()
                 .to_ascii_lowercase();
             match it.read_named(&key) {
-                Some(v) => out.push_str(&format!("{v:.6}")),
+                Some(v) => out.push_str(&fmt.show(v)),
                 None => out.push_str("######"),
             }
             rest = &after[name.len() + 2..];
@@ -196,7 +247,7 @@ fn substitute(it: &Interp<'_, '_>, text: &str) -> String {
                 out.push('#');
             } else {
                 let n: u32 = digits.parse().unwrap_or(0);
-                out.push_str(&format!("{:.6}", it.read_numbered(n).unwrap_or(0.0)));
+                out.push_str(&fmt.show(it.read_numbered(n).unwrap_or(0.0)));
             }
             rest = &after[digits.len()..];
         }

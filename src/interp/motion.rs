@@ -362,6 +362,9 @@ fn base_block(
         incremental: !it.state.absolute,
         return_initial: it.state.retract_initial,
         words_required: it.spec.has(crate::dialect::Capability::CycleWordsRequired),
+        rotary_refused: it
+            .spec
+            .has(crate::dialect::Capability::CycleRotaryWordsRefused),
         code_in_block: false,
         polar_step: None,
         span: it.span,

@@ -68,7 +68,7 @@ pub(crate) fn work_offset(it: &mut Interp<'_, '_>, index: u32) {
         ));
         return;
     }
-    let old = it.state.origin();
+    let old = it.state.placement();
     it.state.g5x_index = index;
     it.state.reframe(old);
     emit_g5x(it, index);
@@ -90,7 +90,7 @@ fn extended_offset(it: &mut Interp<'_, '_>, p: f64) -> Result<(), Stop> {
         ));
     }
     let n = p as u32;
-    let old = it.state.origin();
+    let old = it.state.placement();
     for i in 0..9 {
         let v = it
             .params
@@ -136,7 +136,7 @@ fn coord_shift(
     axes: &Axes,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    let old = it.state.origin();
+    let old = it.state.placement();
     let w = written(it, axes, exprs)?;
     match kind {
         CoordShift::Set => {
@@ -253,24 +253,24 @@ fn set_work_offset(
     let index = if p == 0 { it.state.g5x_index } else { p };
     let w = axis_words(it, words, exprs)?;
     let r = word(it, words, 'R', exprs)?;
-    let old = it.state.origin();
-    let g92 = if it.state.g92_applied {
-        it.state.g92
+    let old = it.state.placement();
+    let w: [Option<f64>; 9] = std::array::from_fn(|i| {
+        w[i].map(|v| {
+            if State::is_linear(i) {
+                it.state.to_mm(v)
+            } else {
+                v
+            }
+        })
+    });
+    if l20 {
+        l20_offset(&mut it.state, index, &w);
     } else {
-        [0.0; 9]
-    };
-    for i in 0..9 {
-        let Some(v) = w[i] else { continue };
-        let v = if State::is_linear(i) {
-            it.state.to_mm(v)
-        } else {
-            v
-        };
-        it.state.g5x[index as usize][i] = if l20 {
-            it.state.pos[i] + old[i] - g92[i] - it.state.tool_offset[i] - v
-        } else {
-            v
-        };
+        for (i, v) in w.iter().enumerate() {
+            if let Some(v) = v {
+                it.state.g5x[index as usize][i] = *v;
+            }
+        }
     }
     if let Some(r) = r {
         it.state.g5x_rotation[index as usize] = r;
@@ -285,6 +285,85 @@ fn set_work_offset(
         it.out(Canon::SetXyRotation(it.state.g5x_rotation[index as usize]));
     }
     Ok(())
+}
+
+/// G10 L20: the work offset `index` moves so that the current position
+/// reads `w` (mm) on the axes given. Under a rotation of that system a
+/// given X or Y moves both X and Y of the offset (rs274: the current point
+/// is read in that system, the words replace its coordinates, and the
+/// offset is what maps the result back onto the machine position).
+fn l20_offset(state: &mut State, index: u32, w: &[Option<f64>; 9]) {
+    let ix = index as usize;
+    let place = state.placement_in(index);
+    let m = state.machine_pos();
+    let mut c = place.from_machine(&m);
+    for (i, v) in w.iter().enumerate() {
+        if let Some(v) = v {
+            c[i] = *v;
+        }
+    }
+    let unshifted = super::state::Placement {
+        g5x: [0.0; 9],
+        ..place
+    };
+    let q = unshifted.to_machine(&c);
+    let xy = place.rotation != 0.0 && (w[0].is_some() || w[1].is_some());
+    for i in 0..9 {
+        if w[i].is_some() || (xy && i < 2) {
+            state.g5x[ix][i] = m[i] - q[i];
+        }
+    }
+}
+
+/// G10 L11: the current point (tool offset included) read in the G59.3
+/// system, turned by its rotation; G92 left out, as rs274 does [?] (its
+/// g10-l11 test: "g92 shouldn't affect the tool touchoff fixture").
+fn fixture_reading(state: &State) -> [f64; 9] {
+    let m = state.machine_pos();
+    let mut c: [f64; 9] = std::array::from_fn(|i| m[i] - state.g5x[9][i]);
+    if state.g5x_rotation[9] != 0.0 {
+        let (x, y) = super::state::rotate_xy(c[0], c[1], -state.g5x_rotation[9]);
+        c[0] = x;
+        c[1] = y;
+    }
+    c
+}
+
+/// G10 L10: the tool offsets (mm) that make the current point read `w` on
+/// the axes given, the others kept. Under a rotation a given X or Y sets
+/// both (the tool offset is added after the rotation, in machine space).
+/// rs274 reads the current point with the table's offsets of the tool
+/// (`table`, mm), not the applied ones (its g10-l1-l10 test with rotation);
+/// unrotated, both readings give the same offsets.
+fn l10_offset(state: &State, table: &[f64; 9], w: &[Option<f64>; 9]) -> [Option<f64>; 9] {
+    let place = state.placement();
+    let xy = place.rotation != 0.0 && (w[0].is_some() || w[1].is_some());
+    if !xy {
+        return std::array::from_fn(|i| w[i].map(|v| state.pos[i] + state.tool_offset[i] - v));
+    }
+    let m = state.machine_pos();
+    let mut c = super::state::Placement {
+        tool: *table,
+        ..place
+    }
+    .from_machine(&m);
+    for (i, v) in w.iter().enumerate() {
+        if let Some(v) = v {
+            c[i] = *v;
+        }
+    }
+    let bare = super::state::Placement {
+        tool: [0.0; 9],
+        ..place
+    };
+    let q = bare.to_machine(&c);
+    std::array::from_fn(|i| {
+        if w[i].is_some() || i < 2 {
+            Some(m[i] - q[i])
+        } else {
+            None
+        }
+    })
 }
 
 /// G10 L1 (values), L10/L11 (so that the current position reads as given).
@@ -309,19 +388,36 @@ fn set_tool(
         return Ok(());
     };
     let mut offset = tool.offset;
-    for i in 0..9 {
-        let Some(v) = w[i] else { continue };
-        let lin = State::is_linear(i);
-        let v_mm = if lin { it.state.to_mm(v) } else { v };
-        let mm = match l {
-            1 => v_mm,
-            10 => it.state.pos[i] + it.state.tool_offset[i] - v_mm,
-            _ => {
-                let o = it.state.origin();
-                it.state.pos[i] + o[i] - it.state.g5x[9][i] - v_mm
+    let fixture = fixture_reading(&it.state);
+    let w_mm: [Option<f64>; 9] = std::array::from_fn(|i| {
+        w[i].map(|v| {
+            if State::is_linear(i) {
+                it.state.to_mm(v)
+            } else {
+                v
             }
+        })
+    });
+    let table_mm: [f64; 9] = std::array::from_fn(|i| {
+        if State::is_linear(i) {
+            tool.offset[i] * scale
+        } else {
+            tool.offset[i]
+        }
+    });
+    let touched = l10_offset(&it.state, &table_mm, &w_mm);
+    for i in 0..9 {
+        let mm = match (l, w_mm[i]) {
+            (1, Some(v)) => v,
+            (1, None) => continue,
+            (10, _) => match touched[i] {
+                Some(v) => v,
+                None => continue,
+            },
+            (_, Some(v)) => fixture[i] - v,
+            (_, None) => continue,
         };
-        offset[i] = if lin { mm / scale } else { mm };
+        offset[i] = if State::is_linear(i) { mm / scale } else { mm };
     }
     let diameter = r
         .map(|r| it.state.to_mm(r) * 2.0 / scale)
@@ -345,8 +441,10 @@ fn set_tool(
         back,
         orientation,
     });
-    // The tool in the spindle also has row 0, which rs274 updates too.
-    if t == it.state.tool_in_spindle && t != 0 {
+    // The tool in the spindle also has row 0, which rs274 updates too,
+    // with the M6 parameters.
+    if row == it.state.spindle_row && row != 0 {
+        super::tools::set_tool_parameters(it, t);
         it.out(Canon::SetToolTableEntry {
             row: 0,
             tool: t,
@@ -373,10 +471,11 @@ fn ref_return(
 ) -> Result<(), Stop> {
     let base = if index == 1 { 5161 } else { 5181 };
     let scale = machine_scale(it);
-    let origin = it.state.origin();
+    let place = it.state.placement();
     if store {
+        let machine = it.state.machine_pos();
         for i in 0..6 {
-            let m = it.state.pos[i] + origin[i];
+            let m = machine[i];
             let v = if State::is_linear(i) { m / scale } else { m };
             it.params.set_numbered(base + i as u32, Some(v));
         }
@@ -404,16 +503,18 @@ fn ref_return(
         via
     };
     let all = given.iter().all(|g| g.is_none());
+    let mut stored = [0.0; 9];
+    for (i, m) in stored.iter_mut().enumerate().take(6) {
+        let v = it.read_numbered(base + i as u32).unwrap_or(0.0);
+        *m = if State::is_linear(i) { v * scale } else { v };
+    }
+    // rs274 reads the whole stored point in the program frame (rotated),
+    // then keeps the axes named (all when none is).
+    let stored = place.from_machine(&stored);
     let mut home = via;
     for i in 0..6 {
         if all || given[i].is_some() {
-            let stored = it.read_numbered(base + i as u32).unwrap_or(0.0);
-            let m = if State::is_linear(i) {
-                stored * scale
-            } else {
-                stored
-            };
-            home[i] = m - origin[i];
+            home[i] = stored[i];
         }
     }
     let home_pose = pose6(&it.state, &home);

@@ -55,6 +55,9 @@ pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
         // The standalone interpreter: no task, no remapping, no adaptive
         // feed; the overrides and feed hold are enabled (rs274 prints 1).
         "_task" | "_remap_level" | "_adaptive_feed" => Some(0.0),
+        // What the last o-word return gave: 0 before any (rs274 2.9, its
+        // return-value test); a return sets the parameters themselves.
+        "_value" | "_value_returned" => Some(0.0),
         "_speed_override" | "_feed_override" | "_feed_hold" => Some(1.0),
         // LinuxCNC 2.9 reports `_vmajor` 2.9 and `_vminor` 0 (rs274 2.9.x).
         "_vmajor" => Some(2.9),
@@ -71,7 +74,7 @@ fn modal(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
     let lower = name.to_ascii_lowercase();
     if let Some(axis) = lower.strip_prefix("_abs_") {
         let i = "xyzabcuvw".find(axis).filter(|_| axis.len() == 1)?;
-        let v = s.pos[i] + s.origin()[i];
+        let v = s.machine_pos()[i];
         return Some(if super::state::State::is_linear(i) {
             s.to_prog(v)
         } else {
@@ -155,11 +158,20 @@ fn motion_code(m: ModalMotion) -> f64 {
 /// parameters: the core writes them with `params.set_numbered`.
 pub fn numbered(it: &Interp<'_, '_>, n: u32) -> Option<f64> {
     let s = &it.state;
+    let machine = it
+        .spec
+        .has(crate::dialect::Capability::OffsetParametersInMachineUnits);
+    let scale = match it.opts.machine_units {
+        crate::ir::LengthUnit::Inch => super::state::MM_PER_INCH,
+        crate::ir::LengthUnit::Mm => 1.0,
+    };
     let len = |i: usize, v: f64| {
-        if super::state::State::is_linear(i) {
-            s.to_prog(v)
-        } else {
+        if !super::state::State::is_linear(i) {
             v
+        } else if machine {
+            v / scale
+        } else {
+            s.to_prog(v)
         }
     };
     match n {

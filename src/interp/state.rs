@@ -55,6 +55,11 @@ pub struct State {
     pub tool_offset: [f64; 9],
     /// Tool number in the spindle (0: none) and the one selected.
     pub tool_in_spindle: i64,
+    /// The tool-table row rs274 treats as the one in the spindle (its
+    /// `current_pocket`): row 1 before any change (checked with rs274 2.9),
+    /// then the row of the tool M6 or M61 loaded (0 after `T0 M6`). A G10
+    /// L1/L10/L11 on that row also rewrites row 0 and #5400..#5410.
+    pub spindle_row: i64,
     pub tool_selected: Option<i64>,
     pub comp_side: CompSide,
     pub comp_radius: f64,
@@ -121,6 +126,7 @@ impl State {
             g92_applied: false,
             tool_offset: [0.0; 9],
             tool_in_spindle: 0,
+            spindle_row: 1,
             tool_selected: None,
             comp_side: CompSide::Off,
             comp_radius: 0.0,
@@ -245,35 +251,112 @@ impl Default for State {
     }
 }
 
-impl State {
-    /// The origin of the program frame in machine coordinates, mm:
-    /// work offset plus G92 offset (when applied) plus tool length offset.
+/// Where the program frame sits in machine coordinates, as rs274 places
+/// it: `machine = R(rotation) (program + G92) + work offset + tool offset`,
+/// the rotation (G10 L2 R, degrees) turning X and Y only, about the work
+/// origin, with G92 inside the rotated frame. Lengths in mm.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Placement {
+    pub g5x: [f64; 9],
+    pub g92: [f64; 9],
+    pub tool: [f64; 9],
+    pub rotation: f64,
+}
+
+/// Turns (x, y) by `deg` degrees counterclockwise.
+pub fn rotate_xy(x: f64, y: f64, deg: f64) -> (f64, f64) {
+    let (s, c) = deg.to_radians().sin_cos();
+    (x * c - y * s, x * s + y * c)
+}
+
+impl Placement {
+    /// The plain sum of the offsets (the whole origin when unrotated).
     pub fn origin(&self) -> [f64; 9] {
-        let mut o = [0.0; 9];
-        for (i, v) in o.iter_mut().enumerate() {
-            let g92 = if self.g92_applied { self.g92[i] } else { 0.0 };
-            *v = self.g5x[self.g5x_index as usize][i] + g92 + self.tool_offset[i];
-        }
-        o
+        std::array::from_fn(|i| self.g5x[i] + self.g92[i] + self.tool[i])
     }
 
-    /// Moves the current position by the change of origin from `old`
+    /// Machine coordinates of a program point.
+    pub fn to_machine(&self, p: &[f64; 9]) -> [f64; 9] {
+        let o = self.origin();
+        let mut m: [f64; 9] = std::array::from_fn(|i| p[i] + o[i]);
+        if self.rotation != 0.0 {
+            let (x, y) = rotate_xy(p[0] + self.g92[0], p[1] + self.g92[1], self.rotation);
+            m[0] = x + self.g5x[0] + self.tool[0];
+            m[1] = y + self.g5x[1] + self.tool[1];
+        }
+        m
+    }
+
+    /// Program coordinates of a machine point.
+    pub fn from_machine(&self, m: &[f64; 9]) -> [f64; 9] {
+        let o = self.origin();
+        let mut p: [f64; 9] = std::array::from_fn(|i| m[i] - o[i]);
+        if self.rotation != 0.0 {
+            let (x, y) = rotate_xy(
+                m[0] - self.g5x[0] - self.tool[0],
+                m[1] - self.g5x[1] - self.tool[1],
+                -self.rotation,
+            );
+            p[0] = x - self.g92[0];
+            p[1] = y - self.g92[1];
+        }
+        p
+    }
+}
+
+impl State {
+    /// The origin of the program frame in machine coordinates, mm:
+    /// work offset plus G92 offset (when applied) plus tool length offset
+    /// (the rotation aside: see [`Self::placement`]).
+    pub fn origin(&self) -> [f64; 9] {
+        self.placement().origin()
+    }
+
+    /// The placement of the program frame (work offset `index`).
+    pub fn placement_in(&self, index: u32) -> Placement {
+        let ix = (index as usize).min(self.g5x.len() - 1);
+        Placement {
+            g5x: self.g5x[ix],
+            g92: if self.g92_applied { self.g92 } else { [0.0; 9] },
+            tool: self.tool_offset,
+            rotation: self.g5x_rotation[ix],
+        }
+    }
+
+    /// The placement of the program frame in force.
+    pub fn placement(&self) -> Placement {
+        self.placement_in(self.g5x_index)
+    }
+
+    /// The current position in machine coordinates, mm.
+    pub fn machine_pos(&self) -> [f64; 9] {
+        self.placement().to_machine(&self.pos)
+    }
+
+    /// Moves the current position by the change of placement from `old`
     /// (the tool stays where it is; its program coordinates change).
-    pub fn reframe(&mut self, old: [f64; 9]) {
-        let new = self.origin();
-        for i in 0..9 {
-            self.pos[i] += old[i] - new[i];
-            self.canon_pos[i] += old[i] - new[i];
+    pub fn reframe(&mut self, old: Placement) {
+        let new = self.placement();
+        self.pos = Self::moved(old, new, &self.pos);
+        self.canon_pos = Self::moved(old, new, &self.canon_pos);
+    }
+
+    /// A point's program coordinates after a change of placement (without
+    /// rotation, as a shift by the change of origin, to keep the sums exact).
+    fn moved(old: Placement, new: Placement, p: &[f64; 9]) -> [f64; 9] {
+        if old.rotation == 0.0 && new.rotation == 0.0 {
+            let (o, n) = (old.origin(), new.origin());
+            std::array::from_fn(|i| p[i] + (o[i] - n[i]))
+        } else {
+            new.from_machine(&old.to_machine(p))
         }
     }
 
     /// As [`Self::reframe`] for a tool length change: the canon layer's
     /// position is not shifted.
-    pub fn reframe_keep_canon(&mut self, old: [f64; 9]) {
-        let new = self.origin();
-        for i in 0..9 {
-            self.pos[i] += old[i] - new[i];
-        }
+    pub fn reframe_keep_canon(&mut self, old: Placement) {
+        let new = self.placement();
+        self.pos = Self::moved(old, new, &self.pos);
     }
 }
 

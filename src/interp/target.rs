@@ -27,6 +27,13 @@ pub fn target(
     // system and the point is mapped to the work-offset frame after.
     let framed = frame == Frame::Program && !it.siemens.frame.is_identity();
     let mut to = it.state.pos;
+    let place = it.state.placement();
+    // G53 under a rotation: the words replace machine coordinates of the
+    // current point, and the whole point is turned back (rs274 `find_ends`).
+    let rotated_machine = frame == Frame::Machine && place.rotation != 0.0;
+    if rotated_machine {
+        to = place.to_machine(&to);
+    }
     if framed {
         let p = super::siemens::from_base(it, [to[0], to[1], to[2]]);
         to[..3].copy_from_slice(&p);
@@ -49,10 +56,14 @@ pub fn target(
             None => it.state.absolute,
         };
         to[i] = match frame {
-            Frame::Machine => v - it.state.origin()[i],
+            Frame::Machine if rotated_machine => v,
+            Frame::Machine => v - place.origin()[i],
             Frame::Program if absolute => v,
             Frame::Program => to[i] + v,
         };
+    }
+    if rotated_machine {
+        to = place.from_machine(&to);
     }
     if framed {
         let b = super::siemens::to_base(it, [to[0], to[1], to[2]]);

@@ -207,6 +207,7 @@ fn tool_change(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
     it.state.spindle = SpindleDir::Stopped;
     it.out(Canon::StopSpindle);
     it.state.tool_in_spindle = t;
+    it.state.spindle_row = row;
     it.state.resync = true;
     it.out(Canon::ChangeTool(row));
     set_tool_parameters(it, t);
@@ -216,7 +217,7 @@ fn tool_change(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
 /// #5400 (tool number), #5401..#5409 (its table offsets, machine units, as
 /// the table gives them) and #5410 (diameter): written by M6 only, as rs274
 /// does (M61 and G43 leave them; `T0 M6` leaves them too, checked with rs274).
-fn set_tool_parameters(it: &mut Interp<'_, '_>, t: i64) {
+pub fn set_tool_parameters(it: &mut Interp<'_, '_>, t: i64) {
     let Some(tool) = it.tool_table.get(t).cloned() else {
         return;
     };
@@ -394,7 +395,7 @@ fn length_comp(
     // The tool tip stays where it is: its program coordinates change
     // (until a tool change makes rs274 re-read the position, see
     // `State::resync`).
-    let old = it.state.origin();
+    let old = it.state.placement();
     it.state.tool_offset = new;
     it.state.reframe_keep_canon(old);
     let p = it.state.pose_to_prog(&new);

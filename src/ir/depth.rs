@@ -15,7 +15,9 @@ pub fn children(kind: &ExprKind, out: &mut Vec<ExprId>) {
     match kind {
         ExprKind::Number(_) | ExprKind::Str(_) | ExprKind::Bool(_) | ExprKind::Exists(_) => {}
         ExprKind::Var(v) => var_children(v, out),
-        ExprKind::Unary(_, a) | ExprKind::Dimension(_, a) => out.push(*a),
+        ExprKind::Unary(_, a) | ExprKind::Dimension(_, a) | ExprKind::ExistsNumbered(a) => {
+            out.push(*a)
+        }
         ExprKind::Binary(_, a, b) | ExprKind::AtanSlash(a, b) => {
             out.push(*a);
             out.push(*b);

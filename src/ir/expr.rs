@@ -26,6 +26,9 @@ pub enum ExprKind {
     Call(Func, Vec<ExprId>),
     /// LinuxCNC `EXISTS[#<name>]`.
     Exists(String),
+    /// LinuxCNC `EXISTS[#1]`, `EXISTS[##1]`: whether the numbered parameter
+    /// whose number is the expression is in the dialect's range.
+    ExistsNumbered(ExprId),
     /// Fanuc `ATAN[a]/[b]` and LinuxCNC `ATAN[y]/[x]`, kept in that form.
     AtanSlash(ExprId, ExprId),
     /// Siemens `AC(expr)` / `IC(expr)` inside an address value.

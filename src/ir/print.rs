@@ -129,6 +129,7 @@ impl Printer<'_> {
                 format!("{}({})", format!("{f:?}").to_lowercase(), a.join(", "))
             }
             ExprKind::Exists(n) => format!("exists(#<{n}>)"),
+            ExprKind::ExistsNumbered(e) => format!("exists(#[{}])", self.expr(*e)),
             ExprKind::Query(n, args) => {
                 let a: Vec<String> = args.iter().map(|x| self.expr(*x)).collect();
                 format!("{n}?({})", a.join(", "))

@@ -116,6 +116,7 @@ impl Build<'_> {
             ExprKind::Dimension(m, a) => ExprKind::Dimension(m, self.copy(a)),
             ExprKind::Binary(op, a, b) => ExprKind::Binary(op, self.copy(a), self.copy(b)),
             ExprKind::AtanSlash(a, b) => ExprKind::AtanSlash(self.copy(a), self.copy(b)),
+            ExprKind::ExistsNumbered(a) => ExprKind::ExistsNumbered(self.copy(a)),
             ExprKind::Call(f, args) => ExprKind::Call(f, self.copy_all(args)),
             ExprKind::Query(n, args) => ExprKind::Query(n, self.copy_all(args)),
             k @ (ExprKind::Number(_)

@@ -453,6 +453,7 @@ fn reads_locals(e: crate::ir::ExprId, exprs: &crate::ir::Arena<crate::ir::Expr>)
             ExprKind::Var(Var::User(_, idx)) => stack.extend(idx),
             ExprKind::Unary(_, a) | ExprKind::Dimension(_, a) => stack.push(*a),
             ExprKind::Binary(_, a, b) | ExprKind::AtanSlash(a, b) => stack.extend([*a, *b]),
+            ExprKind::ExistsNumbered(a) => stack.push(*a),
             ExprKind::Call(_, args) | ExprKind::Query(_, args) => stack.extend(args),
             ExprKind::Number(_)
             | ExprKind::Str(_)

@@ -143,6 +143,25 @@ fn peck(
     Ok(())
 }
 
+/// A feed of G74/G84. Where the dialect keeps LinuxCNC's bug
+/// (capability tap-feed-axes-permuted), a feed outside G17 goes to the
+/// point whose (x, y, z) are the plane-ordered coordinates permuted once
+/// more, as rs274 2.9 prints it; the position then is the right one again
+/// (rs274 keeps its own current point apart from the call).
+fn tap_feed(h: &mut dyn MotionHost, f: Frame, at: (f64, f64), depth: f64) {
+    let right = f.pose(h, at, depth);
+    if f.n == 2 || !h.has(crate::dialect::Capability::TapFeedAxesPermuted) {
+        return h.feed(right);
+    }
+    let mut wrong = right;
+    let (x, y, z) = (right[0], right[1], right[2]);
+    // G18 prints (y, z, x) and G19 (z, x, y) of the right point.
+    let p = if f.n == 1 { [y, z, x] } else { [z, x, y] };
+    wrong[..3].copy_from_slice(&p);
+    h.feed(wrong);
+    h.assume_position(right);
+}
+
 /// G84 (spindle CW, reversed at the bottom) and G74 (the mirror image).
 fn tap(
     h: &mut dyn MotionHost,
@@ -183,7 +202,7 @@ fn tap(
     let (feed_ovr, speed_ovr) = h.overrides_enabled();
     h.emit(Canon::DisableFeedOverride);
     h.emit(Canon::DisableSpeedOverride);
-    f.feed(h, l.at, l.bottom);
+    tap_feed(h, f, l.at, l.bottom);
     h.emit(Canon::StopSpindle);
     h.emit(if right {
         Canon::SpindleCcw
@@ -191,7 +210,7 @@ fn tap(
         Canon::SpindleCw
     });
     h.dwell(p.dwell);
-    f.feed(h, l.at, l.clear);
+    tap_feed(h, f, l.at, l.clear);
     h.emit(Canon::StopSpindle);
     h.emit(if right {
         Canon::SpindleCw

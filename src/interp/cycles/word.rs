@@ -47,6 +47,18 @@ fn try_run(
     block: &CycleBlock,
 ) -> Result<(), Diagnostic> {
     let same = mem.active == Some(block.kind);
+    if block.rotary_refused {
+        if let Some(i) = (3..6).find(|i| block.axes[*i].is_some()) {
+            let letter = ["a", "b", "c"][i - 3];
+            return Err(err(
+                Code::WordNotAllowed,
+                block,
+                &format!("Cannot put an {letter} in canned cycle"),
+                "rotary axis word in a cycle block",
+                "move the rotary axis in a block of its own, after G80",
+            ));
+        }
+    }
     if host.feed_rate() == 0.0 {
         return Err(err(
             Code::CycleZeroFeed,

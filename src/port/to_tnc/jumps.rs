@@ -99,6 +99,7 @@ impl Flow<'_> {
             }
             ExprKind::Str(_)
             | ExprKind::Exists(_)
+            | ExprKind::ExistsNumbered(_)
             | ExprKind::Query(..)
             | ExprKind::AtanSlash(..)
             | ExprKind::Dimension(..)

@@ -246,6 +246,12 @@ impl<'a> Cx<'a> {
         (Var::Indirect(self.id(e)), span)
     }
 
+    pub fn var_of_var(&self, v: (Var, Span), l: usize, r: usize) -> (Var, Span) {
+        let span = self.span(l, r);
+        let inner = self.var_expr(v);
+        (Var::Indirect(self.id(inner)), span)
+    }
+
     /// The text between `<` and `>`, as written.
     pub fn name_inside(&self, l: usize, r: usize) -> String {
         self.text
@@ -301,10 +307,26 @@ impl<'a> Cx<'a> {
         )
     }
 
-    pub fn exists(&self, nl: usize, nr: usize, l: usize, r: usize) -> PExpr {
+    pub fn exists(&self, v: (Var, Span), l: usize, r: usize) -> PExpr {
         let span = self.span(l, r);
         self.require(Capability::NamedParameters, span, "`EXISTS[#<name>]` tests");
-        self.node(ExprKind::Exists(self.name_inside(nl, nr)), span, false)
+        let kind = match v.0 {
+            Var::Named(name) => ExprKind::Exists(name),
+            Var::Numbered(n) => {
+                let num = self.node(
+                    ExprKind::Number(crate::ir::Decimal::from_int(n as i64)),
+                    v.1,
+                    false,
+                );
+                ExprKind::ExistsNumbered(self.id(num))
+            }
+            Var::Indirect(e) => ExprKind::ExistsNumbered(e),
+            other => {
+                let e = self.node(ExprKind::Var(other), v.1, false);
+                ExprKind::ExistsNumbered(self.id(e))
+            }
+        };
+        self.node(kind, span, false)
     }
 
     // ---- words and simple statements

@@ -114,6 +114,18 @@ impl<'a> Cx<'a> {
         }
     }
 
+    /// `O<MyProgram>` alone on a line: a main program's title (LinuxCNC,
+    /// rs274 2.9 runs what follows; its 13-named-program test).
+    pub fn program_name(&self, nl: usize, nr: usize, l: usize) {
+        let span = self.span(l, nr);
+        if self.require(Capability::NumberedPrograms, span, "`O` program names")
+            && self.require(Capability::OWords, span, "`O<name>` program names")
+        {
+            let name = Some(self.name_inside(nl, nr));
+            self.push_stmt(StmtKind::ProgramStart { number: None, name }, span);
+        }
+    }
+
     /// The o-word as a flow id key: `100` (leading zeros dropped) or `<name>`
     /// (lower case: LinuxCNC names ignore case).
     fn oword_key(&self, n: OName) -> String {
@@ -200,6 +212,21 @@ impl<'a> Cx<'a> {
                 id: FlowId::OWord(key),
             },
         }
+    }
+
+    pub fn ocall_computed(&self, e: PExpr, args: Vec<PExpr>, l: usize, r: usize) {
+        let span = self.span(l, r);
+        if !self.require(Capability::OWords, span, "o-word statements") {
+            return;
+        }
+        let args = CallArgs::Positional(args.into_iter().map(|a| Some(self.id(a))).collect());
+        let kind = StmtKind::Call {
+            kind: CallKind::OWord,
+            target: CallTarget::Computed(self.id(e)),
+            args,
+            repeat: None,
+        };
+        self.push_stmt(kind, span);
     }
 
     fn ocall(&self, n: OName, key: &str, args: Vec<PExpr>) -> StmtKind {

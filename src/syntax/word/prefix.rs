@@ -155,7 +155,12 @@ pub fn line_start(
     if let (Some(&(l, Tok::Letter(b'N'), _)), Some(&(nl, Tok::Number, nr))) =
         (feed.get(i), feed.get(i + 1))
     {
-        let n = seq_number(&input.text[nl..nr], span(input, nl, nr), diags);
+        let text = &input.text[nl..nr];
+        let text = match text.split_once('.') {
+            Some((whole, _)) if input.spec.has(Capability::FractionalSequenceNumbers) => whole,
+            _ => text,
+        };
+        let n = seq_number(text, span(input, nl, nr), diags);
         line.number = Some(At::new(n, span(input, l, nr)));
         i += 2;
     }
@@ -187,6 +192,14 @@ fn seq_number(text: &str, sp: Span, diags: &mut Vec<Diagnostic>) -> u32 {
 /// line (`o100 else if [..]` is a plain `else`; checked with rs274).
 pub fn retag_owords(feed: &mut [Spanned]) -> usize {
     for i in 0..feed.len().saturating_sub(2) {
+        if feed[i].1 == Tok::O {
+            if let Some(k) = computed_oword_end(feed, i + 1) {
+                if feed.get(k).map(|t| t.1) == Some(Tok::Kw(Kw::Call)) {
+                    feed[i].1 = Tok::OWord;
+                    continue;
+                }
+            }
+        }
         let named = matches!(feed[i + 1].1, Tok::Number | Tok::Named);
         if feed[i].1 == Tok::O && named && is_oword_keyword(feed[i + 2].1) {
             feed[i].1 = Tok::OWord;
@@ -196,6 +209,37 @@ pub fn retag_owords(feed: &mut [Spanned]) -> usize {
         }
     }
     feed.len()
+}
+
+/// Where a computed o-word number starting at `i` ends (`o#<sub> call`,
+/// `o##1 call`, `O[#2*10] call`: rs274 reads a parameter or a bracketed
+/// expression as the number): the index of the token after it.
+fn computed_oword_end(feed: &[Spanned], mut i: usize) -> Option<usize> {
+    let mut hashes = 0;
+    while feed.get(i)?.1 == Tok::Hash {
+        hashes += 1;
+        i += 1;
+    }
+    match feed.get(i)?.1 {
+        Tok::Number | Tok::Named if hashes > 0 => Some(i + 1),
+        Tok::LBr => {
+            let mut depth = 0;
+            for (k, t) in feed.iter().enumerate().skip(i) {
+                match t.1 {
+                    Tok::LBr => depth += 1,
+                    Tok::RBr => {
+                        depth -= 1;
+                        if depth == 0 {
+                            return (k + 1 < feed.len()).then_some(k + 1);
+                        }
+                    }
+                    _ => {}
+                }
+            }
+            None
+        }
+        _ => None,
+    }
 }
 
 fn is_oword_keyword(t: Tok) -> bool {

@@ -1,0 +1,303 @@
+//! LinuxCNC's own interpreter regression tests (`../shared/conformance/
+//! linuxcnc/`, the `tests/` fixtures of LinuxCNC's repository) run through
+//! the live `rs274` and through `cncc canon --dialect linuxcnc` by that
+//! folder's `run.sh`, and judged here (issue 16):
+//!
+//! * every case rs274 runs to the end must give identical canonical calls
+//!   (`canon-diff`), and every case rs274 rejects must be rejected by cncc at
+//!   the same place, unless it is listed in [`KNOWN`] with its reason;
+//! * every case `run.sh` cannot run (N/A) must be listed in [`NOT_APPLICABLE`]
+//!   with its reason;
+//! * a listed case that now passes fails the test, so the list shrinks.
+//!
+//! Skipped with a note when `../shared` or `rs274` (Debian
+//! `linuxcnc-uspace`) is absent; `CNCC_REQUIRE_ORACLE=1` (CI) turns the skip
+//! into a failure. One `run.sh` pass takes about 70 s on two cores; it runs
+//! each case in its own scratch folder with a private `$HOME` (rs274 2.9
+//! keeps its tool table in `$HOME/.tool.mmap`), so it is parallel-safe.
+
+mod common;
+
+use std::collections::BTreeMap;
+use std::process::Command;
+
+/// Cases that do not match yet, or never will, with the reason.
+const KNOWN: &[(&str, &str)] = &[
+    // ---- LinuxCNC's own bugs, not matched
+    (
+        "interp/g71-endless-loop",
+        "rs274 2.9-pre never ends (the bug the test was written for); cncc has no G71",
+    ),
+    (
+        "interp/g71-endless-loop_2",
+        "rs274 2.9-pre never ends (the bug the test was written for); cncc has no G71",
+    ),
+    // ---- our gaps
+    (
+        "ccomp/lathe-comp",
+        "lathe cutter compensation with a tool orientation (Q2): the nose-radius shift is not modelled",
+    ),
+    (
+        "interp/inside-corners",
+        "zero-radius compensation (D0): cncc makes degenerate corner arcs where rs274 makes none",
+    ),
+    (
+        "interp/g71-endless-loop2",
+        "G70/G71/G72 lathe roughing cycles are not implemented",
+    ),
+    (
+        "interp/g71-with-g70",
+        "G70/G71/G72 lathe roughing cycles are not implemented",
+    ),
+    (
+        "interp/g72-facing",
+        "`o100 end sub` (rs274 drops blanks inside words) and G72 are not read",
+    ),
+    (
+        "interp/g72-missing-iteration",
+        "`o100 end sub` (rs274 drops blanks inside words) and G72 are not read",
+    ),
+    (
+        "interp/m19@no-ini (variant, not in suite)",
+        "M19: ORIENT_SPINDLE with neither R nor P, P read as the angle",
+    ),
+    (
+        "interp/m98m99/06-error-mixed-sub-styles:O...-called-with-O..._call",
+        "rs274 refuses `O1 call` on a Fanuc `O1 ... M99` program; cncc runs it until the loop limit",
+    ),
+    (
+        "interp/m98m99/06-error-mixed-sub-styles:O...-sub-called-with-M98",
+        "rs274 refuses `M98 P1` on an `O1 sub`; cncc runs it",
+    ),
+    (
+        "interp/m98m99/06-error-mixed-sub-styles:O...-sub-ended-with-M99",
+        "rs274 refuses M99 inside `O1 sub` at the M99; cncc reports the unclosed sub at its start",
+    ),
+    (
+        "interp/m98m99/11-main-program-oword:illegal-no-m30-before-osub",
+        "rs274 refuses an `O2 sub` after a main program with no M2/M30; cncc only reports the missing end",
+    ),
+    (
+        "interp/m98m99/11-main-program-oword:illegal-sub-after-percent",
+        "text after the closing `%` is still lexed by cncc (a comment error), rs274 ignores it",
+    ),
+    (
+        "interp/m98m99/12-M99-endless-main-program",
+        "a main-program M99 (task loops; standalone rs274 ends), and rs274 keeps only the last of two comments on a line",
+    ),
+];
+
+/// Cases `run.sh` cannot run, by id prefix, with the reason.
+const NOT_APPLICABLE: &[(&str, &str)] = &[
+    (
+        "remap/",
+        "REMAP= lines and embedded Python from the INI: out of scope",
+    ),
+    ("abort/", "linuxcnc -r with HAL: a motion/task test"),
+    ("mdi-queue/", "linuxcnc -r with HAL: a motion/task test"),
+    ("motion-logger/", "linuxcnc -r with HAL: a motion/task test"),
+    ("motion/", "linuxcnc -r with HAL: a motion/task test"),
+    ("single-step", "linuxcnc -r with HAL: a motion/task test"),
+    (
+        "statbuffer-g5x-abort",
+        "linuxcnc -r with HAL: a motion/task test",
+    ),
+    (
+        "trajectory-planner/",
+        "linuxcnc -r with HAL: a motion/task test",
+    ),
+    (
+        "interp_initcode",
+        "linuxcnc -r with HAL (RS274NGC_STARTUP_CODE)",
+    ),
+    (
+        "interp/mdi-oword-m66",
+        "linuxcnc -r with HAL, MDI and a Python UI",
+    ),
+    (
+        "interp/oword-mdi-sub-update",
+        "linuxcnc -r with HAL, MDI and a Python UI",
+    ),
+    (
+        "interp/subroutine-return",
+        "linuxcnc -r with HAL, MDI and a Python UI",
+    ),
+    ("interp/pymove", "embedded Python o-word subs"),
+    ("interp/python-self", "embedded Python o-word subs"),
+    ("interp/value-returned", "embedded Python o-word subs"),
+    ("interp/python/error", "the LinuxCNC Python module"),
+    (
+        "interp/g52/g92-offset-persistence",
+        "a -v var file and DISABLE_G92_PERSISTENCE from an INI (no --var-file/--ini yet)",
+    ),
+    (
+        "interp/oword-unwind",
+        "rs274 -n 0 (continue after errors); cncc stops at the first error",
+    ),
+    (
+        "interp/m19",
+        "[RS274NGC]ORIENT_OFFSET from the INI (no --ini yet)",
+    ),
+    (
+        "interp/abort-hot-comment",
+        "INI_VARS #<_ini[..]> and the abort text on stderr",
+    ),
+    (
+        "interp/iniparam",
+        "INI_VARS #<_ini[..]> from the INI (no --ini yet)",
+    ),
+    (
+        "interp/nested-sub-error",
+        "[RS274NGC]SUBROUTINE_PATH=subs from the INI (no --ini yet)",
+    ),
+    (
+        "interp/nested-sub-in-file-error",
+        "[RS274NGC]SUBROUTINE_PATH=subs from the INI (no --ini yet)",
+    ),
+    (
+        "interp/sub-call-from-sub",
+        "[RS274NGC]SUBROUTINE_PATH=subs from the INI (no --ini yet)",
+    ),
+    (
+        "interp/m98m99/09-disable-fanuc-subs:",
+        "DISABLE_FANUC_STYLE_SUB=1 from the INI (no --ini yet)",
+    ),
+];
+
+fn require() -> bool {
+    std::env::var("CNCC_REQUIRE_ORACLE")
+        .map(|v| v == "1")
+        .unwrap_or(false)
+}
+
+fn skip(why: &str) {
+    assert!(
+        !require(),
+        "CNCC_REQUIRE_ORACLE=1 but the LinuxCNC suite was skipped: {why}"
+    );
+    eprintln!("note: LinuxCNC regression suite skipped: {why}");
+}
+
+fn rs274_present() -> bool {
+    Command::new("sh")
+        .args(["-c", "command -v rs274"])
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false)
+}
+
+/// One line of `run.sh`: verdict, case id, detail.
+fn parse(line: &str) -> Option<(String, String, String)> {
+    let (head, detail) = line.split_once("  -- ").unwrap_or((line, ""));
+    let mut words = head.split_whitespace();
+    let verdict = words.next()?.to_string();
+    if !matches!(
+        verdict.as_str(),
+        "IDENTICAL" | "DIFFERENT" | "CNCC-ERROR" | "N/A" | "RS274-ERROR"
+    ) {
+        return None;
+    }
+    let id = words.collect::<Vec<_>>().join(" ");
+    Some((verdict, id, detail.to_string()))
+}
+
+/// Whether a case passes: identical, or refused by both at the same place.
+fn passes(verdict: &str, detail: &str) -> bool {
+    match verdict {
+        "IDENTICAL" => true,
+        "RS274-ERROR" => {
+            detail.contains("cncc errors on the SAME line")
+                || detail.contains("cncc errors the same error")
+        }
+        _ => false,
+    }
+}
+
+fn not_applicable_reason(id: &str) -> Option<&'static str> {
+    NOT_APPLICABLE
+        .iter()
+        .find(|(prefix, _)| id.starts_with(prefix))
+        .map(|(_, why)| *why)
+}
+
+#[test]
+fn linuxcnc_regression_suite() {
+    let Some(shared) = common::shared() else {
+        return skip("../shared is absent");
+    };
+    let script = shared.join("conformance/linuxcnc/run.sh");
+    if !script.is_file() {
+        return skip("../shared/conformance/linuxcnc/run.sh is absent");
+    }
+    if !rs274_present() {
+        return skip("rs274 is not installed (apt-get install linuxcnc-uspace)");
+    }
+    let out = Command::new("bash")
+        .arg(&script)
+        .arg(env!("CARGO_BIN_EXE_cncc"))
+        .output()
+        .expect("run run.sh");
+    let text = String::from_utf8_lossy(&out.stdout);
+    let cases: BTreeMap<String, (String, String)> = text
+        .lines()
+        .filter_map(parse)
+        .map(|(v, id, d)| (id, (v, d)))
+        .collect();
+    assert!(
+        cases.len() > 100,
+        "run.sh printed {} cases; stderr:\n{}",
+        cases.len(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let known: BTreeMap<&str, &str> = KNOWN.iter().copied().collect();
+    let mut problems = Vec::new();
+    for (id, (verdict, detail)) in &cases {
+        let listed = known.get(id.as_str());
+        if verdict == "N/A" {
+            if not_applicable_reason(id).is_none() {
+                problems.push(format!("N/A but not listed: {id} -- {detail}"));
+            }
+            continue;
+        }
+        match (passes(verdict, detail), listed) {
+            (true, Some(_)) => problems.push(format!(
+                "now passes, remove it from KNOWN: {id} ({verdict})"
+            )),
+            (false, None) => problems.push(format!("{verdict} {id} -- {detail}")),
+            _ => {}
+        }
+    }
+    for id in known.keys() {
+        if !cases.contains_key(*id) {
+            problems.push(format!("listed in KNOWN but not run: {id}"));
+        }
+    }
+    let summary = text.lines().last().unwrap_or("");
+    eprintln!("{summary}");
+    assert!(
+        problems.is_empty(),
+        "{} problem(s) with LinuxCNC's regression suite:\n{}\n{summary}",
+        problems.len(),
+        problems.join("\n")
+    );
+}
+
+#[test]
+fn lists_have_reasons_and_no_duplicates() {
+    let mut seen = std::collections::BTreeSet::new();
+    for (id, why) in KNOWN {
+        assert!(!why.trim().is_empty(), "{id}: no reason");
+        assert!(seen.insert(*id), "{id} listed twice");
+    }
+    for (prefix, why) in NOT_APPLICABLE {
+        assert!(!why.trim().is_empty(), "{prefix}: no reason");
+    }
+    assert_eq!(
+        parse("IDENTICAL    interp/exists  -- 18 calls, exact"),
+        Some((
+            "IDENTICAL".into(),
+            "interp/exists".into(),
+            "18 calls, exact".into()
+        ))
+    );
+}
