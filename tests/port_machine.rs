@@ -38,13 +38,19 @@ fn port(name: &str, to: &str, ext: &str) -> (String, String) {
 #[test]
 fn work_offsets_become_presets_and_come_back() {
     let (tnc, _) = port("presets.ngc", "heidenhain", "h");
-    assert!(tnc.contains("CYCL DEF 247 DATUM SETTING ~\n  Q339=+2"), "{tnc}");
+    assert!(
+        tnc.contains("CYCL DEF 247 DATUM SETTING ~\n  Q339=+2"),
+        "{tnc}"
+    );
     assert!(tnc.contains("Q339=+1"), "G54 after G55 is preset 1: {tnc}");
     // G64 P0.02: the TNC's tolerance cycle with T.
     assert!(tnc.contains("CYCL DEF 32.0 TOLERANCE\n"), "{tnc}");
     assert!(tnc.contains("CYCL DEF 32.1 T+0.02"), "{tnc}");
     // No empty positioning block where a modal rapid would be restored.
-    assert!(!tnc.lines().any(|l| l.trim_end().ends_with(" L FMAX")), "{tnc}");
+    assert!(
+        !tnc.lines().any(|l| l.trim_end().ends_with(" L FMAX")),
+        "{tnc}"
+    );
     // And back: the preset cycle is the work offset again.
     let dir = tempfile::tempdir().unwrap();
     let h = dir.path().join("p.h");
@@ -70,7 +76,10 @@ fn a_named_tool_gets_the_number_the_run_gives_it() {
     for (to, ext) in [("fanuc", "nc"), ("linuxcnc", "ngc")] {
         let (text, err) = port("named_tool.mpf", to, ext);
         assert!(text.contains("T1001"), "{text}");
-        assert!(err.contains("tool \"DRILL_10\" is written as T1001"), "{err}");
+        assert!(
+            err.contains("tool \"DRILL_10\" is written as T1001"),
+            "{err}"
+        );
     }
     let (_, err) = port("named_tool.mpf", "linuxcnc", "ngc");
     assert!(err.contains("needs tool 1001 in its tool table"), "{err}");
@@ -82,7 +91,10 @@ fn axis_words_after_g80_keep_the_motion_mode_the_source_left() {
     // mode, so `Z20.` alone must become `G0 Z20`.
     let (text, _) = port("after_g80.nc", "linuxcnc", "ngc");
     let after: Vec<&str> = text.lines().skip_while(|l| !l.contains("G80")).collect();
-    assert!(after.iter().any(|l| l.contains("G0") && l.contains("Z20")), "{text}");
+    assert!(
+        after.iter().any(|l| l.contains("G0") && l.contains("Z20")),
+        "{text}"
+    );
 }
 
 #[test]
@@ -91,9 +103,17 @@ fn machine_functions_the_target_lacks_are_not_written_as_codes() {
         let (text, err) = port("builder_m.h", to, ext);
         // M126 (TNC: shortest rotary path) means something else or
         // nothing elsewhere: a comment.
-        assert!(!text.lines().any(|l| l.split_whitespace().any(|w| w == "M126")), "{text}");
+        assert!(
+            !text
+                .lines()
+                .any(|l| l.split_whitespace().any(|w| w == "M126")),
+            "{text}"
+        );
         assert!(text.contains("(M126"), "{text}");
-        assert!(err.contains("M126 is a function of the Heidenhain"), "{err}");
+        assert!(
+            err.contains("M126 is a function of the Heidenhain"),
+            "{err}"
+        );
     }
     // A builder's code neither control lists: kept for a control that
     // takes unknown M codes, a comment for LinuxCNC (M100..M199 would run
@@ -113,7 +133,13 @@ fn a_never_called_label_subprogram_is_carried_as_comments() {
         assert!(!text.lines().any(|l| l.starts_with("PLANE")), "{text}");
     }
     // --strict refuses instead.
-    let o = cncc(&["port", &program("dead_label.h"), "--to", "fanuc", "--strict"]);
+    let o = cncc(&[
+        "port",
+        &program("dead_label.h"),
+        "--to",
+        "fanuc",
+        "--strict",
+    ]);
     assert_ne!(o.status.code(), Some(0));
 }
 
@@ -124,5 +150,9 @@ fn an_unknown_m_code_does_not_stop_the_run() {
     assert_eq!(o.status.code(), Some(0), "{err}");
     assert!(err.contains("W0519"), "{err}");
     assert!(!err.contains("W0511"), "the run goes on: {err}");
-    assert_eq!(err.matches("warning[W0519").count(), 1, "once per run: {err}");
+    assert_eq!(
+        err.matches("warning[W0519").count(),
+        1,
+        "once per run: {err}"
+    );
 }

@@ -45,7 +45,12 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
 
 /// What an Aux code of the source becomes on the target, if not itself.
 fn replacement(s: &Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<StmtKind> {
-    let StmtKind::Aux { letter, code, words } = &s.kind else {
+    let StmtKind::Aux {
+        letter,
+        code,
+        words,
+    } = &s.kind
+    else {
         return None;
     };
     // A target's user-program code of the same number is not this code.

@@ -15,7 +15,12 @@ use crate::span::Span;
 /// First number given to a named tool the tool table does not list.
 const FIRST_UNLISTED: i64 = 1001;
 
-pub fn run(p: &mut Program, to: &DialectSpec, table: &[(String, i64)], diags: &mut Vec<Diagnostic>) {
+pub fn run(
+    p: &mut Program,
+    to: &DialectSpec,
+    table: &[(String, i64)],
+    diags: &mut Vec<Diagnostic>,
+) {
     if to.has(Capability::ToolsByName) {
         return;
     }

@@ -180,7 +180,9 @@ pub(super) fn call(
 /// program gave sizes for (W0592): its radius is not known here.
 fn size_unknown(it: &Interp<'_, '_>) -> bool {
     it.spec.has(crate::dialect::Capability::ControlHoldsTools)
-        && it.tools_without_data.contains_key(&it.state.tool_in_spindle)
+        && it
+            .tools_without_data
+            .contains_key(&it.state.tool_in_spindle)
 }
 
 /// A milling cycle whose path depends on a radius not known here: its

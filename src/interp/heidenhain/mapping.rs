@@ -95,8 +95,14 @@ fn preset(it: &mut Interp<'_, '_>, def: &crate::ir::CycleDef, vals: &[(u32, f64)
     if sig.kind != "datum-preset" {
         return false;
     }
-    let first = sig.params.first().and_then(|p| p.name.trim_start_matches('Q').parse::<u32>().ok());
-    let n = vals.iter().find(|(q, _)| Some(*q) == first).map(|(_, v)| *v);
+    let first = sig
+        .params
+        .first()
+        .and_then(|p| p.name.trim_start_matches('Q').parse::<u32>().ok());
+    let n = vals
+        .iter()
+        .find(|(q, _)| Some(*q) == first)
+        .map(|(_, v)| *v);
     match n {
         Some(n) if n.fract() == 0.0 && (1.0..=9.0).contains(&n) => {
             crate::interp::offsets::work_offset(it, n as u32);

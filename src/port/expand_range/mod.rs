@@ -452,7 +452,9 @@ fn restore(
     }
     // A target without motion codes (Klartext: each block has its path
     // function) has no modal motion to give back.
-    let modal = w.to.code_for(crate::dialect::Meaning::Motion(MotionKind::Rapid)).is_some();
+    let modal =
+        w.to.code_for(crate::dialect::Meaning::Motion(MotionKind::Rapid))
+            .is_some();
     if let ModalMotion::Move(k @ (MotionKind::Rapid | MotionKind::Linear)) = after.motion {
         if modal && w.last_motion != Some(k) {
             push(w, StmtKind::Motion(Box::new(crate::ir::Motion::new(k))));

@@ -17,15 +17,18 @@
 
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{CycleSig, DialectSpec, Meaning};
-use crate::ir::{CycleDef, CycleLine, CycleWord, PathMode, Program, QParam, Stmt, StmtKind, Value, Word};
+use crate::ir::{
+    CycleDef, CycleLine, CycleWord, PathMode, Program, QParam, Stmt, StmtKind, Value, Word,
+};
 use crate::span::Span;
 
 pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     let preset = cycle(to, "datum-preset").filter(|c| !c.params.is_empty());
     let tolerance = cycle(to, "tolerance").filter(|c| c.name.parse::<u32>().is_ok());
-    let other_offsets = p.blocks.iter().flat_map(|b| &b.stmts).any(|s| {
-        matches!(s.kind, StmtKind::WorkOffset { index, extended: None } if index != 1)
-    });
+    let other_offsets =
+        p.blocks.iter().flat_map(|b| &b.stmts).any(
+            |s| matches!(s.kind, StmtKind::WorkOffset { index, extended: None } if index != 1),
+        );
     for b in &mut p.blocks {
         let mut out = Vec::with_capacity(b.stmts.len());
         for s in std::mem::take(&mut b.stmts) {
@@ -72,7 +75,11 @@ fn title(c: &CycleSig) -> String {
 
 fn preset_def(c: &CycleSig, index: u32, span: Span) -> Stmt {
     let first = &c.params[0];
-    let q = first.name.trim_start_matches(['Q', 'q']).parse().unwrap_or(0);
+    let q = first
+        .name
+        .trim_start_matches(['Q', 'q'])
+        .parse()
+        .unwrap_or(0);
     let def = CycleDef {
         number: c.name.parse().unwrap_or(0),
         name: title(c),
@@ -86,7 +93,12 @@ fn preset_def(c: &CycleSig, index: u32, span: Span) -> Stmt {
     Stmt::new(StmtKind::CycleDef(Box::new(def)), span)
 }
 
-fn tolerance_lines(c: &CycleSig, words: &[Word], span: Span, diags: &mut Vec<Diagnostic>) -> Vec<Stmt> {
+fn tolerance_lines(
+    c: &CycleSig,
+    words: &[Word],
+    span: Span,
+    diags: &mut Vec<Diagnostic>,
+) -> Vec<Stmt> {
     let cycle = c.name.parse().unwrap_or(0);
     let line = |sub: u32, words: Vec<CycleWord>| {
         Stmt::new(
@@ -132,7 +144,11 @@ pub fn presets_to_codes(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
     let (Ok(number), Some(first)) = (c.name.parse::<u32>(), c.params.first()) else {
         return;
     };
-    let q: u32 = first.name.trim_start_matches(['Q', 'q']).parse().unwrap_or(0);
+    let q: u32 = first
+        .name
+        .trim_start_matches(['Q', 'q'])
+        .parse()
+        .unwrap_or(0);
     for s in p.blocks.iter_mut().flat_map(|b| b.stmts.iter_mut()) {
         let StmtKind::CycleDef(d) = &s.kind else {
             continue;
