@@ -164,18 +164,8 @@ const NOT_APPLICABLE: &[(&str, &str)] = &[
     ),
 ];
 
-fn require() -> bool {
-    std::env::var("CNCC_REQUIRE_ORACLE")
-        .map(|v| v == "1")
-        .unwrap_or(false)
-}
-
 fn skip(why: &str) {
-    assert!(
-        !require(),
-        "CNCC_REQUIRE_ORACLE=1 but the LinuxCNC suite was skipped: {why}"
-    );
-    eprintln!("note: LinuxCNC regression suite skipped: {why}");
+    common::skip_oracle("the LinuxCNC regression suite", why);
 }
 
 fn rs274_present() -> bool {

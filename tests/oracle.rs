@@ -93,18 +93,8 @@ const IGNORED: &[&str] = &[
 
 const TOLERANCE: f64 = 1e-4 + 1e-9;
 
-fn require() -> bool {
-    std::env::var("CNCC_REQUIRE_ORACLE")
-        .map(|v| v == "1")
-        .unwrap_or(false)
-}
-
 fn skip(why: &str) {
-    assert!(
-        !require(),
-        "CNCC_REQUIRE_ORACLE=1 but the oracle tests were skipped: {why}"
-    );
-    eprintln!("note: oracle test skipped: {why}");
+    common::skip_oracle("the oracle test", why);
 }
 
 fn probe_dir() -> Option<PathBuf> {

@@ -22,6 +22,17 @@ pub fn shared() -> Option<PathBuf> {
     }
 }
 
+/// Skips a test that needs LinuxCNC's rs274 or `../shared` with a note,
+/// unless `CNCC_REQUIRE_ORACLE=1` (CI) asks for it to run.
+pub fn skip_oracle(what: &str, why: &str) {
+    let required = std::env::var("CNCC_REQUIRE_ORACLE").is_ok_and(|v| v == "1");
+    assert!(
+        !required,
+        "CNCC_REQUIRE_ORACLE=1 but {what} was skipped: {why}"
+    );
+    eprintln!("note: {what} skipped: {why}");
+}
+
 /// Runs the `cncc` binary from the crate root.
 pub fn cncc(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_cncc"))
