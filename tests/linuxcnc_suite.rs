@@ -168,14 +168,6 @@ fn skip(why: &str) {
     common::skip_oracle("the LinuxCNC regression suite", why);
 }
 
-fn rs274_present() -> bool {
-    Command::new("sh")
-        .args(["-c", "command -v rs274"])
-        .output()
-        .map(|o| o.status.success())
-        .unwrap_or(false)
-}
-
 /// One line of `run.sh`: verdict, case id, detail.
 fn parse(line: &str) -> Option<(String, String, String)> {
     let (head, detail) = line.split_once("  -- ").unwrap_or((line, ""));
@@ -219,7 +211,7 @@ fn linuxcnc_regression_suite() {
     if !script.is_file() {
         return skip("../shared/conformance/linuxcnc/run.sh is absent");
     }
-    if !rs274_present() {
+    if !common::rs274_present() {
         return skip("rs274 is not installed (apt-get install linuxcnc-uspace)");
     }
     let out = Command::new("bash")

@@ -307,20 +307,12 @@ fn ok_samples(dir: &Path) -> Vec<PathBuf> {
         .collect()
 }
 
-fn rs274_present() -> bool {
-    Command::new("sh")
-        .args(["-c", "command -v rs274"])
-        .output()
-        .map(|o| o.status.success())
-        .unwrap_or(false)
-}
-
 #[test]
 fn samples_match_live_rs274() {
     let Some(dir) = probe_dir() else {
         return skip("../shared/reference/oracle-probe is absent");
     };
-    if !rs274_present() {
+    if !common::rs274_present() {
         return skip("rs274 is not installed (apt-get install linuxcnc-uspace)");
     }
     let samples = ok_samples(&dir);
@@ -353,7 +345,7 @@ fn own_programs_match_live_rs274() {
     if !common::root().join("../shared/tools").is_dir() {
         return skip("../shared/tools is absent");
     }
-    if !rs274_present() {
+    if !common::rs274_present() {
         return skip("rs274 is not installed (apt-get install linuxcnc-uspace)");
     }
     let dir = common::root().join("tests/programs/linuxcnc/oracle");

@@ -179,7 +179,7 @@ fn smoothing(it: &Interp<'_, '_>, letter: char, code: f64) -> bool {
 /// switch that moves nothing (W0519, once per run) [?: the code may do
 /// more on its machine; a dialect file says what].
 fn assumed_static(it: &mut Interp<'_, '_>, letter: char, code: f64) {
-    if !it.heidenhain.once("assumed machine function".into()) {
+    if !it.once("assumed machine function") {
         return;
     }
     let span = it.span;
@@ -353,7 +353,7 @@ pub fn dynamic(
 /// `M92`: the block moved in machine coordinates (see
 /// [`crate::dialect::spec::AuxRun::MachineDatum`]); said once a run.
 fn machine_datum_note(it: &mut Interp<'_, '_>, letter: char, code: f64) {
-    if !it.heidenhain.once("machine datum".into()) {
+    if !it.once("machine datum") {
         return;
     }
     let span = it.span;

@@ -122,6 +122,8 @@ pub struct Interp<'a, 's> {
     pub comp_without_size: bool,
     /// Run-time mistakes reported so far while going on after them.
     pub recovered: u32,
+    /// What was reported once per run already (W0517, W0518, W0519).
+    reported: std::collections::HashSet<String>,
     /// Told of every block before it runs (see [`BlockObserver`]).
     pub observer: Option<Box<BlockObserver>>,
     /// Shown every block after it ran ([`watch::Watcher`]: the lint layer).
@@ -142,6 +144,11 @@ pub struct BlockEvent {
 pub type BlockObserver = dyn FnMut(&BlockEvent, &State, &params::Params);
 
 impl<'a, 's> Interp<'a, 's> {
+    /// True the first time `what` is asked in a run: report it then.
+    pub fn once(&mut self, what: impl Into<String>) -> bool {
+        self.reported.insert(what.into())
+    }
+
     pub fn new(spec: &'s DialectSpec, opts: &'s Options, sink: &'a mut Sink<'a>) -> Self {
         let mut state = State::new();
         if spec.has(crate::dialect::Capability::PowerOnRapid) {
@@ -187,6 +194,7 @@ impl<'a, 's> Interp<'a, 's> {
             tools_without_data: Default::default(),
             comp_without_size: false,
             recovered: 0,
+            reported: Default::default(),
             observer: None,
             watcher: None,
         }

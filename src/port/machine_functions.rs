@@ -30,13 +30,15 @@ use crate::ir::{CommentStyle, Program, Stmt, StmtKind};
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     let mut said: Vec<crate::ir::Decimal> = Vec::new();
     for s in p.blocks.iter_mut().flat_map(|b| b.stmts.iter_mut()) {
+        let StmtKind::Aux { code, .. } = &s.kind else {
+            continue;
+        };
+        let code = *code;
         if let Some(k) = replacement(s, from, to) {
-            if let StmtKind::Aux { code, .. } = &s.kind {
-                // Once per code: the first place stands for the others.
-                if !said.contains(code) {
-                    said.push(*code);
-                    diags.push(note(s, &k, from));
-                }
+            // Once per code: the first place stands for the others.
+            if !said.contains(&code) {
+                said.push(code);
+                diags.push(note(s.span, code, &k, from));
             }
             s.kind = k;
         }
@@ -75,10 +77,12 @@ fn replacement(s: &Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<StmtKin
     None
 }
 
-fn note(s: &Stmt, k: &StmtKind, from: &DialectSpec) -> Diagnostic {
-    let StmtKind::Aux { code, .. } = &s.kind else {
-        unreachable!("only Aux statements are replaced")
-    };
+fn note(
+    span: crate::span::Span,
+    code: crate::ir::Decimal,
+    k: &StmtKind,
+    from: &DialectSpec,
+) -> Diagnostic {
     let m = format!("M{}", code.format(0, false));
     let (msg, help) = match k {
         StmtKind::MachineCoords => (
@@ -91,6 +95,6 @@ fn note(s: &Stmt, k: &StmtKind, from: &DialectSpec) -> Diagnostic {
         ),
     };
     Diagnostic::new(Code::PortApproximate, msg)
-        .primary(s.span, "not carried as a code")
+        .primary(span, "not carried as a code")
         .help(help)
 }

@@ -33,6 +33,15 @@ pub fn skip_oracle(what: &str, why: &str) {
     eprintln!("note: {what} skipped: {why}");
 }
 
+/// Whether LinuxCNC's `rs274` is on the PATH.
+pub fn rs274_present() -> bool {
+    Command::new("sh")
+        .args(["-c", "command -v rs274"])
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false)
+}
+
 /// Runs the `cncc` binary from the crate root.
 pub fn cncc(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_cncc"))

@@ -188,7 +188,7 @@ fn size_unknown(it: &Interp<'_, '_>) -> bool {
 /// A milling cycle whose path depends on a radius not known here: its
 /// moves are not in the run (W0517), which goes on from where it was.
 fn not_simulated(it: &mut Interp<'_, '_>, span: Span, number: u32) {
-    if !it.heidenhain.once(format!("no radius {number}")) {
+    if !it.once(format!("no radius {number}")) {
         return;
     }
     it.diags.push(

@@ -190,7 +190,7 @@ fn unknown_datum(it: &mut Interp<'_, '_>, id: u32, nr: u32, idx: Option<i64>, sp
         240 => " (the nominal position in the machine's REF system: it depends on the preset)",
         _ => "",
     };
-    if !it.heidenhain.once(format!("sysread {at}")) {
+    if !it.once(format!("sysread {at}")) {
         return;
     }
     it.diags.push(
@@ -205,7 +205,7 @@ fn unknown_datum(it: &mut Interp<'_, '_>, id: u32, nr: u32, idx: Option<i64>, sp
 
 /// A 5-axis function the run does not make: one warning per run.
 pub fn kinematics_not_run(it: &mut Interp<'_, '_>, what: &str, span: Span) {
-    if !it.heidenhain.once("kinematics".into()) {
+    if !it.once("kinematics") {
         return;
     }
     it.diags.push(
@@ -249,7 +249,7 @@ fn retract(
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
     let Some(d) = d else {
-        if it.heidenhain.once("retract max".into()) {
+        if it.once("retract max") {
             it.diags.push(
                 Diagnostic::new(
                     Code::UnknownAtCheckTime,

@@ -66,7 +66,11 @@ pub fn define(
         it.heidenhain.cycle = None;
         return Ok(());
     }
-    if def.number == 247 && it.heidenhain.once("preset".into()) {
+    let selects_preset = it
+        .spec
+        .cycle(&def.number.to_string())
+        .is_some_and(|c| c.kind == "datum-preset");
+    if selects_preset && it.once("preset") {
         it.diags.push(
             crate::diag::Diagnostic::new(
                 crate::diag::Code::UnknownAtCheckTime,

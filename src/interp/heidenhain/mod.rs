@@ -77,19 +77,6 @@ pub struct HeidenhainState {
     pub departed: bool,
     /// The last path element was an arc (a rounding after it is not run).
     pub after_arc: bool,
-    /// What was reported once per run already (W0517, W0518).
-    pub reported: Vec<String>,
-}
-
-impl HeidenhainState {
-    /// True the first time `what` is asked: report it then.
-    pub fn once(&mut self, what: String) -> bool {
-        if self.reported.contains(&what) {
-            return false;
-        }
-        self.reported.push(what);
-        true
-    }
 }
 
 /// `TOOL DEF 5 L+50 R+3`: the tool's radius (and length) in the run's

@@ -14,9 +14,10 @@ use crate::diag::{Code, Diagnostic};
 use crate::ir::{Block, CommentStyle, Program, Stmt, StmtKind};
 use std::collections::HashSet;
 
-/// Whether blocks `d.0..=d.1` are a label subprogram that never ran in a
-/// run that reached its end.
-pub fn definition(p: &Program, t: &Trace, d: (usize, usize)) -> bool {
+/// Whether blocks `d.0..=d.1` are a label subprogram that never ran
+/// (`ran`: the blocks of the main file that ran) in a run that reached
+/// its end.
+pub fn definition(p: &Program, t: &Trace, ran: &HashSet<usize>, d: (usize, usize)) -> bool {
     if t.stopped.is_some() || t.end.is_none() {
         return false;
     }
@@ -30,7 +31,6 @@ pub fn definition(p: &Program, t: &Trace, d: (usize, usize)) -> bool {
             .stmts
             .iter()
             .any(|s| matches!(s.kind, StmtKind::SubStart { .. }));
-    let ran: HashSet<usize> = t.visits.iter().map(|v| v.1).collect();
     opens && !numbered && !(d.0..=d.1).any(|i| ran.contains(&i))
 }
 

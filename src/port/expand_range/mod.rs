@@ -93,9 +93,12 @@ fn plan_and_apply(
     let mut dead: Vec<(usize, usize)> = Vec::new();
     let mut notes = Vec::new();
     let mut refused = Vec::new();
+    // The blocks of the main file that ran, built once if a never-called
+    // subprogram needs them.
+    let ran = std::cell::OnceCell::new();
     for e in errors.iter().filter(|d| d.is_error()) {
         let found = block_of(p, e).ok_or_else(|| "it is not in this file".to_string());
-        match found.and_then(|j| targets(p, &st, t, j)) {
+        match found.and_then(|j| targets(p, &st, t, &ran, j)) {
             Ok(Target::Moves(rs, def)) => {
                 ranges.extend(rs);
                 definitions.extend(def);
@@ -185,7 +188,13 @@ enum Target {
 }
 
 /// What replaces the place of an error at block `j`.
-fn targets(p: &Program, st: &Structure, t: &Trace, j: usize) -> Result<Target, String> {
+fn targets(
+    p: &Program,
+    st: &Structure,
+    t: &Trace,
+    ran: &std::cell::OnceCell<HashSet<usize>>,
+    j: usize,
+) -> Result<Target, String> {
     let at_top = t.steps.iter().any(|s| s.pc == j);
     match t.deep.get(&j) {
         Some(calls) if !at_top => {
@@ -206,7 +215,8 @@ fn targets(p: &Program, st: &Structure, t: &Trace, j: usize) -> Result<Target, S
             if let Some(d) = sub.filter(|_| !at_top && !t.deep.contains_key(&j)) {
                 // A subprogram the run never calls: it has no moves to
                 // write, and dropping it would lose it.
-                return match dead::definition(p, t, d) {
+                let ran = ran.get_or_init(|| t.visits.iter().map(|v| v.1).collect());
+                return match dead::definition(p, t, ran, d) {
                     true => Ok(Target::Dead(d)),
                     false => Err("it is in a subprogram this program never calls, so there are no moves to write it as".into()),
                 };
