@@ -6,8 +6,8 @@ use super::index::FlowIndex;
 use super::{Interp, Stop};
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{
-    Arena, CallArgs, CallKind, CallTarget, Expr, ExprId, JumpDir, JumpTarget, Program, Stmt,
-    StmtKind, Value, Var,
+    Arena, CallArgs, CallKind, CallTarget, Expr, ExprId, FlowId, JumpDir, JumpTarget, Program,
+    Stmt, StmtKind, Value, Var,
 };
 use std::collections::HashMap;
 
@@ -945,12 +945,34 @@ impl<'l> Walker<'l> {
         }
         let program = self.loader.load(target)?;
         let index = std::rc::Rc::new(FlowIndex::build(&program));
-        // A file holding the sub's definition starts after it; a bare
-        // program file starts at its first block.
-        let start = index.call_target(target).map(|i| i + 1).unwrap_or(0);
+        // A file holding the sub's definition starts after it (also a
+        // Siemens `L140.SPF` whose `PROC L140(..)` names it as a program,
+        // not by the number called); a bare program file starts at its
+        // first block.
+        let start = index
+            .call_target(target)
+            .map(|i| i + 1)
+            .or_else(|| proc_head(&program).map(|i| i + 1))
+            .unwrap_or(0);
         self.progs.push(Loaded { program, index });
         Some((self.progs.len() - 1, start))
     }
+}
+
+/// The block of a file's own `PROC` header, when the file starts with one.
+fn proc_head(p: &Program) -> Option<usize> {
+    for (i, b) in p.blocks.iter().enumerate() {
+        for s in &b.stmts {
+            match s.kind {
+                StmtKind::SubStart {
+                    id: FlowId::Nested, ..
+                } => return Some(i),
+                StmtKind::Comment { .. } | StmtKind::Tape | StmtKind::ProgramStart { .. } => {}
+                _ => return None,
+            }
+        }
+    }
+    None
 }
 
 fn target_name(t: &CallTarget) -> String {

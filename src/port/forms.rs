@@ -284,12 +284,15 @@ fn labels(p: &mut Program, to: &DialectSpec) {
     let mut numbers = HashMap::new();
     for b in &mut p.blocks {
         let Some(l) = b.label.take() else { continue };
-        // The label's name stays as a comment on its block.
-        let note = StmtKind::Comment {
-            text: format!("{}:", l.node),
-            style: crate::ir::CommentStyle::Paren,
-        };
-        b.stmts.push(crate::ir::Stmt::new(note, l.span));
+        // The label's name stays as a comment on its block, unless the
+        // port made it.
+        if !l.node.starts_with(super::MADE_LABEL) {
+            let note = StmtKind::Comment {
+                text: format!("{}:", l.node),
+                style: crate::ir::CommentStyle::Paren,
+            };
+            b.stmts.push(crate::ir::Stmt::new(note, l.span));
+        }
         let n = match &b.number {
             Some(n) => n.node,
             None => {

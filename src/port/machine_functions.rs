@@ -21,6 +21,13 @@
 //!   computes, or a kinematics function such as M128) stays as written:
 //!   the target's reading of it decides, and dropping it could change
 //!   what the machine does.
+//!
+//! A G code the source keeps as its own function (`aux`: LinuxCNC's G5.1
+//! quadratic spline, a builder's G code) goes by number only to a target
+//! whose code of that number is its own function too; elsewhere the same
+//! number is another function (Fanuc G5.1 is AI contour control) or
+//! none, so the port refuses it (E0601) and the fallback writes the moves
+//! the run made for it.
 
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::spec::AuxRun;
@@ -28,21 +35,60 @@ use crate::dialect::{Capability, DialectSpec, Meaning};
 use crate::ir::{CommentStyle, Program, Stmt, StmtKind};
 
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
-    let mut said: Vec<crate::ir::Decimal> = Vec::new();
+    let mut said: Vec<(char, crate::ir::Decimal)> = Vec::new();
     for s in p.blocks.iter_mut().flat_map(|b| b.stmts.iter_mut()) {
-        let StmtKind::Aux { code, .. } = &s.kind else {
+        let StmtKind::Aux { letter, code, .. } = &s.kind else {
             continue;
         };
-        let code = *code;
+        let (letter, code) = (*letter, *code);
+        if let Some(d) = foreign_g_code(s, from, to) {
+            diags.push(d);
+            continue;
+        }
         if let Some(k) = replacement(s, from, to) {
             // Once per code: the first place stands for the others.
-            if !said.contains(&code) {
-                said.push(code);
-                diags.push(note(s.span, code, &k, from));
+            if !said.contains(&(letter, code)) {
+                said.push((letter, code));
+                diags.push(note(s.span, letter, code, &k, from));
             }
             s.kind = k;
         }
     }
+}
+
+/// A source G code of its own function whose number means something else
+/// on the target (or nothing).
+fn foreign_g_code(s: &Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diagnostic> {
+    let StmtKind::Aux { letter, code, .. } = &s.kind else {
+        return None;
+    };
+    if *letter != 'G'
+        || to
+            .code('G', *code)
+            .is_some_and(|c| c.meaning == Meaning::Aux)
+        || from.code('G', *code).is_some_and(|c| c.run == AuxRun::Pass)
+    {
+        return None;
+    }
+    let g = format!("G{}", code.normalized());
+    let what = from
+        .code('G', *code)
+        .map_or(String::new(), |c| format!(" ({})", c.doc));
+    let there = match to.code('G', *code) {
+        Some(c) => format!("its {g} is another function ({})", c.doc),
+        None => format!("it has no {g}"),
+    };
+    Some(
+        Diagnostic::new(
+            Code::CannotExpress,
+            format!(
+                "{} cannot express {g}{what} of {}: {there}",
+                to.name, from.name
+            ),
+        )
+        .primary(s.span, "a function of the source control")
+        .help("write what it does with the target's own codes"),
+    )
 }
 
 /// What an Aux code of the source becomes on the target, if not itself.
@@ -59,18 +105,18 @@ fn replacement(s: &Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<StmtKin
     let target = to
         .code(*letter, *code)
         .filter(|c| c.run != AuxRun::UserProgram);
-    if *letter != 'M' || !words.is_empty() || target.is_some() {
+    let source = from.code(*letter, *code);
+    let harmless = source.is_some_and(|c| c.run == AuxRun::Pass);
+    if target.is_some() || (*letter != 'M' && !harmless) || (!words.is_empty() && !harmless) {
         return None;
     }
-    let source = from.code(*letter, *code);
     if from.is_machine_datum(&s.kind) && to.code_for(Meaning::MachineCoords).is_some() {
         return Some(StmtKind::MachineCoords);
     }
-    let harmless = source.is_some_and(|c| c.run == AuxRun::Pass);
     if harmless || (source.is_none() && to.has(Capability::StrictMCodes)) {
         let what = source.map_or(String::new(), |c| format!(": {}", c.doc));
         return Some(StmtKind::Comment {
-            text: format!("M{}{what}", code.format(0, false)),
+            text: format!("{letter}{}{what}", code.normalized()),
             style: CommentStyle::Paren,
         });
     }
@@ -79,11 +125,12 @@ fn replacement(s: &Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<StmtKin
 
 fn note(
     span: crate::span::Span,
+    letter: char,
     code: crate::ir::Decimal,
     k: &StmtKind,
     from: &DialectSpec,
 ) -> Diagnostic {
-    let m = format!("M{}", code.format(0, false));
+    let m = format!("{letter}{}", code.normalized());
     let (msg, help) = match k {
         StmtKind::MachineCoords => (
             format!("{m} moves in machine coordinates from a datum of the machine builder: written in the target's machine coordinates"),

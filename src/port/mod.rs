@@ -35,7 +35,11 @@
 //! * [`old_cycles`]: Heidenhain `CYCL DEF 7` (datum shift) as `TRANS` or
 //!   `G52`, `CYCL DEF 9` (dwell) as `G4`, where exact.
 //! * [`case`]: Siemens `CASE` as a chain of conditional jumps where the
-//!   target has no structured control.
+//!   target has no structured control; [`flow_jumps`]: structured IF and
+//!   end-tested loops as Macro B jumps.
+//! * [`named_params`]: LinuxCNC `#<name>` as free common variables;
+//!   [`proc_file`], [`proc_calls`]: a Siemens PROC file as the target's
+//!   called program, and its calls with their arguments.
 //! * [`funcs`]: rounding and power functions the target lacks, written
 //!   exactly with the ones it has (`POT(x)` → `x*x`, `FUP` → `INT` + `SGN`).
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
@@ -54,6 +58,7 @@ mod decls;
 pub mod expand;
 pub mod expand_range;
 mod flow_ids;
+mod flow_jumps;
 pub mod forms;
 mod frame;
 mod from_tnc;
@@ -64,11 +69,14 @@ mod haas_cycles;
 mod levels;
 mod loops;
 mod machine_functions;
+mod named_params;
 mod named_tools;
 mod old_cycles;
 pub(crate) mod osubs;
 mod pockets;
 mod poles;
+mod proc_calls;
+mod proc_file;
 mod program_end;
 mod program_name;
 mod ref_return;
@@ -135,9 +143,13 @@ pub fn port_program(
     to_tnc::modes::run(&mut out, to, &mut diags);
     to_tnc::variables_and_flow(&mut out, to, &mut diags);
     from_tnc_flow::run(&mut out, from, to, &mut diags);
+    proc_file::run(&mut out, to, &mut diags);
+    proc_calls::run(&mut out, from, to);
     decls::run(&mut out, to, &mut diags);
+    named_params::run(&mut out, to, &mut diags);
     loops::run(&mut out, to, &mut diags);
     case::run(&mut out, to);
+    flow_jumps::run(&mut out, to);
     arcs::run(&mut out, from, to);
     ref_return::run(&mut out, from, to, &mut diags);
     osubs::run(&mut out, from, to, &mut diags);
@@ -151,6 +163,10 @@ pub fn port_program(
     out.dialect = to.id.clone();
     (out, diags)
 }
+
+/// The start of the labels the port makes (jump targets of lowered
+/// structures); a target that numbers them does not keep their names.
+pub(crate) const MADE_LABEL: &str = "CNCC_";
 
 /// A number as an expression in `p`'s arena (for cycle arguments).
 pub(crate) fn number_expr(p: &mut Program, d: Decimal, span: Span) -> ExprId {
