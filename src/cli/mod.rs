@@ -17,6 +17,7 @@ pub mod query;
 pub mod raise;
 pub mod stats;
 pub mod stepnc;
+pub mod stepnc_input;
 pub mod tool_table;
 
 use args::{Cli, Command, Format};
