@@ -66,7 +66,7 @@ fn the_canon_of_a_plan_is_the_canon_of_its_linuxcnc_post() {
             common::stderr(&direct)
         );
         let text = common::stdout(&direct);
-        assert!(text.contains("CHANGE_TOOL("), "{}", plan.display());
+        assert!(text.contains("PROGRAM_END()"), "{}", plan.display());
         assert_eq!(text, common::stdout(&via), "{}", plan.display());
     }
 }
