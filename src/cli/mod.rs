@@ -7,6 +7,7 @@ pub mod check;
 pub mod context;
 pub mod diff;
 pub mod info;
+pub mod interpolate;
 pub mod ir;
 pub mod output;
 pub mod plot;
@@ -255,6 +256,35 @@ pub fn run(cli: Cli) -> i32 {
                 .into_iter()
                 .filter_map(|(given, name)| given.then_some(name))
                 .collect(),
+            },
+        ),
+        Command::Interpolate {
+            file,
+            dialect,
+            tool_table,
+            period,
+            blu,
+            accel,
+            rapid_rate,
+            format,
+            output,
+            run,
+        } => interpolate::run(
+            &mut ctx,
+            interpolate::InterpolateArgs {
+                file,
+                dialect: dialect.as_deref(),
+                tool_table: tool_table.as_deref(),
+                output: output.as_deref(),
+                period,
+                settings: crate::interpolate::Settings {
+                    period: 0.001,
+                    blu: *blu,
+                    accel: *accel,
+                    rapid_rate: *rapid_rate,
+                },
+                form: *format,
+                options: run.options(),
             },
         ),
         Command::Query { file, path, format } => query::run(&mut ctx, file, path, *format),
