@@ -239,6 +239,7 @@ pub fn run(cli: Cli) -> i32 {
             stock,
             dialect,
             tool_table,
+            summary,
             ..
         } => stepnc::run(
             &mut ctx,
@@ -246,6 +247,7 @@ pub fn run(cli: Cli) -> i32 {
                 file,
                 output: output.as_deref(),
                 format: *format,
+                summary: *summary,
                 raising_options: [
                     (*cc1, "--cc1"),
                     (*cc2, "--cc2"),
