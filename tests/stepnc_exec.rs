@@ -19,13 +19,17 @@ fn scratch(name: &str) -> PathBuf {
 /// The plans that run: the project's own and the ARM samples of
 /// ../shared that post to LinuxCNC.
 fn plans() -> Vec<PathBuf> {
-    let mut v = vec![common::root().join("tests/programs/stepnc/tapped_holes.stp")];
+    let mut v = vec![
+        common::root().join("tests/programs/stepnc/tapped_holes.stp"),
+        common::root().join("tests/programs/stepnc/ap238_slot.stpnc"),
+    ];
     if let Some(shared) = common::shared() {
         let s = shared.join("stepnc-samples");
         for name in [
             "ex1.stp",
             "ex1E.stp",
             "furo.p21",
+            "test_program.stpnc",
             "field/sanssouci__RanhuraPerfilRoundedU.p21",
             "field/sanssouci__STEP-NC_pocket1_File.p21",
             "field/sanssouci__Hole",
