@@ -104,6 +104,15 @@ impl<'f> Reader<'f> {
             self.g.get(k);
         }
         let desc = string(tool, 1);
+        if !known_body(&desc) {
+            self.skip(
+                format!(
+                    "tool `{}` described `{desc}`: read as an end mill",
+                    string(tool, 0)
+                ),
+                tool.span,
+            );
+        }
         let mut dim = ToolDimension::default();
         let mut length = None;
         for prop in self.g.referring(tool.id, "RESOURCE_PROPERTY", 2) {
@@ -328,22 +337,23 @@ impl<'f> Reader<'f> {
         let sense = !matches!(c.params.get(4).map(|p| &p.value), Some(Value::Enum(e)) if e == "F");
         match basis.entity.as_str() {
             "LINE" => {
-                if let Some(v) = reference(basis, 2).and_then(|v| self.g.get(v)) {
-                    if let Some(d) = reference(v, 1) {
-                        self.g.get(d);
+                for k in [1, 2] {
+                    if let Some(r) = reference(basis, k) {
+                        self.g.get(r);
                     }
                 }
-                if let Some(p) = reference(basis, 1) {
-                    self.g.get(p);
+                if let Some(d) = reference(basis, 2)
+                    .and_then(|v| self.g.f.get(v))
+                    .and_then(|v| reference(v, 1))
+                {
+                    self.g.get(d);
                 }
+                let basis = line_basis(&start, &end);
                 Some(Curve::Line {
                     name: string(c, 0),
                     start,
                     end,
-                    basis: Raw {
-                        entity: "LINE".into(),
-                        params: Vec::new(),
-                    },
+                    basis,
                 })
             }
             "CIRCLE" => {
@@ -386,8 +396,49 @@ impl<'f> Reader<'f> {
     }
 }
 
+/// The LINE a trimmed line lies on, in mm, pointing from `start` to
+/// `end` (the file's own LINE may be in another unit).
+fn line_basis(start: &Point, end: &Point) -> Raw {
+    let d: Vec<f64> = (0..3).map(|k| end.xyz[k] - start.xyz[k]).collect();
+    let len = d.iter().map(|v| v * v).sum::<f64>().sqrt();
+    let ratios = d
+        .iter()
+        .map(|v| RawValue::Real(if len > 0.0 { v / len } else { 0.0 }))
+        .collect();
+    let inst = |entity: &str, params: Vec<RawValue>| {
+        RawValue::Instance(Box::new(Raw {
+            entity: entity.into(),
+            params,
+        }))
+    };
+    let point = inst(
+        "CARTESIAN_POINT",
+        vec![
+            RawValue::String(String::new()),
+            RawValue::List(start.xyz.iter().map(|v| RawValue::Real(*v)).collect()),
+        ],
+    );
+    let direction = inst(
+        "DIRECTION",
+        vec![RawValue::String(String::new()), RawValue::List(ratios)],
+    );
+    let vector = inst(
+        "VECTOR",
+        vec![
+            RawValue::String(String::new()),
+            direction,
+            RawValue::Real(len),
+        ],
+    );
+    Raw {
+        entity: "LINE".into(),
+        params: vec![RawValue::String(String::new()), point, vector],
+    }
+}
+
 /// The tool body a MACHINING_TOOL's description names [?: AP238 gives
-/// the kind as text; these are STEP-NC Maker's words].
+/// the kind as text; these are STEP-NC Maker's words]; an end mill when
+/// it names none cncc knows.
 fn body_kind(desc: &str) -> ToolBodyKind {
     let d = desc.to_ascii_lowercase();
     if d.contains("ball") {
@@ -403,6 +454,22 @@ fn body_kind(desc: &str) -> ToolBodyKind {
     } else if d.contains("end mill") || d.contains("endmill") || d.contains("milling tool") {
         ToolBodyKind::Endmill
     } else {
-        ToolBodyKind::Other(desc.to_string())
+        ToolBodyKind::Endmill
     }
+}
+
+/// Whether [`body_kind`] recognised the description.
+fn known_body(desc: &str) -> bool {
+    let d = desc.to_ascii_lowercase();
+    [
+        "ball",
+        "bullnose",
+        "face",
+        "drill",
+        "end mill",
+        "endmill",
+        "milling tool",
+    ]
+    .iter()
+    .any(|w| d.contains(w))
 }

@@ -15,6 +15,11 @@ pub struct Reader<'f> {
     /// What was not read, by description, with the first place.
     skipped: Vec<(String, Span)>,
     tools: HashMap<u64, ToolId>,
+    /// Workplans being read (a workplan listing itself is not followed).
+    open_plans: Vec<u64>,
+    /// Workplans read so far (each read once; a file listing many
+    /// elements many times cannot blow up).
+    plans_read: usize,
 }
 
 fn plane_at(name: &str, z: f64) -> Plane {
@@ -32,6 +37,8 @@ impl<'f> Reader<'f> {
             diags: Vec::new(),
             skipped: Vec::new(),
             tools: HashMap::new(),
+            open_plans: Vec::new(),
+            plans_read: 0,
         }
     }
 
@@ -135,6 +142,8 @@ impl<'f> Reader<'f> {
 
     fn workplan(&mut self, wp: &'f Instance, depth: u32) -> Workplan {
         self.g.touch(wp);
+        self.open_plans.push(wp.id);
+        self.plans_read += 1;
         let mut rels = self
             .g
             .referring(wp.id, "MACHINING_PROCESS_SEQUENCE_RELATIONSHIP", 2);
@@ -154,7 +163,11 @@ impl<'f> Reader<'f> {
                         elements.push(Executable::Workingstep(ws));
                     }
                 }
-                "MACHINING_WORKPLAN" if depth < 32 => {
+                "MACHINING_WORKPLAN"
+                    if depth < 32
+                        && !self.open_plans.contains(&e.id)
+                        && self.plans_read < 10_000 =>
+                {
                     elements.push(Executable::Workplan(self.workplan(e, depth + 1)))
                 }
                 other => {
@@ -166,6 +179,7 @@ impl<'f> Reader<'f> {
                 }
             }
         }
+        self.open_plans.pop();
         Workplan {
             id: string(wp, 0),
             elements,
