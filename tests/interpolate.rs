@@ -244,3 +244,34 @@ fn cncc_interpolate_a_program_and_a_plan() {
     let bad = common::cncc(&["interpolate", prog.to_str().unwrap(), "--period", "1"]);
     assert_eq!(bad.status.code(), Some(2));
 }
+
+#[test]
+fn a_dwell_passes_time_standing_still() {
+    let s = Settings {
+        accel: 0.0,
+        ..Settings::default()
+    };
+    let dwell = Event::Dwell {
+        seconds: 0.25,
+        span: Span::new(FileId(0), 0, 0),
+    };
+    let (samples, t) = run(
+        s,
+        &[
+            mv(MoveKind::Line, [0.0; 3], [10.0, 0.0, 0.0], 600.0),
+            dwell,
+            mv(MoveKind::Line, [10.0, 0.0, 0.0], [10.0, 5.0, 0.0], 600.0),
+        ],
+    );
+    // 1 s, 0.25 s still, 0.5 s: no acceleration limit.
+    assert!((t - 1.75).abs() < 1e-9, "{t}");
+    let still: Vec<&Sample> = samples
+        .iter()
+        .filter(|s| s.time > 1.0 + 1e-9 && s.time < 1.25 - 1e-9)
+        .collect();
+    assert!(!still.is_empty());
+    assert!(still
+        .iter()
+        .all(|s| s.pulses == [0, 0, 0] && s.speed == 0.0));
+    assert_eq!(sums(&samples), [10_000, 5_000, 0]);
+}
