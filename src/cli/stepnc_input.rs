@@ -36,6 +36,50 @@ pub struct PostedPlan {
     pub spec: Arc<DialectSpec>,
 }
 
+/// `options` with the tool sizes of the plan in `path` (when it is a
+/// STEP-NC file) in its tool table, where the table does not give the
+/// tool or is cncc's built-in one: what plots and statistics draw and
+/// report with. The plan is read once more for this (quietly).
+pub fn with_plan_tools(path: &Path, options: &Options) -> Options {
+    let mut o = options.clone();
+    if !is_stepnc(path).unwrap_or(false) {
+        return o;
+    }
+    let Ok(text) = crate::cli::context::read_text(path) else {
+        return o;
+    };
+    let Some(project) = crate::stepnc::read_text(&text, FileId(0)).project else {
+        return o;
+    };
+    let per_mm = 1.0 / crate::cli::stats::machine_mm(options);
+    let table = &mut o.tool_table;
+    for (number, diameter, name) in plan_tools(&project) {
+        if table.get(number).is_some() && !table.invented {
+            continue;
+        }
+        table.tools.retain(|t| t.number != number);
+        let mut t = crate::interp::tooltable::Tool::blank(number, name);
+        t.diameter = diameter * per_mm;
+        table.tools.push(t);
+        table.from_program.insert(number);
+    }
+    o
+}
+
+/// The tools of a plan as the post numbers them.
+fn plan_tools(project: &crate::stepnc::model::Project) -> Vec<(i64, f64, String)> {
+    let mut out: Vec<(i64, f64, String)> = Vec::new();
+    for item in crate::post::plan::plan(project).unwrap_or_default() {
+        if let crate::post::plan::Item::Step(s) = item {
+            let n = s.tool_no as i64;
+            if !out.iter().any(|t| t.0 == n) {
+                out.push((n, s.tool.body.dimension.diameter, s.tool.id.clone()));
+            }
+        }
+    }
+    out
+}
+
 /// What posting a plan gave: the program to run, or nothing (the
 /// diagnostics say why). The diagnostics are the reader's and the post's,
 /// located in the Part 21 file.
