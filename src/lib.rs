@@ -17,6 +17,7 @@ pub mod emit;
 pub mod encoding;
 pub mod fuzzing;
 pub mod interp;
+pub mod interpolate;
 pub mod ir;
 pub mod lint;
 pub mod lower;

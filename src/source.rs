@@ -94,6 +94,11 @@ impl SourceMap {
         f.sparse = Some(map);
     }
 
+    /// Whether the file is known only by some of its lines.
+    pub fn is_sparse(&self, id: FileId) -> bool {
+        self.files[id.0 as usize].sparse.is_some()
+    }
+
     pub fn name(&self, id: FileId) -> &str {
         &self.files[id.0 as usize].name
     }

@@ -63,12 +63,46 @@ fn every_arm_sample_reads_and_round_trips() {
 }
 
 #[test]
-fn aim_sample_is_refused_as_unsupported_schema() {
+fn ap238_sample_reads_its_toolpath_with_the_files_units() {
     let Some(dir) = samples_dir() else { return };
     let (_, r) = read(&dir.join("test_program.stpnc"));
-    assert!(r.project.is_none());
-    let codes: Vec<Code> = r.diagnostics.iter().map(|d| d.code).collect();
-    assert_eq!(codes, vec![Code::UnsupportedSchema]);
+    assert!(
+        !r.diagnostics.iter().any(|d| d.is_error()),
+        "{:?}",
+        r.diagnostics
+    );
+    // What is not read is named (W0807), never dropped silently.
+    assert!(r.diagnostics.iter().any(|d| d.code == Code::Ap238NotRead));
+    let p = r.project.expect("the AP238 plan reads");
+    assert_eq!(p.id, "test program");
+    let ws: Vec<_> = p
+        .main_workplan
+        .elements
+        .iter()
+        .filter_map(|e| match e {
+            Executable::Workingstep(w) => Some(w),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(ws.len(), 1);
+    let op = p.operation(ws[0].operation);
+    assert_eq!(op.id, "P1");
+    // The file's context is in inches: 2000 in/min, a 10 in tool.
+    assert_eq!(op.technology.feed, Some(2000.0 * 25.4));
+    assert_eq!(op.technology.spindle, Some(-3000.0));
+    assert_eq!(p.tool(op.tool).body.dimension.diameter, 254.0);
+    let Some(Toolpath::CutterLocation { basic_curve, .. }) =
+        op.toolpath.as_ref().and_then(|t| t.first())
+    else {
+        panic!("a cutter location toolpath");
+    };
+    let Curve::Polyline { points, .. } = basic_curve else {
+        panic!("a polyline: {basic_curve:?}");
+    };
+    let xyz: Vec<[f64; 3]> = points.iter().map(|p| p.xyz).collect();
+    assert_eq!(xyz[0], [254.0, 254.0, 0.0]);
+    assert_eq!(xyz[1], [762.0, 254.0, 0.0]);
+    assert_eq!(xyz.len(), 5);
 }
 
 fn ex1() -> Option<Project> {
@@ -513,8 +547,8 @@ fn cli_stepnc_output_reads_back_with_check_and_an_independent_reader() {
         }
     }
     let o = cncc(&["check", dir.join("test_program.stpnc").to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("E0806"));
+    assert_eq!(o.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("W0807"));
 }
 
 #[test]

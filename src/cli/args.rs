@@ -276,6 +276,36 @@ pub enum Command {
         #[command(flatten)]
         run: RunArgs,
     },
+    /// Set-points for a controller's position loop at a fixed sampling
+    /// period (trapezoidal feed profile per move, stopping at each move's
+    /// end), or reference pulses per axis and period at the BLU resolution.
+    Interpolate {
+        file: PathBuf,
+        #[arg(long)]
+        dialect: Option<String>,
+        #[arg(long = "tool-table", value_name = "T.tbl")]
+        tool_table: Option<PathBuf>,
+        /// Sampling period: 1ms, 250us, 0.002s.
+        #[arg(long, default_value = "1ms")]
+        period: String,
+        /// Basic length unit (one pulse), mm.
+        #[arg(long, default_value_t = 0.001)]
+        blu: f64,
+        /// Path acceleration and deceleration, mm/s² (0: no limit).
+        #[arg(long, default_value_t = 1000.0)]
+        accel: f64,
+        /// Rapid traverse rate, mm/min.
+        #[arg(long = "rapid-rate", value_name = "MM/MIN", default_value_t = 10000.0)]
+        rapid_rate: f64,
+        /// csv: t,x,y,z,speed per period; pulses: period,x,y,z pulse counts.
+        #[arg(long, value_enum, default_value_t = crate::cli::interpolate::Form::Csv)]
+        format: crate::cli::interpolate::Form,
+        /// Write here (whole or not at all) instead of stdout.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        #[command(flatten)]
+        run: RunArgs,
+    },
     /// Print the values an attribute path reaches in a STEP-NC file, such
     /// as /project/main_workplan/its_elements[*]/its_feature/its_id.
     Query {

@@ -6,11 +6,14 @@
 //! it is read. A program with control flow is read whole from its first
 //! such block and the walker goes on from there (see
 //! [`crate::interp::stream`]), so memory stays flat on large CAM files.
+//! A STEP-NC file is posted in memory and the posted program run (see
+//! [`crate::cli::stepnc_input`]).
 
 use crate::canon::write_call;
 use crate::cli::args::Format;
 use crate::cli::check::{keep_lines, read_head};
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
+use crate::cli::stepnc_input::post_and_run;
 use crate::interp::{file::run_file, tooltable::ToolTable, Options};
 use std::io::Write;
 use std::path::Path;
@@ -40,10 +43,16 @@ pub struct CanonArgs<'a> {
 pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
     let fail = |e: std::io::Error| Failure(format!("{}: {e}", a.file.display()));
     let head = read_head(a.file)?;
-    let (spec, reason) = ctx.spec_for(a.dialect, a.file, &head)?;
-    if let Some(r) = reason {
-        report_detection(a.file, &spec, &r);
-    }
+    let stepnc = crate::stepnc::is_part21(a.file, &head);
+    let spec = if stepnc {
+        None
+    } else {
+        let (spec, reason) = ctx.spec_for(a.dialect, a.file, &head)?;
+        if let Some(r) = reason {
+            report_detection(a.file, &spec, &r);
+        }
+        Some(spec)
+    };
     let mut diags = Vec::new();
     if let Some(t) = a.tool_table {
         let (tid, ttext) = ctx.add_side_file(t)?;
@@ -51,9 +60,6 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
         diags.extend(d);
         a.options.tool_table = table;
     }
-    let id = ctx
-        .files
-        .add_sparse(a.file.display().to_string(), Vec::new());
     let mut out = std::io::stdout().lock();
     let mut io_error = None;
     // Calls are written into a buffer, handed to stdout in large chunks.
@@ -65,14 +71,27 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
             flush_to(&mut out, &mut buf, &mut io_error);
         }
     };
-    let run = run_file(a.file, id, &spec, &a.options, &mut ctx.files, &mut sink).map_err(fail)?;
-    diags.extend(run);
-    flush_to(&mut out, &mut buf, &mut io_error);
+    match spec {
+        Some(spec) => {
+            let id = ctx
+                .files
+                .add_sparse(a.file.display().to_string(), Vec::new());
+            let run =
+                run_file(a.file, id, &spec, &a.options, &mut ctx.files, &mut sink).map_err(fail)?;
+            diags.extend(run);
+            flush_to(&mut out, &mut buf, &mut io_error);
+            keep_lines(ctx, a.file, id, &diags)?;
+        }
+        None => {
+            let (_, run) = post_and_run(ctx, a.file, a.dialect, &a.options, &mut sink)?;
+            diags.extend(run);
+            flush_to(&mut out, &mut buf, &mut io_error);
+        }
+    }
     out.flush()?;
     if let Some(e) = io_error {
         return Err(e.into());
     }
-    keep_lines(ctx, a.file, id, &diags)?;
     ctx.print(&diags, a.format);
     Ok(if diags.iter().any(|d| d.is_error()) {
         EXIT_INPUT_ERRORS

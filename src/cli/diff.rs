@@ -4,7 +4,9 @@
 //! Exit 0 when they cut the same, 1 when not (or when one cannot be run).
 //!
 //! Two STEP-NC files are compared by the STEP-NC diff (see
-//! [`is_stepnc`]).
+//! [`is_stepnc`]). A STEP-NC file and a program are compared by what they
+//! cut: the plan is posted and run (see [`crate::cli::stepnc_input`]),
+//! `--dialect-a`/`--dialect-b` naming the post's target for it.
 
 use crate::cli::args::Format;
 use crate::cli::context::{Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
@@ -50,11 +52,7 @@ pub fn is_stepnc(path: &Path) -> bool {
 pub fn run(ctx: &mut Context, mut a: DiffArgs<'_>) -> Result<i32, Failure> {
     match (is_stepnc(a.a), is_stepnc(a.b)) {
         (true, true) => return stepnc_diff(ctx, a.a, a.b, a.format),
-        (true, false) | (false, true) => return Err(Failure(
-            "cannot compare a STEP-NC file with a program: give two programs or two STEP-NC files"
-                .into(),
-        )),
-        (false, false) => {}
+        (true, false) | (false, true) | (false, false) => {}
     }
     if !(a.tolerance > 0.0 && a.tolerance.is_finite()) {
         return Err(Failure(

@@ -7,6 +7,7 @@ pub mod check;
 pub mod context;
 pub mod diff;
 pub mod info;
+pub mod interpolate;
 pub mod ir;
 pub mod output;
 pub mod plot;
@@ -17,6 +18,7 @@ pub mod query;
 pub mod raise;
 pub mod stats;
 pub mod stepnc;
+pub mod stepnc_input;
 pub mod tool_table;
 
 use args::{Cli, Command, Format};
@@ -237,6 +239,7 @@ pub fn run(cli: Cli) -> i32 {
             stock,
             dialect,
             tool_table,
+            summary,
             ..
         } => stepnc::run(
             &mut ctx,
@@ -244,6 +247,7 @@ pub fn run(cli: Cli) -> i32 {
                 file,
                 output: output.as_deref(),
                 format: *format,
+                summary: *summary,
                 raising_options: [
                     (*cc1, "--cc1"),
                     (*cc2, "--cc2"),
@@ -254,6 +258,35 @@ pub fn run(cli: Cli) -> i32 {
                 .into_iter()
                 .filter_map(|(given, name)| given.then_some(name))
                 .collect(),
+            },
+        ),
+        Command::Interpolate {
+            file,
+            dialect,
+            tool_table,
+            period,
+            blu,
+            accel,
+            rapid_rate,
+            format,
+            output,
+            run,
+        } => interpolate::run(
+            &mut ctx,
+            interpolate::InterpolateArgs {
+                file,
+                dialect: dialect.as_deref(),
+                tool_table: tool_table.as_deref(),
+                output: output.as_deref(),
+                period,
+                settings: crate::interpolate::Settings {
+                    period: 0.001,
+                    blu: *blu,
+                    accel: *accel,
+                    rapid_rate: *rapid_rate,
+                },
+                form: *format,
+                options: run.options(),
             },
         ),
         Command::Query { file, path, format } => query::run(&mut ctx, file, path, *format),

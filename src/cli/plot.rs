@@ -74,6 +74,7 @@ pub fn run(ctx: &mut Context, mut a: PlotArgs<'_>) -> Result<i32, Failure> {
     if let Some(first) = a.files.first() {
         let head = crate::cli::check::read_head(first)?;
         a.options = crate::cli::check::program_tools(&a.options, &head);
+        a.options = crate::cli::stepnc_input::with_plan_tools(first, &a.options);
     }
     let mut bounds = Bounds::default();
     if let Some(s) = stock {

@@ -1,6 +1,8 @@
 //! `cncc stats`: machining statistics per tool and in total (see
 //! [`crate::stats`]). Also home of [`stream_events`], how `stats`, `diff`
-//! and `plot` run a program file into resolved events while it is read.
+//! and `plot` run a program file into resolved events while it is read
+//! (a STEP-NC file: its plan posted and run, see
+//! [`crate::cli::stepnc_input`]).
 
 use crate::cli::args::Format;
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
@@ -52,7 +54,10 @@ pub(crate) fn machine_mm(options: &Options) -> f64 {
 /// file is read (memory stays flat). Shows a progress bar for large files
 /// when stderr is a terminal; says which dialect was detected when
 /// `say_dialect`. The file is registered sparse: call
-/// [`keep_lines_at`] for the lines a report shows.
+/// [`keep_lines_at`] for the lines a report shows. A STEP-NC file is
+/// posted (to `dialect`, LinuxCNC by default) and the posted program run;
+/// the id is then the posted program's (or the Part 21 file's, when the
+/// post refused the plan), both held whole.
 pub(crate) fn stream_events(
     ctx: &mut Context,
     path: &Path,
@@ -62,6 +67,16 @@ pub(crate) fn stream_events(
     mut on_event: impl FnMut(&Event),
 ) -> Result<(FileId, Vec<Diagnostic>), Failure> {
     let head = crate::cli::check::read_head(path)?;
+    if crate::stepnc::is_part21(path, &head) {
+        let mut tracker = Tracker::new();
+        let mut sink = |call: crate::canon::Canon, span: Span| {
+            tracker.push(&call, span, |e| on_event(&e));
+        };
+        let (id, diags) =
+            crate::cli::stepnc_input::post_and_run(ctx, path, dialect, options, &mut sink)?;
+        let id = id.unwrap_or_else(|| ctx.files.add(path.display().to_string(), String::new()));
+        return Ok((id, diags));
+    }
     let (spec, reason) = ctx.spec_for(dialect, path, &head)?;
     if let (Some(r), true) = (reason, say_dialect) {
         report_detection(path, &spec, &r);
@@ -103,6 +118,9 @@ pub(crate) fn keep_lines_at(
     diags: &[Diagnostic],
     spans: &[Span],
 ) -> Result<(), Failure> {
+    if !ctx.files.is_sparse(id) {
+        return Ok(());
+    }
     let offsets: Vec<u32> = diags
         .iter()
         .flat_map(|d| d.labels.iter().map(|l| l.span))
@@ -131,6 +149,7 @@ pub fn run(ctx: &mut Context, mut a: StatsArgs<'_>) -> Result<i32, Failure> {
     let mut diags = load_tool_table(ctx, a.tool_table, &mut a.options)?;
     a.options =
         crate::cli::check::program_tools(&a.options, &crate::cli::check::read_head(a.file)?);
+    a.options = crate::cli::stepnc_input::with_plan_tools(a.file, &a.options);
     let mut builder = StatsBuilder::new(StatsOptions {
         rapid_rate: a.rapid_rate,
         tool_change_s: a.tool_change_time,

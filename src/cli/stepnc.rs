@@ -14,6 +14,8 @@ pub struct StepncArgs<'a> {
     pub file: &'a Path,
     pub output: Option<&'a Path>,
     pub format: Format,
+    /// Print the readable listing (`--summary`) instead of Part 21.
+    pub summary: bool,
     /// Options given that only apply to raising a program (named, for a
     /// note when the file is Part 21).
     pub raising_options: Vec<&'static str>,
@@ -46,6 +48,11 @@ pub fn run(ctx: &mut Context, a: StepncArgs<'_>) -> Result<i32, Failure> {
         summary(&r.diagnostics, a.format);
         return Ok(EXIT_INPUT_ERRORS);
     };
+    if a.summary {
+        crate::cli::output::emit_output(a.output, &crate::raise::summary::summary(&project))
+            .map_err(|e| Failure(format!("cannot write: {e}")))?;
+        return Ok(EXIT_OK);
+    }
     emit_output_with(a.output, |out| {
         stepnc::write_project_to(&project, &header, out)
     })

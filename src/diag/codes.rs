@@ -486,8 +486,8 @@ codes! {
         "an entity name that is not in the ISO 14649 schema cncc knows",
         "cncc reads the ISO 14649-10, -11 and -111 entities (and the ISO 10303-42 geometry they use), with the spelling variants real files use (`BIDIRECTIONAL_MILLING`, `TOOL_DIMENSION`, `CENTER_DRILL`, `ELEMENTARY_SURFACE`). Check the spelling; an entity of another schema cannot be read.";
     UnsupportedSchema = "E0806", "unsupported-schema", Error,
-        "a STEP file of a schema cncc does not read (such as the AP238 AIM)",
-        "cncc reads ISO 14649 ARM files, whose FILE_SCHEMA is ('MACHINING_SCHEMA','MILLING_SCHEMA') or ('COMBINED_SCHEMA'). AP238 AIM files (INTEGRATED_CNC_SCHEMA, MODEL_BASED_INTEGRATED_MANUFACTURING_SCHEMA) map the same concepts onto generic STEP resources and are not read. Export the ARM form from the CAM system.";
+        "a STEP file of a schema cncc does not read (such as the AP238 ed.2 AIM)",
+        "cncc reads ISO 14649 ARM files, whose FILE_SCHEMA is ('MACHINING_SCHEMA','MILLING_SCHEMA') or ('COMBINED_SCHEMA'), and the explicit toolpaths of AP238 ed.1 AIM files (INTEGRATED_CNC_SCHEMA, see W0807). AP238 ed.2+ files (MODEL_BASED_INTEGRATED_MANUFACTURING_SCHEMA) and other schemas are not read. Export the ARM form from the CAM system.";
     StepncModel = "E0807", "stepnc-model-error", Error,
         "a STEP-NC file whose instances do not make an ISO 14649 project",
         "The file parses, but an attribute refers to an instance of the wrong kind (an operation where a feature belongs...), or there is no PROJECT. The message names the attribute and what it expected.";
@@ -524,6 +524,9 @@ codes! {
     AbstractInstance = "W0806", "abstract-instance", Warning,
         "an abstract ISO 14649 entity instantiated",
         "The file instantiates an entity the schema declares ABSTRACT (JSDAI writers put `CUTTING_TOOL(id, body, edges, length)` where ISO 14649-111 asks for its subtype MILLING_CUTTING_TOOL). cncc reads it as that subtype, its added attributes unset, and writes the subtype back.";
+    Ap238NotRead = "W0807", "ap238-not-read", Warning,
+        "AP238 (integrated CNC schema) content cncc does not read: named, and left out of the plan",
+        "cncc reads AP238 AIM files (FILE_SCHEMA INTEGRATED_CNC_SCHEMA) as far as their explicit toolpaths go: the workplan and its workingsteps, the tools and their body properties, technology (feed, spindle), machine functions (coolant) and cutter-location toolpaths (polylines, composite curves, trimmed lines and circles) with the units the file assigns. Feature geometry, strategies, B-splines and other properties are named in this warning and left out: the plan runs without them.";
     KeptRaw = "W0802", "kept-raw", Warning,
         "a value cncc could not read into its model, kept as written",
         "The instance does not have the form ISO 14649 gives it (a mandatory attribute unset, an unexpected entity), so the typed model keeps it as written and carries it to the output unchanged, but it takes no part in checks, differences or posting.";

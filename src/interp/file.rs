@@ -3,6 +3,8 @@
 //! the walker goes on from there (see [`super::stream`]). Memory stays
 //! flat on large CAM files. `cncc canon` and everything that reads the
 //! canonical stream (toolpaths, plots, STEP-NC raising) run files this way.
+//! [`run_text`] runs a program held in memory the same way (a STEP-NC
+//! plan posted for running, see `crate::cli::stepnc_input`).
 
 use super::{stream::StreamRun, Interp, Options, Sink};
 use crate::diag::Diagnostic;
@@ -11,7 +13,7 @@ use crate::driver::{check_stream_flagged, decode, read_program, FsLoader};
 use crate::source::SourceMap;
 use crate::span::FileId;
 use std::fs::File;
-use std::io::BufReader;
+use std::io::{BufRead, BufReader};
 use std::path::Path;
 use std::sync::Arc;
 
@@ -28,37 +30,91 @@ pub fn run_file(
     files: &mut SourceMap,
     sink: &mut Sink<'_>,
 ) -> std::io::Result<Vec<Diagnostic>> {
-    let mut sink = sink;
-    let mut it = Interp::new(spec, opts, &mut sink);
-    it.start();
-    let mut stream = StreamRun::default();
-    let mut stopped = false;
     let input = BufReader::with_capacity(1 << 16, File::open(path)?);
-    let read = check_stream_flagged(input, id, spec, |b, e, bad| {
-        stopped |= bad;
-        if !stopped {
-            stream.block(&mut it, b, e);
-        }
-    })?;
-    let mut diags = read.diagnostics;
-    let read_errors = diags.iter().any(|d| d.is_error());
-    let run = match stream.handover {
-        _ if read_errors => stream.abandon(&mut it),
-        None => stream.finish(&mut it),
-        Some(_) => {
-            let text = decode(&crate::cli::context::read_limited(
-                path.as_ref(),
-                crate::cli::context::MAX_INPUT,
-            )?);
-            let program = std::rc::Rc::new(read_program(&text, id, spec).0);
-            drop(text);
-            let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-            let mut loader = FsLoader::new(dir, spec.clone(), files);
-            let mut d = stream.continue_with(&mut it, program, &mut loader);
-            d.append(&mut loader.diags);
-            d
-        }
+    let whole = || {
+        crate::cli::context::read_limited(path, crate::cli::context::MAX_INPUT).map(|b| decode(&b))
     };
-    diags.extend(run);
-    Ok(diags)
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let run = Run {
+        id,
+        spec,
+        opts,
+        dir: &dir,
+    };
+    run.go(input, whole, files, sink)
+}
+
+/// [`run_file`] for a program held in memory (registered as `id`);
+/// subprograms are looked for in `dir`.
+pub fn run_text(
+    text: &str,
+    id: FileId,
+    dir: &Path,
+    spec: &Arc<DialectSpec>,
+    opts: &Options,
+    files: &mut SourceMap,
+    sink: &mut Sink<'_>,
+) -> std::io::Result<Vec<Diagnostic>> {
+    let run = Run {
+        id,
+        spec,
+        opts,
+        dir,
+    };
+    run.go(text.as_bytes(), || Ok(text.to_string()), files, sink)
+}
+
+/// What a run needs besides its input.
+struct Run<'r> {
+    id: FileId,
+    spec: &'r Arc<DialectSpec>,
+    opts: &'r Options,
+    dir: &'r Path,
+}
+
+impl Run<'_> {
+    /// Streams `input`; `whole` gives the whole text when the walker takes
+    /// over (control flow).
+    fn go(
+        self,
+        input: impl BufRead,
+        whole: impl FnOnce() -> std::io::Result<String>,
+        files: &mut SourceMap,
+        sink: &mut Sink<'_>,
+    ) -> std::io::Result<Vec<Diagnostic>> {
+        let Run {
+            id,
+            spec,
+            opts,
+            dir,
+        } = self;
+        let mut sink = sink;
+        let mut it = Interp::new(spec, opts, &mut sink);
+        it.start();
+        let mut stream = StreamRun::default();
+        let mut stopped = false;
+        let read = check_stream_flagged(input, id, spec, |b, e, bad| {
+            stopped |= bad;
+            if !stopped {
+                stream.block(&mut it, b, e);
+            }
+        })?;
+        let mut diags = read.diagnostics;
+        let read_errors = diags.iter().any(|d| d.is_error());
+        let run = match stream.handover {
+            _ if read_errors => stream.abandon(&mut it),
+            None => stream.finish(&mut it),
+            Some(_) => {
+                let text = whole()?;
+                let program = std::rc::Rc::new(read_program(&text, id, spec).0);
+                drop(text);
+                let mut loader = FsLoader::new(dir.to_path_buf(), spec.clone(), files);
+                let mut d = stream.continue_with(&mut it, program, &mut loader);
+                d.append(&mut loader.diags);
+                d
+            }
+        };
+        diags.extend(run);
+        Ok(diags)
+    }
 }

@@ -9,6 +9,7 @@
 //! [`query`] answers attribute paths over the generic graph; [`diff`]
 //! compares two files' models.
 
+pub mod ap238;
 pub mod diff;
 pub mod model;
 pub mod model_geom;
@@ -64,6 +65,15 @@ pub fn read_text(text: &str, file: FileId) -> ReadResult {
             diagnostics,
         };
     }
+    if graph.schemas().iter().any(|s| ap238::is_aim_schema(s)) {
+        let (project, d) = ap238::read_project(&graph);
+        diagnostics.extend(d);
+        return ReadResult {
+            graph,
+            project,
+            diagnostics,
+        };
+    }
     diagnostics.extend(schema::validate(&graph));
     let mut project = None;
     if !diagnostics.iter().any(Diagnostic::is_error) {
@@ -104,6 +114,7 @@ fn unsupported_schema(graph: &P21File, file: FileId) -> Option<Diagnostic> {
     let foreign: Vec<&String> = schemas
         .iter()
         .filter(|s| !ARM_SCHEMAS.contains(&s.split_whitespace().next().unwrap_or("")))
+        .filter(|s| !(schemas.len() == 1 && ap238::is_aim_schema(s)))
         .collect();
     if foreign.is_empty() {
         return None;
@@ -118,8 +129,8 @@ fn unsupported_schema(graph: &P21File, file: FileId) -> Option<Diagnostic> {
     )
     .primary(span, "not an ISO 14649 ARM schema");
     d = if aim {
-        d.note("this is an AP238 AIM file: the same concepts mapped onto generic STEP resources")
-            .help("export the ISO 14649 ARM form (MACHINING_SCHEMA, MILLING_SCHEMA) instead")
+        d.note("this is an AP238 ed.2+ AIM file: the same concepts mapped onto generic STEP resources; cncc reads the toolpaths of AP238 ed.1 (INTEGRATED_CNC_SCHEMA) files only")
+            .help("export the ISO 14649 ARM form (MACHINING_SCHEMA, MILLING_SCHEMA) or AP238 ed.1 instead")
     } else {
         d.help(
             "cncc reads ISO 14649 ARM files: MACHINING_SCHEMA, MILLING_SCHEMA or COMBINED_SCHEMA",
