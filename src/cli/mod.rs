@@ -15,6 +15,7 @@ pub mod port_features;
 pub mod post;
 pub mod query;
 pub mod raise;
+pub mod simulate;
 pub mod stats;
 pub mod stepnc;
 pub mod tool_table;
@@ -34,7 +35,8 @@ pub fn run(cli: Cli) -> i32 {
         | Command::Query { format, .. }
         | Command::Stats { format, .. }
         | Command::Diff { format, .. }
-        | Command::Plot { format, .. } => *format,
+        | Command::Plot { format, .. }
+        | Command::Simulate { format, .. } => *format,
         _ => Format::Human,
     };
     let mut ctx = match Context::new(&cli, format) {
@@ -254,6 +256,34 @@ pub fn run(cli: Cli) -> i32 {
                 .into_iter()
                 .filter_map(|(given, name)| given.then_some(name))
                 .collect(),
+            },
+        ),
+        Command::Simulate {
+            file,
+            dialect,
+            stock,
+            tool_table,
+            resolution,
+            output,
+            ascii,
+            width,
+            rapid_rate,
+            format,
+            run,
+        } => simulate::run(
+            &mut ctx,
+            simulate::SimulateArgs {
+                file,
+                dialect: dialect.as_deref(),
+                stock: stock.as_deref(),
+                tool_table: tool_table.as_deref(),
+                resolution: *resolution,
+                output: output.as_deref(),
+                ascii: *ascii,
+                width: *width,
+                rapid_rate: *rapid_rate,
+                format: *format,
+                options: run.analysis_options(),
             },
         ),
         Command::Query { file, path, format } => query::run(&mut ctx, file, path, *format),

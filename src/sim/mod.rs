@@ -16,6 +16,7 @@ pub mod compare;
 pub mod cutter;
 pub mod grid;
 pub mod image;
+pub mod report;
 pub mod stl;
 pub mod sweep;
 
