@@ -96,3 +96,31 @@ fn the_part_is_written_as_png_and_stl() {
     let n = u32::from_le_bytes(mesh[80..84].try_into().unwrap()) as usize;
     assert_eq!(mesh.len(), 84 + 50 * n);
 }
+
+#[test]
+fn check_reports_a_rapid_into_a_given_stock() {
+    let check = |program: &str, stock: Option<&str>| {
+        let mut c = Command::new(env!("CARGO_BIN_EXE_cncc"));
+        c.args(["check", "--machine-units", "mm", "--format", "json"])
+            .arg(format!("tests/programs/simulate/{program}"));
+        if let Some(s) = stock {
+            c.args(["--stock", s]);
+        }
+        let out = c.output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr).into_owned();
+        (out.status.code().unwrap_or(-1), err)
+    };
+    let (code, err) = check("rapid_into_stock.nc", Some("100x50x20"));
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains(r#""code":"E1001""#) && err.contains(r#""line":8"#),
+        "{err}"
+    );
+    let (code, err) = check("rapid_into_stock.nc", None);
+    assert_eq!(code, 0, "without a stock nothing is known: {err}");
+    for clean in ["slot.nc", "pocket.nc", "drill.nc", "helix.nc"] {
+        let (code, err) = check(clean, Some("100x50x20-50-25-20"));
+        assert!(!err.contains("E1001"), "{clean}: {err}");
+        assert_eq!(code, 0, "{clean}: {err}");
+    }
+}

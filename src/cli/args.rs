@@ -87,6 +87,10 @@ pub enum Command {
         /// Only read the program (syntax, words, structure): do not run it.
         #[arg(long = "no-run")]
         no_run: bool,
+        /// The stock, LxWxH[+X+Y+Z] (mm): simulate the material and report
+        /// rapids that cut into it (E1001).
+        #[arg(long, value_name = "LxWxH[+X+Y+Z]")]
+        stock: Option<String>,
         #[command(flatten)]
         lint: LintArgs,
         #[command(flatten)]

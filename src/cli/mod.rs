@@ -51,6 +51,7 @@ pub fn run(cli: Cli) -> i32 {
             verbose,
             tool_table,
             no_run,
+            stock,
             lint,
             run,
         } => check::run(
@@ -62,6 +63,7 @@ pub fn run(cli: Cli) -> i32 {
                 verbose: *verbose,
                 tool_table: tool_table.as_deref(),
                 run: !*no_run,
+                stock: stock.as_deref(),
                 lint: (!lint.no_lint).then(|| lint.selection()),
                 options: run.analysis_options(),
             },
