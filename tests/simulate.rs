@@ -124,3 +124,31 @@ fn check_reports_a_rapid_into_a_given_stock() {
         assert_eq!(code, 0, "{clean}: {err}");
     }
 }
+
+fn diff_material(a: &str, b: &str) -> (i32, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_cncc"))
+        .args(["diff", "--material", "--machine-units", "mm"])
+        .args(["--stock", "40x40x20-20-20-20"])
+        .arg(format!("tests/programs/simulate/{a}"))
+        .arg(format!("tests/programs/simulate/{b}"))
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+    )
+}
+
+#[test]
+fn a_ring_and_a_full_pocket_differ_by_material() {
+    let (code, out) = diff_material("ring.nc", "full_pocket.nc");
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("largest deviation 5.000 mm"), "{out}");
+    // The island: inside the tool's radius round the centre.
+    assert!(
+        out.contains("within X-4.950..4.950 Y-4.950..4.950"),
+        "{out}"
+    );
+    let (code, out) = diff_material("ring.nc", "ring_again.nc");
+    assert_eq!(code, 0, "the same ring cut the other way round: {out}");
+}

@@ -247,6 +247,19 @@ pub enum Command {
         /// Also list rapids that differ (never a difference in the verdict).
         #[arg(long)]
         rapids: bool,
+        /// Compare the parts the two programs cut (material simulation)
+        /// instead of their moves.
+        #[arg(long)]
+        material: bool,
+        /// With --material: the stock, LxWxH[+X+Y+Z] (mm).
+        #[arg(long, value_name = "LxWxH[+X+Y+Z]")]
+        stock: Option<String>,
+        /// With --material: grid cell size, mm.
+        #[arg(long, value_name = "MM")]
+        resolution: Option<f64>,
+        /// With --material: heights within this many mm are the same.
+        #[arg(long = "material-tolerance", value_name = "MM", default_value_t = 0.01)]
+        material_tolerance: f64,
         #[arg(long = "tool-table", value_name = "T.tbl")]
         tool_table: Option<PathBuf>,
         #[arg(long, value_enum, default_value_t = Format::Human)]

@@ -6,6 +6,7 @@ pub mod canon;
 pub mod check;
 pub mod context;
 pub mod diff;
+pub mod diff_material;
 pub mod info;
 pub mod ir;
 pub mod output;
@@ -187,12 +188,39 @@ pub fn run(cli: Cli) -> i32 {
             b,
             dialect_a,
             dialect_b,
+            material: true,
+            stock,
+            resolution,
+            material_tolerance,
+            tool_table,
+            format,
+            run,
+            ..
+        } => diff_material::run(
+            &mut ctx,
+            diff_material::MaterialArgs {
+                files: [a, b],
+                dialects: [dialect_a.as_deref(), dialect_b.as_deref()],
+                stock: stock.as_deref(),
+                resolution: *resolution,
+                tolerance: *material_tolerance,
+                tool_table: tool_table.as_deref(),
+                format: *format,
+                options: run.analysis_options(),
+            },
+        ),
+        Command::Diff {
+            a,
+            b,
+            dialect_a,
+            dialect_b,
             tolerance,
             no_feeds,
             rapids,
             tool_table,
             format,
             run,
+            ..
         } => diff::run(
             &mut ctx,
             diff::DiffArgs {
