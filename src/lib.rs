@@ -25,6 +25,7 @@ pub mod plot;
 pub mod port;
 pub mod post;
 pub mod raise;
+pub mod sim;
 pub mod source;
 pub mod span;
 pub mod stats;

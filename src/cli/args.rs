@@ -87,6 +87,10 @@ pub enum Command {
         /// Only read the program (syntax, words, structure): do not run it.
         #[arg(long = "no-run")]
         no_run: bool,
+        /// The stock, LxWxH[+X+Y+Z] (mm): simulate the material and report
+        /// rapids that cut into it (E1001).
+        #[arg(long, value_name = "LxWxH[+X+Y+Z]")]
+        stock: Option<String>,
         #[command(flatten)]
         lint: LintArgs,
         #[command(flatten)]
@@ -243,6 +247,19 @@ pub enum Command {
         /// Also list rapids that differ (never a difference in the verdict).
         #[arg(long)]
         rapids: bool,
+        /// Compare the parts the two programs cut (material simulation)
+        /// instead of their moves.
+        #[arg(long)]
+        material: bool,
+        /// With --material: the stock, LxWxH[+X+Y+Z] (mm).
+        #[arg(long, value_name = "LxWxH[+X+Y+Z]")]
+        stock: Option<String>,
+        /// With --material: grid cell size, mm.
+        #[arg(long, value_name = "MM")]
+        resolution: Option<f64>,
+        /// With --material: heights within this many mm are the same.
+        #[arg(long = "material-tolerance", value_name = "MM", default_value_t = 0.01)]
+        material_tolerance: f64,
         #[arg(long = "tool-table", value_name = "T.tbl")]
         tool_table: Option<PathBuf>,
         #[arg(long, value_enum, default_value_t = Format::Human)]
@@ -303,6 +320,39 @@ pub enum Command {
         /// Write here (whole or not at all) instead of stdout.
         #[arg(short, long)]
         output: Option<PathBuf>,
+        #[command(flatten)]
+        run: RunArgs,
+    },
+    /// Simulate the material a 3-axis program removes: the volume per
+    /// tool, the machining time, the cut part as a shaded top view (.png)
+    /// or a mesh (.stl); rapids through the material are errors (E1001).
+    Simulate {
+        file: PathBuf,
+        #[arg(long)]
+        dialect: Option<String>,
+        /// The stock: LxWxH[+X+Y+Z] (mm; corner default 0, 0, -H). Without
+        /// it, the program's BLK FORM, else a box round the feed moves.
+        #[arg(long, value_name = "LxWxH[+X+Y+Z]")]
+        stock: Option<String>,
+        #[arg(long = "tool-table", value_name = "T.tbl")]
+        tool_table: Option<PathBuf>,
+        /// Grid cell size, mm (default: from the smallest tool and the stock).
+        #[arg(long, value_name = "MM")]
+        resolution: Option<f64>,
+        /// The cut part: a .png (top view) or .stl (mesh), written whole or not at all.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// Write the STL as text instead of binary.
+        #[arg(long)]
+        ascii: bool,
+        /// Picture width in pixels (PNG).
+        #[arg(long, default_value_t = 1200)]
+        width: u32,
+        /// Rapid traverse rate for the time, mm/min (0: leave rapids out).
+        #[arg(long = "rapid-rate", value_name = "MM/MIN", default_value_t = 10000.0)]
+        rapid_rate: f64,
+        #[arg(long, value_enum, default_value_t = Format::Human)]
+        format: Format,
         #[command(flatten)]
         run: RunArgs,
     },

@@ -27,6 +27,8 @@ pub struct CheckArgs<'a> {
     pub tool_table: Option<&'a Path>,
     /// Run the program after reading it (run-time checks).
     pub run: bool,
+    /// `--stock`: simulate the material and probe the rapids (E1001).
+    pub stock: Option<&'a str>,
     /// Lint the run, with these command-line selectors (None: `--no-lint`).
     pub lint: Option<crate::lint::CliSelect>,
     pub options: Options,
@@ -121,8 +123,14 @@ fn check_file(
     let (spec, reason) = ctx.spec_for(a.dialect, path, &head)?;
     let input = BufReader::with_capacity(1 << 16, File::open(path).map_err(fail)?);
     let id = ctx.files.add_sparse(path.display().to_string(), Vec::new());
-    let mut discard = |_: crate::canon::Canon, _: crate::span::Span| {};
     let options = program_tools(&a.options, &head);
+    let mut sim = rapid_checker(a.stock, &options, &head)?;
+    let mut tracker = crate::toolpath::Tracker::new();
+    let mut discard = |c: crate::canon::Canon, span: crate::span::Span| {
+        if let Some(s) = sim.as_mut() {
+            tracker.push(&c, span, |e| s.push(&e));
+        }
+    };
     let linter = lint_for(path, a, &spec, &options)?;
     let mut it = Interp::new(&spec, &options, &mut discard);
     if let Some(l) = &linter {
@@ -159,6 +167,14 @@ fn check_file(
             }
         };
         drop(it);
+        if let Some(s) = sim.take() {
+            let from = crate::sim::report::StockFrom::Option;
+            run.extend(
+                s.rapid_hits
+                    .iter()
+                    .map(|h| crate::sim::report::rapid_diagnostic(h, from)),
+            );
+        }
         // A subprogram or library checked alone runs again from its top
         // with its caller's values unknown: at once when it has control
         // flow (read whole already), after a failed run when it has none
@@ -201,6 +217,26 @@ fn check_file(
         }
     }
     Ok(diags)
+}
+
+/// With `--stock`: the material simulation that probes every rapid
+/// (tools of invented size are checked along their axis only; a grid of
+/// about 1000 cells along the stock's longest side).
+fn rapid_checker(
+    stock: Option<&str>,
+    options: &Options,
+    head: &str,
+) -> Result<Option<crate::sim::Simulation>, Failure> {
+    let Some(text) = stock else { return Ok(None) };
+    let stock = text.parse::<crate::toolpath::Stock>().map_err(Failure)?;
+    let longest = stock.size[0].max(stock.size[1]);
+    let cell = crate::sim::HeightField::auto_cell(&stock, Some(longest / 10.0));
+    let field = crate::sim::HeightField::new(&stock, cell).map_err(Failure)?;
+    let mm = crate::cli::stats::machine_mm(options);
+    let cutters = crate::sim::Cutters::from_table(&options.tool_table, head, mm, true);
+    let mut sim = crate::sim::Simulation::new(field, cutters);
+    sim.check_rapids = true;
+    Ok(Some(sim))
 }
 
 /// The lint of one program (None with `--no-lint`, `--no-run`, or when

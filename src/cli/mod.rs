@@ -6,6 +6,7 @@ pub mod canon;
 pub mod check;
 pub mod context;
 pub mod diff;
+pub mod diff_material;
 pub mod info;
 pub mod interpolate;
 pub mod ir;
@@ -16,6 +17,7 @@ pub mod port_features;
 pub mod post;
 pub mod query;
 pub mod raise;
+pub mod simulate;
 pub mod stats;
 pub mod stepnc;
 pub mod stepnc_input;
@@ -36,7 +38,8 @@ pub fn run(cli: Cli) -> i32 {
         | Command::Query { format, .. }
         | Command::Stats { format, .. }
         | Command::Diff { format, .. }
-        | Command::Plot { format, .. } => *format,
+        | Command::Plot { format, .. }
+        | Command::Simulate { format, .. } => *format,
         _ => Format::Human,
     };
     let mut ctx = match Context::new(&cli, format) {
@@ -51,6 +54,7 @@ pub fn run(cli: Cli) -> i32 {
             verbose,
             tool_table,
             no_run,
+            stock,
             lint,
             run,
         } => check::run(
@@ -62,6 +66,7 @@ pub fn run(cli: Cli) -> i32 {
                 verbose: *verbose,
                 tool_table: tool_table.as_deref(),
                 run: !*no_run,
+                stock: stock.as_deref(),
                 lint: (!lint.no_lint).then(|| lint.selection()),
                 options: run.analysis_options(),
             },
@@ -185,12 +190,39 @@ pub fn run(cli: Cli) -> i32 {
             b,
             dialect_a,
             dialect_b,
+            material: true,
+            stock,
+            resolution,
+            material_tolerance,
+            tool_table,
+            format,
+            run,
+            ..
+        } => diff_material::run(
+            &mut ctx,
+            diff_material::MaterialArgs {
+                files: [a, b],
+                dialects: [dialect_a.as_deref(), dialect_b.as_deref()],
+                stock: stock.as_deref(),
+                resolution: *resolution,
+                tolerance: *material_tolerance,
+                tool_table: tool_table.as_deref(),
+                format: *format,
+                options: run.analysis_options(),
+            },
+        ),
+        Command::Diff {
+            a,
+            b,
+            dialect_a,
+            dialect_b,
             tolerance,
             no_feeds,
             rapids,
             tool_table,
             format,
             run,
+            ..
         } => diff::run(
             &mut ctx,
             diff::DiffArgs {
@@ -287,6 +319,34 @@ pub fn run(cli: Cli) -> i32 {
                 },
                 form: *format,
                 options: run.options(),
+            },
+        ),
+        Command::Simulate {
+            file,
+            dialect,
+            stock,
+            tool_table,
+            resolution,
+            output,
+            ascii,
+            width,
+            rapid_rate,
+            format,
+            run,
+        } => simulate::run(
+            &mut ctx,
+            simulate::SimulateArgs {
+                file,
+                dialect: dialect.as_deref(),
+                stock: stock.as_deref(),
+                tool_table: tool_table.as_deref(),
+                resolution: *resolution,
+                output: output.as_deref(),
+                ascii: *ascii,
+                width: *width,
+                rapid_rate: *rapid_rate,
+                format: *format,
+                options: run.analysis_options(),
             },
         ),
         Command::Query { file, path, format } => query::run(&mut ctx, file, path, *format),

@@ -4,7 +4,8 @@
 //!
 //! Ranges: E00xx reading characters and numbers, E01xx syntax, E02xx words
 //! and modal groups of a block, E03xx program structure and jumps, E04xx
-//! dialect specs, E05xx running the program, E06xx writing to a target;
+//! dialect specs, E05xx running the program, E06xx writing to a target,
+//! E10xx the material simulation ([`crate::sim`]);
 //! W-codes are warnings. W07xx are the lint rules ([`crate::lint`]):
 //! mistakes a controller runs without complaint but that break tools or
 //! crash spindles; each is a warning a shop selects or ignores by code,
@@ -638,6 +639,9 @@ codes! {
     LintSpindleSpeedZero = "W0716", "spindle-speed-zero", Warning,
         "a cutting move with the spindle on at speed 0",
         "The spindle is switched on (M3/M4) but the program set the speed to 0 (`S0 M3`, `TOOL CALL 1 Z S0`), so the tool does not turn while it cuts. Usually a post that lost the speed of a tool. A program that never gives S runs at the control's last speed, which cncc cannot know: not reported.\n\nBad:\n    T1 M6\n    S0 M3\n    G1 Z-1. F100.\n\nGood:\n    T1 M6\n    S3000 M3\n    G1 Z-1. F100.";
+    RapidIntoStock = "E1001", "rapid-into-stock", Error,
+        "a rapid move cuts into the stock",
+        "With the stock known (`--stock LxWxH[+X+Y+Z]`, or the program's `BLK FORM`), cncc simulates the material the program removes (docs/simulate.md) and probes every rapid before it moves: material standing more than 0.01 mm above the tool's surface along the rapid is a crash at rapid traverse. The tool's size comes from the tool table or the program's tool list; a tool whose size cncc would have to invent is checked along its axis only. The tool's side gets a little play (0.02 mm or half a grid cell), so a rapid along a wall the tool has just cut is not reported.\n\nBad (stock 100x50x20, top at Z0):\n    G0 X10. Y10.\n    G0 Z-2.\n\nGood:\n    G0 X10. Y10.\n    G0 Z2.\n    G1 Z-2. F100.";
 }
 
 impl Code {

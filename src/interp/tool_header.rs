@@ -19,6 +19,8 @@ pub struct HeaderTool {
     pub diameter: f64,
     /// Corner radius, when the comment gives one.
     pub corner: Option<f64>,
+    /// Point or taper angle, degrees (`TAPER=118DEG`), when given.
+    pub taper: Option<f64>,
     /// What the comment calls it (`FLAT END MILL`).
     pub name: String,
 }
@@ -40,11 +42,15 @@ fn fusion(t: &str) -> Option<HeaderTool> {
     let mut words = rest[digits..].split_whitespace();
     let diameter = number_after(words.next()?, "D=")?;
     let corner = words.next().and_then(|w| number_after(w, "CR="));
+    let taper = words
+        .take_while(|w| *w != "-")
+        .find_map(|w| number_after(w.trim_end_matches("DEG"), "TAPER="));
     let name = t.rsplit(" - ").next().unwrap_or("").trim().to_string();
     Some(HeaderTool {
         number,
         diameter,
         corner,
+        taper,
         name,
     })
 }
@@ -60,6 +66,7 @@ fn mastercam(t: &str) -> Option<HeaderTool> {
         number,
         diameter,
         corner: None,
+        taper: None,
         name: String::new(),
     })
 }
@@ -67,6 +74,11 @@ fn mastercam(t: &str) -> Option<HeaderTool> {
 fn number_after(word: &str, key: &str) -> Option<f64> {
     let v = word.strip_prefix(key)?;
     v.parse().ok()
+}
+
+/// Every tool a program's first lines list in comments, as written.
+pub fn header_tools(head: &str) -> Vec<HeaderTool> {
+    head.lines().flat_map(comments).filter_map(parse).collect()
 }
 
 /// The tools a program's first lines list in comments (a CAM header),
@@ -173,6 +185,7 @@ mod tests {
         assert_eq!(t.name, "FLAT END MILL");
         let t = parse("T2 D=0.0635 CR=0. TAPER=118DEG - ZMIN=-0.4521 - DRILL").unwrap();
         assert_eq!((t.number, t.diameter), (2, 0.0635));
+        assert_eq!(t.taper, Some(118.0));
     }
 
     #[test]

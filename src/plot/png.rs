@@ -90,7 +90,7 @@ fn line(pm: &mut Pixmap, a: (f64, f64), b: (f64, f64), c: Rgb, width: f32, dashe
 }
 
 /// Writes `text` with its top-left corner at (x, y).
-fn text(pm: &mut Pixmap, x: i64, y: i64, s: &str, c: Rgb) {
+pub(crate) fn text(pm: &mut Pixmap, x: i64, y: i64, s: &str, c: Rgb) {
     let (w, h) = (pm.width() as i64, pm.height() as i64);
     let px = pm.pixels_mut();
     for (i, ch) in s.chars().enumerate() {

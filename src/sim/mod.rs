@@ -1,0 +1,230 @@
+//! Material removal for 3-axis milling (`cncc simulate`, the rapid check
+//! of `cncc check`, `cncc diff --material`): the stock as a height field
+//! ([`grid::HeightField`]) cut by each tool's shape ([`cutter::Cutter`])
+//! swept along every move of the run ([`sweep`]).
+//!
+//! A [`Simulation`] takes the resolved events of a run
+//! ([`crate::toolpath::Event`], the level `plot` and `stats` read) as
+//! they stream in, so memory is the grid's whatever the program's length.
+//! Lines are swept exactly at each cell centre; arcs and helices as
+//! chords no further than [`Simulation::chord`] from the true path.
+//! Rapids cut too (a crash removes material as well), and when asked
+//! each rapid is first probed: material above the tool's surface deeper
+//! than [`RAPID_DEPTH`] is a [`RapidHit`].
+
+pub mod compare;
+pub mod cutter;
+pub mod grid;
+pub mod image;
+pub mod report;
+pub mod stl;
+pub mod sweep;
+
+use crate::interp::tool_header::HeaderTool;
+use crate::interp::tooltable::ToolTable;
+use crate::span::Span;
+use crate::toolpath::{Event, FeedMode, Move, MoveKind, P3};
+pub use cutter::{Cutter, Shape};
+pub use grid::HeightField;
+use nalgebra::Vector3;
+use std::collections::HashMap;
+use sweep::Sweep;
+
+/// Material standing this far (mm) above a rapid's tool surface is a hit.
+pub const RAPID_DEPTH: f64 = 0.01;
+/// The side play a rapid is given (mm, and at least half a cell): a rapid
+/// along a wall the tool has just cut does not touch it.
+pub const RAPID_PLAY: f64 = 0.02;
+
+/// A rapid that went through material.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RapidHit {
+    pub span: Span,
+    pub tool: i64,
+    /// The deepest point: cell centre and the material's height there.
+    pub at: P3,
+    /// How deep the tool went into the material there, mm.
+    pub depth: f64,
+}
+
+/// What one tool did.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ToolReport {
+    pub tool: i64,
+    pub cutter: Cutter,
+    /// Volume removed, mm³.
+    pub volume: f64,
+    /// Feed path length, mm, and the part of it with a known feed rate.
+    pub feed_length: f64,
+    /// Minutes at the programmed feed (moves with no usable rate left out).
+    pub feed_minutes: f64,
+    pub rapid_length: f64,
+}
+
+/// The cutters of a run's tools, by tool number.
+#[derive(Clone, Debug, Default)]
+pub struct Cutters {
+    pub by_tool: HashMap<i64, Cutter>,
+}
+
+impl Cutters {
+    /// Every tool of `table` (sizes times `mm`) with the shapes its
+    /// comment and the program's CAM tool list (`head`) give. With
+    /// `known_only`, a tool whose size cncc invented (the built-in table)
+    /// is a point: only its axis is simulated.
+    pub fn from_table(table: &ToolTable, head: &str, mm: f64, known_only: bool) -> Cutters {
+        let header: Vec<HeaderTool> = crate::interp::tool_header::header_tools(head);
+        let by_tool = table
+            .tools
+            .iter()
+            .map(|t| {
+                let invented = table.invented && !table.from_program.contains(&t.number);
+                let h = header.iter().find(|h| h.number == t.number);
+                let c = if known_only && invented {
+                    Cutter::flat(0.0)
+                } else {
+                    Cutter::from_tool(Some(t), h, mm)
+                };
+                (t.number, c)
+            })
+            .collect();
+        Cutters { by_tool }
+    }
+
+    pub fn get(&self, tool: i64) -> Cutter {
+        self.by_tool
+            .get(&tool)
+            .copied()
+            .unwrap_or(Cutter::flat(0.0))
+    }
+}
+
+/// A run's material removal, fed event by event.
+pub struct Simulation {
+    pub field: HeightField,
+    pub cutters: Cutters,
+    /// Per tool, in order of first use.
+    pub tools: Vec<ToolReport>,
+    /// Probe rapids before cutting with them.
+    pub check_rapids: bool,
+    pub rapid_hits: Vec<RapidHit>,
+    /// Largest chord error of arcs, mm.
+    pub chord: f64,
+}
+
+impl Simulation {
+    pub fn new(field: HeightField, cutters: Cutters) -> Simulation {
+        let chord = (field.dx.min(field.dy) / 4.0).min(0.005);
+        Simulation {
+            field,
+            cutters,
+            tools: Vec::new(),
+            check_rapids: false,
+            rapid_hits: Vec::new(),
+            chord,
+        }
+    }
+
+    /// Takes one event of the run.
+    pub fn push(&mut self, e: &Event) {
+        let Event::Move(m) = e else { return };
+        let cutter = self.cutters.get(m.tool);
+        let i = self.report_for(m.tool, cutter);
+        let rapid = matches!(m.kind, MoveKind::Rapid);
+        let len = m.length();
+        if rapid {
+            self.tools[i].rapid_length += len;
+            if self.check_rapids {
+                self.probe_rapid(m, &cutter);
+            }
+        } else {
+            self.tools[i].feed_length += len;
+            if let Some(rate) = rate(m).filter(|r| *r > 0.0 && r.is_finite()) {
+                self.tools[i].feed_minutes += len / rate;
+            }
+        }
+        let reach = cutter.radius.max(self.field.dx.max(self.field.dy) / 2.0);
+        let mut removed = 0.0;
+        for (a, b) in self.chords(m) {
+            removed += Sweep {
+                cutter: &cutter,
+                a,
+                b,
+                reach,
+            }
+            .cut(&mut self.field);
+        }
+        self.tools[i].volume += removed;
+    }
+
+    fn report_for(&mut self, tool: i64, cutter: Cutter) -> usize {
+        if let Some(i) = self.tools.iter().position(|t| t.tool == tool) {
+            return i;
+        }
+        self.tools.push(ToolReport {
+            tool,
+            cutter,
+            volume: 0.0,
+            feed_length: 0.0,
+            feed_minutes: 0.0,
+            rapid_length: 0.0,
+        });
+        self.tools.len() - 1
+    }
+
+    /// The straight pieces of a move (chords of an arc).
+    fn chords(&self, m: &Move) -> Vec<(Vector3<f64>, Vector3<f64>)> {
+        let v = |p: P3| Vector3::new(p[0], p[1], p[2]);
+        match &m.kind {
+            MoveKind::Rapid | MoveKind::Line | MoveKind::Probe => vec![(v(m.from), v(m.to))],
+            MoveKind::Arc(g) => {
+                let mut prev = m.from;
+                g.points(m.from, m.to, self.chord)
+                    .into_iter()
+                    .map(|p| {
+                        let c = (v(prev), v(p));
+                        prev = p;
+                        c
+                    })
+                    .collect()
+            }
+        }
+    }
+
+    fn probe_rapid(&mut self, m: &Move, cutter: &Cutter) {
+        let play = RAPID_PLAY.max(self.field.dx.max(self.field.dy) / 2.0);
+        let reach = (cutter.radius - play).max(0.0);
+        let hit = Sweep {
+            cutter,
+            a: Vector3::from(m.from),
+            b: Vector3::from(m.to),
+            reach,
+        }
+        .probe(&mut self.field);
+        if let Some(h) = hit.filter(|h| h.depth > RAPID_DEPTH) {
+            self.rapid_hits.push(RapidHit {
+                span: m.span,
+                tool: m.tool,
+                at: h.at,
+                depth: h.depth,
+            });
+        }
+    }
+
+    /// The volume removed in all, mm³.
+    pub fn removed(&self) -> f64 {
+        self.tools.iter().map(|t| t.volume).sum()
+    }
+}
+
+/// A move's feed in mm/min, when it has one.
+fn rate(m: &Move) -> Option<f64> {
+    match m.feed_mode {
+        FeedMode::PerMinute => Some(m.feed),
+        FeedMode::PerRev => Some(m.feed * m.spindle.abs()),
+    }
+}
+
+#[cfg(test)]
+#[path = "tests.rs"]
+mod tests;

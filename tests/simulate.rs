@@ -1,0 +1,154 @@
+//! `cncc simulate`: removed volumes against their analytic values (within
+//! 0.5%), the picture and mesh written, a rapid through the stock located.
+
+use std::f64::consts::PI;
+use std::process::Command;
+
+fn simulate(program: &str, stock: &str, extra: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_cncc"))
+        .arg("simulate")
+        .arg(format!("tests/programs/simulate/{program}"))
+        .args([
+            "--stock",
+            stock,
+            "--machine-units",
+            "mm",
+            "--format",
+            "json",
+        ])
+        .args(extra)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn removed(program: &str, stock: &str) -> f64 {
+    let (code, out, err) = simulate(program, stock, &[]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    v["removed_mm3"].as_f64().unwrap()
+}
+
+fn close(got: f64, exact: f64) {
+    assert!(
+        (got - exact).abs() / exact < 0.005,
+        "{got} mm3 against {exact} mm3"
+    );
+}
+
+#[test]
+fn a_straight_slot_with_a_flat_end_mill() {
+    // 50 mm long, 10 wide, round ends, 3 deep.
+    close(removed("slot.nc", "100x50x20"), 3.0 * (500.0 + 25.0 * PI));
+}
+
+#[test]
+fn a_rectangular_pocket() {
+    // Tool centre over 30 x 20, tool radius 5: 40 x 30 with R5 corners, 5 deep.
+    close(
+        removed("pocket.nc", "100x50x20"),
+        5.0 * (600.0 + 100.0 * 5.0 + 25.0 * PI),
+    );
+}
+
+#[test]
+fn a_drilled_hole_with_a_118_degree_point() {
+    let (r, depth) = (5.0, 20.0);
+    let cone = r / (59.0f64).to_radians().tan();
+    let exact = PI * r * r * (depth - cone) + PI * r * r * cone / 3.0;
+    close(removed("drill.nc", "100x50x20"), exact);
+}
+
+#[test]
+fn a_helix_then_a_flat_circle() {
+    // Path radius 10, tool radius 5: an annulus 5..15, 10 deep.
+    close(
+        removed("helix.nc", "40x40x20-20-20-20"),
+        10.0 * PI * (225.0 - 25.0),
+    );
+}
+
+#[test]
+fn a_rapid_into_the_stock_is_a_located_error() {
+    let (code, _, err) = simulate("rapid_into_stock.nc", "100x50x20", &[]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains(r#""code":"E1001""#), "{err}");
+    assert!(err.contains(r#""line":8,"column":1"#), "{err}");
+    let (code, _, err) = simulate("slot.nc", "100x50x20", &[]);
+    assert_eq!(code, 0, "{err}");
+}
+
+#[test]
+fn the_part_is_written_as_png_and_stl() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("part.png");
+    let stl = dir.path().join("part.stl");
+    for out in [&png, &stl] {
+        let (code, _, err) = simulate("slot.nc", "100x50x20", &["-o", out.to_str().unwrap()]);
+        assert_eq!(code, 0, "{err}");
+    }
+    assert_eq!(&std::fs::read(&png).unwrap()[1..4], b"PNG");
+    let mesh = std::fs::read(&stl).unwrap();
+    let n = u32::from_le_bytes(mesh[80..84].try_into().unwrap()) as usize;
+    assert_eq!(mesh.len(), 84 + 50 * n);
+}
+
+#[test]
+fn check_reports_a_rapid_into_a_given_stock() {
+    let check = |program: &str, stock: Option<&str>| {
+        let mut c = Command::new(env!("CARGO_BIN_EXE_cncc"));
+        c.args(["check", "--machine-units", "mm", "--format", "json"])
+            .arg(format!("tests/programs/simulate/{program}"));
+        if let Some(s) = stock {
+            c.args(["--stock", s]);
+        }
+        let out = c.output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr).into_owned();
+        (out.status.code().unwrap_or(-1), err)
+    };
+    let (code, err) = check("rapid_into_stock.nc", Some("100x50x20"));
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains(r#""code":"E1001""#) && err.contains(r#""line":8"#),
+        "{err}"
+    );
+    let (code, err) = check("rapid_into_stock.nc", None);
+    assert_eq!(code, 0, "without a stock nothing is known: {err}");
+    for clean in ["slot.nc", "pocket.nc", "drill.nc", "helix.nc"] {
+        let (code, err) = check(clean, Some("100x50x20-50-25-20"));
+        assert!(!err.contains("E1001"), "{clean}: {err}");
+        assert_eq!(code, 0, "{clean}: {err}");
+    }
+}
+
+fn diff_material(a: &str, b: &str) -> (i32, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_cncc"))
+        .args(["diff", "--material", "--machine-units", "mm"])
+        .args(["--stock", "40x40x20-20-20-20"])
+        .arg(format!("tests/programs/simulate/{a}"))
+        .arg(format!("tests/programs/simulate/{b}"))
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+    )
+}
+
+#[test]
+fn a_ring_and_a_full_pocket_differ_by_material() {
+    let (code, out) = diff_material("ring.nc", "full_pocket.nc");
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("largest deviation 5.000 mm"), "{out}");
+    // The island: inside the tool's radius round the centre.
+    assert!(
+        out.contains("within X-4.950..4.950 Y-4.950..4.950"),
+        "{out}"
+    );
+    let (code, out) = diff_material("ring.nc", "ring_again.nc");
+    assert_eq!(code, 0, "the same ring cut the other way round: {out}");
+}
