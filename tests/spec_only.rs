@@ -458,3 +458,53 @@ fn the_scan_finds_each_form() {
         "{found:?}"
     );
 }
+
+fn canon(args: &[&str]) -> (Option<i32>, String, String) {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_cncc"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        o.status.code(),
+        String::from_utf8_lossy(&o.stdout).into(),
+        String::from_utf8_lossy(&o.stderr).into(),
+    )
+}
+
+const M50: &str = "tests/programs/linuxcnc/m50-feed-override.ngc";
+
+/// M50 is LinuxCNC's feed override because linuxcnc.xml says so; on Haas
+/// the number is another function [?: pallet change] and runs as nothing.
+#[test]
+fn m50_is_the_feed_override_only_where_the_spec_says() {
+    let (code, out, err) = canon(&["canon", "--dialect", "linuxcnc", M50]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("DISABLE_FEED_OVERRIDE()") && out.contains("ENABLE_FEED_OVERRIDE()"));
+    let (code, out, err) = canon(&["canon", "--dialect", "haas", M50]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(!out.contains("FEED_OVERRIDE"), "{out}");
+    let (_, out, _) = canon(&["canon", "--dialect", "fanuc", M50]);
+    assert!(!out.contains("FEED_OVERRIDE"), "{out}");
+}
+
+/// A user's spec gives the same meanings to codes of its own choosing,
+/// with no Rust: M50 as the feed override, G12 as a circular pocket.
+#[test]
+fn a_user_spec_declares_machine_functions_by_meaning() {
+    let spec = "tests/dialects/override-fanuc.xml";
+    let (code, out, err) = canon(&["--dialect-file", spec, "canon", "--dialect", "override-fanuc", M50]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("DISABLE_FEED_OVERRIDE()"), "{out}");
+    let dir = tempfile::tempdir().unwrap();
+    let prog = dir.path().join("pocket.nc");
+    std::fs::write(&prog, "G21 G90 G17 G54\nG0 X0. Y0. Z1.\nG1 Z0. F100.\nG12 I5. Z-1. F200.\nG0 Z5.\nM30\n").unwrap();
+    let prog = prog.to_str().unwrap();
+    let (code, out, err) = canon(&["--dialect-file", spec, "canon", "--dialect", "override-fanuc", prog]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("ARC_FEED"), "the pocket's circles: {out}");
+    // The built-in Fanuc has no G12: an unknown code, not Haas's pocket.
+    let (code, _, err) = canon(&["check", "--dialect", "fanuc", prog]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("E0203"), "{err}");
+}
