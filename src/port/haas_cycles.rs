@@ -47,12 +47,12 @@ pub fn run(
         let why = match (circular, expand, incremental) {
             (true, true, false) => continue,
             (true, true, true) => {
-                "in incremental mode its moves cannot be expanded (expanded moves are absolute)"
+                "in G91 its moves cannot be expanded (expanded moves are absolute)"
             }
             (true, false, _) => {
                 "the target has no circular pocket cycle; --expand-cycles writes its moves"
             }
-            _ => "the target has no general pocket cycle, and cncc does not expand it",
+            _ => "the target has no general pocket cycle, and cncc does not expand G150",
         };
         diags.push(
             Diagnostic::new(
