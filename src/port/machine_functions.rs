@@ -34,6 +34,13 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
             continue;
         };
         let code = *code;
+        if let Some(d) = by_meaning(s, from, to) {
+            if !said.contains(&code) {
+                said.push(code);
+                diags.push(d);
+            }
+            continue;
+        }
         if let Some(k) = replacement(s, from, to) {
             // Once per code: the first place stands for the others.
             if !said.contains(&code) {
@@ -42,6 +49,64 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
             }
             s.kind = k;
         }
+    }
+}
+
+/// A kept code whose meaning the source spec names (a machine function,
+/// a high-speed mode): written as the target's code of that meaning, or,
+/// where the target has none, as a comment (W0610) rather than as the
+/// same number, which there means something else (Fanuc `G5 P2` is
+/// LinuxCNC's cubic spline). Motions (splines, threading, pockets) are
+/// left to the cycle rules and `--verify`.
+fn by_meaning(s: &mut Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diagnostic> {
+    let StmtKind::Aux { letter, code, words } = &mut s.kind else {
+        return None;
+    };
+    let def = from.code(*letter, *code)?;
+    let meaning = def.meaning;
+    match meaning {
+        Meaning::Machine(f) if f.is_motion() => return None,
+        Meaning::Machine(_) | Meaning::PathSmoothing => {}
+        _ => return None,
+    }
+    let same = to.code(*letter, *code).is_some_and(|c| c.meaning == meaning);
+    if same {
+        return None;
+    }
+    let name = format!("{letter}{}", code.format(0, false));
+    if let (Meaning::Machine(_), Some(t)) = (meaning, to.code_for(meaning)) {
+        let (l, c) = (t.letter, t.code);
+        *letter = l;
+        *code = c;
+        return Some(
+            Diagnostic::new(
+                Code::PortApproximate,
+                format!("{name} ({}) is written as the target's {l}{}", meaning.name(), c.format(0, false)),
+            )
+            .primary(s.span, "the target's code for the same function"),
+        );
+    }
+    let listed: Vec<String> = words.iter().map(word_text).collect();
+    let doc = def.doc.clone();
+    s.kind = StmtKind::Comment {
+        text: format!("{name}{} {doc}", listed.concat()).trim_end().to_string(),
+        style: CommentStyle::Paren,
+    };
+    Some(
+        Diagnostic::new(
+            Code::PortApproximate,
+            format!("{name} ({}) has no code in {}: written as a comment", meaning.name(), to.name),
+        )
+        .primary(s.span, "not carried as a code")
+        .help("where the target machine has the same function, write its code there by hand"),
+    )
+}
+
+/// ` P2`: a word as read (a computed value as `?`).
+fn word_text(w: &crate::ir::Word) -> String {
+    match &w.value {
+        crate::ir::Value::Number(d) => format!(" {}{}", w.letter, d),
+        _ => format!(" {}?", w.letter),
     }
 }
 
