@@ -493,14 +493,32 @@ fn m50_is_the_feed_override_only_where_the_spec_says() {
 #[test]
 fn a_user_spec_declares_machine_functions_by_meaning() {
     let spec = "tests/dialects/override-fanuc.xml";
-    let (code, out, err) = canon(&["--dialect-file", spec, "canon", "--dialect", "override-fanuc", M50]);
+    let (code, out, err) = canon(&[
+        "--dialect-file",
+        spec,
+        "canon",
+        "--dialect",
+        "override-fanuc",
+        M50,
+    ]);
     assert_eq!(code, Some(0), "{err}");
     assert!(out.contains("DISABLE_FEED_OVERRIDE()"), "{out}");
     let dir = tempfile::tempdir().unwrap();
     let prog = dir.path().join("pocket.nc");
-    std::fs::write(&prog, "G21 G90 G17 G54\nG0 X0. Y0. Z1.\nG1 Z0. F100.\nG12 I5. Z-1. F200.\nG0 Z5.\nM30\n").unwrap();
+    std::fs::write(
+        &prog,
+        "G21 G90 G17 G54\nG0 X0. Y0. Z1.\nG1 Z0. F100.\nG12 I5. Z-1. F200.\nG0 Z5.\nM30\n",
+    )
+    .unwrap();
     let prog = prog.to_str().unwrap();
-    let (code, out, err) = canon(&["--dialect-file", spec, "canon", "--dialect", "override-fanuc", prog]);
+    let (code, out, err) = canon(&[
+        "--dialect-file",
+        spec,
+        "canon",
+        "--dialect",
+        "override-fanuc",
+        prog,
+    ]);
     assert_eq!(code, Some(0), "{err}");
     assert!(out.contains("ARC_FEED"), "the pocket's circles: {out}");
     // The built-in Fanuc has no G12: an unknown code, not Haas's pocket.

@@ -59,7 +59,12 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
 /// LinuxCNC's cubic spline). Motions (splines, threading, pockets) are
 /// left to the cycle rules and `--verify`.
 fn by_meaning(s: &mut Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diagnostic> {
-    let StmtKind::Aux { letter, code, words } = &mut s.kind else {
+    let StmtKind::Aux {
+        letter,
+        code,
+        words,
+    } = &mut s.kind
+    else {
         return None;
     };
     let def = from.code(*letter, *code)?;
@@ -69,7 +74,9 @@ fn by_meaning(s: &mut Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diag
         Meaning::Machine(_) | Meaning::PathSmoothing => {}
         _ => return None,
     }
-    let same = to.code(*letter, *code).is_some_and(|c| c.meaning == meaning);
+    let same = to
+        .code(*letter, *code)
+        .is_some_and(|c| c.meaning == meaning);
     if same {
         return None;
     }
@@ -81,7 +88,11 @@ fn by_meaning(s: &mut Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diag
         return Some(
             Diagnostic::new(
                 Code::PortApproximate,
-                format!("{name} ({}) is written as the target's {l}{}", meaning.name(), c.format(0, false)),
+                format!(
+                    "{name} ({}) is written as the target's {l}{}",
+                    meaning.name(),
+                    c.format(0, false)
+                ),
             )
             .primary(s.span, "the target's code for the same function"),
         );
@@ -89,13 +100,19 @@ fn by_meaning(s: &mut Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diag
     let listed: Vec<String> = words.iter().map(word_text).collect();
     let doc = def.doc.clone();
     s.kind = StmtKind::Comment {
-        text: format!("{name}{} {doc}", listed.concat()).trim_end().to_string(),
+        text: format!("{name}{} {doc}", listed.concat())
+            .trim_end()
+            .to_string(),
         style: CommentStyle::Paren,
     };
     Some(
         Diagnostic::new(
             Code::PortApproximate,
-            format!("{name} ({}) has no code in {}: written as a comment", meaning.name(), to.name),
+            format!(
+                "{name} ({}) has no code in {}: written as a comment",
+                meaning.name(),
+                to.name
+            ),
         )
         .primary(s.span, "not carried as a code")
         .help("where the target machine has the same function, write its code there by hand"),
