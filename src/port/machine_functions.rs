@@ -56,8 +56,8 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
 /// a high-speed mode): written as the target's code of that meaning, or,
 /// where the target has none, as a comment (W0610) rather than as the
 /// same number, which there means something else (Fanuc `G5 P2` is
-/// LinuxCNC's cubic spline). Motions (splines, threading, pockets) are
-/// left to the cycle rules and `--verify`.
+/// LinuxCNC's cubic spline), for functions that change nothing a run
+/// computes; the others are left to the cycle rules and `--verify`.
 fn by_meaning(s: &mut Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diagnostic> {
     let StmtKind::Aux {
         letter,
@@ -70,7 +70,7 @@ fn by_meaning(s: &mut Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diag
     let def = from.code(*letter, *code)?;
     let meaning = def.meaning;
     match meaning {
-        Meaning::Machine(f) if f.is_motion() => return None,
+        Meaning::Machine(f) if !switch_only(f) => return None,
         Meaning::Machine(_) | Meaning::PathSmoothing => {}
         _ => return None,
     }
@@ -116,6 +116,24 @@ fn by_meaning(s: &mut Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diag
         )
         .primary(s.span, "not carried as a code")
         .help("where the target machine has the same function, write its code there by hand"),
+    )
+}
+
+/// A function that changes nothing a run computes (overrides, I/O): a
+/// comment in its place cuts the same. Others (tool number, modal state,
+/// lathe diameter, motions) are left as written, for `--verify` to judge.
+fn switch_only(f: crate::dialect::MachineFn) -> bool {
+    use crate::dialect::MachineFn as F;
+    matches!(
+        f,
+        F::Overrides(_)
+            | F::FeedOverride
+            | F::SpeedOverride
+            | F::AdaptiveFeed
+            | F::FeedHold
+            | F::DigitalOut { .. }
+            | F::AnalogOut { .. }
+            | F::WaitInput
     )
 }
 
