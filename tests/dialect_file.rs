@@ -85,3 +85,64 @@ fn a_dialect_file_for_the_machine_makes_it_check_clean() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(!stderr(&o).contains("error["), "{}", stderr(&o));
 }
+
+/// `cncc dialects --spec ID` prints each built-in spec exactly as it is
+/// built in, and that copy loads back with `--dialect-file`, replacing the
+/// built-in of its id with the same listing.
+#[test]
+fn a_printed_builtin_spec_is_the_file_and_loads_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let listing = stdout(&cncc(&["dialects"]));
+    for id in [
+        "iso6983",
+        "fanuc",
+        "haas",
+        "linuxcnc",
+        "siemens840d",
+        "heidenhain",
+    ] {
+        let o = cncc(&["dialects", "--spec", id]);
+        assert_eq!(o.status.code(), Some(0), "{id}: {}", stderr(&o));
+        let built = std::fs::read_to_string(root().join(format!("dialects/{id}.xml"))).unwrap();
+        assert_eq!(stdout(&o), built, "{id}");
+        let copy = dir.path().join(format!("{id}.xml"));
+        std::fs::write(&copy, stdout(&o)).unwrap();
+        let copy = copy.to_str().unwrap();
+        let o = cncc(&["--dialect-file", copy, "dialects"]);
+        assert_eq!(o.status.code(), Some(0), "{id}: {}", stderr(&o));
+        let mine = stdout(&o);
+        let block = |s: &str| {
+            s.split("\n\n")
+                .find(|b| b.starts_with(&format!("{id}:")))
+                .map(|b| b.trim_end().to_string())
+        };
+        assert_eq!(block(&mine), block(&listing), "{id}");
+    }
+}
+
+#[test]
+fn a_renamed_copy_of_a_builtin_spec_checks_programs() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = stdout(&cncc(&["dialects", "--spec", "HAAS"]));
+    let text = text.replacen("id=\"haas\"", "id=\"my-haas\"", 1);
+    let copy = dir.path().join("my-haas.xml");
+    std::fs::write(&copy, text).unwrap();
+    let o = cncc(&[
+        "--dialect-file",
+        copy.to_str().unwrap(),
+        "check",
+        "--dialect",
+        "my-haas",
+        "tests/programs/haas/probe-corner.nc",
+    ]);
+    // The copy behaves as the built-in: the shop code is still unknown.
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("E0203"), "{}", stderr(&o));
+}
+
+#[test]
+fn asking_for_the_spec_of_an_unknown_dialect_is_a_usage_error() {
+    let o = cncc(&["dialects", "--spec", "nonesuch"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("fanuc"), "{}", stderr(&o));
+}

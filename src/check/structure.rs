@@ -89,7 +89,7 @@ impl StructureChecker {
             stack: Vec::new(),
             subs_open: 0,
             diags: Vec::new(),
-            labels: Labels::new(spec.has(Capability::PolePaths)),
+            labels: Labels::new(spec.family == crate::dialect::Family::Klartext),
             subs: HashMap::new(),
             programs: HashMap::new(),
             in_proc: false,

@@ -364,8 +364,13 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = Format::Human)]
         format: Format,
     },
-    /// List the known dialects and their capabilities.
-    Dialects,
+    /// List the known dialects and their capabilities; with `--spec ID`,
+    /// print a built-in spec's XML as built in, to start your own from.
+    Dialects {
+        /// A built-in dialect (id or alias) whose spec to print.
+        #[arg(long)]
+        spec: Option<String>,
+    },
     /// Explain a diagnostic code (`E0201`) or name (`two-motion-codes`);
     /// without one, list them all.
     Explain { code: Option<String> },

@@ -123,7 +123,7 @@ fn check_file(
     let (spec, reason) = ctx.spec_for(a.dialect, path, &head)?;
     let input = BufReader::with_capacity(1 << 16, File::open(path).map_err(fail)?);
     let id = ctx.files.add_sparse(path.display().to_string(), Vec::new());
-    let options = program_tools(&a.options, &head);
+    let options = program_tools(&a.options, &head, &spec);
     let mut sim = rapid_checker(a.stock, &options, &head)?;
     let mut tracker = crate::toolpath::Tracker::new();
     let mut discard = |c: crate::canon::Canon, span: crate::span::Span| {
@@ -288,9 +288,9 @@ fn run_as_fragment(
 
 /// The run options for one program: the tools its header comments list
 /// join the tool table where no real table gives them.
-pub(crate) fn program_tools(options: &Options, head: &str) -> Options {
+pub(crate) fn program_tools(options: &Options, head: &str, spec: &DialectSpec) -> Options {
     let mut o = options.clone();
-    crate::interp::tool_header::merge_header(&mut o.tool_table, head, o.machine_units);
+    crate::interp::tool_header::merge_header(&mut o.tool_table, head, o.machine_units, spec);
     o
 }
 

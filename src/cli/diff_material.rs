@@ -33,7 +33,8 @@ pub fn run(ctx: &mut Context, mut a: MaterialArgs<'_>) -> Result<i32, Failure> {
     let mut runs = Vec::new();
     for k in 0..2 {
         let head = crate::cli::check::read_head(a.files[k])?;
-        let opts = crate::cli::check::program_tools(&a.options, &head);
+        let (spec, _) = ctx.spec_for(a.dialects[k], a.files[k], &head)?;
+        let opts = crate::cli::check::program_tools(&a.options, &head, &spec);
         let s = survey(ctx, a.files[k], a.dialects[k], &opts)?;
         diags.extend(s.diags.iter().cloned());
         let cutters = Cutters::from_table(&opts.tool_table, &s.head, machine_mm(&opts), false);

@@ -3,8 +3,27 @@
 use crate::cli::context::{Context, Failure, EXIT_OK, EXIT_USAGE};
 use crate::diag::Code;
 
-pub fn dialects(ctx: &Context) -> Result<i32, Failure> {
-    crate::cli::output::emit_output(None, &crate::dialect::describe_all(&ctx.registry))?;
+/// Lists the known dialects, or with `spec` prints that built-in spec's
+/// XML text exactly as it is built in.
+pub fn dialects(ctx: &Context, spec: Option<&str>) -> Result<i32, Failure> {
+    let text = match spec {
+        None => crate::dialect::describe_all(&ctx.registry),
+        Some(name) => match crate::dialect::builtin_source(name) {
+            Some(text) => text.to_string(),
+            None => {
+                eprintln!(
+                    "error: `{name}` is not a built-in dialect; built in: {}",
+                    crate::dialect::BUILTIN_SOURCES
+                        .iter()
+                        .map(|(id, _, _)| *id)
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                );
+                return Ok(EXIT_USAGE);
+            }
+        },
+    };
+    crate::cli::output::emit_output(None, &text)?;
     Ok(EXIT_OK)
 }
 

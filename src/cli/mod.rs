@@ -350,7 +350,7 @@ pub fn run(cli: Cli) -> i32 {
             },
         ),
         Command::Query { file, path, format } => query::run(&mut ctx, file, path, *format),
-        Command::Dialects => info::dialects(&ctx),
+        Command::Dialects { spec } => info::dialects(&ctx, spec.as_deref()),
         Command::Explain { code } => info::explain(code.as_deref()),
     };
     match result {

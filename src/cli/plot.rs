@@ -73,7 +73,8 @@ pub fn run(ctx: &mut Context, mut a: PlotArgs<'_>) -> Result<i32, Failure> {
     let mut diags = load_tool_table(ctx, a.tool_table, &mut a.options)?;
     if let Some(first) = a.files.first() {
         let head = crate::cli::check::read_head(first)?;
-        a.options = crate::cli::check::program_tools(&a.options, &head);
+        let (spec, _) = ctx.spec_for(a.dialect, first, &head)?;
+        a.options = crate::cli::check::program_tools(&a.options, &head, &spec);
         a.options = crate::cli::stepnc_input::with_plan_tools(first, &a.options);
     }
     let mut bounds = Bounds::default();

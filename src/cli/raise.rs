@@ -40,7 +40,7 @@ pub fn run(ctx: &mut Context, mut a: RaiseArgs<'_>) -> Result<i32, Failure> {
         diags.extend(d);
         a.options.tool_table = table;
     }
-    a.options = crate::cli::check::program_tools(&a.options, &head);
+    a.options = crate::cli::check::program_tools(&a.options, &head, &spec);
     let name = a
         .file
         .file_stem()

@@ -169,7 +169,8 @@ pub fn run(ctx: &mut Context, mut a: SimulateArgs<'_>) -> Result<i32, Failure> {
     let kind = output_kind(a.output)?;
     let mut diags = load_tool_table(ctx, a.tool_table, &mut a.options)?;
     let head = crate::cli::check::read_head(a.file)?;
-    a.options = crate::cli::check::program_tools(&a.options, &head);
+    let (spec, _) = ctx.spec_for(a.dialect, a.file, &head)?;
+    a.options = crate::cli::check::program_tools(&a.options, &head, &spec);
     let survey = survey(ctx, a.file, a.dialect, &a.options)?;
     diags.extend(survey.diags.iter().cloned());
     if diags.iter().any(Diagnostic::is_error) {

@@ -147,8 +147,9 @@ pub fn run(ctx: &mut Context, mut a: StatsArgs<'_>) -> Result<i32, Failure> {
         ));
     }
     let mut diags = load_tool_table(ctx, a.tool_table, &mut a.options)?;
-    a.options =
-        crate::cli::check::program_tools(&a.options, &crate::cli::check::read_head(a.file)?);
+    let head = crate::cli::check::read_head(a.file)?;
+    let (spec, _) = ctx.spec_for(a.dialect, a.file, &head)?;
+    a.options = crate::cli::check::program_tools(&a.options, &head, &spec);
     a.options = crate::cli::stepnc_input::with_plan_tools(a.file, &a.options);
     let mut builder = StatsBuilder::new(StatsOptions {
         rapid_rate: a.rapid_rate,

@@ -134,6 +134,15 @@ pub fn builtins() -> &'static [Arc<DialectSpec>] {
     })
 }
 
+/// The XML text a built-in spec is built from, by id or alias.
+pub fn builtin_source(id: &str) -> Option<&'static str> {
+    let id = builtin(id)?.id.clone();
+    BUILTIN_SOURCES
+        .iter()
+        .find(|(i, _, _)| *i == id)
+        .map(|(_, _, text)| *text)
+}
+
 /// A built-in spec by id or alias.
 pub fn builtin(id: &str) -> Option<Arc<DialectSpec>> {
     let n = id.trim().to_ascii_lowercase();

@@ -70,10 +70,70 @@ pub enum Meaning {
     /// the programmed path within its tolerance, so a run goes on as
     /// programmed. Kept by its code, as `aux` is.
     PathSmoothing,
+    /// A machine function kept by its code (`StmtKind::Aux`, written back
+    /// as it was read) that the interpreter runs by this meaning.
+    Machine(MachineFn),
     /// A machine function with no neutral meaning, kept by its code.
     Aux,
 }
 
+/// Functions of one control kept by their code in the meta-model (no
+/// other dialect has them, or not as one statement) and run by meaning:
+/// the spec says which code is which, never the interpreter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MachineFn {
+    /// Feed and speed overrides both on (true) / off (LinuxCNC M48/M49).
+    Overrides(bool),
+    /// P0 off, else on: feed override (LinuxCNC M50).
+    FeedOverride,
+    /// Spindle speed override (M51).
+    SpeedOverride,
+    /// Adaptive feed (M52).
+    AdaptiveFeed,
+    /// Feed stop / hold control (M53).
+    FeedHold,
+    /// Q: the tool in the spindle, without a change (M61).
+    SetToolNumber,
+    /// P: a digital output bit, synchronised with motion or not, on or off (M62..M65).
+    DigitalOut { motion: bool, on: bool },
+    /// E Q: an analog output, synchronised with motion or not (M67/M68).
+    AnalogOut { motion: bool },
+    /// Wait on an input (M66): nothing a run computes.
+    WaitInput,
+    /// Save the modal state; `auto`: restored at the sub's return (M70/M73).
+    SaveModal { auto: bool },
+    /// Forget the saved modal state (M71).
+    InvalidateModal,
+    /// Restore the saved modal state (M72).
+    RestoreModal,
+    /// Lathe X as diameter (true) / radius (G7/G8).
+    LatheDiameter(bool),
+    /// K: spindle-synchronised motion (G33), or rigid tapping (G33.1): modal.
+    SpindleSync { rigid: bool },
+    /// LinuxCNC splines: 0 cubic (G5), 1 quadratic (G5.1), 2 NURBS
+    /// control points (G5.2, modal), 3 NURBS end (G5.3).
+    Spline(u8),
+    /// The lathe threading cycle (LinuxCNC G76), modal.
+    LatheThread,
+    /// Circular pocket milling, clockwise or not (Haas G12/G13).
+    CircularPocket { clockwise: bool },
+    /// General pocket milling from a contour subprogram (Haas G150):
+    /// read and kept, not expanded.
+    GeneralPocket,
+}
+
+impl MachineFn {
+    /// Is it a motion (run in the motion phase of its block, its block's
+    /// axis words its own)?
+    pub fn is_motion(self) -> bool {
+        matches!(
+            self,
+            MachineFn::Spline(_) | MachineFn::LatheThread | MachineFn::CircularPocket { .. }
+        )
+    }
+}
+
+use MachineFn as F;
 use Meaning as M;
 
 /// Every meaning with its name in dialect specs.
@@ -283,6 +343,75 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
     ("sub.local-call", M::LocalCall),
     ("sub.return", M::SubReturn),
     ("path.smoothing", M::PathSmoothing),
+    ("override.all-on", M::Machine(F::Overrides(true))),
+    ("override.all-off", M::Machine(F::Overrides(false))),
+    ("override.feed", M::Machine(F::FeedOverride)),
+    ("override.speed", M::Machine(F::SpeedOverride)),
+    ("override.adaptive-feed", M::Machine(F::AdaptiveFeed)),
+    ("override.feed-hold", M::Machine(F::FeedHold)),
+    ("tool.set-number", M::Machine(F::SetToolNumber)),
+    (
+        "io.digital-on-sync",
+        M::Machine(F::DigitalOut {
+            motion: true,
+            on: true,
+        }),
+    ),
+    (
+        "io.digital-off-sync",
+        M::Machine(F::DigitalOut {
+            motion: true,
+            on: false,
+        }),
+    ),
+    (
+        "io.digital-on",
+        M::Machine(F::DigitalOut {
+            motion: false,
+            on: true,
+        }),
+    ),
+    (
+        "io.digital-off",
+        M::Machine(F::DigitalOut {
+            motion: false,
+            on: false,
+        }),
+    ),
+    ("io.wait-input", M::Machine(F::WaitInput)),
+    ("io.analog-sync", M::Machine(F::AnalogOut { motion: true })),
+    ("io.analog", M::Machine(F::AnalogOut { motion: false })),
+    ("modal.save", M::Machine(F::SaveModal { auto: false })),
+    ("modal.invalidate", M::Machine(F::InvalidateModal)),
+    ("modal.restore", M::Machine(F::RestoreModal)),
+    (
+        "modal.save-auto-restore",
+        M::Machine(F::SaveModal { auto: true }),
+    ),
+    ("lathe.diameter", M::Machine(F::LatheDiameter(true))),
+    ("lathe.radius", M::Machine(F::LatheDiameter(false))),
+    (
+        "motion.spindle-sync",
+        M::Machine(F::SpindleSync { rigid: false }),
+    ),
+    (
+        "motion.rigid-tap",
+        M::Machine(F::SpindleSync { rigid: true }),
+    ),
+    ("spline.cubic", M::Machine(F::Spline(0))),
+    ("spline.quadratic", M::Machine(F::Spline(1))),
+    ("spline.nurbs-point", M::Machine(F::Spline(2))),
+    ("spline.nurbs-end", M::Machine(F::Spline(3))),
+    ("cycle.lathe-thread", M::Machine(F::LatheThread)),
+    (
+        "pocket.circular-cw",
+        M::Machine(F::CircularPocket { clockwise: true }),
+    ),
+    (
+        "pocket.circular-ccw",
+        M::Machine(F::CircularPocket { clockwise: false }),
+    ),
+    ("pocket.general", M::Machine(F::GeneralPocket)),
     ("aux", M::Aux),
 ];
 

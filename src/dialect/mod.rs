@@ -15,9 +15,9 @@ pub mod spec;
 pub mod text;
 pub(crate) mod xml;
 
-pub use builtin::{builtin, builtins, Registry};
+pub use builtin::{builtin, builtin_source, builtins, Registry, BUILTIN_SOURCES};
 pub use detect::{detect, Detection};
 pub use listing::describe_all;
 pub use load::load_spec;
-pub use meaning::{Meaning, SpindleFn};
+pub use meaning::{MachineFn, Meaning, SpindleFn};
 pub use spec::*;

@@ -96,17 +96,29 @@ pub enum Capability {
     /// `;` is the end-of-block character (Fanuc, Haas): read as the start
     /// of a comment, never written as one (comments are written `( )`).
     SemicolonEndOfBlock,
-    /// Heidenhain paths: circles round the pole `CC`, polar `LP`/`CP`/`CTP`,
-    /// `RND`/`CHF` blocks between elements, cycles by `CYCL DEF` + call.
+    /// Heidenhain contours: circles round the pole `CC`, polar
+    /// `LP`/`CP`/`CTP`, `RND`/`CHF` blocks between elements, `APPR`/`DEP`:
+    /// a move may wait for the next block (its corner), so motion runs
+    /// through the contour machinery.
     PolePaths,
+    /// Cycles are defined (`CYCL DEF n.m` lines, some acting when defined)
+    /// and called apart (Heidenhain); a port writes the old defining
+    /// cycles in the target's own form where that is exact.
+    CycleDefinitions,
+    /// The tool change makes the new tool's length and radius (and the
+    /// call's oversizes) active, with no length-offset code (Heidenhain
+    /// `TOOL CALL ... DL DR`).
+    ToolCallActivatesOffsets,
+    /// Spindle stop and coolant off (with the program stops) act at the
+    /// end of their block, after its move (Heidenhain M5, M9); elsewhere
+    /// they act before the move.
+    OffFunctionsAfterMove,
+    /// A subprogram end met in the main program is passed over (Heidenhain
+    /// `LBL 0`); elsewhere it returns, and in a main program starts it again.
+    SubEndInMainContinues,
     /// The blank as a statement of the program (Heidenhain `BLK FORM
     /// 0.1/0.2`); elsewhere the port writes it as a comment.
     BlankForm,
-    /// Haas G12/G13 circular pocket milling (I K Q Z L D), run as a cycle.
-    CircularPocketCycle,
-    /// Haas G150 general pocket milling: read and kept, reported as not
-    /// expanded (W0510) instead of stopping the run.
-    GeneralPocketCycle,
     /// The motion mode at power-on and reset is G00: axis words without a
     /// motion code move at rapid (Fanuc parameter 3402#0 = 0, Haas).
     PowerOnRapid,
@@ -141,9 +153,6 @@ pub enum Capability {
     /// A `(` inside a `( )` comment is an error (LinuxCNC: "Nested
     /// comment found"); otherwise it is comment text.
     NoNestedComments,
-    /// G5/G5.1/G5.2/G5.3 are LinuxCNC's splines, run as such (elsewhere
-    /// G5/G5.1 are other functions, e.g. Fanuc's AI contour control).
-    Splines,
     /// Cutter compensation takes the radius of the tool in the spindle and
     /// names no register (Klartext `RL`/`RR` on a positioning block, `R0`
     /// to cancel): a port drops a `D` that is the tool's own and puts a
@@ -223,9 +232,20 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ),
     ("semicolon-end-of-block", Capability::SemicolonEndOfBlock),
     ("pole-paths", Capability::PolePaths),
+    ("cycle-definitions", Capability::CycleDefinitions),
+    (
+        "tool-call-activates-offsets",
+        Capability::ToolCallActivatesOffsets,
+    ),
+    (
+        "off-functions-after-move",
+        Capability::OffFunctionsAfterMove,
+    ),
+    (
+        "sub-end-in-main-continues",
+        Capability::SubEndInMainContinues,
+    ),
     ("blank-form", Capability::BlankForm),
-    ("circular-pocket-cycle", Capability::CircularPocketCycle),
-    ("general-pocket-cycle", Capability::GeneralPocketCycle),
     ("power-on-rapid", Capability::PowerOnRapid),
     ("control-holds-tools", Capability::ControlHoldsTools),
     ("tools-by-name", Capability::ToolsByName),
@@ -253,7 +273,6 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
         Capability::FractionalSequenceNumbers,
     ),
     ("no-nested-comments", Capability::NoNestedComments),
-    ("splines", Capability::Splines),
     ("global-q-parameters", Capability::GlobalQParameters),
     ("comp-without-register", Capability::CompWithoutRegister),
     (

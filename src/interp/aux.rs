@@ -1,111 +1,26 @@
-//! Machine functions kept by code (`StmtKind::Aux`): LinuxCNC's override
-//! switches M48..M53, M61, the I/O codes M62..M68, lathe G7/G8, the
-//! spindle-synchronised motions G33/G33.1 and M70..M73 (modal state). They have no neutral
-//! meaning in the dialect specs yet, so they are told apart by number
-//! here: [`AUX`] is the one table to extend.
+//! Machine functions kept by code (`StmtKind::Aux`), run by the meaning
+//! the dialect spec gives the code ([`MachineFn`]: LinuxCNC's override
+//! switches, M61, I/O, modal-state save and restore, lathe diameter mode,
+//! spindle-synchronised motion), or by its `run` attribute.
 
 use super::{Interp, Stop};
 use crate::canon::Canon;
 use crate::diag::{Code, Diagnostic};
-use crate::ir::{Arena, Block, Expr, StmtKind, Word};
+use crate::dialect::{DialectSpec, MachineFn, Meaning};
+use crate::ir::{Arena, Block, Decimal, Expr, StmtKind, Word};
 
-/// What an M code does, by meaning.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum AuxFn {
-    /// M48 / M49: both overrides on / off.
-    Overrides(bool),
-    /// M50 P: feed override (P0 off, else on).
-    FeedOverride,
-    /// M51 P: spindle speed override.
-    SpeedOverride,
-    /// M52 P: adaptive feed.
-    AdaptiveFeed,
-    /// M53 P: feed stop (hold).
-    FeedHold,
-    /// M61 Q: set the tool number without a change.
-    SetToolNumber,
-    /// M62..M65 P: digital output bit (motion-synchronised?, on?).
-    DigitalOut { motion: bool, on: bool },
-    /// M67/M68 E Q: analog output (motion-synchronised?).
-    AnalogOut { motion: bool },
-    /// M66: wait for an input; rs274's simulated machine prints nothing.
-    WaitInput,
-    /// M70 / M73 (true: restore on return).
-    SaveModal { auto: bool },
-    /// M71.
-    InvalidateModal,
-    /// M72.
-    RestoreModal,
-    /// G7 (true) / G8: lathe diameter / radius mode for X.
-    LatheDiameter(bool),
-    /// G33 K (false) / G33.1 K (true, rigid tapping): spindle-synchronised
-    /// motion, modal; the block's axis words give the end point.
-    SpindleSync { rigid: bool },
+/// What a kept code means on this control, if it is one of the machine
+/// functions the interpreter runs (the spec says; never the number).
+pub fn machine_fn(spec: &DialectSpec, letter: char, code: Decimal) -> Option<MachineFn> {
+    match spec.code(letter.to_ascii_uppercase(), code)?.meaning {
+        Meaning::Machine(f) => Some(f),
+        _ => None,
+    }
 }
 
-/// The codes run here: letter, code times ten, meaning.
-const AUX: &[(char, i64, AuxFn)] = &[
-    ('M', 480, AuxFn::Overrides(true)),
-    ('M', 490, AuxFn::Overrides(false)),
-    ('M', 500, AuxFn::FeedOverride),
-    ('M', 510, AuxFn::SpeedOverride),
-    ('M', 520, AuxFn::AdaptiveFeed),
-    ('M', 530, AuxFn::FeedHold),
-    ('M', 610, AuxFn::SetToolNumber),
-    (
-        'M',
-        620,
-        AuxFn::DigitalOut {
-            motion: true,
-            on: true,
-        },
-    ),
-    (
-        'M',
-        630,
-        AuxFn::DigitalOut {
-            motion: true,
-            on: false,
-        },
-    ),
-    (
-        'M',
-        640,
-        AuxFn::DigitalOut {
-            motion: false,
-            on: true,
-        },
-    ),
-    (
-        'M',
-        650,
-        AuxFn::DigitalOut {
-            motion: false,
-            on: false,
-        },
-    ),
-    ('M', 670, AuxFn::AnalogOut { motion: true }),
-    ('M', 680, AuxFn::AnalogOut { motion: false }),
-    ('M', 660, AuxFn::WaitInput),
-    ('M', 700, AuxFn::SaveModal { auto: false }),
-    ('M', 710, AuxFn::InvalidateModal),
-    ('M', 720, AuxFn::RestoreModal),
-    ('M', 730, AuxFn::SaveModal { auto: true }),
-    ('G', 70, AuxFn::LatheDiameter(true)),
-    ('G', 80, AuxFn::LatheDiameter(false)),
-    ('G', 330, AuxFn::SpindleSync { rigid: false }),
-    ('G', 331, AuxFn::SpindleSync { rigid: true }),
-];
-
-fn lookup(letter: char, code: f64) -> Option<AuxFn> {
-    let tenths = (code * 10.0).round();
-    if (code * 10.0 - tenths).abs() > 1e-6 {
-        return None;
-    }
-    let letter = letter.to_ascii_uppercase();
-    AUX.iter()
-        .find(|(l, n, _)| *l == letter && *n as f64 == tenths)
-        .map(|(_, _, f)| *f)
+fn lookup(spec: &DialectSpec, letter: char, code: f64) -> Option<MachineFn> {
+    let d = Decimal::parse(&format!("{code}")).ok()?;
+    machine_fn(spec, letter, d)
 }
 
 /// The value of a word among `words`, if written.
@@ -139,12 +54,30 @@ pub fn word_or_loose(
     }
 }
 
-/// Aux codes that are motions run in the motion phase (splines, G76,
-/// Haas G12/G13).
-pub fn is_motion_aux(letter: char, code: crate::ir::Decimal) -> bool {
-    super::splines::is_spline(letter, code)
-        || super::threading::is_threading(letter, code)
-        || super::haas_pocket::is_circular_pocket(letter, code)
+/// Aux codes that are motions run in the motion phase (splines, lathe
+/// threading, circular pockets), by their meaning in `spec`.
+pub fn is_motion_aux(spec: &DialectSpec, letter: char, code: Decimal) -> bool {
+    machine_fn(spec, letter, code).is_some_and(MachineFn::is_motion)
+}
+
+/// Runs a kept code that is a motion (in the motion phase of its block).
+pub fn exec_motion(
+    it: &mut Interp<'_, '_>,
+    letter: char,
+    code: Decimal,
+    words: &[Word],
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    it.begin_block(block);
+    match machine_fn(it.spec, letter, code) {
+        Some(MachineFn::Spline(kind)) => super::splines::exec(it, kind, words, block, exprs),
+        Some(MachineFn::LatheThread) => super::threading::exec(it, words, block, exprs),
+        Some(MachineFn::CircularPocket { clockwise }) => {
+            super::haas_pocket::exec(it, letter, code, clockwise, words, block, exprs)
+        }
+        _ => Ok(()),
+    }
 }
 
 /// The value of a loose word (`StmtKind::Word`) of the block, if written.
@@ -201,7 +134,7 @@ pub fn exec(
     words: &[Word],
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    let Some(f) = lookup(letter, code) else {
+    let Some(f) = lookup(it.spec, letter, code) else {
         use crate::dialect::spec::AuxRun;
         let known = crate::ir::Decimal::parse(&format!("{code}"))
             .ok()
@@ -236,8 +169,9 @@ pub fn exec(
     };
     let p = word(it, words, 'P', exprs)?;
     let on = p.map(|v| v != 0.0).unwrap_or(true);
+    use MachineFn as F;
     match f {
-        AuxFn::Overrides(on) => {
+        F::Overrides(on) => {
             it.state.feed_override = on;
             it.state.speed_override = on;
             it.out(if on {
@@ -251,7 +185,7 @@ pub fn exec(
                 Canon::DisableSpeedOverride
             });
         }
-        AuxFn::FeedOverride => {
+        F::FeedOverride => {
             it.state.feed_override = on;
             it.out(if on {
                 Canon::EnableFeedOverride
@@ -259,7 +193,7 @@ pub fn exec(
                 Canon::DisableFeedOverride
             });
         }
-        AuxFn::SpeedOverride => {
+        F::SpeedOverride => {
             it.state.speed_override = on;
             it.out(if on {
                 Canon::EnableSpeedOverride
@@ -267,17 +201,17 @@ pub fn exec(
                 Canon::DisableSpeedOverride
             });
         }
-        AuxFn::AdaptiveFeed => it.out(if on {
+        F::AdaptiveFeed => it.out(if on {
             Canon::EnableAdaptiveFeed
         } else {
             Canon::DisableAdaptiveFeed
         }),
-        AuxFn::FeedHold => it.out(if on {
+        F::FeedHold => it.out(if on {
             Canon::EnableFeedHold
         } else {
             Canon::DisableFeedHold
         }),
-        AuxFn::SetToolNumber => {
+        F::SetToolNumber => {
             let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0) as i64;
             let row = super::tools::row_of(it, q)?;
             it.state.tool_number = q;
@@ -285,7 +219,7 @@ pub fn exec(
             it.state.m61_block = Some(it.block_span);
             it.out(Canon::ChangeToolNumber(row));
         }
-        AuxFn::DigitalOut { motion, on } => {
+        F::DigitalOut { motion, on } => {
             let n = p.unwrap_or(0.0) as i64;
             let what = match (on, motion) {
                 (true, true) => "SET_MOTION_OUTPUT_BIT",
@@ -295,7 +229,7 @@ pub fn exec(
             };
             it.out(Canon::Io(format!("{what}({n})")));
         }
-        AuxFn::AnalogOut { motion } => {
+        F::AnalogOut { motion } => {
             let e = word(it, words, 'E', exprs)?.unwrap_or(0.0) as i64;
             let q = word(it, words, 'Q', exprs)?.unwrap_or(0.0);
             let what = if motion {
@@ -305,10 +239,10 @@ pub fn exec(
             };
             it.out(Canon::Io(format!("{what}({e},{q:.6})")));
         }
-        AuxFn::WaitInput => {}
-        AuxFn::SaveModal { auto } => super::modal_save::save(it, auto),
-        AuxFn::InvalidateModal => super::modal_save::invalidate(it),
-        AuxFn::RestoreModal => {
+        F::WaitInput => {}
+        F::SaveModal { auto } => super::modal_save::save(it, auto),
+        F::InvalidateModal => super::modal_save::invalidate(it),
+        F::RestoreModal => {
             if !super::modal_save::restore_saved(it) {
                 return Err(it.error_at(
                     it.span,
@@ -317,7 +251,7 @@ pub fn exec(
                 ));
             }
         }
-        AuxFn::LatheDiameter(on) => {
+        F::LatheDiameter(on) => {
             if on != it.state.lathe_diameter {
                 let what = if on { "diameter" } else { "radius" };
                 it.out(Canon::Comment(format!(
@@ -326,13 +260,23 @@ pub fn exec(
             }
             it.state.lathe_diameter = on;
         }
-        AuxFn::SpindleSync { rigid } => {
+        F::SpindleSync { rigid } => {
             let k = word(it, words, 'K', exprs)?.unwrap_or(0.0);
             it.cycles.cancel();
             it.state.sync_pitch = k;
-            let code = crate::ir::Decimal::from_f64(if rigid { 33.1 } else { 33.0 }, 1);
+            let _ = rigid;
+            let code = Decimal::from_f64(code, 1);
             it.state.motion = super::state::ModalMotion::Move(crate::ir::MotionKind::Other(code));
         }
+        // Motions run in the motion phase; a dynamic one is not run.
+        F::Spline(_) | F::LatheThread | F::CircularPocket { .. } => {
+            return Err(it.error_at(
+                it.span,
+                Code::UnsupportedHere,
+                format!("{letter}{code} is not run by the interpreter when its number is computed"),
+            ))
+        }
+        F::GeneralPocket => super::haas_g150::exec(it, &format!("{letter}{code}"))?,
     }
     Ok(())
 }

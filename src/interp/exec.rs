@@ -20,7 +20,6 @@ pub fn phase(kind: &StmtKind) -> u8 {
         ToolOversize { .. } => 7,
         Spindle(_) => 7,
         Coolant(_) => 8,
-        Aux { letter, code, .. } if super::aux::is_motion_aux(*letter, *code) => 20,
         Aux { .. } | DynamicCode { .. } => 9,
         Dwell { .. } => 10,
         Plane(_) => 11,
@@ -75,17 +74,19 @@ pub fn phase(kind: &StmtKind) -> u8 {
 pub fn exec_block(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -> Result<(), Stop> {
     // The phases present, as bits; each is run in turn, its statements in
     // written order (no allocation, as a stable sort would give).
-    let late = it.spec.has(crate::dialect::Capability::PolePaths);
-    if late {
+    use crate::dialect::Capability;
+    if it.spec.has(Capability::PolePaths) {
         super::heidenhain::flush_before(it, block, exprs)?;
     }
-    let phase = |k: &StmtKind| phase_of(k, late);
+    let late = it.spec.has(Capability::OffFunctionsAfterMove);
+    let spec = it.spec;
+    let phase = |k: &StmtKind| phase_of(k, late, spec);
     let mut present = 0u32;
     for s in &block.stmts {
         present |= 1 << phase(&s.kind);
     }
     present &= !1;
-    if present.count_ones() <= 1 || in_phase_order(&block.stmts, late) {
+    if present.count_ones() <= 1 || in_phase_order(&block.stmts, late, spec) {
         return run_phase(it, block, exprs, late, |p| p > 0);
     }
     while present != 0 {
@@ -96,22 +97,24 @@ pub fn exec_block(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -
     Ok(())
 }
 
-/// The phase of a statement; with `late` (Heidenhain), the M functions
-/// that act at the end of their block (M5, M9, and with them M0/M2/M30)
-/// run after the block's move.
-fn phase_of(kind: &StmtKind, late: bool) -> u8 {
+/// The phase of a statement in `spec`: a kept code that is a motion runs
+/// with the motions; with `late` (capability `off-functions-after-move`),
+/// spindle stop and coolant off (and with them M0/M2/M30) run after the
+/// block's move.
+fn phase_of(kind: &StmtKind, late: bool, spec: &crate::dialect::DialectSpec) -> u8 {
     use crate::ir::{Coolant, SpindleState};
     match kind {
         StmtKind::Spindle(SpindleState::Stop) | StmtKind::Coolant(Coolant::Off) if late => 20,
+        StmtKind::Aux { letter, code, .. } if super::aux::is_motion_aux(spec, *letter, *code) => 20,
         k => phase(k),
     }
 }
 
 /// Are the statements already in phase order?
-fn in_phase_order(stmts: &[Stmt], late: bool) -> bool {
+fn in_phase_order(stmts: &[Stmt], late: bool, spec: &crate::dialect::DialectSpec) -> bool {
     stmts
         .windows(2)
-        .all(|w| phase_of(&w[0].kind, late) <= phase_of(&w[1].kind, late))
+        .all(|w| phase_of(&w[0].kind, late, spec) <= phase_of(&w[1].kind, late, spec))
 }
 
 /// Runs, in written order, the statements whose phase `keep` accepts.
@@ -123,7 +126,7 @@ fn run_phase(
     keep: impl Fn(u8) -> bool,
 ) -> Result<(), Stop> {
     for s in &block.stmts {
-        if keep(phase_of(&s.kind, late)) {
+        if keep(phase_of(&s.kind, late, it.spec)) {
             it.span = s.span;
             exec_stmt(it, s, block, exprs)?;
         }
@@ -143,31 +146,8 @@ fn exec_stmt(
             letter,
             code,
             words,
-        } if super::splines::is_spline(*letter, *code)
-            && it.spec.has(crate::dialect::Capability::Splines) =>
-        {
-            it.begin_block(block);
-            super::splines::exec(it, *code, words, block, exprs)
-        }
-        Aux {
-            letter,
-            code,
-            words,
-        } if super::threading::is_threading(*letter, *code) => {
-            it.begin_block(block);
-            super::threading::exec(it, words, block, exprs)
-        }
-        Aux { letter, code, .. } if super::haas_g150::runs(it, *letter, *code) => {
-            it.begin_block(block);
-            super::haas_g150::exec(it)
-        }
-        Aux {
-            letter,
-            code,
-            words,
-        } if super::haas_pocket::runs(it, *letter, *code) => {
-            it.begin_block(block);
-            super::haas_pocket::exec(it, *code, words, block, exprs)
+        } if super::aux::is_motion_aux(it.spec, *letter, *code) => {
+            super::aux::exec_motion(it, *letter, *code, words, block, exprs)
         }
         Comment { .. }
         | Message(_)
@@ -188,12 +168,16 @@ fn exec_stmt(
         | ReturnToInitial(_)
         | Stop(_) => modes::exec(it, s, block, exprs),
         // Heidenhain TOOL CALL: the new tool's length (and radius) are active.
-        ToolChange if it.spec.has(crate::dialect::Capability::PolePaths) => {
+        ToolChange
+            if it
+                .spec
+                .has(crate::dialect::Capability::ToolCallActivatesOffsets) =>
+        {
             tools::exec(it, s, block, exprs)?;
             super::heidenhain::tool_change(it, block, exprs)
         }
         // Heidenhain RL/RR: the radius with the TOOL CALL's DR.
-        RadiusComp { .. } if it.spec.has(crate::dialect::Capability::PolePaths) => {
+        RadiusComp { .. } if it.spec.has(crate::dialect::Capability::CompWithoutRegister) => {
             super::heidenhain::radius_comp(it, s, block, exprs)
         }
         ToolSelect(_)

@@ -710,7 +710,11 @@ impl<'l> Walker<'l> {
         to: Option<&Value>,
         exprs: &Arena<Expr>,
     ) -> Result<Next, Stop> {
-        if self.frames.is_empty() && it.spec.has(crate::dialect::Capability::PolePaths) {
+        if self.frames.is_empty()
+            && it
+                .spec
+                .has(crate::dialect::Capability::SubEndInMainContinues)
+        {
             // Heidenhain `LBL 0` met in the main program: it goes on.
             return Ok(Next::Step);
         }

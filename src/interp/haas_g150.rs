@@ -1,5 +1,5 @@
-//! Haas G150 general purpose pocket milling, where the spec has the
-//! `general-pocket-cycle` capability: read and kept, not expanded.
+//! Haas G150 general purpose pocket milling, where the spec gives a code
+//! the meaning `pocket.general`: read and kept, not expanded.
 //!
 //! G150 takes its pocket's outline from a subprogram (P, or a local
 //! sequence number) and clears it with the control's own roughing passes
@@ -12,26 +12,21 @@
 
 use super::{Interp, Stop};
 use crate::diag::{Code, Diagnostic};
-use crate::dialect::Capability;
+use crate::dialect::{DialectSpec, MachineFn};
 use crate::ir::Decimal;
 
-/// Is this code G150 (whatever the dialect)?
-pub fn is_general_pocket(letter: char, code: Decimal) -> bool {
-    letter.eq_ignore_ascii_case(&'G') && (code.to_f64() - 150.0).abs() < 1e-9
-}
-
-/// Does this interpreter read the code as Haas's G150?
-pub fn runs(it: &Interp<'_, '_>, letter: char, code: Decimal) -> bool {
-    is_general_pocket(letter, code) && it.spec.has(Capability::GeneralPocketCycle)
+/// Is this code a general pocket in `spec` (meaning `pocket.general`)?
+pub fn is_general_pocket(spec: &DialectSpec, letter: char, code: Decimal) -> bool {
+    super::aux::machine_fn(spec, letter, code) == Some(MachineFn::GeneralPocket)
 }
 
 /// Notes that the cycle is not expanded (W0510); the run goes on.
-pub fn exec(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
+pub fn exec(it: &mut Interp<'_, '_>, name: &str) -> Result<(), Stop> {
     let span = it.span;
     it.diags.push(
         Diagnostic::new(
             Code::CannotExpandCycle,
-            "G150 (general pocket) is not expanded into moves: its cuts are left out",
+            format!("{name} (general pocket) is not expanded into moves: its cuts are left out"),
         )
         .primary(span, "not expanded")
         .note("the pocket's outline is a subprogram and the control's roughing path is not documented well enough to reproduce")

@@ -1,6 +1,7 @@
 //! Haas G12 (clockwise) / G13 (counter-clockwise) circular pocket
-//! milling, run where the spec has the `circular-pocket-cycle`
-//! capability, expanded into moves about the tool's position.
+//! milling, run where the spec gives a code the meaning
+//! `pocket.circular-cw` / `pocket.circular-ccw`, expanded into moves
+//! about the tool's position.
 //!
 //! Words (Haas mill manual [K]): I radius of the first circle (the
 //! finished radius when there is no K), K radius of the finished circle,
@@ -38,21 +39,19 @@ use super::target::{target, Frame};
 use super::{Interp, Stop};
 use crate::canon::{CanonPlane, Pose};
 use crate::diag::Code;
-use crate::dialect::Capability;
+use crate::dialect::{DialectSpec, MachineFn};
 use crate::ir::{Arena, Block, Decimal, Expr, LengthUnit, StmtKind, Word};
 
 /// Most circles (rings × depth passes) one call may cut.
 const MAX_CIRCLES: f64 = 100_000.0;
 
-/// Is this code G12 or G13 (whatever the dialect)?
-pub fn is_circular_pocket(letter: char, code: Decimal) -> bool {
-    let c = code.to_f64();
-    letter.eq_ignore_ascii_case(&'G') && ((c - 12.0).abs() < 1e-9 || (c - 13.0).abs() < 1e-9)
-}
-
-/// Does this interpreter run the code as Haas's pocket cycle?
-pub fn runs(it: &Interp<'_, '_>, letter: char, code: Decimal) -> bool {
-    is_circular_pocket(letter, code) && it.spec.has(Capability::CircularPocketCycle)
+/// Is this code a circular pocket in `spec` (its meaning `pocket.circular-cw`
+/// or `-ccw`)?
+pub fn is_circular_pocket(spec: &DialectSpec, letter: char, code: Decimal) -> bool {
+    matches!(
+        super::aux::machine_fn(spec, letter, code),
+        Some(MachineFn::CircularPocket { .. })
+    )
 }
 
 /// The cycle's words, resolved and checked.
@@ -116,11 +115,11 @@ fn d_radius(it: &mut Interp<'_, '_>, d: Option<f64>) -> Result<f64, Stop> {
 
 fn read(
     it: &mut Interp<'_, '_>,
-    code: Decimal,
+    g: &str,
+    clockwise: bool,
     words: &[Word],
     exprs: &Arena<Expr>,
 ) -> Result<Pocket, Stop> {
-    let g = if code.to_f64() < 12.5 { "G12" } else { "G13" };
     if it.state.plane != CanonPlane::XY {
         return Err(fail(
             it,
@@ -189,7 +188,7 @@ fn read(
     let radii = radii.into_iter().map(|x| x - r).collect();
     let levels = levels(it, g, words, exprs, radii_len(k, i, q))?;
     Ok(Pocket {
-        clockwise: g == "G12",
+        clockwise,
         radii,
         levels,
     })
@@ -256,12 +255,15 @@ fn centre(it: &mut Interp<'_, '_>, block: &Block, exprs: &Arena<Expr>) -> Result
 /// Runs G12/G13: the block's X/Y (the centre), then the circles.
 pub fn exec(
     it: &mut Interp<'_, '_>,
+    letter: char,
     code: Decimal,
+    clockwise: bool,
     words: &[Word],
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    let p = read(it, code, words, exprs)?;
+    let g = format!("{letter}{}", code.format(0, false));
+    let p = read(it, &g, clockwise, words, exprs)?;
     if it.state.feed <= 0.0 {
         return Err(fail(
             it,

@@ -114,7 +114,7 @@ fn motion_inner(
     if m.kind == MotionKind::Implicit
         && has(
             block,
-            |k| matches!(k, StmtKind::Aux { letter, code, .. } if super::aux::is_motion_aux(*letter, *code)),
+            |k| matches!(k, StmtKind::Aux { letter, code, .. } if super::aux::is_motion_aux(it.spec, *letter, *code)),
         )
     {
         return Ok(());
@@ -173,8 +173,9 @@ fn motion_inner(
         }
         MotionKind::Arc(dir) => arcs::arc(it, dir, m, block, exprs),
         MotionKind::Probe { error, .. } => probe(it, &m.target, error, exprs),
-        MotionKind::Other(code) if code.to_f64() == 33.0 || code.to_f64() == 33.1 => {
-            spindle_sync(it, code.to_f64() != 33.0, &m.target, exprs)
+        MotionKind::Other(code) if sync_motion(it, code).is_some() => {
+            let rigid = sync_motion(it, code) == Some(true);
+            spindle_sync(it, rigid, &m.target, exprs)
         }
         MotionKind::Implicit
         | MotionKind::ArcThrough
@@ -184,6 +185,14 @@ fn motion_inner(
             Code::UnsupportedHere,
             "this motion is not run by the interpreter yet",
         )),
+    }
+}
+
+/// Is the modal G code a spindle-synchronised motion (`Some(rigid)`)?
+fn sync_motion(it: &Interp<'_, '_>, code: crate::ir::Decimal) -> Option<bool> {
+    match super::aux::machine_fn(it.spec, 'G', code)? {
+        crate::dialect::MachineFn::SpindleSync { rigid } => Some(rigid),
+        _ => None,
     }
 }
 

@@ -26,7 +26,7 @@ use super::target::{target, Frame};
 use super::{Interp, Stop};
 use crate::canon::{Canon, CanonPlane, NurbsPoint};
 use crate::diag::Code;
-use crate::ir::{Arena, Block, Decimal, Expr, FeedMode, Motion, MotionKind, StmtKind, Word};
+use crate::ir::{Arena, Block, Expr, FeedMode, Motion, MotionKind, StmtKind, Word};
 
 /// Spline state that outlives a block.
 #[derive(Clone, Debug, Default)]
@@ -42,34 +42,16 @@ pub struct Splines {
     pub no_motion_code: bool,
 }
 
-/// Which spline code, if `code` (a G number) is one.
-pub fn is_spline(letter: char, code: Decimal) -> bool {
-    letter.eq_ignore_ascii_case(&'G') && spline_code(code).is_some()
-}
-
-fn spline_code(code: Decimal) -> Option<u8> {
-    match (code.to_f64() * 10.0).round() as i64 {
-        50 => Some(0),
-        51 => Some(1),
-        52 => Some(2),
-        53 => Some(3),
-        _ => None,
-    }
-}
-
-/// The modal motion G5.2 sets.
-fn g5_2() -> ModalMotion {
-    ModalMotion::Move(MotionKind::Other(Decimal::from_f64(5.2, 1)))
-}
-
-/// Is the modal motion G5.2 (continuation blocks are control points)?
+/// Is the modal motion the NURBS control-point code (G5.2: continuation
+/// blocks are control points)?
 pub fn in_nurbs_mode(it: &Interp<'_, '_>) -> bool {
-    it.state.motion == g5_2()
+    matches!(it.state.motion, ModalMotion::Move(MotionKind::Other(code))
+        if super::aux::machine_fn(it.spec, 'G', code) == Some(crate::dialect::MachineFn::Spline(2)))
 }
 
 /// The words of a block's spline code, with the block's motion words.
 struct Words<'b> {
-    code: u8,
+    kind: u8,
     words: &'b [Word],
     motion: Option<&'b Motion>,
 }
@@ -88,23 +70,21 @@ fn fail(it: &Interp<'_, '_>, msg: impl Into<String>) -> Stop {
     it.error_at(it.span, Code::BadWordValue, msg)
 }
 
-/// Runs a G5, G5.1, G5.2 or G5.3 statement (in the motion phase).
+/// Runs a spline statement (in the motion phase): `code` 0 cubic (G5),
+/// 1 quadratic (G5.1), 2 NURBS control point (G5.2), 3 NURBS end (G5.3).
 pub fn exec(
     it: &mut Interp<'_, '_>,
-    code: Decimal,
+    code: u8,
     words: &[Word],
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    let Some(code) = spline_code(code) else {
-        return Ok(());
-    };
     let motion = block.stmts.iter().find_map(|s| match &s.kind {
         StmtKind::Motion(m) => Some(&**m),
         _ => None,
     });
     let w = Words {
-        code,
+        kind: code,
         words,
         motion,
     };
@@ -123,7 +103,7 @@ pub fn continuation(
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
     let w = Words {
-        code: 2,
+        kind: 2,
         words: &[],
         motion: Some(m),
     };
@@ -143,7 +123,7 @@ fn end_xy(
     };
     let has = |c| m.target.get(c).is_some();
     let (hx, hy) = (has('X'), has('Y'));
-    if ['Z', 'A', 'B', 'C'].iter().any(|c| has(*c)) && w.code < 2 {
+    if ['Z', 'A', 'B', 'C'].iter().any(|c| has(*c)) && w.kind < 2 {
         return Err(fail(it, "Splines may not have motion in Z, A, B, or C"));
     }
     let to = target(it, &m.target, exprs, Frame::Program)?;
@@ -198,7 +178,7 @@ fn spline(
     let i = value(it, w, block, 'I', exprs)?;
     let j = value(it, w, block, 'J', exprs)?;
     let pt = |x, y| NurbsPoint { x, y, w: 1.0 };
-    let points = if w.code == 1 {
+    let points = if w.kind == 1 {
         let (Some(i), Some(j)) = (i, j) else {
             return Err(fail(it, "Must specify both I and J with G5.1"));
         };

@@ -21,20 +21,18 @@ use super::target::{target, Frame};
 use super::{Interp, Stop};
 use crate::canon::{Canon, Pose};
 use crate::diag::Code;
-use crate::ir::{Arena, Block, Decimal, Expr, MotionKind, StmtKind, Word};
+use crate::ir::{Arena, Block, Expr, MotionKind, StmtKind, Word};
 
-/// Is this code G76 (LinuxCNC's threading cycle, kept as an aux code)?
-pub fn is_threading(letter: char, code: Decimal) -> bool {
-    letter.eq_ignore_ascii_case(&'G') && (code.to_f64() - 76.0).abs() < 1e-9
+/// The modal motion of the spec's threading code (`cycle.lathe-thread`).
+fn modal_code(it: &Interp<'_, '_>) -> Option<ModalMotion> {
+    let m = crate::dialect::Meaning::Machine(crate::dialect::MachineFn::LatheThread);
+    let c = it.spec.code_for(m)?;
+    Some(ModalMotion::Move(MotionKind::Other(c.code)))
 }
 
-fn g76() -> ModalMotion {
-    ModalMotion::Move(MotionKind::Other(Decimal::from_f64(76.0, 0)))
-}
-
-/// Is G76 the modal motion (axis words alone run it again)?
+/// Is the threading cycle the modal motion (axis words alone run it again)?
 pub fn is_modal(it: &Interp<'_, '_>) -> bool {
-    it.state.motion == g76()
+    modal_code(it).is_some_and(|m| it.state.motion == m)
 }
 
 /// The cycle's words, resolved.
@@ -123,7 +121,9 @@ pub fn exec(
     passes(it, &t)?;
     it.straight_move(MoveKind::Rapid, end)?;
     it.cycles.cancel();
-    it.state.motion = g76();
+    if let Some(m) = modal_code(it) {
+        it.state.motion = m;
+    }
     Ok(())
 }
 

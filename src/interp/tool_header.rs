@@ -10,6 +10,7 @@
 
 use super::state::MM_PER_INCH;
 use super::tooltable::{Tool, ToolTable};
+use crate::dialect::{DialectSpec, Meaning};
 use crate::ir::LengthUnit;
 
 /// One tool a header comment describes.
@@ -85,8 +86,8 @@ pub fn header_tools(head: &str) -> Vec<HeaderTool> {
 /// joined to `table` with their diameters in machine units, unless a real
 /// tool table (not cncc's invented one) lists them already. Their numbers
 /// go into `table.from_program`.
-pub fn merge_header(table: &mut ToolTable, head: &str, machine: LengthUnit) {
-    let program = program_units(head);
+pub fn merge_header(table: &mut ToolTable, head: &str, machine: LengthUnit, spec: &DialectSpec) {
+    let program = program_units(head, spec);
     for h in head.lines().flat_map(comments).filter_map(parse) {
         if h.number <= 0 || !(h.diameter.is_finite() && h.diameter >= 0.0) {
             continue;
@@ -120,9 +121,10 @@ fn comments(line: &str) -> Vec<&str> {
     out
 }
 
-/// The program's units, from its first G20/G70 or G21/G71 (or Klartext
-/// `BEGIN PGM .. INCH`); millimetres when it says neither.
-fn program_units(head: &str) -> LengthUnit {
+/// The program's units, from its first G code whose meaning in `spec` is
+/// a unit (G20/G21, Siemens G70/G71), or Klartext `BEGIN PGM .. INCH`;
+/// millimetres when it says neither.
+fn program_units(head: &str, spec: &DialectSpec) -> LengthUnit {
     for line in head.lines() {
         let code = line
             .split('(')
@@ -143,10 +145,11 @@ fn program_units(head: &str) -> LengthUnit {
             .split(|c: char| !c.is_ascii_alphanumeric() && c != '.')
             .flat_map(g_words)
         {
-            match w {
-                "G20" | "G70" => return LengthUnit::Inch,
-                "G21" | "G71" => return LengthUnit::Mm,
-                _ => {}
+            let code = w.get(1..).and_then(|n| crate::ir::Decimal::parse(n).ok());
+            if let Some(Meaning::Units { unit, .. }) =
+                code.and_then(|c| spec.code('G', c)).map(|c| c.meaning)
+            {
+                return unit;
             }
         }
     }
@@ -194,16 +197,20 @@ mod tests {
         assert_eq!((t.number, t.diameter), (12, 6.35));
     }
 
+    fn fanuc() -> std::sync::Arc<DialectSpec> {
+        crate::dialect::builtin("fanuc").unwrap()
+    }
+
     #[test]
     fn a_header_fills_an_invented_table_in_the_programs_units() {
         let head = "O1000\n(T1 D=0.5 CR=0. - ZMIN=-1. - FLAT END MILL)\n(T23 D=0.25 CR=0. - TAP)\nG20 G90\n";
         let mut t = ToolTable::builtin();
-        merge_header(&mut t, head, LengthUnit::Mm);
+        merge_header(&mut t, head, LengthUnit::Mm, &fanuc());
         assert!((t.get(1).unwrap().diameter - 12.7).abs() < 1e-9);
         assert!((t.get(23).unwrap().diameter - 6.35).abs() < 1e-9);
         assert!(t.from_program.contains(&23));
         let mut real = ToolTable::parse("T1 P1 D3.0 Z10 ;mine\n", crate::span::FileId(0)).0;
-        merge_header(&mut real, head, LengthUnit::Mm);
+        merge_header(&mut real, head, LengthUnit::Mm, &fanuc());
         assert_eq!(real.get(1).unwrap().diameter, 3.0, "the shop's table wins");
     }
 

@@ -123,7 +123,7 @@ pub(super) fn code_stmt(
         M::LocalCall if ctx.spec.has(Capability::LocalSubprogramCall) => {
             sub_call(CallKind::Local, cw, words, ctx)
         }
-        M::LocalCall | M::PathSmoothing | M::Aux => aux(cw, words),
+        M::LocalCall | M::PathSmoothing | M::Machine(_) | M::Aux => aux(cw, words),
         M::SubReturn => StmtKind::SubReturn {
             to: words.value("P"),
         },

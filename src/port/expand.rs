@@ -65,9 +65,9 @@ fn collect(p: &Program, from: &DialectSpec, to: &DialectSpec) -> Calls {
 
 /// Is `s` part of a cycle (to expand), or its cancel (to drop)?
 /// A Haas G12/G13 circular pocket (kept as an `Aux` code).
-fn is_g12(s: &StmtKind) -> bool {
+fn is_g12(s: &StmtKind, from: &DialectSpec) -> bool {
     matches!(s, StmtKind::Aux { letter, code, .. }
-        if crate::interp::haas_pocket::is_circular_pocket(*letter, *code))
+        if crate::interp::haas_pocket::is_circular_pocket(from, *letter, *code))
 }
 
 fn in_cycle(s: &StmtKind, modal: &mut bool) -> bool {
@@ -104,10 +104,10 @@ pub fn expand_unmappable(
         let mut stmts = Vec::new();
         let mut after = Vec::new();
         // Haas G12/G13: the block's X/Y move is part of the cycle's moves.
-        let g12 = b.stmts.iter().any(|s| is_g12(&s.kind));
+        let g12 = b.stmts.iter().any(|s| is_g12(&s.kind, from));
         for s in std::mem::take(&mut b.stmts) {
             let pocket_move = g12 && matches!(s.kind, StmtKind::Motion(_));
-            if !pocket_move && !is_g12(&s.kind) && !in_cycle(&s.kind, &mut modal) {
+            if !pocket_move && !is_g12(&s.kind, from) && !in_cycle(&s.kind, &mut modal) {
                 stmts.push(s);
                 continue;
             }

@@ -1,5 +1,6 @@
 //! Haas G12/G13 (circular pocket) and G150 (general pocket) read as kept
-//! codes (`Aux`): a target without the matching capability has no such
+//! codes (`Aux`, meanings `pocket.*`): a target without a code of that
+//! meaning has no such
 //! cycle, and writing the code through would change what it means (or
 //! stop the target's reader). Each is refused (E0610), except that with
 //! `--expand-cycles` a G12/G13 in G90 is left to [`super::expand`], which
@@ -7,23 +8,21 @@
 //! G150 (not expanded by the interpreter) are always refused there.
 
 use crate::diag::{Code, Diagnostic};
-use crate::dialect::{Capability, DialectSpec};
-use crate::interp::{haas_g150, haas_pocket};
+use crate::dialect::{DialectSpec, MachineFn, Meaning};
+use crate::interp::aux::machine_fn;
 use crate::ir::{DimMode, Program, StmtKind};
 
-/// Which Haas pocket code a statement is, if any.
-fn haas_code(k: &StmtKind) -> Option<(&'static str, Capability)> {
+/// The pocket function a statement is in the source, with its name.
+fn pocket_code(k: &StmtKind, from: &DialectSpec) -> Option<(String, MachineFn)> {
     let StmtKind::Aux { letter, code, .. } = k else {
         return None;
     };
-    if haas_pocket::is_circular_pocket(*letter, *code) {
-        let g = if code.to_f64() < 12.5 { "G12" } else { "G13" };
-        return Some((g, Capability::CircularPocketCycle));
-    }
-    if haas_g150::is_general_pocket(*letter, *code) {
-        return Some(("G150", Capability::GeneralPocketCycle));
-    }
-    None
+    let f = machine_fn(from, *letter, *code)?;
+    let pocket = matches!(
+        f,
+        MachineFn::CircularPocket { .. } | MachineFn::GeneralPocket
+    );
+    pocket.then(|| (format!("{letter}{}", code.format(0, false)), f))
 }
 
 pub fn run(
@@ -38,18 +37,19 @@ pub fn run(
         if let StmtKind::Distance(d) = &s.kind {
             incremental = *d == DimMode::Incremental;
         }
-        let Some((g, cap)) = haas_code(&s.kind) else {
+        let Some((g, f)) = pocket_code(&s.kind, from) else {
             continue;
         };
-        if !from.has(cap) || to.has(cap) {
+        if to.code_for(Meaning::Machine(f)).is_some() {
             continue;
         }
-        let why = match (cap, expand, incremental) {
-            (Capability::CircularPocketCycle, true, false) => continue,
-            (Capability::CircularPocketCycle, true, true) => {
+        let circular = matches!(f, MachineFn::CircularPocket { .. });
+        let why = match (circular, expand, incremental) {
+            (true, true, false) => continue,
+            (true, true, true) => {
                 "in G91 its moves cannot be expanded (expanded moves are absolute)"
             }
-            (Capability::CircularPocketCycle, false, _) => {
+            (true, false, _) => {
                 "the target has no circular pocket cycle; --expand-cycles writes its moves"
             }
             _ => "the target has no general pocket cycle, and cncc does not expand G150",

@@ -41,6 +41,13 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
             continue;
         };
         let (letter, code) = (*letter, *code);
+        if let Some(d) = by_meaning(s, from, to) {
+            if !said.contains(&(letter, code)) {
+                said.push((letter, code));
+                diags.push(d);
+            }
+            continue;
+        }
         if let Some(d) = foreign_g_code(s, from, to) {
             diags.push(d);
             continue;
@@ -62,11 +69,11 @@ fn foreign_g_code(s: &Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diag
     let StmtKind::Aux { letter, code, .. } = &s.kind else {
         return None;
     };
+    let source = from.code('G', *code);
+    let meaning = source.map_or(Meaning::Aux, |c| c.meaning);
     if *letter != 'G'
-        || to
-            .code('G', *code)
-            .is_some_and(|c| c.meaning == Meaning::Aux)
-        || from.code('G', *code).is_some_and(|c| c.run == AuxRun::Pass)
+        || to.code('G', *code).is_some_and(|c| c.meaning == meaning)
+        || source.is_some_and(|c| c.run == AuxRun::Pass)
     {
         return None;
     }
@@ -89,6 +96,99 @@ fn foreign_g_code(s: &Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diag
         .primary(s.span, "a function of the source control")
         .help("write what it does with the target's own codes"),
     )
+}
+
+/// A kept code whose meaning the source spec names (a machine function,
+/// a high-speed mode): written as the target's code of that meaning, or,
+/// where the target has none, as a comment (W0610) rather than as the
+/// same number, which there means something else (Fanuc `G5 P2` is
+/// LinuxCNC's cubic spline), for functions that change nothing a run
+/// computes; the others are left to the cycle rules and `--verify`.
+fn by_meaning(s: &mut Stmt, from: &DialectSpec, to: &DialectSpec) -> Option<Diagnostic> {
+    let StmtKind::Aux {
+        letter,
+        code,
+        words,
+    } = &mut s.kind
+    else {
+        return None;
+    };
+    let def = from.code(*letter, *code)?;
+    let meaning = def.meaning;
+    match meaning {
+        Meaning::Machine(f) if !switch_only(f) => return None,
+        Meaning::Machine(_) | Meaning::PathSmoothing => {}
+        _ => return None,
+    }
+    let same = to
+        .code(*letter, *code)
+        .is_some_and(|c| c.meaning == meaning);
+    if same {
+        return None;
+    }
+    let name = format!("{letter}{}", code.format(0, false));
+    if let (Meaning::Machine(_), Some(t)) = (meaning, to.code_for(meaning)) {
+        let (l, c) = (t.letter, t.code);
+        *letter = l;
+        *code = c;
+        return Some(
+            Diagnostic::new(
+                Code::PortApproximate,
+                format!(
+                    "{name} ({}) is written as the target's {l}{}",
+                    meaning.name(),
+                    c.format(0, false)
+                ),
+            )
+            .primary(s.span, "the target's code for the same function"),
+        );
+    }
+    let listed: Vec<String> = words.iter().map(word_text).collect();
+    let doc = def.doc.clone();
+    s.kind = StmtKind::Comment {
+        text: format!("{name}{} {doc}", listed.concat())
+            .trim_end()
+            .to_string(),
+        style: CommentStyle::Paren,
+    };
+    Some(
+        Diagnostic::new(
+            Code::PortApproximate,
+            format!(
+                "{name} ({}) has no code in {}: written as a comment",
+                meaning.name(),
+                to.name
+            ),
+        )
+        .primary(s.span, "not carried as a code")
+        .help("where the target machine has the same function, write its code there by hand"),
+    )
+}
+
+/// A function that changes nothing a run computes (overrides, I/O): a
+/// comment in its place cuts the same. Others (tool number, modal state,
+/// lathe diameter, motions) are left as written, for `--verify` to judge.
+fn switch_only(f: crate::dialect::MachineFn) -> bool {
+    use crate::dialect::MachineFn as F;
+    matches!(
+        f,
+        F::Overrides(_)
+            | F::FeedOverride
+            | F::SpeedOverride
+            | F::AdaptiveFeed
+            | F::FeedHold
+            | F::DigitalOut { .. }
+            | F::AnalogOut { .. }
+            | F::WaitInput
+    )
+}
+
+/// ` P2`: a word as read (a computed value as `?`).
+fn word_text(w: &crate::ir::Word) -> String {
+    match &w.value {
+        crate::ir::Value::Number(d) => format!(" {}{}", w.letter, d),
+        _ => format!(" {}?", w.letter),
+    }
 }
 
 /// What an Aux code of the source becomes on the target, if not itself.

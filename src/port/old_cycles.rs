@@ -1,6 +1,6 @@
 //! Old-style Heidenhain cycles that act when defined, in the target's own
-//! form where that is exact (the target lacks `pole-paths`, the family of
-//! `CYCL DEF n.m` lines):
+//! form where that is exact (the target lacks `cycle-definitions`, the
+//! family of `CYCL DEF n.m` lines):
 //!
 //! * Datum shift `CYCL DEF 7.0` with `7.1 X..`, `7.2 Y..`, `7.3 Z..` in
 //!   the blocks that follow: when the group gives all three axes, absolute
@@ -23,7 +23,7 @@ use crate::ir::{
 };
 
 pub fn run(p: &mut Program, to: &DialectSpec) {
-    if to.has(Capability::PolePaths) || !has_old_lines(p) {
+    if to.has(Capability::CycleDefinitions) || !has_old_lines(p) {
         return;
     }
     let frames = to.has(Capability::Frames) && !has_other_frames(p);

@@ -1,7 +1,7 @@
 //! G5.2 / G5.3: NURBS control points gathered block by block and cut as
 //! one curve (see the parent module for the rs274 behaviour kept).
 
-use super::{end_xy, fail, feed, g5_2, in_nurbs_mode, value, Words};
+use super::{end_xy, fail, feed, in_nurbs_mode, value, Words};
 use crate::canon::NurbsPoint;
 use crate::diag::{Code, Diagnostic};
 use crate::interp::state::ModalMotion;
@@ -67,7 +67,11 @@ pub(super) fn nurbs_point(
         it.splines.points.push(NurbsPoint { x, y, w: p });
     }
     it.cycles.cancel();
-    it.state.motion = g5_2();
+    // The modal motion is the spec's control-point code (G5.2).
+    let point = crate::dialect::Meaning::Machine(crate::dialect::MachineFn::Spline(2));
+    if let Some(c) = it.spec.code_for(point) {
+        it.state.motion = ModalMotion::Move(crate::ir::MotionKind::Other(c.code));
+    }
     Ok(())
 }
 

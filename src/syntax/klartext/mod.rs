@@ -368,13 +368,16 @@ fn read_block(
     Some(line)
 }
 
-/// `% name G71`: the first block of a TNC DIN/ISO program, which this
-/// front end does not read; said so at once.
+/// `% name G71`: the first block of a TNC DIN/ISO program (a `%` line
+/// ending in a G word, the units), which this front end does not read;
+/// said so at once.
 fn iso_start(text: &str, base: usize, file: crate::span::FileId) -> Option<Diagnostic> {
     let code = text.trim_start();
     let rest = code.strip_prefix('%')?;
     let words: Vec<&str> = rest.split_whitespace().collect();
-    words.last().filter(|w| matches!(**w, "G70" | "G71"))?;
+    let last = words.iter().rev().find(|w| **w != "*")?;
+    let g = last.strip_prefix(['G', 'g'])?;
+    (!g.is_empty() && g.chars().all(|c| c.is_ascii_digit())).then_some(())?;
     let at = base + text.len() - code.len();
     Some(
         Diagnostic::new(
