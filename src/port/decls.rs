@@ -118,8 +118,9 @@ pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     rename(p, &names);
 }
 
-/// Uses of the declared names become the target's variables.
-fn rename(p: &mut Program, names: &HashMap<String, Var>) {
+/// Uses of the declared names (Siemens user variables, upper-cased keys)
+/// become the target's variables.
+pub(super) fn rename(p: &mut Program, names: &HashMap<String, Var>) {
     let to_var = |v: &Var| match v {
         Var::User(n, idx) if idx.is_empty() => names.get(&n.to_ascii_uppercase()).cloned(),
         _ => None,

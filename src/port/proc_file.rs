@@ -107,7 +107,7 @@ pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     p.blocks[b].stmts.remove(s);
     let at = b + 1;
     p.blocks.splice(at..at, blocks);
-    rename(p, &names);
+    super::decls::rename(p, &names);
     match form {
         Form::OWordSub => returns_to_oword(p, &name.to_ascii_lowercase()),
         Form::MacroProgram => returns_to_m99(p),
@@ -288,31 +288,6 @@ fn comment(text: String) -> StmtKind {
     }
 }
 
-/// Uses of the parameters' names become the target's variables.
-fn rename(p: &mut Program, names: &HashMap<String, Var>) {
-    if names.is_empty() {
-        return;
-    }
-    let to_var = |v: &Var| match v {
-        Var::User(n, idx) if idx.is_empty() => names.get(&n.to_ascii_uppercase()).cloned(),
-        _ => None,
-    };
-    let ids: Vec<_> = p.exprs.iter().map(|(id, _)| id).collect();
-    for id in ids {
-        if let ExprKind::Var(v) = &p.exprs[id].kind {
-            if let Some(nv) = to_var(v) {
-                p.exprs[id].kind = ExprKind::Var(nv);
-            }
-        }
-    }
-    for s in p.blocks.iter_mut().flat_map(|b| &mut b.stmts) {
-        if let StmtKind::Assign { var, .. } | StmtKind::For { var, .. } = &mut s.kind {
-            if let Some(nv) = to_var(var) {
-                *var = nv;
-            }
-        }
-    }
-}
 
 /// `M17`/`RET` as the o-word subroutine's `return`; one that nothing
 /// but comments follows is its `endsub`, else `endsub` is added at the end.
