@@ -288,7 +288,6 @@ fn comment(text: String) -> StmtKind {
     }
 }
 
-
 /// `M17`/`RET` as the o-word subroutine's `return`; one that nothing
 /// but comments follows is its `endsub`, else `endsub` is added at the end.
 fn returns_to_oword(p: &mut Program, name: &str) {
