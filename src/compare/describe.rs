@@ -6,12 +6,7 @@ use crate::toolpath::P3;
 
 /// A number with at most four decimals, trailing zeros dropped.
 pub fn num(v: f64) -> String {
-    let s = format!("{:.4}", v);
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    match s {
-        "-0" | "" => "0".into(),
-        s => s.into(),
-    }
+    crate::ir::num::short_text(v, 4)
 }
 
 /// `X.. Y.. Z..`

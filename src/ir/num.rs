@@ -261,3 +261,31 @@ mod tests {
         assert_eq!(Decimal::from_f64(1.23456, 4).to_string(), "1.2346");
     }
 }
+
+/// A computed value for a message or a name: rounded to `places`
+/// decimals, trailing zeros and a bare point dropped, never `-0`.
+pub fn short_text(v: f64, places: usize) -> String {
+    let s = format!("{v:.places$}");
+    let s = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        &s
+    };
+    match s {
+        "-0" | "" => "0".into(),
+        s => s.into(),
+    }
+}
+
+#[cfg(test)]
+mod short_text_tests {
+    use super::short_text;
+
+    #[test]
+    fn drops_trailing_zeros_and_negative_zero() {
+        assert_eq!(short_text(12.5, 3), "12.5");
+        assert_eq!(short_text(-0.0001, 3), "0");
+        assert_eq!(short_text(100.0, 4), "100");
+        assert_eq!(short_text(-1.23456, 4), "-1.2346");
+    }
+}

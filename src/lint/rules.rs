@@ -613,11 +613,5 @@ impl Linter {
 
 /// A number as a program writes it: up to 4 places, no trailing zeros.
 pub fn fmt(v: f64) -> String {
-    let s = format!("{v:.4}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.into()
-    }
+    crate::ir::num::short_text(v, 4)
 }

@@ -93,13 +93,7 @@ fn words(axes: &Axes, exprs: &crate::ir::Arena<crate::ir::Expr>) -> String {
 }
 
 fn fmt(v: f64) -> String {
-    let s = format!("{v:.4}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.into()
-    }
+    crate::ir::num::short_text(v, 4)
 }
 
 /// `--stock LxWxH+X+Y+Z` for two known corners.

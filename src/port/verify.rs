@@ -263,13 +263,7 @@ fn low_rapids(a: &[Event], b: &[Event]) -> Option<Difference> {
 }
 
 fn num(v: f64) -> String {
-    let s = format!("{v:.3}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.into()
-    }
+    crate::ir::num::short_text(v, 3)
 }
 
 fn point(p: &P3) -> String {

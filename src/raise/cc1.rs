@@ -482,11 +482,5 @@ fn hole_toolpaths(body: &[Item], first: &Move, origin: P3) -> Vec<Toolpath> {
 
 /// A number for a name: no trailing zeros.
 fn fmt(v: f64) -> String {
-    let s = format!("{v:.3}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.to_string()
-    }
+    crate::ir::num::short_text(v, 3)
 }

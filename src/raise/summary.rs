@@ -10,13 +10,7 @@ use crate::stepnc::model::*;
 use std::fmt::Write;
 
 fn n(v: f64) -> String {
-    let s = format!("{v:.4}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.to_string()
-    }
+    crate::ir::num::short_text(v, 4)
 }
 
 fn p3(p: P3) -> String {

@@ -215,8 +215,7 @@ fn corner_in(c: &str) -> Option<f64> {
 }
 
 fn fmt(v: f64) -> String {
-    let s = format!("{v:.3}");
-    s.trim_end_matches('0').trim_end_matches('.').to_string()
+    crate::ir::num::short_text(v, 3)
 }
 
 #[cfg(test)]

@@ -160,13 +160,7 @@ fn ticks(lo: f64, hi: f64, step: f64) -> Vec<f64> {
 }
 
 fn num(v: f64) -> String {
-    let s = format!("{v:.3}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.into()
-    }
+    crate::ir::num::short_text(v, 3)
 }
 
 #[cfg(test)]

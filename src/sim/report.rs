@@ -38,13 +38,7 @@ pub struct Summary<'a> {
 }
 
 fn num(v: f64) -> String {
-    let s = format!("{v:.3}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.into()
-    }
+    crate::ir::num::short_text(v, 3)
 }
 
 fn stock_text(s: &Stock) -> String {

@@ -125,13 +125,7 @@ pub fn exec(
 
 /// A value as the TNC shows it: up to four decimals.
 fn number(v: f64) -> String {
-    let s = format!("{v:.4}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.to_string()
-    }
+    crate::ir::num::short_text(v, 4)
 }
 
 /// The system data the run knows (mm, as FN 18 gives them).

@@ -5,13 +5,7 @@ use crate::stepnc::model::*;
 use std::fmt::Write;
 
 fn n(x: f64) -> String {
-    let s = format!("{:.4}", x);
-    let s = s.trim_end_matches('0').trim_end_matches('.').to_string();
-    if s == "-0" {
-        "0".into()
-    } else {
-        s
-    }
+    crate::ir::num::short_text(x, 4)
 }
 
 fn p3(p: P3) -> String {
