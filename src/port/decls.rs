@@ -8,9 +8,9 @@
 //! rounds it: the port keeps the value as computed.
 
 use crate::diag::{Code, Diagnostic};
-use crate::dialect::{Capability, DialectSpec, Family, VarClass};
+use crate::dialect::{Capability, DialectSpec, Family};
 use crate::ir::{CommentStyle, Decimal, Expr, ExprKind, Program, Stmt, StmtKind, Var, VarType};
-use std::collections::{BTreeSet, HashMap};
+use std::collections::HashMap;
 
 pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     if to.family == Family::Sinumerik
@@ -23,19 +23,8 @@ pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
         return;
     }
     let named = to.has(Capability::NamedParameters);
-    let mut used: BTreeSet<u32> = BTreeSet::new();
-    for (_, e) in p.exprs.iter() {
-        if let ExprKind::Var(Var::Numbered(n) | Var::R(n)) = e.kind {
-            used.insert(n);
-        }
-    }
-    let free = to
-        .variables
-        .iter()
-        .filter(|r| r.prefix == '#' && r.class == VarClass::Common && r.writable);
-    let mut pool = free
-        .flat_map(|r| r.first..=r.last)
-        .filter(|n| !used.contains(n));
+    let used = super::free_vars::used(p).numbers;
+    let mut pool = super::free_vars::commons(to, &used);
     let mut names: HashMap<String, Var> = HashMap::new();
     let blocks = std::mem::take(&mut p.blocks);
     for mut b in blocks {

@@ -61,6 +61,7 @@ mod flow_ids;
 mod flow_jumps;
 pub mod forms;
 mod frame;
+mod free_vars;
 mod from_tnc;
 mod from_tnc_flow;
 mod funcs;

@@ -15,7 +15,7 @@
 //! for the writer to report.
 
 use crate::diag::{Code, Diagnostic};
-use crate::dialect::{Capability, DialectSpec, VarClass};
+use crate::dialect::{Capability, DialectSpec};
 use crate::ir::{CallTarget, CommentStyle, ExprKind, FlowId, Program, Stmt, StmtKind, Var};
 use std::collections::{BTreeSet, HashMap};
 
@@ -27,11 +27,12 @@ pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     if !to.has(Capability::MacroB) || to.has(Capability::NamedParameters) {
         return;
     }
-    let set = names_set(p);
+    let scopes = scopes(p);
+    let set = names_set(p, &scopes);
     if set.is_empty() {
         return;
     }
-    if let Some(span) = recursive_call(p) {
+    if let Some(span) = recursive_call(p, &scopes) {
         diags.push(
             Diagnostic::new(
                 Code::PortVariable,
@@ -45,7 +46,8 @@ pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
         );
         return;
     }
-    let mut pool = free_commons(p, to);
+    let used = super::free_vars::used(p).numbers;
+    let mut pool = super::free_vars::commons(to, &used);
     let mut vars: HashMap<Key, u32> = HashMap::new();
     for key in set {
         let Some(n) = pool.next() else {
@@ -60,7 +62,7 @@ pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
         };
         vars.insert(key, n);
     }
-    rename(p, &vars);
+    rename(p, &vars, &scopes);
 }
 
 /// Whether `name` is one variable for the whole program.
@@ -105,16 +107,16 @@ fn scopes(p: &Program) -> Vec<Option<String>> {
 }
 
 /// The parameters the program sets, in the order first set.
-fn names_set(p: &Program) -> Vec<Key> {
+fn names_set(p: &Program, scopes: &[Option<String>]) -> Vec<Key> {
     let mut seen = BTreeSet::new();
     let mut out = Vec::new();
-    for (b, sub) in p.blocks.iter().zip(scopes(p)) {
+    for (b, sub) in p.blocks.iter().zip(scopes) {
         for s in &b.stmts {
             if let StmtKind::Assign {
                 var: Var::Named(n), ..
             } = &s.kind
             {
-                let k = key(&sub, n);
+                let k = key(sub, n);
                 if seen.insert(k.clone()) {
                     out.push(k);
                 }
@@ -125,8 +127,8 @@ fn names_set(p: &Program) -> Vec<Key> {
 }
 
 /// A call of an o-word subroutine from inside itself.
-fn recursive_call(p: &Program) -> Option<crate::span::Span> {
-    for (b, sub) in p.blocks.iter().zip(scopes(p)) {
+fn recursive_call(p: &Program, scopes: &[Option<String>]) -> Option<crate::span::Span> {
+    for (b, sub) in p.blocks.iter().zip(scopes) {
         let Some(sub) = sub else { continue };
         for s in &b.stmts {
             if let StmtKind::Call {
@@ -143,45 +145,15 @@ fn recursive_call(p: &Program) -> Option<crate::span::Span> {
     None
 }
 
-/// The target's writable common `#` variables the program does not use.
-fn free_commons(p: &Program, to: &DialectSpec) -> impl Iterator<Item = u32> {
-    let mut used: BTreeSet<u32> = BTreeSet::new();
-    for (_, e) in p.exprs.iter() {
-        if let ExprKind::Var(Var::Numbered(n) | Var::R(n)) = e.kind {
-            used.insert(n);
-        }
-    }
-    for s in p.blocks.iter().flat_map(|b| &b.stmts) {
-        if let StmtKind::Assign {
-            var: Var::Numbered(n) | Var::R(n),
-            ..
-        } = s.kind
-        {
-            used.insert(n);
-        }
-    }
-    let ranges: Vec<(u32, u32)> = to
-        .variables
-        .iter()
-        .filter(|r| r.prefix == '#' && r.class == VarClass::Common && r.writable)
-        .map(|r| (r.first, r.last))
-        .collect();
-    ranges
-        .into_iter()
-        .flat_map(|(a, b)| a..=b)
-        .filter(move |n| !used.contains(n))
-}
-
 /// Every use and assignment of a set parameter becomes its variable; the
 /// first assignment of each keeps the name in a comment.
-fn rename(p: &mut Program, vars: &HashMap<Key, u32>) {
-    let scopes = scopes(p);
+fn rename(p: &mut Program, vars: &HashMap<Key, u32>, scopes: &[Option<String>]) {
     // The subroutine an expression is in: the one of the block whose
     // text holds it.
     let mut at: Vec<(crate::span::Span, Option<String>)> = p
         .blocks
         .iter()
-        .zip(&scopes)
+        .zip(scopes)
         .filter(|(_, sub)| sub.is_some())
         .map(|(b, sub)| (b.span, sub.clone()))
         .collect();
@@ -204,7 +176,7 @@ fn rename(p: &mut Program, vars: &HashMap<Key, u32>) {
         }
     }
     let mut named = BTreeSet::new();
-    for (b, sub) in p.blocks.iter_mut().zip(&scopes) {
+    for (b, sub) in p.blocks.iter_mut().zip(scopes) {
         let mut notes = Vec::new();
         for s in &mut b.stmts {
             let StmtKind::Assign { var, .. } = &mut s.kind else {

@@ -23,7 +23,7 @@
 //! either target: a PROC that declares one is refused.
 
 use crate::diag::{Code, Diagnostic};
-use crate::dialect::{Capability, DialectSpec, VarClass};
+use crate::dialect::{Capability, DialectSpec};
 use crate::ir::{CommentStyle, Expr, ExprKind, FlowId, Program, Stmt, StmtKind, Var, VarDecl};
 use std::collections::{BTreeSet, HashMap};
 
@@ -183,7 +183,11 @@ fn macro_head(
         ));
     }
     let taken: Vec<(u32, char)> = LETTER_LOCALS[..params.len()].to_vec();
-    let used = locals_used(p)?;
+    let used = super::free_vars::used(p);
+    if used.indirect {
+        return Err("picks a variable at run time, which could be an argument's local".into());
+    }
+    let used = used.numbers;
     let moves = moved_locals(to, &taken, &used)?;
     let mut said = Vec::new();
     for (v, (local, letter)) in params.iter().zip(&taken) {
@@ -202,14 +206,10 @@ fn moved_locals(
     used: &BTreeSet<u32>,
 ) -> Result<HashMap<u32, u32>, String> {
     let is_taken = |n: u32| taken.iter().any(|(l, _)| *l == n);
-    let common = to
-        .variables
-        .iter()
-        .filter(|r| r.prefix == '#' && r.class == VarClass::Common && r.writable)
-        .flat_map(|r| r.first..=r.last);
     let mut free = (1..=33u32)
-        .chain(common)
-        .filter(|n| !is_taken(*n) && !used.contains(n));
+        .filter(|n| !used.contains(n))
+        .chain(super::free_vars::commons(to, used))
+        .filter(|n| !is_taken(*n));
     let mut moves = HashMap::new();
     for &n in used.iter().filter(|n| is_taken(**n)) {
         let Some(m) = free.next() else {
@@ -218,40 +218,6 @@ fn moved_locals(
         moves.insert(n, m);
     }
     Ok(moves)
-}
-
-/// The numbered variables the body uses; an indirect one could be any.
-fn locals_used(p: &Program) -> Result<BTreeSet<u32>, String> {
-    let mut used = BTreeSet::new();
-    for (_, e) in p.exprs.iter() {
-        match &e.kind {
-            ExprKind::Var(Var::Numbered(n) | Var::R(n)) => {
-                used.insert(*n);
-            }
-            ExprKind::Var(Var::Indirect(_) | Var::RIndirect(_)) => {
-                return Err(
-                    "reads a variable chosen at run time, which could be an argument".into(),
-                )
-            }
-            _ => {}
-        }
-    }
-    for s in p.blocks.iter().flat_map(|b| &b.stmts) {
-        if let StmtKind::Assign { var, .. } | StmtKind::For { var, .. } = &s.kind {
-            match var {
-                Var::Numbered(n) | Var::R(n) => {
-                    used.insert(*n);
-                }
-                Var::Indirect(_) | Var::RIndirect(_) => {
-                    return Err(
-                        "sets a variable chosen at run time, which could be an argument".into(),
-                    )
-                }
-                _ => {}
-            }
-        }
-    }
-    Ok(used)
 }
 
 /// The body's `#n`/`Rn` on an argument's local, renumbered.
