@@ -161,3 +161,55 @@ fn case_is_a_chain_of_conditional_jumps() {
         assert!(lines[i + 2].starts_with("GOTO "), "{out}");
     }
 }
+
+/// The positioning blocks under `MCALL` drill: written as moves, the part
+/// from `MCALL CYCLE81` to the closing `MCALL` is taken whole, so the
+/// three holes the loop positions are drilled (they were lost as plain
+/// moves). With `--expand-cycles`, a cycle statement that runs in a loop
+/// is not written once per run inside the loop (which drilled each hole
+/// three times).
+#[test]
+fn modal_call_over_a_loop_keeps_its_holes() {
+    let file = "tests/programs/siemens840d/port_mcall_loop.mpf";
+    for to in ["fanuc", "haas", "linuxcnc", "heidenhain"] {
+        let (out, err) = port_verified("siemens840d", to, file);
+        assert!(err.contains("the same 3 operations"), "{to}: {err}");
+        assert!(!out.contains("WHILE"), "{to}: {out}");
+    }
+    let out = cncc(&[
+        "port",
+        "--from",
+        "siemens840d",
+        "--to",
+        "fanuc",
+        "--verify",
+        "--expand-cycles",
+        file,
+    ]);
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("the same 3 operations"), "{err}");
+    assert_eq!(stdout(&out).matches("Z80.").count(), 3, "{}", stdout(&out));
+}
+
+/// `T2` after `T1 M6` readies the next tool and loads nothing: to the TNC
+/// it is the preselection `TOOL DEF 2`, and the `M6` alone that loads it
+/// is `TOOL CALL 2` (a `TOOL CALL` with no tool would change nothing).
+/// Back to Fanuc, `G43 H` names the tool the change loaded, not the one
+/// preselected after it.
+#[test]
+fn a_preselected_tool_is_tool_def_and_the_change_names_it() {
+    let file = "tests/programs/fanuc/port_preselect.nc";
+    let (tnc, _) = port_verified("fanuc", "heidenhain", file);
+    let lines: Vec<&str> = tnc.lines().collect();
+    let def2 = lines.iter().position(|l| l.ends_with("TOOL DEF 2"));
+    let call2 = lines.iter().position(|l| l.contains("TOOL CALL 2"));
+    assert!(def2.is_some() && call2.is_some() && def2 < call2, "{tnc}");
+    assert!(!tnc.lines().any(|l| l.trim_end().ends_with("TOOL CALL")), "{tnc}");
+    let dir = tempfile::tempdir().unwrap();
+    let h = dir.path().join("p.h");
+    std::fs::write(&h, &tnc).unwrap();
+    let (back, _) = port_verified("heidenhain", "fanuc", h.to_str().unwrap());
+    let first_g43 = back.lines().find(|l| l.contains("G43")).unwrap_or("");
+    assert!(first_g43.contains("H1"), "{back}");
+}

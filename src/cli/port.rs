@@ -118,6 +118,9 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
             opts: &opts,
         };
         let ok = verify_port(ctx, &sides, &name, &out, &mut diags);
+        if std::env::var_os("CNCC_DEBUG_PORT").is_some() {
+            eprintln!("{out}");
+        }
         ctx.print(&diags, a.format);
         if !ok {
             return Ok(EXIT_INPUT_ERRORS);

@@ -175,6 +175,10 @@ pub enum Capability {
     /// table length; Fanuc and Haas shops number H as T by convention
     /// [?: the offset memory allows any numbering]. Lint W0703.
     LengthRegisterNamesTool,
+    /// A tool change names the tool it loads (Klartext `TOOL CALL 2`):
+    /// there is no change of the tool selected before, so a port gives a
+    /// word-address `M6` alone the number of the tool the run selected.
+    ChangeNamesTool,
     /// An N word may have a fraction, which is dropped: `N4567.789` is N4567
     /// (LinuxCNC, checked with rs274 2.9); elsewhere it is an error.
     FractionalSequenceNumbers,
@@ -283,6 +287,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
         "length-register-names-tool",
         Capability::LengthRegisterNamesTool,
     ),
+    ("change-names-tool", Capability::ChangeNamesTool),
 ];
 
 impl Capability {

@@ -1138,8 +1138,14 @@ fn missing_call(span: crate::span::Span, target: &CallTarget) -> Diagnostic {
 /// Tells the run's observer, if any, which block runs next.
 fn observe(it: &mut Interp<'_, '_>, prog: usize, pc: usize, depth: usize) {
     if let Some(mut f) = it.observer.take() {
+        let modal_call = it.modal_call_active();
         f(
-            &super::BlockEvent { prog, pc, depth },
+            &super::BlockEvent {
+                prog,
+                pc,
+                depth,
+                modal_call,
+            },
             &it.state,
             &it.params,
         );

@@ -138,12 +138,20 @@ pub struct BlockEvent {
     pub prog: usize,
     pub pc: usize,
     pub depth: usize,
+    /// A modal call (840D `MCALL`, TNC `M89`) runs after each positioning
+    /// block: the blocks from here on do more than move.
+    pub modal_call: bool,
 }
 
 /// Called before each block with the state in force before it.
 pub type BlockObserver = dyn FnMut(&BlockEvent, &State, &params::Params);
 
 impl<'a, 's> Interp<'a, 's> {
+    /// A modal cycle call (840D `MCALL`, TNC `M89`) is in force.
+    pub fn modal_call_active(&self) -> bool {
+        self.siemens.modal.is_some() || self.heidenhain.modal_call
+    }
+
     /// True the first time `what` is asked in a run: report it then.
     pub fn once(&mut self, what: impl Into<String>) -> bool {
         self.reported.insert(what.into())

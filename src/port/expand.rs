@@ -18,10 +18,13 @@ use super::expand_range::write::Writer;
 use crate::canon::{Canon, CanonPlane};
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::DialectSpec;
-use crate::interp::{flow::NoLoader, Options};
+use crate::interp::flow::{NoLoader, Walker};
+use crate::interp::{BlockEvent, Options};
 use crate::ir::{Program, Stmt, StmtKind};
 use crate::span::Span;
+use std::cell::RefCell;
 use std::collections::HashMap;
+use std::rc::Rc;
 
 /// One canonical call with the state it starts from (position, plane,
 /// units), as the writer of [`super::expand_range`] follows them.
@@ -40,13 +43,9 @@ struct Calls {
 
 fn collect(p: &Program, from: &DialectSpec, to: &DialectSpec) -> Calls {
     let mut by_span: HashMap<Span, Vec<Step>> = HashMap::new();
-    let mut order: Vec<Span> = Vec::new();
     let no_statements = HashMap::new();
     let mut follow = Writer::new(&no_statements, to);
     let mut sink = |c: Canon, s: Span| {
-        if order.last() != Some(&s) {
-            order.push(s);
-        }
         let (from, plane, inch) = (follow.pos, follow.plane, follow.inch);
         follow.follow(&c);
         by_span.entry(s).or_default().push(Step {
@@ -56,11 +55,41 @@ fn collect(p: &Program, from: &DialectSpec, to: &DialectSpec) -> Calls {
             inch,
         });
     };
-    let program = std::rc::Rc::new(p.clone());
-    let _ = crate::interp::run(program, from, &Options::default(), &mut NoLoader, &mut sink);
-    let mut seen = std::collections::HashSet::new();
-    let repeated = order.into_iter().filter(|s| !seen.insert(*s)).collect();
+    let runs = run_counting_blocks(p, from, &mut sink);
+    let repeated = p
+        .blocks
+        .iter()
+        .enumerate()
+        .filter(|(pc, _)| runs.get(pc).is_some_and(|n| *n > 1))
+        .flat_map(|(_, b)| b.stmts.iter().map(|s| s.span))
+        .collect();
     Calls { by_span, repeated }
+}
+
+/// Runs `p` into `sink` and counts how often each of its blocks ran (a
+/// loop body or a subprogram called twice runs more than once, whether or
+/// not its other blocks make calls in between).
+fn run_counting_blocks(
+    p: &Program,
+    from: &DialectSpec,
+    sink: &mut dyn FnMut(Canon, Span),
+) -> HashMap<usize, u32> {
+    let runs = Rc::new(RefCell::new(HashMap::<usize, u32>::new()));
+    let opts = Options::default();
+    let mut sink = sink;
+    let mut it = crate::interp::Interp::new(from, &opts, &mut sink);
+    let seen = runs.clone();
+    it.observer = Some(Box::new(move |e: &BlockEvent, _, _| {
+        if e.prog == 0 {
+            *seen.borrow_mut().entry(e.pc).or_default() += 1;
+        }
+    }));
+    it.start();
+    let _ = Walker::new(Rc::new(p.clone()), &mut NoLoader).run(&mut it);
+    drop(it);
+    Rc::try_unwrap(runs)
+        .map(RefCell::into_inner)
+        .unwrap_or_default()
 }
 
 /// Is `s` part of a cycle (to expand), or its cancel (to drop)?

@@ -78,7 +78,8 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
         .retain(|b| !b.stmts.is_empty() || b.label.is_some());
 }
 
-/// `G43 H<tool>` on the first Z move after each `TOOL CALL`, for a target
+/// `G43 H<tool>` on the first Z move after each `TOOL CALL` (not after a
+/// `TOOL DEF` preselection), for a target
 /// with the length-offset code (Siemens has none: its `D1` carries the
 /// length).
 fn length_offsets(p: &mut Program, to: &DialectSpec) {
@@ -88,7 +89,12 @@ fn length_offsets(p: &mut Program, to: &DialectSpec) {
     }
     let mut pending: Option<crate::ir::Value> = None;
     for b in &mut p.blocks {
-        for s in &b.stmts {
+        // The tool a `TOOL CALL` loads (a `TOOL DEF` alone only preselects).
+        let changes = b
+            .stmts
+            .iter()
+            .any(|s| matches!(s.kind, StmtKind::ToolChange));
+        for s in b.stmts.iter().filter(|_| changes) {
             if let StmtKind::ToolSelect(crate::ir::ToolRef::Number(v)) = &s.kind {
                 pending = Some(v.clone());
             }

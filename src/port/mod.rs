@@ -53,6 +53,7 @@ mod after_cycle;
 mod arcs;
 mod blank;
 mod case;
+mod change_tool;
 mod comp_register;
 mod decls;
 pub mod expand;
@@ -157,6 +158,7 @@ pub fn port_program(
     forms::run(&mut out, from, to, opts, &mut diags);
     spf::run(&mut out, from, to);
     groups::run(&mut out, to);
+    change_tool::run(&mut out, to);
     tool_call::run(&mut out, from, to);
     comp_register::run(&mut out, to);
     to_tnc::subprograms::run(&mut out, from, to, &mut diags);

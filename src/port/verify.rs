@@ -199,6 +199,11 @@ fn rapids_below(ev: &[Event], top: f64) -> Vec<(P3, &Move)> {
             }
             Event::Dwell { .. } | Event::Stop { .. } | Event::Comment { .. } => continue,
         };
+        // A move to where the tool already is (`G1` alone after `G43`)
+        // goes nowhere: it neither starts the run nor ends an approach.
+        if crate::toolpath::dist(m.from, m.to) <= TOLERANCE_MM {
+            continue;
+        }
         let from = if std::mem::take(&mut first) {
             m.to
         } else {

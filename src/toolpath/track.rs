@@ -18,6 +18,13 @@ pub struct Tracker {
     plane: CanonPlane,
     /// The current position, work coordinates.
     pos: P3,
+    /// The tool length offset in force (program units).
+    length_offset: [f64; 3],
+    /// Where the tool is in the frame of a new length offset (the machine
+    /// stays, the controlled point moves), until the next move: a move
+    /// there (`G1` alone after `G43`, which rs274 gives as a feed to its
+    /// current position) goes nowhere.
+    here_after_offset: Option<P3>,
     feed: f64,
     feed_mode: FeedMode,
     selected: i64,
@@ -45,6 +52,8 @@ impl Tracker {
             rotation: 0.0,
             plane: CanonPlane::XY,
             pos: [0.0; 3],
+            length_offset: [0.0; 3],
+            here_after_offset: None,
             feed: 0.0,
             feed_mode: FeedMode::PerMinute,
             selected: 0,
@@ -96,7 +105,27 @@ impl Tracker {
         ]
     }
 
+    /// A new tool length offset: the machine stays where it is, so in the
+    /// new offset's frame the tool is elsewhere (see `here_after_offset`).
+    /// The path is followed in program coordinates, as before.
+    fn apply_length_offset(&mut self, o: [f64; 3]) {
+        let mut here = self.here_after_offset.unwrap_or(self.pos);
+        for (k, v) in o.iter().enumerate() {
+            here[k] -= (v - self.length_offset[k]) * self.scale;
+        }
+        self.here_after_offset = Some(here);
+        self.length_offset = o;
+    }
+
+    /// Is a move to `to` the null move to where the tool already is?
+    fn goes_nowhere(&mut self, to: &P3) -> bool {
+        self.here_after_offset
+            .take()
+            .is_some_and(|h| crate::toolpath::dist(h, *to) <= 1e-9)
+    }
+
     fn make(&mut self, kind: MoveKind, to: P3, span: Span) -> Event {
+        self.here_after_offset = None;
         let from = std::mem::replace(&mut self.pos, to);
         // Synchronised with the spindle, a move advances one pitch per
         // revolution: pitch x speed per minute.
@@ -136,6 +165,7 @@ impl Tracker {
             }
             SetG5xOffset { offset, .. } => self.g5x = self.offsets(offset),
             SetG92Offset(o) => self.g92 = [o[0], o[1], o[2]],
+            UseToolLengthOffset(o) => self.apply_length_offset([o[0], o[1], o[2]]),
             SetXyRotation(r) => self.rotation = *r,
             SelectPlane(p) => self.plane = *p,
             SetFeedRate(f) => self.feed = f * self.scale,
@@ -162,6 +192,7 @@ impl Tracker {
             FloodOff => self.coolant.flood = false,
             MistOn => self.coolant.mist = true,
             MistOff => self.coolant.mist = false,
+            StraightTraverse(p) | StraightFeed(p) if self.goes_nowhere(&self.to_work([p[0], p[1], p[2]])) => {}
             StraightTraverse(p) => {
                 return Some(self.make(MoveKind::Rapid, self.to_work([p[0], p[1], p[2]]), span))
             }
@@ -238,7 +269,6 @@ impl Tracker {
             | SetSpindleMode(_)
             | OrientSpindle { .. }
             | WaitOrientComplete(_)
-            | UseToolLengthOffset(_)
             | SetMotionControlMode(_)
             | SetNaivecamTolerance(_)
             | PalletShuttle
@@ -324,6 +354,24 @@ mod tests {
         assert!((m.to[2] + 12.7).abs() < 1e-9);
         assert!((m.feed - 254.0).abs() < 1e-9);
         assert_eq!(m.from, [0.0; 3]);
+    }
+
+    /// rs274 gives `G1` alone after `G43 H1` as a feed to its current
+    /// position in the new offset's frame: the machine does not move, so
+    /// it is no plunge; the next real move still counts.
+    #[test]
+    fn a_move_to_where_the_tool_is_after_a_length_offset_goes_nowhere() {
+        let ev = run(&[
+            Canon::StraightTraverse([0.0, 0.0, 5.0, 0.0, 0.0, 0.0]),
+            Canon::UseToolLengthOffset([0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]),
+            Canon::SetFeedRate(10.0),
+            Canon::StraightFeed([0.0, 0.0, 3.0, 0.0, 0.0, 0.0]),
+            Canon::StraightFeed([0.0, 0.0, 3.0, 0.0, 0.0, 0.0]),
+        ]);
+        let m = moves(&ev);
+        assert_eq!(m.len(), 2, "{m:?}");
+        assert_eq!(m[1].to, [0.0, 0.0, 3.0]);
+        assert_eq!(m[1].from, [0.0, 0.0, 5.0]);
     }
 
     #[test]

@@ -25,6 +25,22 @@ struct Parts<'p> {
     comments: Vec<String>,
 }
 
+/// A tool selected in a block that changes no tool (`T2` after `T1 M6`
+/// loads nothing yet): `TOOL DEF 2`, the TNC's preselection. The
+/// selection leaves the tool statements; what is left of them (plane,
+/// speed) still makes a `TOOL CALL`.
+fn preselect(w: &mut Writer<'_>, tool: &mut Vec<&Stmt>) -> Option<String> {
+    if tool.iter().any(|s| matches!(s.kind, K::ToolChange)) {
+        return None;
+    }
+    let at = tool
+        .iter()
+        .position(|s| matches!(s.kind, K::ToolSelect(_)))?;
+    let s = tool.remove(at);
+    let call = super::others::tool_call(w, &[s], None);
+    Some(call.replacen("TOOL CALL", "TOOL DEF", 1))
+}
+
 pub fn block(w: &mut Writer<'_>, out: &mut Out, b: &Block) {
     let start = out.lines.len();
     if let Some(l) = &b.label {
@@ -33,6 +49,9 @@ pub fn block(w: &mut Writer<'_>, out: &mut Out, b: &Block) {
     let mut parts = Parts::default();
     for s in &b.stmts {
         sort(w, out, s, &mut parts);
+    }
+    if let Some(line) = preselect(w, &mut parts.tool) {
+        out.lines.push(line);
     }
     if !parts.tool.is_empty() {
         let line = super::others::tool_call(

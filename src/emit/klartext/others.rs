@@ -65,6 +65,16 @@ pub(super) fn tool_call(w: &mut Writer<'_>, stmts: &[&Stmt], feed: Option<String
     if let Some(f) = feed {
         rest.push_str(&format!(" {f}"));
     }
+    let change = stmts.iter().find(|s| matches!(s.kind, K::ToolChange));
+    let named = stmts.iter().any(|s| matches!(s.kind, K::ToolSelect(_)));
+    if let (Some(c), false) = (change, named) {
+        // `TOOL CALL` with no tool changes nothing on the TNC.
+        w.cannot(
+            c.span,
+            "a tool change whose tool is not known here (selected on another path)",
+            "give the tool in the change block (`T2 M6`)",
+        );
+    }
     line + &rest + &deltas
 }
 

@@ -88,6 +88,11 @@ pub fn tool_def(
             ),
         }
     }
+    // `TOOL DEF 2` alone: the preselection of the next tool (the tool
+    // table holds its sizes), the meaning of a word-address `T2`.
+    if length.is_none() && radius.is_none() {
+        return vec![ctx.stmt(StmtKind::ToolSelect(tool), l, r)];
+    }
     vec![ctx.stmt(
         StmtKind::ToolDef {
             tool,
