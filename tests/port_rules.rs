@@ -205,7 +205,10 @@ fn a_preselected_tool_is_tool_def_and_the_change_names_it() {
     let def2 = lines.iter().position(|l| l.ends_with("TOOL DEF 2"));
     let call2 = lines.iter().position(|l| l.contains("TOOL CALL 2"));
     assert!(def2.is_some() && call2.is_some() && def2 < call2, "{tnc}");
-    assert!(!tnc.lines().any(|l| l.trim_end().ends_with("TOOL CALL")), "{tnc}");
+    assert!(
+        !tnc.lines().any(|l| l.trim_end().ends_with("TOOL CALL")),
+        "{tnc}"
+    );
     let dir = tempfile::tempdir().unwrap();
     let h = dir.path().join("p.h");
     std::fs::write(&h, &tnc).unwrap();

@@ -84,8 +84,7 @@ fn ends_straight_run(k: &StmtKind) -> bool {
         | K::SubReturn { .. }
         | K::ModalMacroCancel { .. }
         | K::ProgramStart { .. }
-        | K::ProgramEnd { .. }
-        | K::CycleRun { .. } => true,
+        | K::ProgramEnd { .. } => true,
         K::Comment { .. }
         | K::Message { .. }
         | K::Tape { .. }
@@ -129,6 +128,7 @@ fn ends_straight_run(k: &StmtKind) -> bool {
         | K::Approach { .. }
         | K::CycleDef { .. }
         | K::CycleLine { .. }
+        | K::CycleRun { .. }
         | K::PatternDef { .. }
         | K::TncFunction { .. }
         | K::Cycle { .. }

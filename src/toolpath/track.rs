@@ -192,7 +192,8 @@ impl Tracker {
             FloodOff => self.coolant.flood = false,
             MistOn => self.coolant.mist = true,
             MistOff => self.coolant.mist = false,
-            StraightTraverse(p) | StraightFeed(p) if self.goes_nowhere(&self.to_work([p[0], p[1], p[2]])) => {}
+            StraightTraverse(p) | StraightFeed(p)
+                if self.goes_nowhere(&self.to_work([p[0], p[1], p[2]])) => {}
             StraightTraverse(p) => {
                 return Some(self.make(MoveKind::Rapid, self.to_work([p[0], p[1], p[2]]), span))
             }
