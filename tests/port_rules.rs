@@ -216,3 +216,34 @@ fn a_preselected_tool_is_tool_def_and_the_change_names_it() {
     let first_g43 = back.lines().find(|l| l.contains("G43")).unwrap_or("");
     assert!(first_g43.contains("H1"), "{back}");
 }
+
+/// A `G1` with no axis word sets the motion mode on a Fanuc or Haas (no
+/// feed needed: nothing moves); rs274 moves to where the tool is and
+/// wants a feed rate ("Cannot do G1 with zero feed rate"). The port
+/// writes such a `G1` for an 840D program, whose power-on mode is G1.
+#[test]
+fn a_bare_g1_sets_the_mode_and_needs_no_feed_except_on_linuxcnc() {
+    let dir = tempfile::tempdir().unwrap();
+    let nc = dir.path().join("g1.nc");
+    std::fs::write(
+        &nc,
+        "%\nO1\nG21 G90\nG1\nG0 X1. Y1. Z5.\nG1 Z-1. F100\nM30\n%\n",
+    )
+    .unwrap();
+    let nc = nc.to_str().unwrap();
+    for d in ["fanuc", "haas"] {
+        let out = cncc(&["check", "--dialect", d, nc]);
+        assert_eq!(out.status.code(), Some(0), "{d}: {}", stderr(&out));
+    }
+    let out = cncc(&["check", "--dialect", "linuxcnc", nc]);
+    assert!(stderr(&out).contains("E0507"), "{}", stderr(&out));
+    let mpf = dir.path().join("p.mpf");
+    std::fs::write(
+        &mpf,
+        "G17 G90 G71\nT1 D1\nM6\nS1000 M3\nG0 X0 Y0 Z5\nG1 Z-1 F100\nX10\nG0 Z5\nM30\n",
+    )
+    .unwrap();
+    for to in ["fanuc", "haas"] {
+        port_verified("siemens840d", to, mpf.to_str().unwrap());
+    }
+}

@@ -179,6 +179,10 @@ pub enum Capability {
     /// there is no change of the tool selected before, so a port gives a
     /// word-address `M6` alone the number of the tool the run selected.
     ChangeNamesTool,
+    /// A `G0`/`G1` with no axis word moves to where the tool is (a feed
+    /// move that needs a feed rate: rs274's "Cannot do G1 with zero feed
+    /// rate"); elsewhere it only sets the motion mode.
+    BareMotionCodeMoves,
     /// An N word may have a fraction, which is dropped: `N4567.789` is N4567
     /// (LinuxCNC, checked with rs274 2.9); elsewhere it is an error.
     FractionalSequenceNumbers,
@@ -288,6 +292,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
         Capability::LengthRegisterNamesTool,
     ),
     ("change-names-tool", Capability::ChangeNamesTool),
+    ("bare-motion-code-moves", Capability::BareMotionCodeMoves),
 ];
 
 impl Capability {

@@ -12,6 +12,7 @@ use super::target::{target, written, Frame};
 use super::{arcs, aux, Interp, Stop};
 use crate::canon::{Canon, Pose};
 use crate::diag::Code;
+use crate::dialect::Capability;
 use crate::ir::{
     Arena, Axes, Block, CannedCycle, CoordShift, CycleKind, DwellUnit, Expr, FeedMode, Motion,
     MotionKind, Stmt, StmtKind, Value,
@@ -224,7 +225,12 @@ fn straight(
     }
     let to = pose6(&it.state, &to);
     // An explicit G0/G1 without axis words moves to where the tool is
-    // (rs274 prints it); an implicit one was dropped by the caller.
+    // where the spec says so (rs274 prints it); elsewhere it only sets
+    // the mode (a Fanuc `G1` alone needs no F). An implicit one was
+    // dropped by the caller.
+    if axes.is_empty() && polar.is_none() && !it.spec.has(Capability::BareMotionCodeMoves) {
+        return Ok(());
+    }
     if kind == MotionKind::Rapid {
         return it.straight_move(MoveKind::Rapid, to);
     }
