@@ -25,6 +25,7 @@
 
 mod builder;
 mod classify;
+mod fast;
 mod finish;
 mod lexer;
 mod split;
@@ -38,6 +39,7 @@ mod tests;
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{Arena, CommentStyle, Expr, Stmt, StmtKind};
 use crate::span::Spanned;
+use crate::syntax::word::fast as word_fast;
 use crate::syntax::{FrontEnd, Item, LineInput, LineSyntax};
 use builder::{Builder, Node};
 use classify::{classify, Classified, Spanned3, Spanner};
@@ -57,11 +59,23 @@ lalrpop_util::lalrpop_mod!(
 pub struct SinumerikFrontEnd {
     /// Declared variable names, upper case.
     declared: HashSet<String>,
+    /// Every line through the lexer and the grammar (tests of the fast path).
+    no_fast_path: bool,
+    /// Item memory handed back by [`FrontEnd::recycle`].
+    spare: Vec<Item>,
 }
 
 impl SinumerikFrontEnd {
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// Every line through the lexer and the grammar (for tests of [`fast`]).
+    pub fn without_fast_path() -> Self {
+        SinumerikFrontEnd {
+            no_fast_path: true,
+            ..Self::default()
+        }
     }
 }
 
@@ -72,6 +86,11 @@ impl FrontEnd for SinumerikFrontEnd {
         exprs: &mut Arena<Expr>,
         diags: &mut Vec<Diagnostic>,
     ) -> Option<LineSyntax> {
+        if !self.no_fast_path && fast::plain_words(input.text, input.spec, &self.declared) {
+            if let Some(line) = word_fast::fast_line_with(input, &mut self.spare) {
+                return Some(line);
+            }
+        }
         let sp = Spanner {
             file: input.file,
             offset: input.offset,
@@ -114,6 +133,13 @@ impl FrontEnd for SinumerikFrontEnd {
         }
         self.declare(&line.items);
         Some(line)
+    }
+
+    fn recycle(&mut self, mut items: Vec<Item>) {
+        if items.capacity() > self.spare.capacity() {
+            items.clear();
+            self.spare = items;
+        }
     }
 }
 
