@@ -161,6 +161,13 @@ impl ProgFrame {
     }
 
     fn inverse(&self) -> Option<[[f64; 3]; 3]> {
+        // The identity (bit for bit, so no zero changes sign) is its own
+        // inverse, as the cofactors below would compute it.
+        const ID: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let bits = |m: &[[f64; 3]; 3]| m.map(|r| r.map(f64::to_bits));
+        if bits(&self.m) == bits(&ID) {
+            return Some(ID);
+        }
         let d = self.det();
         if d.abs() < 1e-12 || !d.is_finite() {
             return None;

@@ -14,68 +14,111 @@
 //! the full way.
 
 use super::split::is_address;
-use super::token::keyword;
+use super::token::KEYWORDS;
 use crate::dialect::DialectSpec;
 use std::collections::HashSet;
 
-/// Whether `text` is plain address words the fast path reads as the
-/// grammar does.
-pub fn plain_words(text: &str, spec: &DialectSpec, declared: &HashSet<String>) -> bool {
-    let mut first = true;
-    let mut any = false;
-    for piece in text.split([' ', '\t', '\r']).filter(|p| !p.is_empty()) {
-        if !plain_word(piece, first, spec, declared) {
-            return false;
-        }
-        first = false;
-        any = true;
-    }
-    any
+/// What the fast path asks per word, computed once per spec and set of
+/// declared names (the spec's names are lists searched one by one).
+#[derive(Debug, Default)]
+pub struct FastTable {
+    /// The spec the table was made for (its address).
+    spec: usize,
+    /// Bit `n`: letter `A + n` is a single-letter address here.
+    letters: u32,
+    /// Names of the form letter + digits (`X1`, `D`) that are keywords,
+    /// functions, cycles, commands or declared variables: a word whose
+    /// identifier is one of them goes the full way.
+    wordlike: HashSet<String>,
 }
 
-fn plain_word(piece: &str, first: bool, spec: &DialectSpec, declared: &HashSet<String>) -> bool {
-    let b = piece.as_bytes();
-    let letter = b[0].to_ascii_uppercase();
-    if !letter.is_ascii_uppercase() || letter == b'L' || letter == b'R' {
-        return false;
+impl FastTable {
+    pub fn new(spec: &DialectSpec, declared: &HashSet<String>) -> FastTable {
+        let mut letters = 0u32;
+        for (n, c) in ('A'..='Z').enumerate() {
+            if is_address(spec, c.encode_utf8(&mut [0u8; 4])) {
+                letters |= 1 << n;
+            }
+        }
+        let names = KEYWORDS.iter().map(|(n, _)| n.to_string());
+        let names = names
+            .chain(spec.functions.iter().map(|f| f.name.to_ascii_uppercase()))
+            .chain(spec.cycles.iter().map(|c| c.name.to_ascii_uppercase()))
+            .chain(spec.commands.iter().map(|c| c.to_ascii_uppercase()))
+            .chain(declared.iter().cloned());
+        let wordlike = names.filter(|n| is_wordlike(n)).collect();
+        FastTable {
+            spec: spec as *const DialectSpec as usize,
+            letters,
+            wordlike,
+        }
     }
-    let rest = &b[1..];
-    let digits_at = usize::from(matches!(rest.first(), Some(b'+' | b'-')));
-    let num = &rest[digits_at..];
-    if num.is_empty()
-        || !num.iter().all(|c| c.is_ascii_digit() || *c == b'.')
-        || !num.iter().any(u8::is_ascii_digit)
-        || num.iter().filter(|c| **c == b'.').count() > 1
-    {
-        return false;
+
+    /// Whether the table was made for `spec`.
+    pub fn is_for(&self, spec: &DialectSpec) -> bool {
+        self.spec == spec as *const DialectSpec as usize
     }
-    if letter == b'N' {
-        return first && digits_at == 0 && num.iter().all(u8::is_ascii_digit);
+
+    /// Whether `text` is plain address words the fast path reads as the
+    /// grammar does.
+    pub fn plain_words(&self, text: &str) -> bool {
+        let mut first = true;
+        let mut any = false;
+        for piece in text.split([' ', '\t', '\r']).filter(|p| !p.is_empty()) {
+            if !self.plain_word(piece, first) {
+                return false;
+            }
+            first = false;
+            any = true;
+        }
+        any
     }
-    let mut buf = [0u8; 4];
-    if !is_address(spec, char::from(letter).encode_utf8(&mut buf)) {
-        return false;
+
+    fn plain_word(&self, piece: &str, first: bool) -> bool {
+        let b = piece.as_bytes();
+        let letter = b[0].to_ascii_uppercase();
+        if !letter.is_ascii_uppercase() || letter == b'L' || letter == b'R' {
+            return false;
+        }
+        let rest = &b[1..];
+        let digits_at = usize::from(matches!(rest.first(), Some(b'+' | b'-')));
+        let num = &rest[digits_at..];
+        if num.is_empty()
+            || !num.iter().all(|c| c.is_ascii_digit() || *c == b'.')
+            || !num.iter().any(u8::is_ascii_digit)
+            || num.iter().filter(|c| **c == b'.').count() > 1
+        {
+            return false;
+        }
+        if letter == b'N' {
+            return first && digits_at == 0 && num.iter().all(u8::is_ascii_digit);
+        }
+        if self.letters & (1 << (letter - b'A')) == 0 {
+            return false;
+        }
+        if self.wordlike.is_empty() {
+            return true;
+        }
+        // The identifier the lexer reads: the letter and the digits after it.
+        let int_len = if digits_at == 0 {
+            num.iter().take_while(|c| c.is_ascii_digit()).count()
+        } else {
+            0
+        };
+        let mut ident = [0u8; 24];
+        if int_len + 1 > ident.len() {
+            return false;
+        }
+        ident[0] = letter;
+        ident[1..=int_len].copy_from_slice(&num[..int_len]);
+        std::str::from_utf8(&ident[..=int_len]).is_ok_and(|n| !self.wordlike.contains(n))
     }
-    // The identifier the lexer reads: the letter and the digits after it.
-    let int_len = if digits_at == 0 {
-        num.iter().take_while(|c| c.is_ascii_digit()).count()
-    } else {
-        0
-    };
-    let mut ident = [0u8; 24];
-    if int_len + 1 > ident.len() {
-        return false;
-    }
-    ident[0] = letter;
-    ident[1..=int_len].copy_from_slice(&num[..int_len]);
-    let Ok(name) = std::str::from_utf8(&ident[..=int_len]) else {
-        return false;
-    };
-    keyword(name).is_none()
-        && !declared.contains(name)
-        && spec.function(name).is_none()
-        && spec.cycle(name).is_none()
-        && !spec.is_command(name)
+}
+
+/// A letter and digits only (`X1`, `D`).
+fn is_wordlike(name: &str) -> bool {
+    let b = name.as_bytes();
+    !b.is_empty() && b[0].is_ascii_alphabetic() && b[1..].iter().all(u8::is_ascii_digit)
 }
 
 #[cfg(test)]
@@ -109,7 +152,7 @@ mod tests {
             let b = slow.parse_line(&input, &mut eb, &mut db);
             assert_eq!(a, b, "{line:?}");
             assert_eq!(format!("{da:?}"), format!("{db:?}"), "{line:?}");
-            taken += usize::from(super::plain_words(line, &spec, &fast.declared));
+            taken += usize::from(super::FastTable::new(&spec, &fast.declared).plain_words(line));
         }
         taken
     }

@@ -63,6 +63,8 @@ pub struct SinumerikFrontEnd {
     no_fast_path: bool,
     /// Item memory handed back by [`FrontEnd::recycle`].
     spare: Vec<Item>,
+    /// The fast path's table for the current spec and declared names.
+    table: Option<fast::FastTable>,
 }
 
 impl SinumerikFrontEnd {
@@ -86,9 +88,15 @@ impl FrontEnd for SinumerikFrontEnd {
         exprs: &mut Arena<Expr>,
         diags: &mut Vec<Diagnostic>,
     ) -> Option<LineSyntax> {
-        if !self.no_fast_path && fast::plain_words(input.text, input.spec, &self.declared) {
-            if let Some(line) = word_fast::fast_line_with(input, &mut self.spare) {
-                return Some(line);
+        if !self.no_fast_path {
+            if !self.table.as_ref().is_some_and(|t| t.is_for(input.spec)) {
+                self.table = Some(fast::FastTable::new(input.spec, &self.declared));
+            }
+            let plain = self.table.as_ref().is_some_and(|t| t.plain_words(input.text));
+            if plain {
+                if let Some(line) = word_fast::fast_line_with(input, &mut self.spare) {
+                    return Some(line);
+                }
             }
         }
         let sp = Spanner {
@@ -230,6 +238,7 @@ impl SinumerikFrontEnd {
             };
             self.declared
                 .extend(vars.iter().map(|v| v.name.to_ascii_uppercase()));
+            self.table = None;
         }
     }
 }
