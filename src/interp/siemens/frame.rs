@@ -164,8 +164,13 @@ impl ProgFrame {
         // The identity (bit for bit, so no zero changes sign) is its own
         // inverse, as the cofactors below would compute it.
         const ID: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-        let bits = |m: &[[f64; 3]; 3]| m.map(|r| r.map(f64::to_bits));
-        if bits(&self.m) == bits(&ID) {
+        let mut identity = true;
+        for (row, id_row) in self.m.iter().zip(&ID) {
+            for (v, id) in row.iter().zip(id_row) {
+                identity &= v.to_bits() == id.to_bits();
+            }
+        }
+        if identity {
             return Some(ID);
         }
         let d = self.det();
