@@ -204,6 +204,37 @@ pub fn read_program(text: &str, file: FileId, spec: &DialectSpec) -> (Program, V
     (program, diags)
 }
 
+/// [`read_program`] block by block: each block is handed to `on_block`
+/// with its expressions and dropped, so memory does not grow with the
+/// program. Gives the same blocks and diagnostics.
+pub fn read_blocks(
+    text: &str,
+    file: FileId,
+    spec: &DialectSpec,
+    mut on_block: impl FnMut(&Block, &Arena<Expr>),
+) -> Vec<Diagnostic> {
+    let mut exprs = Arena::new();
+    let mut diags = Vec::new();
+    let mut reader = Reader::new(spec, file);
+    let mut first_cr = None;
+    for (line, offset) in lines(text) {
+        let end = offset as usize + line.len();
+        if first_cr.is_none()
+            && text.as_bytes().get(end) == Some(&b'\r')
+            && text.as_bytes().get(end + 1) != Some(&b'\n')
+        {
+            first_cr = Some(end as u64);
+        }
+        if let Some(b) = reader.line(line, offset, &mut exprs, &mut diags) {
+            on_block(&b, &exprs);
+        }
+        exprs.clear();
+    }
+    diags.extend(reader.finish());
+    diags.extend(cr_note(file, first_cr));
+    diags
+}
+
 pub use crate::encoding::decode;
 
 /// What a streamed check found.

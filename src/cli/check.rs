@@ -139,7 +139,10 @@ fn check_file(
     }
     it.start();
     let mut stream = StreamRun::default();
+    // Whether the file may be a subprogram, known without reading it whole.
+    let mut top_level = crate::interp::fragment::Detector::default();
     let result = check_stream(input, id, &spec, |b, e| {
+        top_level.block(b);
         if let Some(l) = &linter {
             l.borrow_mut().read_block(b);
         }
@@ -181,7 +184,7 @@ fn check_file(
         // (a feed from the caller; only then is it read whole).
         let fragment = match (program, fragment) {
             (Some(p), Some(f)) => Some((p, f)),
-            (None, None) if run.iter().any(Diagnostic::is_error) => {
+            (None, None) if run.iter().any(Diagnostic::is_error) && top_level.is_fragment() => {
                 let p = read_whole(path, id, &spec)?;
                 crate::interp::fragment::detect(&p).map(|f| (p, f))
             }

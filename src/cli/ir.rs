@@ -2,8 +2,8 @@
 
 use crate::cli::args::Format;
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
-use crate::driver::read_program;
-use crate::ir::print::print_program;
+use crate::driver::read_blocks;
+use crate::ir::print::print_block;
 use std::path::Path;
 
 pub fn run(
@@ -12,16 +12,30 @@ pub fn run(
     dialect: Option<&str>,
     format: Format,
 ) -> Result<i32, Failure> {
-    let (id, text) = ctx.add_file(path)?;
-    let (spec, reason) = ctx.spec_for(dialect, path, &text)?;
+    // The text is kept once, in the file map (for the diagnostics).
+    let text = crate::cli::context::read_text_limited(path, crate::cli::context::MAX_INPUT)?;
+    let id = ctx.files.add(path.display().to_string(), text);
+    let text = ctx.files.text(id);
+    let (spec, reason) = ctx.spec_for(dialect, path, text)?;
     if let Some(r) = reason {
         report_detection(path, &spec, &r);
     }
-    let (program, diags) = read_program(&text, id, &spec);
+    // Two reads, neither holding the program: the first finds the
+    // diagnostics (nothing is printed when one is an error), the second
+    // prints each block as it is read.
+    let diags = read_blocks(text, id, &spec, |_, _| {});
     ctx.print(&diags, format);
     if diags.iter().any(|d| d.is_error()) {
         return Ok(EXIT_INPUT_ERRORS);
     }
-    crate::cli::output::emit_output(None, &print_program(&program))?;
+    crate::cli::output::emit_output_with(None, |out| {
+        let mut result = Ok(());
+        read_blocks(text, id, &spec, |b, exprs| {
+            if result.is_ok() {
+                result = writeln!(out, "{}", print_block(b, exprs));
+            }
+        });
+        result
+    })?;
     Ok(EXIT_OK)
 }

@@ -5,7 +5,8 @@
 use super::meaning::Meaning;
 use crate::ir::{Decimal, DwellUnit, Func};
 use crate::span::Span;
-use std::collections::{BTreeSet, HashMap};
+use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 
 /// The syntax family: which grammar reads the dialect.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -505,7 +506,7 @@ pub struct DialectSpec {
     /// Keyword commands with no neutral meaning (Siemens `SOFT`, `FFWON`).
     pub commands: Vec<String>,
     pub variables: Vec<VarRange>,
-    pub capabilities: BTreeSet<Capability>,
+    pub capabilities: Capabilities,
     /// What comments and messages may hold (`<text>`).
     pub text: super::text::TextRules,
     /// The letter for canned-cycle repeats (`K` or `L`).
@@ -517,8 +518,124 @@ pub struct DialectSpec {
 
 #[derive(Clone, Debug, Default)]
 struct CodeIndex {
-    by_code: HashMap<(char, Decimal), usize>,
-    by_meaning: HashMap<Meaning, usize>,
+    by_code: HashMap<(char, Decimal), usize, BuildHasherDefault<Fx>>,
+    by_meaning: HashMap<Meaning, usize, BuildHasherDefault<Fx>>,
+}
+
+/// A small multiplicative hasher for the code index (looked up per word;
+/// the keys come from the spec, so no flooding to guard against).
+#[derive(Clone, Copy, Default)]
+struct Fx(u64);
+
+impl Fx {
+    fn add(&mut self, w: u64) {
+        self.0 = (self.0.rotate_left(5) ^ w).wrapping_mul(0x517c_c1b7_2722_0a95);
+    }
+}
+
+impl Hasher for Fx {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for chunk in bytes.chunks(8) {
+            let mut b = [0u8; 8];
+            b[..chunk.len()].copy_from_slice(chunk);
+            self.add(u64::from_le_bytes(b));
+        }
+    }
+    fn write_u8(&mut self, i: u8) {
+        self.add(u64::from(i));
+    }
+    fn write_u16(&mut self, i: u16) {
+        self.add(u64::from(i));
+    }
+    fn write_u32(&mut self, i: u32) {
+        self.add(u64::from(i));
+    }
+    fn write_u64(&mut self, i: u64) {
+        self.add(i);
+    }
+    fn write_usize(&mut self, i: usize) {
+        self.add(i as u64);
+    }
+}
+
+/// A set of capabilities as bits (asked per statement): a set with the
+/// `BTreeSet` calls the loader and the tests use, iterated in the enum's
+/// order.
+#[derive(Clone, Copy, Default, PartialEq, Eq, Hash)]
+pub struct Capabilities(u128);
+
+impl Capabilities {
+    fn bit(c: Capability) -> u128 {
+        1u128 << (c as u32)
+    }
+    pub fn contains(&self, c: &Capability) -> bool {
+        self.0 & Self::bit(*c) != 0
+    }
+    /// Adds `c`; whether it was absent.
+    pub fn insert(&mut self, c: Capability) -> bool {
+        let absent = !self.contains(&c);
+        self.0 |= Self::bit(c);
+        absent
+    }
+    /// Removes `c`; whether it was present.
+    pub fn remove(&mut self, c: &Capability) -> bool {
+        let present = self.contains(c);
+        self.0 &= !Self::bit(*c);
+        present
+    }
+    pub fn retain(&mut self, mut keep: impl FnMut(&Capability) -> bool) {
+        for c in self.iter().collect::<Vec<_>>() {
+            if !keep(&c) {
+                self.remove(&c);
+            }
+        }
+    }
+    pub fn len(&self) -> usize {
+        self.0.count_ones() as usize
+    }
+    pub fn is_empty(&self) -> bool {
+        self.0 == 0
+    }
+    /// The capabilities in the enum's order (every one has a name in
+    /// [`CAPABILITIES`]).
+    pub fn iter(&self) -> impl Iterator<Item = Capability> + '_ {
+        let mut all: Vec<Capability> = CAPABILITIES.iter().map(|(_, c)| *c).collect();
+        all.sort_by_key(|c| *c as u32);
+        all.into_iter().filter(|c| self.contains(c))
+    }
+}
+
+impl std::fmt::Debug for Capabilities {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_set().entries(self.iter()).finish()
+    }
+}
+
+impl FromIterator<Capability> for Capabilities {
+    fn from_iter<I: IntoIterator<Item = Capability>>(it: I) -> Self {
+        let mut s = Capabilities::default();
+        for c in it {
+            s.insert(c);
+        }
+        s
+    }
+}
+
+impl<const N: usize> From<[Capability; N]> for Capabilities {
+    fn from(a: [Capability; N]) -> Self {
+        a.into_iter().collect()
+    }
+}
+
+impl Extend<Capability> for Capabilities {
+    fn extend<I: IntoIterator<Item = Capability>>(&mut self, it: I) {
+        for c in it {
+            self.insert(c);
+        }
+    }
 }
 
 impl DialectSpec {
@@ -540,7 +657,7 @@ impl DialectSpec {
             functions: Vec::new(),
             commands: Vec::new(),
             variables: Vec::new(),
-            capabilities: BTreeSet::new(),
+            capabilities: Capabilities::default(),
             text: Default::default(),
             repeat_letter: 'K',
             doc: String::new(),

@@ -11,7 +11,7 @@ use super::flow::{ProgramLoader, Walker};
 use super::{Interp, Options, Sink, Stop};
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
-use crate::ir::{Program, StmtKind, StopKind};
+use crate::ir::{Block, Program, StmtKind, StopKind};
 use std::rc::Rc;
 
 /// What kind of file that is not a main program.
@@ -42,18 +42,49 @@ pub fn detect(p: &Program) -> Option<Fragment> {
             top.statement(i, &s.kind);
         }
     }
-    if top.ends {
-        return None;
+    top.fragment()
+}
+
+/// [`detect`] block by block, for a program read as a stream: when it says
+/// the file is a main program, the file need not be read whole to know.
+#[derive(Default)]
+pub struct Detector {
+    top: TopLevel,
+    blocks: usize,
+}
+
+impl Detector {
+    pub fn block(&mut self, b: &Block) {
+        for s in &b.stmts {
+            self.top.statement(self.blocks, &s.kind);
+        }
+        self.blocks += 1;
     }
-    if top.returns || top.open > 0 {
-        // A Siemens PROC is a definition that is never closed: the file is
-        // its body.
-        return Some(Fragment::Called);
+
+    /// Whether [`detect`] on the whole program would find a fragment.
+    pub fn is_fragment(&self) -> bool {
+        self.top.ends_as_fragment()
     }
-    (!top.subs.is_empty() && !top.runs_something).then_some(Fragment::Library(top.subs))
 }
 
 impl TopLevel {
+    fn fragment(self) -> Option<Fragment> {
+        if !self.ends_as_fragment() {
+            return None;
+        }
+        if self.returns || self.open > 0 {
+            // A Siemens PROC is a definition that is never closed: the
+            // file is its body.
+            return Some(Fragment::Called);
+        }
+        Some(Fragment::Library(self.subs))
+    }
+
+    fn ends_as_fragment(&self) -> bool {
+        !self.ends
+            && (self.returns || self.open > 0 || (!self.subs.is_empty() && !self.runs_something))
+    }
+
     fn statement(&mut self, block: usize, kind: &StmtKind) {
         match kind {
             StmtKind::SubStart { .. } => {
@@ -128,7 +159,12 @@ mod tests {
         let spec = crate::dialect::builtin::builtin(dialect).unwrap();
         let (p, d) = crate::driver::read_program(text, crate::span::FileId(0), &spec);
         assert!(d.iter().all(|d| !d.is_error()), "{d:?}");
-        detect(&p)
+        // The block-by-block detector says the same.
+        let mut streamed = Detector::default();
+        p.blocks.iter().for_each(|b| streamed.block(b));
+        let found = detect(&p);
+        assert_eq!(streamed.is_fragment(), found.is_some(), "{text}");
+        found
     }
 
     #[test]

@@ -5,6 +5,7 @@
 
 use super::expr::{BinaryOp, DimMode, ExprId, ExprKind, UnaryOp, Value, Var};
 use super::program::Program;
+use super::{Arena, Expr};
 use super::stmt::*;
 use crate::span::Span;
 use std::fmt::Write;
@@ -25,7 +26,10 @@ pub fn print_program(p: &Program) -> String {
 }
 
 pub fn print_program_with(p: &Program, opts: PrintOptions) -> String {
-    let pr = Printer { p, opts };
+    let pr = Printer {
+        exprs: &p.exprs,
+        opts,
+    };
     let mut out = String::new();
     for b in &p.blocks {
         out.push_str(&pr.block(b));
@@ -34,8 +38,18 @@ pub fn print_program_with(p: &Program, opts: PrintOptions) -> String {
     out
 }
 
+/// One block as [`print_program`] prints it (without the line end), its
+/// expressions in `exprs`: for a program printed as it is read.
+pub fn print_block(b: &Block, exprs: &Arena<Expr>) -> String {
+    let pr = Printer {
+        exprs,
+        opts: PrintOptions::default(),
+    };
+    pr.block(b)
+}
+
 struct Printer<'a> {
-    p: &'a Program,
+    exprs: &'a Arena<Expr>,
     opts: PrintOptions,
 }
 
@@ -100,7 +114,7 @@ impl Printer<'_> {
     }
 
     fn expr(&self, id: ExprId) -> String {
-        let e = &self.p.exprs[id];
+        let e = &self.exprs[id];
         match &e.kind {
             ExprKind::Number(d) => self.num(*d),
             ExprKind::Str(s) => format!("{s:?}"),
@@ -141,7 +155,7 @@ impl Printer<'_> {
 
     fn operand(&self, id: ExprId, parent: u8, right: bool) -> String {
         let s = self.expr(id);
-        match &self.p.exprs[id].kind {
+        match &self.exprs[id].kind {
             ExprKind::Binary(op, ..)
                 if op.precedence() < parent || (right && op.precedence() == parent) =>
             {
@@ -174,7 +188,7 @@ impl Printer<'_> {
     fn value(&self, v: &Value) -> String {
         match v {
             Value::Number(d) => self.num(*d),
-            Value::Expr(id) => match &self.p.exprs[*id].kind {
+            Value::Expr(id) => match &self.exprs[*id].kind {
                 ExprKind::Number(_) | ExprKind::Var(_) => self.expr(*id),
                 _ => format!("[{}]", self.expr(*id)),
             },

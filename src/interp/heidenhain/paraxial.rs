@@ -3,18 +3,19 @@
 //! (with the TOOL CALL's DR), along the direction it moves. The front
 //! end has checked that the block moves one axis without RL/RR.
 
+use std::borrow::Cow;
 use super::super::target::{target, Frame};
 use super::super::{siemens, Interp, Stop};
 use crate::ir::{Arena, Block, Expr, Motion, StmtKind, TncFunctionKind};
 
 /// The move with its end point moved by the tool radius, when the block
 /// says `R+`/`R-`.
-pub fn apply(
+pub fn apply<'m>(
     it: &mut Interp<'_, '_>,
     block: &Block,
-    mut m: Motion,
+    mut m: Cow<'m, Motion>,
     exprs: &Arena<Expr>,
-) -> Result<Motion, Stop> {
+) -> Result<Cow<'m, Motion>, Stop> {
     let Some(lengthen) = block.stmts.iter().find_map(|s| match &s.kind {
         StmtKind::TncFunction(f) => match f.kind {
             TncFunctionKind::Paraxial(l) => Some(l),
@@ -47,7 +48,7 @@ pub fn apply(
     let end = to[i] + sign * r * delta.signum();
     let span = it.span;
     let coord = super::paths::abs_coord(end, it, span);
-    if let Some(slot) = m.target.slot_mut(letter) {
+    if let Some(slot) = m.to_mut().target.slot_mut(letter) {
         *slot = Some(coord);
     }
     Ok(m)

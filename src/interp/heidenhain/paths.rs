@@ -1,6 +1,7 @@
 //! Klartext path blocks: the pole (`CC`), `C`/`CP` round it, polar `LP`/
 //! `CTP`; straight feeds are held for a following corner ([`super::corner`]).
 
+use std::borrow::Cow;
 use super::super::target::{target, Frame};
 use super::super::{exec::phase, motion as core_motion, siemens, Interp, Stop};
 use super::corner::{corner_join, send_held, send_line, Held};
@@ -54,12 +55,26 @@ fn the_pole(it: &Interp<'_, '_>) -> Result<[f64; 3], Stop> {
 
 /// Rewrites a Klartext move as the core runs it: polar → cartesian end
 /// point, `C`/`CP` → an arc with its centre (absolute) at the pole.
-fn rewrite(it: &mut Interp<'_, '_>, m: &Motion, exprs: &Arena<Expr>) -> Result<Motion, Stop> {
+/// The move with polar words and a pole-centred arc made Cartesian; the
+/// move itself (no copy) when it has neither.
+fn rewrite<'m>(
+    it: &mut Interp<'_, '_>,
+    m: &'m Motion,
+    exprs: &Arena<Expr>,
+) -> Result<Cow<'m, Motion>, Stop> {
     let (a, b, _) = super::super::host::plane_axes(it.state.plane);
+    let polar = m.polar_radius.is_some() || m.polar_angle.is_some();
+    let pole_arc = matches!(m.kind, MotionKind::Arc(_))
+        && m.arc.radius.is_none()
+        && m.arc.i.is_none()
+        && m.arc.j.is_none()
+        && m.arc.k.is_none();
+    if !polar && !pole_arc {
+        return Ok(Cow::Borrowed(m));
+    }
     let mut m2 = m.clone();
     let letters = ['X', 'Y', 'Z'];
     let span = it.span;
-    let polar = m.polar_radius.is_some() || m.polar_angle.is_some();
     if polar {
         let p = the_pole(it)?;
         let cur = siemens::from_base(it, [it.state.pos[0], it.state.pos[1], it.state.pos[2]]);
@@ -107,7 +122,7 @@ fn rewrite(it: &mut Interp<'_, '_>, m: &Motion, exprs: &Arena<Expr>) -> Result<M
             }
         }
     }
-    Ok(m2)
+    Ok(Cow::Owned(m2))
 }
 
 /// Statements that act after the block's move (a held line must go first).
@@ -211,9 +226,17 @@ pub fn motion(
             "CT/CTP has no path element before it to be tangent to",
         ));
     }
-    let s2 = Stmt::new(StmtKind::Motion(Box::new(m2)), s.span);
-    core_motion::exec(it, &s2, block, exprs)?;
-    siemens::after_motion(it, &s2, block, exprs)?;
+    // Unchanged, the move is the statement itself.
+    let owned;
+    let s2 = match m2 {
+        Cow::Borrowed(_) => s,
+        Cow::Owned(m2) => {
+            owned = Stmt::new(StmtKind::Motion(Box::new(m2)), s.span);
+            &owned
+        }
+    };
+    core_motion::exec(it, s2, block, exprs)?;
+    siemens::after_motion(it, s2, block, exprs)?;
     after(it, s, block, exprs)
 }
 

@@ -161,6 +161,18 @@ impl ProgFrame {
     }
 
     fn inverse(&self) -> Option<[[f64; 3]; 3]> {
+        // The identity (bit for bit, so no zero changes sign) is its own
+        // inverse, as the cofactors below would compute it.
+        const ID: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let mut identity = true;
+        for (row, id_row) in self.m.iter().zip(&ID) {
+            for (v, id) in row.iter().zip(id_row) {
+                identity &= v.to_bits() == id.to_bits();
+            }
+        }
+        if identity {
+            return Some(ID);
+        }
         let d = self.det();
         if d.abs() < 1e-12 || !d.is_finite() {
             return None;

@@ -25,6 +25,7 @@
 
 mod builder;
 mod classify;
+mod fast;
 mod finish;
 mod lexer;
 mod split;
@@ -38,6 +39,7 @@ mod tests;
 use crate::diag::{Code, Diagnostic};
 use crate::ir::{Arena, CommentStyle, Expr, Stmt, StmtKind};
 use crate::span::Spanned;
+use crate::syntax::word::fast as word_fast;
 use crate::syntax::{FrontEnd, Item, LineInput, LineSyntax};
 use builder::{Builder, Node};
 use classify::{classify, Classified, Spanned3, Spanner};
@@ -57,11 +59,25 @@ lalrpop_util::lalrpop_mod!(
 pub struct SinumerikFrontEnd {
     /// Declared variable names, upper case.
     declared: HashSet<String>,
+    /// Every line through the lexer and the grammar (tests of the fast path).
+    no_fast_path: bool,
+    /// Item memory handed back by [`FrontEnd::recycle`].
+    spare: Vec<Item>,
+    /// The fast path's table for the current spec and declared names.
+    table: Option<fast::FastTable>,
 }
 
 impl SinumerikFrontEnd {
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// Every line through the lexer and the grammar (for tests of [`fast`]).
+    pub fn without_fast_path() -> Self {
+        SinumerikFrontEnd {
+            no_fast_path: true,
+            ..Self::default()
+        }
     }
 }
 
@@ -72,6 +88,17 @@ impl FrontEnd for SinumerikFrontEnd {
         exprs: &mut Arena<Expr>,
         diags: &mut Vec<Diagnostic>,
     ) -> Option<LineSyntax> {
+        if !self.no_fast_path {
+            if !self.table.as_ref().is_some_and(|t| t.is_for(input.spec)) {
+                self.table = Some(fast::FastTable::new(input.spec, &self.declared));
+            }
+            let plain = self.table.as_ref().is_some_and(|t| t.plain_words(input.text));
+            if plain {
+                if let Some(line) = word_fast::fast_line_with(input, &mut self.spare) {
+                    return Some(line);
+                }
+            }
+        }
         let sp = Spanner {
             file: input.file,
             offset: input.offset,
@@ -114,6 +141,13 @@ impl FrontEnd for SinumerikFrontEnd {
         }
         self.declare(&line.items);
         Some(line)
+    }
+
+    fn recycle(&mut self, mut items: Vec<Item>) {
+        if items.capacity() > self.spare.capacity() {
+            items.clear();
+            self.spare = items;
+        }
     }
 }
 
@@ -204,6 +238,7 @@ impl SinumerikFrontEnd {
             };
             self.declared
                 .extend(vars.iter().map(|v| v.name.to_ascii_uppercase()));
+            self.table = None;
         }
     }
 }
