@@ -125,6 +125,21 @@ pub const RULES: &[Rule] = &[
         default: true,
         applies: always,
     },
+    Rule {
+        code: Code::LintSpeedForTool,
+        default: true,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintFeedForTool,
+        default: true,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintOtherUnit,
+        default: true,
+        applies: always,
+    },
 ];
 
 /// The rule of a code, if it is a lint code.
@@ -238,7 +253,7 @@ impl Linter {
             self.ref_return = Some(step.block.span);
         }
         self.last_z_mm = step.state.pos[2];
-        self.last_spindle = step.state.spindle;
+        self.last_values = super::values::CutValues::of(step.state);
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -258,6 +273,7 @@ impl Linter {
                 self.length_pending = Some(span);
                 self.after_change = Some(span);
                 self.coolant_reported = false;
+                self.rates = Default::default();
                 self.forget_cuts();
             }
             Canon::UseToolLengthOffset(_) => {
@@ -314,7 +330,20 @@ impl Linter {
             }
         }
         if is_feed(call) {
-            self.spindle_stopped(step, block, span);
+            // A move an earlier block made and a later one let out (a held
+            // corner) ran with the feed, speed and spindle as that earlier
+            // block left them.
+            let inside =
+                span.file == block.file && block.start <= span.start && span.start <= block.end;
+            let values = if inside {
+                super::values::CutValues::of(step.state)
+            } else {
+                self.last_values
+            };
+            self.spindle_stopped(step, block, if inside { block } else { span }, values);
+            if let Some(p) = pose_of(call) {
+                self.unit_values(block, values, [p[0], p[1], p[2]]);
+            }
             if let (Some(z), Some(p)) = (z_mm, pose) {
                 if step.state.plane == CanonPlane::XY {
                     self.min_cut_mm = Some(self.min_cut_mm.map_or(z, |m: f64| m.min(z)));
@@ -338,24 +367,25 @@ impl Linter {
         }
     }
 
-    fn spindle_stopped(&mut self, step: &Step<'_>, block: Span, call: Span) {
-        // A move an earlier block made and a later one let out (a held
-        // corner) ran with the spindle as that earlier block left it.
-        let inside =
-            call.file == block.file && block.start <= call.start && call.start <= block.end;
-        let spindle = if inside {
-            step.state.spindle
-        } else {
-            self.last_spindle
-        };
+    /// W0701 (and W0715..W0718) at a feed move; `at` is its block, or the
+    /// move itself where an earlier block made it.
+    fn spindle_stopped(
+        &mut self,
+        step: &Step<'_>,
+        block: Span,
+        at: Span,
+        values: super::values::CutValues,
+    ) {
+        let spindle = values.spindle;
         self.speed_and_coolant(step, block, spindle);
+        self.cut_rates(step, at, values);
         if spindle != SpindleDir::Stopped || self.spindle_reported {
             return;
         }
         self.spindle_reported = true;
         self.report(
             Diagnostic::new(Code::LintFeedSpindleStopped, "cutting move while the spindle is stopped")
-                .primary(if inside { block } else { call }, "feed move with no M3/M4 in force")
+                .primary(at, "feed move with no M3/M4 in force")
                 .help("start the spindle (S.. M3) before the first cutting move of each tool; later moves of this stretch are not reported"),
         );
     }
