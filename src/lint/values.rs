@@ -5,6 +5,7 @@
 
 use super::rules::fmt;
 use super::{Linter, RunEnd};
+use crate::canon::CanonPlane;
 use crate::diag::{Code, Diagnostic};
 use crate::interp::host::SpindleDir;
 use crate::interp::watch::Step;
@@ -35,6 +36,7 @@ pub(super) struct CutValues {
     pub units: LengthUnit,
     pub css: bool,
     pub spindle: SpindleDir,
+    pub plane: CanonPlane,
 }
 
 impl CutValues {
@@ -46,6 +48,7 @@ impl CutValues {
             units: st.units,
             css: st.css_max != 0.0,
             spindle: st.spindle,
+            plane: st.plane,
         }
     }
 
@@ -66,6 +69,7 @@ impl Default for CutValues {
             units: LengthUnit::Mm,
             css: false,
             spindle: SpindleDir::Stopped,
+            plane: CanonPlane::XY,
         }
     }
 }
