@@ -87,6 +87,8 @@ pub struct Linter {
     last_absolute: bool,
     rates: values::RateReported,
     units: values::UnitSurvey,
+    /// Address letters the spec gives the role `length-offset` (H).
+    length_letters: Vec<char>,
 }
 
 /// How a run ended, as `check` saw it.
@@ -141,6 +143,12 @@ impl Linter {
             last_absolute: true,
             rates: Default::default(),
             units: Default::default(),
+            length_letters: spec
+                .addresses
+                .iter()
+                .filter(|a| a.role == "length-offset")
+                .map(|a| a.letter)
+                .collect(),
         }
     }
 

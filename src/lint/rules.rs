@@ -220,12 +220,13 @@ impl Linter {
         if cycle_ran {
             self.cycle(step, scale);
         }
-        // `H..` alone while G43 is in force changes the offset register
+        // A length register (`H..`, the spec's `length-offset` address)
+        // alone while G43 is in force changes the offset register
         // on Fanuc-like controls [?: G43 kept through M6 by the machine's
         // macro]: the new tool's length is active for this block's moves.
         if step.state.length_tool.is_some()
             && has(step, |k| {
-                matches!(k, StmtKind::OffsetRegister { letter: 'H', .. })
+                matches!(k, StmtKind::OffsetRegister { letter, .. } if self.length_letters.contains(letter))
             })
         {
             self.length_pending = None;
