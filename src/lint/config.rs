@@ -249,8 +249,16 @@ fn limits(t: &LintTable, cfg: &mut LintConfig) -> Result<(), String> {
     };
     if let Some(s) = &t.speed_for_tool {
         let w = "[lint.speed-absurd-for-tool]";
-        set(s.max_surface_speed, &mut cfg.max_surface_speed, &format!("{w} max-surface-speed"))?;
-        set(s.min_surface_speed, &mut cfg.min_surface_speed, &format!("{w} min-surface-speed"))?;
+        set(
+            s.max_surface_speed,
+            &mut cfg.max_surface_speed,
+            &format!("{w} max-surface-speed"),
+        )?;
+        set(
+            s.min_surface_speed,
+            &mut cfg.min_surface_speed,
+            &format!("{w} min-surface-speed"),
+        )?;
     }
     if let Some(f) = &t.feed_for_tool {
         let w = "[lint.feed-absurd-for-tool] max-feed-per-rev";
@@ -258,10 +266,26 @@ fn limits(t: &LintTable, cfg: &mut LintConfig) -> Result<(), String> {
     }
     if let Some(u) = &t.other_unit {
         let w = "[lint.values-look-like-other-unit]";
-        set(u.inch_max_z, &mut cfg.inch_max_z, &format!("{w} inch-max-z"))?;
-        set(u.inch_max_xy, &mut cfg.inch_max_xy, &format!("{w} inch-max-xy"))?;
-        set(u.metric_max_feed, &mut cfg.metric_max_feed, &format!("{w} metric-max-feed"))?;
-        set(u.metric_max_size, &mut cfg.metric_max_size, &format!("{w} metric-max-size"))?;
+        set(
+            u.inch_max_z,
+            &mut cfg.inch_max_z,
+            &format!("{w} inch-max-z"),
+        )?;
+        set(
+            u.inch_max_xy,
+            &mut cfg.inch_max_xy,
+            &format!("{w} inch-max-xy"),
+        )?;
+        set(
+            u.metric_max_feed,
+            &mut cfg.metric_max_feed,
+            &format!("{w} metric-max-feed"),
+        )?;
+        set(
+            u.metric_max_size,
+            &mut cfg.metric_max_size,
+            &format!("{w} metric-max-size"),
+        )?;
     }
     Ok(())
 }
@@ -387,7 +411,10 @@ mod tests {
             "[lint.speed-absurd-for-tool]\nmax-surface-speed = -3\n",
             "[lint.values-look-like-other-unit]\ninch-max-q = 3\n",
         ] {
-            assert!(LintConfig::from_toml(bad, &CliSelect::default()).is_err(), "{bad}");
+            assert!(
+                LintConfig::from_toml(bad, &CliSelect::default()).is_err(),
+                "{bad}"
+            );
         }
     }
 }

@@ -277,7 +277,9 @@ impl Linter {
                 .primary(first, "first move, in whatever units the control is in")
                 .help("set the units at the top (G20/G21, G70/G71, MM/INCH)");
             if let Some(what) = looks_inch {
-                d.notes.push(format!("{what}: it is right only on a control left in inch"));
+                d.notes.push(format!(
+                    "{what}: it is right only on a control left in inch"
+                ));
             }
             self.report(d);
         }

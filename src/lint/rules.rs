@@ -225,9 +225,10 @@ impl Linter {
         // on Fanuc-like controls [?: G43 kept through M6 by the machine's
         // macro]: the new tool's length is active for this block's moves.
         if step.state.length_tool.is_some()
-            && has(step, |k| {
-                matches!(k, StmtKind::OffsetRegister { letter, .. } if self.length_letters.contains(letter))
-            })
+            && has(
+                step,
+                |k| matches!(k, StmtKind::OffsetRegister { letter, .. } if self.length_letters.contains(letter)),
+            )
         {
             self.length_pending = None;
         }
@@ -308,7 +309,8 @@ impl Linter {
         // A move an earlier block made and a later one let out (a held
         // corner) ran with the plane, feed, speed and spindle as that
         // earlier block left them.
-        let inside = span.file == block.file && block.start <= span.start && span.start <= block.end;
+        let inside =
+            span.file == block.file && block.start <= span.start && span.start <= block.end;
         let values = if inside {
             super::values::CutValues::of(step.state)
         } else {
