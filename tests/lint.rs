@@ -167,3 +167,35 @@ fn sarif_output_for_ci() {
     let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
     assert_eq!(v["runs"][0]["results"].as_array().unwrap().len(), 0);
 }
+
+#[test]
+fn inch_values_in_a_program_without_units_are_a_note_on_w0710() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("p.nc");
+    let text = "%\nO1\nG90 G54\nT1 M6\nS3000 M3\nG43 H1 Z.2\nG0 X0 Y0\nG1 Z-.25 F10.\nG1 X2. Y1.5\nG0 Z.2\nM30\n%\n";
+    std::fs::write(&p, text).unwrap();
+    let p = p.to_str().unwrap();
+    let o = cncc(&[
+        "check",
+        "--dialect",
+        "fanuc",
+        "--select",
+        "W07",
+        "--format",
+        "json",
+        p,
+    ]);
+    let found: Vec<serde_json::Value> = stderr(&o)
+        .lines()
+        .filter_map(|l| serde_json::from_str(l).ok())
+        .collect();
+    assert!(!found.iter().any(|v| v["code"] == "W0719"), "{found:?}");
+    let w0710 = found.iter().find(|v| v["code"] == "W0710").expect("W0710");
+    assert!(
+        w0710["notes"].to_string().contains("look like inches"),
+        "{w0710}"
+    );
+    // With G21 in the program the same values are W0719.
+    std::fs::write(p, text.replace("G90 G54", "G21 G90 G54")).unwrap();
+    assert!(lint_codes(&["--dialect", "fanuc", "--select", "W0719", p]).contains("W0719"));
+}

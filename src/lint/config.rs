@@ -41,6 +41,34 @@ struct LintTable {
     peck_too_deep: Option<PeckTable>,
     #[serde(rename = "rapid-below-cut")]
     rapid_below_cut: Option<ToleranceTable>,
+    #[serde(rename = "speed-absurd-for-tool")]
+    speed_for_tool: Option<SpeedTable>,
+    #[serde(rename = "feed-absurd-for-tool")]
+    feed_for_tool: Option<FeedTable>,
+    #[serde(rename = "values-look-like-other-unit")]
+    other_unit: Option<UnitTable>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+struct SpeedTable {
+    max_surface_speed: Option<f64>,
+    min_surface_speed: Option<f64>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+struct FeedTable {
+    max_feed_per_rev: f64,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+struct UnitTable {
+    inch_max_z: Option<f64>,
+    inch_max_xy: Option<f64>,
+    metric_max_feed: Option<f64>,
+    metric_max_size: Option<f64>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -72,6 +100,18 @@ pub struct LintConfig {
     pub peck_max_diameters: f64,
     /// How far below the lowest cut a rapid may go, mm (W0709, W0712).
     pub below_tolerance_mm: f64,
+    /// Surface speed limits, m/min (W0717).
+    pub max_surface_speed: f64,
+    pub min_surface_speed: f64,
+    /// Feed per spindle revolution limit, in tool diameters (W0718).
+    pub max_feed_per_rev: f64,
+    /// W0719: an inch program's cuts beyond these (inch) look metric.
+    pub inch_max_z: f64,
+    pub inch_max_xy: f64,
+    /// W0719: a metric program whose every cutting feed (mm/min) and
+    /// whose cut size (mm) stay within these looks inch.
+    pub metric_max_feed: f64,
+    pub metric_max_size: f64,
     /// The file the settings came from, if any.
     pub source: Option<PathBuf>,
 }
@@ -83,6 +123,13 @@ impl Default for LintConfig {
             errors: Vec::new(),
             peck_max_diameters: 3.0,
             below_tolerance_mm: 0.01,
+            max_surface_speed: 2500.0,
+            min_surface_speed: 1.0,
+            max_feed_per_rev: 0.5,
+            inch_max_z: 20.0,
+            inch_max_xy: 120.0,
+            metric_max_feed: 50.0,
+            metric_max_size: 25.0,
             source: None,
         }
     }
@@ -186,7 +233,61 @@ fn build(t: &LintTable, cli: &CliSelect) -> Result<LintConfig, String> {
         }
         cfg.below_tolerance_mm = r.tolerance_mm;
     }
+    limits(t, &mut cfg)?;
     Ok(cfg)
+}
+
+/// The per-rule limits of W0717..W0719: each must be a positive number.
+fn limits(t: &LintTable, cfg: &mut LintConfig) -> Result<(), String> {
+    let set = |v: Option<f64>, to: &mut f64, what: &str| match v {
+        Some(x) if !(x > 0.0 && x.is_finite()) => Err(format!("{what} must be above 0")),
+        Some(x) => {
+            *to = x;
+            Ok(())
+        }
+        None => Ok(()),
+    };
+    if let Some(s) = &t.speed_for_tool {
+        let w = "[lint.speed-absurd-for-tool]";
+        set(
+            s.max_surface_speed,
+            &mut cfg.max_surface_speed,
+            &format!("{w} max-surface-speed"),
+        )?;
+        set(
+            s.min_surface_speed,
+            &mut cfg.min_surface_speed,
+            &format!("{w} min-surface-speed"),
+        )?;
+    }
+    if let Some(f) = &t.feed_for_tool {
+        let w = "[lint.feed-absurd-for-tool] max-feed-per-rev";
+        set(Some(f.max_feed_per_rev), &mut cfg.max_feed_per_rev, w)?;
+    }
+    if let Some(u) = &t.other_unit {
+        let w = "[lint.values-look-like-other-unit]";
+        set(
+            u.inch_max_z,
+            &mut cfg.inch_max_z,
+            &format!("{w} inch-max-z"),
+        )?;
+        set(
+            u.inch_max_xy,
+            &mut cfg.inch_max_xy,
+            &format!("{w} inch-max-xy"),
+        )?;
+        set(
+            u.metric_max_feed,
+            &mut cfg.metric_max_feed,
+            &format!("{w} metric-max-feed"),
+        )?;
+        set(
+            u.metric_max_size,
+            &mut cfg.metric_max_size,
+            &format!("{w} metric-max-size"),
+        )?;
+    }
+    Ok(())
 }
 
 /// One layer of selection over the rules `before` it enabled.
@@ -293,5 +394,27 @@ mod tests {
         );
         let c = cfg("[lint.peck-too-deep]\nmax-diameters = 5\n");
         assert_eq!(c.peck_max_diameters, 5.0);
+    }
+
+    #[test]
+    fn the_shops_limits_for_speeds_feeds_and_units() {
+        let c = cfg("[lint.speed-absurd-for-tool]\nmax-surface-speed = 1200\n\
+             [lint.feed-absurd-for-tool]\nmax-feed-per-rev = 0.2\n\
+             [lint.values-look-like-other-unit]\ninch-max-z = 30\n");
+        assert_eq!(c.max_surface_speed, 1200.0);
+        assert_eq!(c.min_surface_speed, 1.0);
+        assert_eq!(c.max_feed_per_rev, 0.2);
+        assert_eq!(c.inch_max_z, 30.0);
+        assert_eq!(c.metric_max_feed, 50.0);
+        for bad in [
+            "[lint.feed-absurd-for-tool]\nmax-feed-per-rev = 0\n",
+            "[lint.speed-absurd-for-tool]\nmax-surface-speed = -3\n",
+            "[lint.values-look-like-other-unit]\ninch-max-q = 3\n",
+        ] {
+            assert!(
+                LintConfig::from_toml(bad, &CliSelect::default()).is_err(),
+                "{bad}"
+            );
+        }
     }
 }

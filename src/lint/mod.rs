@@ -13,6 +13,7 @@
 pub mod config;
 pub mod directive;
 pub mod rules;
+mod values;
 
 pub use config::{CliSelect, LintConfig};
 
@@ -68,7 +69,8 @@ pub struct Linter {
     /// x0 y0 x1 y1 (mm) round the feed moves of this tool.
     cut_box: Option<[f64; 4]>,
     last_pose: Option<[f64; 6]>,
-    last_spindle: crate::interp::host::SpindleDir,
+    /// Feed, speed, units and spindle after the last block.
+    last_values: values::CutValues,
     last_z_mm: f64,
     spindle_reported: bool,
     speed_reported: bool,
@@ -83,6 +85,10 @@ pub struct Linter {
     frames: Vec<Frame>,
     last_block: (Span, bool),
     last_absolute: bool,
+    rates: values::RateReported,
+    units: values::UnitSurvey,
+    /// Address letters the spec gives the role `length-offset` (H).
+    length_letters: Vec<char>,
 }
 
 /// How a run ended, as `check` saw it.
@@ -120,7 +126,7 @@ impl Linter {
             min_cut_mm: None,
             cut_box: None,
             last_pose: None,
-            last_spindle: crate::interp::host::SpindleDir::Stopped,
+            last_values: Default::default(),
             last_z_mm: 0.0,
             spindle_reported: false,
             speed_reported: false,
@@ -135,6 +141,14 @@ impl Linter {
             frames: Vec::new(),
             last_block: (Span::default(), false),
             last_absolute: true,
+            rates: Default::default(),
+            units: Default::default(),
+            length_letters: spec
+                .addresses
+                .iter()
+                .filter(|a| a.role == "length-offset")
+                .map(|a| a.letter)
+                .collect(),
         }
     }
 
@@ -257,12 +271,17 @@ impl Linter {
         let Some(first) = self.first_motion else {
             return;
         };
+        let looks_inch = self.metric_looks_inch(end);
         if !self.units_set {
-            self.report(
-                Diagnostic::new(Code::LintNoUnits, "the program never sets its units")
-                    .primary(first, "first move, in whatever units the control is in")
-                    .help("set the units at the top (G20/G21, G70/G71, MM/INCH)"),
-            );
+            let mut d = Diagnostic::new(Code::LintNoUnits, "the program never sets its units")
+                .primary(first, "first move, in whatever units the control is in")
+                .help("set the units at the top (G20/G21, G70/G71, MM/INCH)");
+            if let Some(what) = looks_inch {
+                d.notes.push(format!(
+                    "{what}: it is right only on a control left in inch"
+                ));
+            }
+            self.report(d);
         }
         if !self.work_offset_set {
             self.report(

@@ -125,6 +125,21 @@ pub const RULES: &[Rule] = &[
         default: true,
         applies: always,
     },
+    Rule {
+        code: Code::LintSpeedForTool,
+        default: true,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintFeedForTool,
+        default: true,
+        applies: always,
+    },
+    Rule {
+        code: Code::LintOtherUnit,
+        default: true,
+        applies: always,
+    },
 ];
 
 /// The rule of a code, if it is a lint code.
@@ -158,28 +173,35 @@ fn is_feed(c: &Canon) -> bool {
 }
 
 /// Where a motion call ends, x y z a b c in program units (None for a
-/// NURBS curve, whose end cncc does not keep here).
-fn pose_of(c: &Canon) -> Option<[f64; 6]> {
+/// NURBS curve, whose end cncc does not keep here). An arc's ends are
+/// named by the plane it ran in (as rs274 names them: G18's first axis
+/// is Z).
+fn pose_of(c: &Canon, plane: CanonPlane) -> Option<[f64; 6]> {
     match c {
         Canon::StraightTraverse(p) | Canon::StraightFeed(p) => Some(*p),
         Canon::ArcFeed {
-            first_end,
-            second_end,
-            axis_end,
+            first_end: f,
+            second_end: s,
+            axis_end: a,
             abc,
             ..
-        } => Some([*first_end, *second_end, *axis_end, abc[0], abc[1], abc[2]]),
+        } => {
+            let [x, y, z] = match plane {
+                CanonPlane::XY => [*f, *s, *a],
+                CanonPlane::YZ => [*a, *f, *s],
+                CanonPlane::XZ => [*s, *a, *f],
+            };
+            Some([x, y, z, abc[0], abc[1], abc[2]])
+        }
         _ => None,
     }
 }
 
 /// The Z a motion call ends at, in program units (None: no Z in it).
-fn end_z(c: &Canon) -> Option<f64> {
+fn end_z(c: &Canon, plane: CanonPlane) -> Option<f64> {
     match c {
-        Canon::StraightTraverse(p) | Canon::StraightFeed(p) => Some(p[2]),
-        Canon::ArcFeed { axis_end, .. } => Some(*axis_end),
         Canon::RigidTap { z, .. } => Some(*z),
-        _ => None,
+        _ => pose_of(c, plane).map(|p| p[2]),
     }
 }
 
@@ -198,13 +220,15 @@ impl Linter {
         if cycle_ran {
             self.cycle(step, scale);
         }
-        // `H..` alone while G43 is in force changes the offset register
+        // A length register (`H..`, the spec's `length-offset` address)
+        // alone while G43 is in force changes the offset register
         // on Fanuc-like controls [?: G43 kept through M6 by the machine's
         // macro]: the new tool's length is active for this block's moves.
         if step.state.length_tool.is_some()
-            && has(step, |k| {
-                matches!(k, StmtKind::OffsetRegister { letter: 'H', .. })
-            })
+            && has(
+                step,
+                |k| matches!(k, StmtKind::OffsetRegister { letter, .. } if self.length_letters.contains(letter)),
+            )
         {
             self.length_pending = None;
         }
@@ -238,7 +262,7 @@ impl Linter {
             self.ref_return = Some(step.block.span);
         }
         self.last_z_mm = step.state.pos[2];
-        self.last_spindle = step.state.spindle;
+        self.last_values = super::values::CutValues::of(step.state);
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -258,6 +282,7 @@ impl Linter {
                 self.length_pending = Some(span);
                 self.after_change = Some(span);
                 self.coolant_reported = false;
+                self.rates = Default::default();
                 self.forget_cuts();
             }
             Canon::UseToolLengthOffset(_) => {
@@ -281,7 +306,18 @@ impl Linter {
         if !is_motion(call) {
             return;
         }
-        let pose = pose_of(call).map(|p| p.map(|v| v * scale));
+        // A move an earlier block made and a later one let out (a held
+        // corner) ran with the plane, feed, speed and spindle as that
+        // earlier block left them.
+        let inside =
+            span.file == block.file && block.start <= span.start && span.start <= block.end;
+        let values = if inside {
+            super::values::CutValues::of(step.state)
+        } else {
+            self.last_values
+        };
+        let plane = values.plane;
+        let pose = pose_of(call, plane).map(|p| p.map(|v| v * scale));
         if let (Some(p), Some(last)) = (pose, self.last_pose) {
             if (3..6).any(|i| (p[i] / scale - last[i] / scale).abs() > 1e-6) {
                 // A rotary axis turned the part: heights of the cuts so
@@ -298,7 +334,7 @@ impl Linter {
         if pose.is_some() {
             self.last_pose = pose;
         }
-        let z_mm = end_z(call).map(|z| z * scale);
+        let z_mm = end_z(call, plane).map(|z| z * scale);
         if let (Some(z), Some(s)) = (z_mm, self.length_pending) {
             if (z - self.last_z_mm).abs() > 1e-6 && !machine {
                 self.length_pending = None;
@@ -314,9 +350,12 @@ impl Linter {
             }
         }
         if is_feed(call) {
-            self.spindle_stopped(step, block, span);
+            self.spindle_stopped(step, block, if inside { block } else { span }, values);
+            if let Some(p) = pose_of(call, plane) {
+                self.unit_values(block, values, [p[0], p[1], p[2]]);
+            }
             if let (Some(z), Some(p)) = (z_mm, pose) {
-                if step.state.plane == CanonPlane::XY {
+                if plane == CanonPlane::XY {
                     self.min_cut_mm = Some(self.min_cut_mm.map_or(z, |m: f64| m.min(z)));
                     self.cut_box = Some(match self.cut_box {
                         None => [p[0], p[1], p[0], p[1]],
@@ -338,24 +377,25 @@ impl Linter {
         }
     }
 
-    fn spindle_stopped(&mut self, step: &Step<'_>, block: Span, call: Span) {
-        // A move an earlier block made and a later one let out (a held
-        // corner) ran with the spindle as that earlier block left it.
-        let inside =
-            call.file == block.file && block.start <= call.start && call.start <= block.end;
-        let spindle = if inside {
-            step.state.spindle
-        } else {
-            self.last_spindle
-        };
+    /// W0701 (and W0715..W0718) at a feed move; `at` is its block, or the
+    /// move itself where an earlier block made it.
+    fn spindle_stopped(
+        &mut self,
+        step: &Step<'_>,
+        block: Span,
+        at: Span,
+        values: super::values::CutValues,
+    ) {
+        let spindle = values.spindle;
         self.speed_and_coolant(step, block, spindle);
+        self.cut_rates(step, at, values);
         if spindle != SpindleDir::Stopped || self.spindle_reported {
             return;
         }
         self.spindle_reported = true;
         self.report(
             Diagnostic::new(Code::LintFeedSpindleStopped, "cutting move while the spindle is stopped")
-                .primary(if inside { block } else { call }, "feed move with no M3/M4 in force")
+                .primary(at, "feed move with no M3/M4 in force")
                 .help("start the spindle (S.. M3) before the first cutting move of each tool; later moves of this stretch are not reported"),
         );
     }
@@ -462,7 +502,7 @@ impl Linter {
         let hole = step
             .calls
             .iter()
-            .find_map(|(c, _)| pose_of(c))
+            .find_map(|(c, _)| pose_of(c, step.state.plane))
             .map(|p| [p[0] * scale, p[1] * scale]);
         if let (Some(min), Some(xy)) = (self.min_cut_mm, hole) {
             let r = step.cycles.r * scale;
