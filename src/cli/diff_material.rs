@@ -5,11 +5,12 @@
 //! differs by more than the tolerance (default 0.01 mm), 1 otherwise.
 
 use crate::cli::context::{Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
-use crate::cli::simulate::{cell_for, cut, guess_stock, survey};
+use crate::cli::simulate::{cell_for, cut, survey};
 use crate::cli::stats::{load_tool_table, machine_mm};
 use crate::diag::Diagnostic;
 use crate::interp::Options;
 use crate::sim::compare::compare;
+use crate::sim::material::guess_stock;
 use crate::sim::{Cutters, HeightField, Simulation};
 use crate::toolpath::Stock;
 use std::path::Path;
