@@ -267,16 +267,17 @@ fn cone_below_depth(s: &Step<'_>) -> f64 {
 const BREAKTHROUGH: f64 = 0.1;
 
 /// How far a drill's point reaches below its full diameter (0 for tools
-/// without a point).
+/// without a point). The point is taken as 118° for every twist and
+/// tapered drill, as the raisers take it: the plans' `tool_tip_half_angle`
+/// is read both ways [?] (NIST's ex1 gives 31° for a drill, the angle to
+/// the horizontal; AP238 files give half the point angle).
 fn point_length(t: &crate::stepnc::model::Tool) -> f64 {
     use crate::stepnc::model::ToolBodyKind as K;
-    let d = &t.body.dimension;
-    let half = match (&t.body.kind, d.tip_half_angle) {
-        (_, Some(a)) if a > 0.0 && a < 90.0 => a,
-        (K::TwistDrill | K::TaperedDrill, _) => crate::raise::ops::DRILL_TIP_ANGLE / 2.0,
-        _ => return 0.0,
-    };
-    d.diameter / 2.0 / half.to_radians().tan()
+    if !matches!(t.body.kind, K::TwistDrill | K::TaperedDrill) {
+        return 0.0;
+    }
+    let half = crate::raise::ops::DRILL_TIP_ANGLE / 2.0;
+    t.body.dimension.diameter / 2.0 / half.to_radians().tan()
 }
 
 pub(super) fn dwell(w: &Writer<'_>, v: Vals, seconds: f64) -> Vals {
