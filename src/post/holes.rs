@@ -255,7 +255,7 @@ fn cone_below_depth(s: &Step<'_>) -> f64 {
         FeatureKind::RoundHole {
             bottom: HoleBottom::Through,
             ..
-        } if point_length(s.tool) > 0.0 => point_length(s.tool) + BREAKTHROUGH,
+        } if drills(s) => point_length(s.tool) + BREAKTHROUGH,
         _ => 0.0,
     }
 }
@@ -265,6 +265,14 @@ fn cone_below_depth(s: &Step<'_>) -> f64 {
 /// shops often allow more (0.5 to 1 mm), which the STEP-NC plan does not
 /// say.
 const BREAKTHROUGH: f64 = 0.1;
+
+/// A drilling operation (single or pecked) with a pointed drill.
+fn drills(s: &Step<'_>) -> bool {
+    matches!(
+        s.op.kind,
+        OperationKind::Drilling(_) | OperationKind::MultistepDrilling { .. }
+    ) && point_length(s.tool) > 0.0
+}
 
 /// How far a drill's point reaches below its full diameter (0 for tools
 /// without a point). The point is taken as 118° for every twist and
