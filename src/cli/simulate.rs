@@ -97,7 +97,8 @@ pub(crate) fn cut(
     mut sim: Simulation,
 ) -> Result<Simulation, Failure> {
     let (id, _) = stream_events(ctx, path, dialect, options, false, |e| sim.push(e))?;
-    let spans: Vec<_> = sim.rapid_hits.iter().map(|h| h.span).collect();
+    let mut spans: Vec<_> = sim.rapid_hits.iter().map(|h| h.span).collect();
+    spans.extend(sim.watch.and_then(|w| w.last).map(|(s, _)| s));
     keep_lines_at(ctx, path, id, &[], &spans)?;
     Ok(sim)
 }
