@@ -68,7 +68,7 @@ fn siemens_cycles_carry_the_features() {
     // corner (0,0), 100 x 120, MID 2.5, MIDA 18*(1-0.05), finishing
     // allowance 0, F 2400, VARI 41 (roughing mode, 2nd axis alternating).
     assert!(l.contains(&"CYCLE71(30,5,10,0,0,0,100,120,0,2.5,17.1,9,0,2400,41,0.9)"));
-    assert!(l.contains(&"MCALL CYCLE81(30,0,10,-30,)"));
+    assert!(l.contains(&"MCALL CYCLE81(30,0,10,-36.109,)"));
     assert!(l.contains(&"MCALL CYCLE85(30,0,10,-30,,0,1800,1800)"));
     // Rough: LENG 80 WID 50 CRAD 10 at (70,70), long axis along Y (90),
     // MID 6.5, CDIR 2 (conventional with M3 = G2), FAL 1, VARI 1.
@@ -108,7 +108,7 @@ fn fanuc_cycles_and_explicit_pocket() {
     let p = posted("fanuc");
     let path = save("ex1.nc", &p.text);
     let l = lines(&p.text);
-    assert!(l.contains(&"G98 G81 X20. Y60. Z-30. R10. F1800"));
+    assert!(l.contains(&"G98 G81 X20. Y60. Z-36.109 R10. F1800"));
     assert!(l.contains(&"G98 G85 X20. Y60. Z-30. R10. F1800"));
     assert!(!l
         .iter()
@@ -260,7 +260,7 @@ fn holes_in_a_row_become_one_cycle_with_a_pattern() {
     let l = lines(&siemens.text);
     let at = l
         .iter()
-        .position(|x| *x == "MCALL CYCLE81(30,0,10,-30,)")
+        .position(|x| *x == "MCALL CYCLE81(30,0,10,-36.109,)")
         .unwrap();
     assert_eq!(&l[at + 1..at + 3], &["HOLES1(20,60,0,0,20,4)", "MCALL"]);
     assert_eq!(l.iter().filter(|x| x.contains("CYCLE81")).count(), 1);
@@ -273,7 +273,7 @@ fn holes_in_a_row_become_one_cycle_with_a_pattern() {
     let l = lines(&fanuc.text);
     let at = l
         .iter()
-        .position(|x| *x == "G98 G81 X20. Y60. Z-30. R10. F1800")
+        .position(|x| *x == "G98 G81 X20. Y60. Z-36.109 R10. F1800")
         .unwrap();
     assert_eq!(
         &l[at + 1..at + 5],
@@ -511,32 +511,32 @@ fn dwell_peck_and_bore_cycles_on_every_target() {
         (
             "siemens840d",
             [
-                "MCALL CYCLE83(30,0,10,-30,,-6,,5,0,0,1,1)",
-                "MCALL CYCLE82(30,0,10,-30,,0.5)",
+                "MCALL CYCLE83(30,0,10,-36.109,,-6,,5,0,0,1,1)",
+                "MCALL CYCLE82(30,0,10,-36.109,,0.5)",
                 "MCALL CYCLE86(30,0,10,-30,,0,3,0,0,0,0)",
             ],
         ),
         (
             "fanuc",
             [
-                "G98 G83 X20. Y60. Z-30. R10. Q5. F1800",
-                "G98 G82 X20. Y60. Z-30. R10. P500 F1800",
+                "G98 G83 X20. Y60. Z-36.109 R10. Q5. F1800",
+                "G98 G82 X20. Y60. Z-36.109 R10. P500 F1800",
                 "G98 G86 X20. Y60. Z-30. R10. P0 F1800",
             ],
         ),
         (
             "haas",
             [
-                "G98 G83 X20. Y60. Z-30. R10. Q5. F1800",
-                "G98 G82 X20. Y60. Z-30. R10. P500 F1800",
+                "G98 G83 X20. Y60. Z-36.109 R10. Q5. F1800",
+                "G98 G82 X20. Y60. Z-36.109 R10. P500 F1800",
                 "G98 G86 X20. Y60. Z-30. R10. P0 F1800",
             ],
         ),
         (
             "linuxcnc",
             [
-                "G98 G83 X20 Y60 Z-30 R10 Q5 F1800",
-                "G98 G82 X20 Y60 Z-30 R10 P0.5 F1800",
+                "G98 G83 X20 Y60 Z-36.108606 R10 Q5 F1800",
+                "G98 G82 X20 Y60 Z-36.108606 R10 P0.5 F1800",
                 "G98 G86 X20 Y60 Z-30 R10 P0 F1800",
             ],
         ),
@@ -581,7 +581,7 @@ fn heidenhain_cycles_carry_the_features_and_check_clean() {
     // set-up clearance 30 above the surface (the security plane), one
     // plunge; called at the hole with M99.
     assert!(l.contains(
-        &"CYCL DEF 200 DRILLING Q200=10 Q201=-30 Q206=1800 Q202=30 Q210=0 Q203=0 Q204=30 Q211=0"
+        &"CYCL DEF 200 DRILLING Q200=10 Q201=-36.1086 Q206=1800 Q202=36.1086 Q210=0 Q203=0 Q204=30 Q211=0"
     ));
     assert!(l.contains(
         &"CYCL DEF 201 REAMING Q200=10 Q201=-30 Q206=1800 Q211=0 Q208=1800 Q203=0 Q204=30"

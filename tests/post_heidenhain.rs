@@ -238,19 +238,19 @@ fn multistep_drilling_is_205_where_its_pecks_need_it_else_203() {
         (
             ex1_with_peck(5.0, 5.0, 0.0),
             "even infeeds: the pecking cycle",
-            "CYCL DEF 203 UNIVERSAL DRILLING Q200=10 Q201=-30 Q206=1800 Q202=5 Q210=0 Q203=0 Q204=30 Q212=0 Q213=0 Q205=5 Q211=0 Q208=0 Q256=0.2",
+            "CYCL DEF 203 UNIVERSAL DRILLING Q200=10 Q201=-36.1086 Q206=1800 Q202=5 Q210=0 Q203=0 Q204=30 Q212=0 Q213=0 Q205=5 Q211=0 Q208=0 Q256=0.2",
         ),
         // First 6 then 5: the first infeed, 1 less, never below 5.
         (
             ex1_with_peck(6.0, 5.0, 8.0),
             "decreasing infeeds: the universal pecking cycle",
-            "CYCL DEF 205 UNIVERSAL PECKING Q200=10 Q201=-30 Q206=1800 Q202=6 Q203=0 Q204=30 Q212=1 Q205=5 Q258=0.2 Q259=0.2 Q257=0 Q256=0.2 Q211=0 Q379=0 Q253=1800",
+            "CYCL DEF 205 UNIVERSAL PECKING Q200=10 Q201=-36.1086 Q206=1800 Q202=6 Q203=0 Q204=30 Q212=1 Q205=5 Q258=0.2 Q259=0.2 Q257=0 Q256=0.2 Q211=0 Q379=0 Q253=1800",
         ),
         // Backing off 0.5 after each 5: one infeed, chip breaking.
         (
             ex1_with_peck(5.0, 5.0, 0.5),
             "chip breaking: the universal pecking cycle",
-            "CYCL DEF 205 UNIVERSAL PECKING Q200=10 Q201=-30 Q206=1800 Q202=30 Q203=0 Q204=30 Q212=0 Q205=5 Q258=0.2 Q259=0.2 Q257=5 Q256=0.5 Q211=0 Q379=0 Q253=1800",
+            "CYCL DEF 205 UNIVERSAL PECKING Q200=10 Q201=-36.1086 Q206=1800 Q202=36.1086 Q203=0 Q204=30 Q212=0 Q205=5 Q258=0.2 Q259=0.2 Q257=5 Q256=0.5 Q211=0 Q379=0 Q253=1800",
         ),
     ];
     for (k, (p, why, cycle)) in cases.iter().enumerate() {

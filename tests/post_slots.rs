@@ -255,7 +255,9 @@ fn other_targets_keep_explicit_moves() {
 
 /// `cncc port --features --to siemens840d` of the CC2 test part: its
 /// tool-wide slot (60 long, 4 deep in two layers, 8 mm end mill) becomes
-/// one LONGHOLE, and the ported program raises to the same SLOT.
+/// one LONGHOLE, and the ported program raises to the same SLOT; with
+/// `--verify` the port raises to the same features and cuts the same part
+/// (its through holes are drilled until the drill's point breaks out).
 #[test]
 fn port_features_writes_the_test_parts_slot_as_a_longhole() {
     let dir = common::root().join("tests/programs/raise2");
@@ -300,14 +302,19 @@ fn port_features_writes_the_test_parts_slot_as_a_longhole() {
         table,
         "--stock",
         "120x80x21+0+0-20",
+        "--verify",
         src.to_str().unwrap(),
     ]);
-    assert_eq!(o.status.code(), Some(0), "{}", common::stderr(&o));
+    let err = common::stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(err.contains("verify: OK: the same 7 feature(s)"), "{err}");
+    assert!(err.contains("verify: material: the same part"), "{err}");
     let text = common::stdout(&o);
     assert!(
         text.contains("LONGHOLE(25,0,2,-4,,1,68,26,10,0,0,0,250,250,2)"),
         "{text}"
     );
+    assert!(text.contains("MCALL CYCLE81(25,0,2,-22.503,)"), "{text}");
     let ported = save("cc2part-slot.mpf", &text);
     let a = raise(src.to_str().unwrap(), "fanuc");
     let b = raise(ported.to_str().unwrap(), "siemens840d");

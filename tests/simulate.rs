@@ -126,9 +126,13 @@ fn check_reports_a_rapid_into_a_given_stock() {
 }
 
 fn diff_material(a: &str, b: &str) -> (i32, String) {
+    diff_material_on(a, b, "40x40x20-20-20-20")
+}
+
+fn diff_material_on(a: &str, b: &str, stock: &str) -> (i32, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_cncc"))
         .args(["diff", "--material", "--machine-units", "mm"])
-        .args(["--stock", "40x40x20-20-20-20"])
+        .args(["--stock", stock])
         .arg(format!("tests/programs/simulate/{a}"))
         .arg(format!("tests/programs/simulate/{b}"))
         .output()
@@ -149,6 +153,25 @@ fn a_ring_and_a_full_pocket_differ_by_material() {
         out.contains("within X-4.950..4.950 Y-4.950..4.950"),
         "{out}"
     );
+    // Where: the ring never reaches the island; the full pocket's plunge
+    // at the centre cut it.
+    assert!(out.contains("A: no move cuts there"), "{out}");
+    assert!(
+        out.contains("B: line 9 cut there last, to Z-5.000: G1 Z-5. F100."),
+        "{out}"
+    );
     let (code, out) = diff_material("ring.nc", "ring_again.nc");
     assert_eq!(code, 0, "the same ring cut the other way round: {out}");
+}
+
+#[test]
+fn a_zigzag_and_a_spiral_pocket_compare_equal() {
+    // pocket.nc clears 40 x 30 R5 by zigzag and a finishing contour;
+    // spiral_pocket.nc from the middle out, contour after contour.
+    let stock = "100x50x20-30-10-20";
+    let (code, out) = diff_material_on("pocket.nc", "spiral_pocket.nc", stock);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("the parts are the same"), "{out}");
+    let (code, out) = diff_material_on("pocket.nc", "slot.nc", stock);
+    assert_eq!(code, 1, "a pocket is not a slot: {out}");
 }

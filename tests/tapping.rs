@@ -425,6 +425,10 @@ fn tapping_ports_by_features_to_every_dialect() {
         let err = common::stderr(&o);
         assert_eq!(o.status.code(), Some(0), "{dialect}: {err}");
         assert!(err.contains("verify: OK"), "{dialect}: {err}");
+        assert!(
+            err.contains("verify: material: the same part"),
+            "{dialect}: {err}"
+        );
         let text = common::stdout(&o);
         let cycle = match dialect {
             "siemens840d" => "CYCLE84(",

@@ -5,12 +5,13 @@
 //! differs by more than the tolerance (default 0.01 mm), 1 otherwise.
 
 use crate::cli::context::{Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
-use crate::cli::simulate::{cell_for, cut, guess_stock, survey};
+use crate::cli::simulate::{cell_for, cut, survey};
 use crate::cli::stats::{load_tool_table, machine_mm};
 use crate::diag::Diagnostic;
 use crate::interp::Options;
 use crate::sim::compare::compare;
-use crate::sim::{Cutters, HeightField, Simulation};
+use crate::sim::material::guess_stock;
+use crate::sim::{Cutters, HeightField, Simulation, Watch};
 use crate::toolpath::Stock;
 use std::path::Path;
 
@@ -72,9 +73,12 @@ pub fn run(ctx: &mut Context, mut a: MaterialArgs<'_>) -> Result<i32, Failure> {
         .map(|k| cell_for(a.resolution, &stock, &runs[k].1.tools, &runs[k].2))
         .fold(f64::MAX, f64::min);
     let mut fields = Vec::new();
-    for (k, (opts, _, cutters)) in runs.into_iter().enumerate() {
-        let sim = Simulation::new(HeightField::new(&stock, cell).map_err(Failure)?, cutters);
-        let sim = cut(ctx, a.files[k], a.dialects[k], &opts, sim)?;
+    for (k, (opts, _, cutters)) in runs.iter().enumerate() {
+        let sim = Simulation::new(
+            HeightField::new(&stock, cell).map_err(Failure)?,
+            cutters.clone(),
+        );
+        let sim = cut(ctx, a.files[k], a.dialects[k], opts, sim)?;
         fields.push(sim.field);
     }
     let c = compare(&fields[0], &fields[1], a.tolerance).map_err(Failure)?;
@@ -104,5 +108,40 @@ pub fn run(ctx: &mut Context, mut a: MaterialArgs<'_>) -> Result<i32, Failure> {
             c.cells, r[0], r[2], r[1], r[3]
         );
     }
+    let Some(cell_at) = f.cell_at(c.at[0], c.at[1]) else {
+        return Ok(EXIT_INPUT_ERRORS);
+    };
+    for (k, (opts, _, cutters)) in runs.iter().enumerate() {
+        let mut sim = Simulation::new(
+            HeightField::new(&stock, cell).map_err(Failure)?,
+            cutters.clone(),
+        );
+        sim.watch = Some(Watch {
+            cell: cell_at,
+            last: None,
+        });
+        let sim = cut(ctx, a.files[k], a.dialects[k], opts, sim)?;
+        let who = ["A", "B"][k];
+        match sim.watch.and_then(|w| w.last) {
+            Some((span, z)) => {
+                let (line, text) = line_of(ctx, span);
+                println!("{who}: line {line} cut there last, to Z{z:.3}: {text}");
+            }
+            None => println!("{who}: no move cuts there"),
+        }
+    }
     Ok(EXIT_INPUT_ERRORS)
+}
+
+/// The line number and text of a span's first line.
+fn line_of(ctx: &Context, span: crate::span::Span) -> (usize, String) {
+    let (line, _) = ctx.files.line_col(span.file, span.start as usize);
+    let text = ctx.files.text(span.file);
+    let v = ctx
+        .files
+        .to_view(span.file, span.start as usize)
+        .min(text.len());
+    let start = text[..v].rfind('\n').map_or(0, |k| k + 1);
+    let end = text[v..].find('\n').map_or(text.len(), |k| v + k);
+    (line, text[start..end].trim().to_string())
 }

@@ -10,9 +10,14 @@ use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS,
 use crate::cli::port::PortArgs;
 use crate::cli::tool_table;
 use crate::diag::Diagnostic;
+use crate::dialect::DialectSpec;
 use crate::interp::Options;
-use crate::post::features::{mismatch, verify_features};
+use crate::post::features::{mismatch, run_posted, source_tools, verify_events};
 use crate::raise::{raise_file, Level, RaiseOptions, Stock};
+use crate::sim::material::{self, MaterialVerdict, Side};
+use crate::sim::{Cutter, Cutters};
+use crate::span::FileId;
+use crate::stepnc::model::Project;
 use std::path::Path;
 
 /// How many feature differences `--verify` prints.
@@ -88,29 +93,35 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
             None => format!("{} (ported to {} by features)", a.file.display(), target.id),
         };
         let out_id = ctx.files.add(name, posted.text.clone());
-        let verdict = verify_features(
-            &raised.project,
-            &posted.text,
-            out_id,
-            &target,
-            &f.options,
-            &opts,
-        );
+        let ran = run_posted(&raised.project, &posted.text, out_id, &target, &f.options);
+        let verdict = ran.map(|(events, table)| {
+            let v = verify_events(&raised.project, &events, table.clone(), &opts);
+            (v, table)
+        });
+        let verdict = match verdict {
+            Ok((v, table)) => {
+                let posted = (&raised.project, posted.text.as_str(), out_id, &*target);
+                let m = by_material(ctx, (a.file, a.from), &f, posted, &head, &table)?;
+                Ok((v, m))
+            }
+            Err(e) => Err(e),
+        };
         let ok = match verdict {
             Err(errs) => {
                 diags.extend(errs);
                 eprintln!("verify: FAILED: the posted program does not read back or run");
                 false
             }
-            Ok(v) if v.same => {
+            Ok((v, m)) if v.same => {
                 eprintln!(
                     "verify: OK: the same {} feature(s) and tools, machined in the same order; {} difference(s) in operations and workingsteps (not compared)",
                     v.features,
                     v.notes.len()
                 );
-                true
+                material_verdict(&m, &mut diags)
             }
-            Ok(v) => {
+            Ok((v, m)) => {
+                material_verdict(&m, &mut diags);
                 eprintln!("verify: DIFFERENT: {} difference(s):", v.lines.len());
                 for l in v.lines.iter().take(SHOWN) {
                     eprintln!("  {l}");
@@ -131,4 +142,92 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
     }
     crate::cli::output::emit_output(a.output, &posted.text)?;
     Ok(EXIT_OK)
+}
+
+/// Prints the material comparison's outcome; true when the parts agree.
+fn material_verdict(m: &MaterialVerdict, diags: &mut Vec<Diagnostic>) -> bool {
+    if m.same() {
+        eprintln!("verify: material: {}", material::summary(m));
+        return true;
+    }
+    eprintln!(
+        "verify: DIFFERENT by material: the port cuts another part (E1002: {} mm off)",
+        crate::ir::num::short_text(m.comparison.largest, 3)
+    );
+    diags.push(material::diagnostic(m));
+    false
+}
+
+/// The posted program: the project it was posted from, its text, its
+/// file and its dialect.
+type Posted<'a> = (&'a Project, &'a str, FileId, &'a DialectSpec);
+
+/// Cuts the stock with the source (run again, as a stream) and with the
+/// posted program (run with the post's `table`) and compares the parts
+/// ([`crate::sim::material`]). Both run on the machine (`--machine`, else
+/// the default one, as `simulate` does), so that reference returns stay
+/// above the work. The posted tools cut with the source tools' shapes
+/// (the post numbers them in order of use).
+fn by_material(
+    ctx: &mut Context,
+    (file, from): (&Path, Option<&str>),
+    f: &FeatureArgs<'_>,
+    (project, text, out_id, target): Posted<'_>,
+    head: &str,
+    table: &crate::interp::tooltable::ToolTable,
+) -> Result<MaterialVerdict, Failure> {
+    let mut run = f.options.clone();
+    run.machine.get_or_insert_with(Default::default);
+    let posted = match run_posted(project, text, out_id, target, &run) {
+        Ok((events, _)) => events,
+        Err(_) => Vec::new(),
+    };
+    let posted = posted.as_slice();
+    let mut events = Vec::new();
+    let (id, _) =
+        crate::cli::stats::stream_events(ctx, file, from, &run, false, |e| events.push(e.clone()))?;
+    let mm = crate::cli::stats::machine_mm(&f.options);
+    let source = Cutters::from_table(&f.options.tool_table, head, mm, false);
+    let mut port = Cutters::default();
+    for (n, from) in source_tools(project) {
+        let c = match from {
+            Some(s) => source.get(s),
+            None => Cutter::from_tool(table.get(n), None, 1.0),
+        };
+        port.by_tool.insert(n, c);
+    }
+    let given = match f.stock {
+        Some(s) => Some(s.parse().map_err(Failure)?),
+        None => blank(ctx, file, from, head)?,
+    };
+    let sides = [
+        Side {
+            events: &events,
+            cutters: source,
+        },
+        Side {
+            events: posted,
+            cutters: port,
+        },
+    ];
+    let (stock, cell) = material::grid_for(&sides, given, None).map_err(Failure)?;
+    let m = material::compare_runs(sides, &stock, cell, crate::sim::compare::TOLERANCE)
+        .map_err(Failure)?;
+    let spans: Vec<_> = m.made.iter().flatten().map(|(s, _)| *s).collect();
+    crate::cli::stats::keep_lines_at(ctx, file, id, &[], &spans)?;
+    Ok(m)
+}
+
+/// The source's own blank (`BLK FORM`), if it has one.
+fn blank(
+    ctx: &mut Context,
+    path: &Path,
+    from: Option<&str>,
+    head: &str,
+) -> Result<Option<crate::toolpath::Stock>, Failure> {
+    let (spec, _) = ctx.spec_for(from, path, head)?;
+    let file =
+        std::fs::File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    let id = ctx.files.add(String::new(), String::new());
+    Ok(crate::toolpath::Stock::from_program(file, id, &spec).0)
 }

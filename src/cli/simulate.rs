@@ -14,6 +14,7 @@ use crate::cli::output::write_bytes_atomically;
 use crate::cli::stats::{keep_lines_at, load_tool_table, machine_mm, stream_events};
 use crate::diag::Diagnostic;
 use crate::interp::Options;
+use crate::sim::material::guess_stock;
 use crate::sim::report::{rapid_diagnostic, StockFrom, Summary};
 use crate::sim::{Cutters, HeightField, Simulation};
 use crate::toolpath::{Event, Stock, P3};
@@ -86,25 +87,6 @@ pub(crate) fn survey(
     })
 }
 
-/// A stock round the feed moves (widened by the largest tool radius):
-/// top at Z0 when the moves go below it, else at their top; bottom 1 mm
-/// (or a tenth of the depth) under the lowest move.
-pub(crate) fn guess_stock(b: [P3; 2], radius: f64) -> Stock {
-    let [lo, hi] = b;
-    let top = if lo[2] < 0.0 { 0.0 } else { hi[2] };
-    let depth = (top - lo[2]).max(0.0);
-    let bottom = lo[2] - (0.1 * depth).max(1.0);
-    let r = radius.max(1.0);
-    Stock {
-        corner: [lo[0] - r, lo[1] - r, bottom],
-        size: [
-            hi[0] - lo[0] + 2.0 * r,
-            hi[1] - lo[1] + 2.0 * r,
-            top - bottom,
-        ],
-    }
-}
-
 /// The second pass: the program cuts `field`; the spans of rapid hits
 /// are kept for the report.
 pub(crate) fn cut(
@@ -115,7 +97,8 @@ pub(crate) fn cut(
     mut sim: Simulation,
 ) -> Result<Simulation, Failure> {
     let (id, _) = stream_events(ctx, path, dialect, options, false, |e| sim.push(e))?;
-    let spans: Vec<_> = sim.rapid_hits.iter().map(|h| h.span).collect();
+    let mut spans: Vec<_> = sim.rapid_hits.iter().map(|h| h.span).collect();
+    spans.extend(sim.watch.and_then(|w| w.last).map(|(s, _)| s));
     keep_lines_at(ctx, path, id, &[], &spans)?;
     Ok(sim)
 }

@@ -651,6 +651,9 @@ codes! {
     RapidIntoStock = "E1001", "rapid-into-stock", Error,
         "a rapid move cuts into the stock",
         "With the stock known (`--stock LxWxH[+X+Y+Z]`, or the program's `BLK FORM`), cncc simulates the material the program removes (docs/simulate.md) and probes every rapid before it moves: material standing more than 0.01 mm above the tool's surface along the rapid is a crash at rapid traverse. The tool's size comes from the tool table or the program's tool list; a tool whose size cncc would have to invent is checked along its axis only. The tool's side gets a little play (0.02 mm or half a grid cell), so a rapid along a wall the tool has just cut is not reported.\n\nBad (stock 100x50x20, top at Z0):\n    G0 X10. Y10.\n    G0 Z-2.\n\nGood:\n    G0 X10. Y10.\n    G0 Z2.\n    G1 Z-2. F100.";
+    MaterialDiffers = "E1002", "material-differs", Error,
+        "the port cuts another part than the source",
+        "`cncc port --verify` (always with `--features`) cuts the same stock with the source and with the ported program (docs/simulate.md) and compares the finished parts cell by cell. A cell where the two parts' heights differ by more than the tolerance (0.01 mm) means the port does not cut the same part: the port is not written. The message gives the largest deviation, where it is, the move of each program that last cut there, and the volume only one of them removed. A pocket cycle that clears an island the source left standing is the classic case.";
 }
 
 impl Code {

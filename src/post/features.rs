@@ -32,7 +32,7 @@ use crate::raise::{raise_events, RaiseOptions};
 use crate::span::FileId;
 use crate::stepnc::diff::{diff_projects, DiffReport};
 use crate::stepnc::model::Project;
-use crate::toolpath::Tracker;
+use crate::toolpath::{Event, Tracker};
 use std::rc::Rc;
 
 /// The outcome of comparing the features of the source and the port.
@@ -59,6 +59,19 @@ pub fn verify_features(
     run: &crate::interp::Options,
     opts: &RaiseOptions,
 ) -> Result<FeatureVerdict, Vec<Diagnostic>> {
+    let (events, table) = run_posted(source, posted, id, target, run)?;
+    Ok(verify_events(source, &events, table, opts))
+}
+
+/// Runs `posted` (posted from `source`) with the tool table the post
+/// numbered: its moves and that table.
+pub fn run_posted(
+    source: &Project,
+    posted: &str,
+    id: FileId,
+    target: &DialectSpec,
+    run: &crate::interp::Options,
+) -> Result<(Vec<Event>, ToolTable), Vec<Diagnostic>> {
     let (program, read) = crate::driver::read_program(posted, id, target);
     let mut errors: Vec<Diagnostic> = read.into_iter().filter(Diagnostic::is_error).collect();
     if !errors.is_empty() {
@@ -77,13 +90,49 @@ pub fn verify_features(
     if !errors.is_empty() {
         return Err(errors);
     }
+    Ok((events, table))
+}
+
+/// Raises the posted program's moves (`events`, run with `table`) to CC2
+/// again and compares the features with `source`'s.
+pub fn verify_events(
+    source: &Project,
+    events: &[Event],
+    table: ToolTable,
+    opts: &RaiseOptions,
+) -> FeatureVerdict {
     let again = RaiseOptions {
         tool_table: table,
         table_units: LengthUnit::Mm,
         ..opts.clone()
     };
-    let raised = raise_events(&events, &again);
-    Ok(compare_features(source, &raised.project))
+    let raised = raise_events(events, &again);
+    compare_features(source, &raised.project)
+}
+
+/// The source tool number of each tool the post numbered (`T<n>` of the
+/// raised tool's name), by the post's number.
+pub fn source_tools(project: &Project) -> Vec<(i64, Option<i64>)> {
+    let Ok(items) = plan::plan(project) else {
+        return Vec::new();
+    };
+    let mut out: Vec<(i64, Option<i64>)> = Vec::new();
+    for it in &items {
+        let Item::Step(s) = it else { continue };
+        let n = s.tool_no as i64;
+        if out.iter().any(|(p, _)| *p == n) {
+            continue;
+        }
+        let source = s
+            .tool
+            .id
+            .split(' ')
+            .next()
+            .and_then(|t| t.strip_prefix('T'))
+            .and_then(|t| t.parse().ok());
+        out.push((n, source));
+    }
+    out
 }
 
 /// Compares the features of `a` (the source) and `b` (raised from its

@@ -236,8 +236,13 @@ pub(super) fn base(w: &Writer<'_>, s: &Step<'_>, d: &DrillCommon) -> Result<Vals
 }
 
 /// A conical hole bottom lies below the feature's depth plane (which ends
-/// the cylinder): the drill's point goes down to the cone's tip. 0 for
-/// any other bottom.
+/// the cylinder): the drill's point goes down to the cone's tip. A
+/// through hole drilled with a pointed drill is drilled until the drill's
+/// full diameter breaks out of the bottom: its point goes below by the
+/// point's length (the tool's tip angle, else 118° for twist and tapered
+/// drills [?]: what the raisers assume) and [`BREAKTHROUGH`] more, so
+/// that the depth written (rounded) still breaks out. 0 for any other
+/// bottom.
 fn cone_below_depth(s: &Step<'_>) -> f64 {
     match &s.feature.kind {
         FeatureKind::RoundHole {
@@ -247,8 +252,40 @@ fn cone_below_depth(s: &Step<'_>) -> f64 {
         } if *tip_angle > 0.0 && *tip_angle < 180.0 => {
             diameter.nominal / 2.0 / (tip_angle / 2.0).to_radians().tan()
         }
+        FeatureKind::RoundHole {
+            bottom: HoleBottom::Through,
+            ..
+        } if drills(s) => point_length(s.tool) + BREAKTHROUGH,
         _ => 0.0,
     }
+}
+
+/// How far (mm) a through hole's drill goes past its full diameter's
+/// break-out [?]: enough to survive the rounding of the depth written;
+/// shops often allow more (0.5 to 1 mm), which the STEP-NC plan does not
+/// say.
+const BREAKTHROUGH: f64 = 0.1;
+
+/// A drilling operation (single or pecked) with a pointed drill.
+fn drills(s: &Step<'_>) -> bool {
+    matches!(
+        s.op.kind,
+        OperationKind::Drilling(_) | OperationKind::MultistepDrilling { .. }
+    ) && point_length(s.tool) > 0.0
+}
+
+/// How far a drill's point reaches below its full diameter (0 for tools
+/// without a point). The point is taken as 118° for every twist and
+/// tapered drill, as the raisers take it: the plans' `tool_tip_half_angle`
+/// is read both ways [?] (NIST's ex1 gives 31° for a drill, the angle to
+/// the horizontal; AP238 files give half the point angle).
+fn point_length(t: &crate::stepnc::model::Tool) -> f64 {
+    use crate::stepnc::model::ToolBodyKind as K;
+    if !matches!(t.body.kind, K::TwistDrill | K::TaperedDrill) {
+        return 0.0;
+    }
+    let half = crate::raise::ops::DRILL_TIP_ANGLE / 2.0;
+    t.body.dimension.diameter / 2.0 / half.to_radians().tan()
 }
 
 pub(super) fn dwell(w: &Writer<'_>, v: Vals, seconds: f64) -> Vals {

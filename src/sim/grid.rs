@@ -117,12 +117,17 @@ impl HeightField {
 
     /// The height at a point (of the cell it falls in), if inside.
     pub fn at(&self, x: f64, y: f64) -> Option<f64> {
+        self.cell_at(x, y).map(|k| self.z[k] as f64)
+    }
+
+    /// The index (`j * nx + i`) of the cell a point falls in, if inside.
+    pub fn cell_at(&self, x: f64, y: f64) -> Option<usize> {
         let i = ((x - self.origin[0]) / self.dx).floor();
         let j = ((y - self.origin[1]) / self.dy).floor();
-        if i < 0.0 || j < 0.0 || i >= self.nx as f64 || j >= self.ny as f64 {
+        if !(i >= 0.0 && j >= 0.0 && i < self.nx as f64 && j < self.ny as f64) {
             return None;
         }
-        Some(self.z[j as usize * self.nx + i as usize] as f64)
+        Some(j as usize * self.nx + i as usize)
     }
 }
 

@@ -16,6 +16,7 @@ pub mod compare;
 pub mod cutter;
 pub mod grid;
 pub mod image;
+pub mod material;
 pub mod report;
 pub mod stl;
 pub mod sweep;
@@ -110,6 +111,18 @@ pub struct Simulation {
     pub rapid_hits: Vec<RapidHit>,
     /// Largest chord error of arcs, mm.
     pub chord: f64,
+    /// A cell whose last cut is wanted (see [`Watch`]).
+    pub watch: Option<Watch>,
+}
+
+/// The move that last lowered one cell of the field: where a difference
+/// between two parts was made.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Watch {
+    /// The cell (`j * nx + i`).
+    pub cell: usize,
+    /// The last move that cut it and the height it left.
+    pub last: Option<(Span, f64)>,
 }
 
 impl Simulation {
@@ -122,6 +135,7 @@ impl Simulation {
             check_rapids: false,
             rapid_hits: Vec::new(),
             chord,
+            watch: None,
         }
     }
 
@@ -144,6 +158,7 @@ impl Simulation {
             }
         }
         let reach = cutter.radius.max(self.field.dx.max(self.field.dy) / 2.0);
+        let before = self.watch.and_then(|w| self.field.z.get(w.cell).copied());
         let mut removed = 0.0;
         for (a, b) in self.chords(m) {
             removed += Sweep {
@@ -155,6 +170,12 @@ impl Simulation {
             .cut(&mut self.field);
         }
         self.tools[i].volume += removed;
+        if let (Some(w), Some(h)) = (self.watch.as_mut(), before) {
+            let after = self.field.z.get(w.cell).copied().unwrap_or(h);
+            if after < h {
+                w.last = Some((m.span, after as f64));
+            }
+        }
     }
 
     fn report_for(&mut self, tool: i64, cutter: Cutter) -> usize {
