@@ -184,23 +184,9 @@ fn cr_note(file: FileId, at: Option<u64>) -> Option<Diagnostic> {
 /// Reads a whole program.
 pub fn read_program(text: &str, file: FileId, spec: &DialectSpec) -> (Program, Vec<Diagnostic>) {
     let mut program = Program::new(file, spec.id.clone());
-    let mut diags = Vec::new();
-    let mut reader = Reader::new(spec, file);
-    let mut first_cr = None;
-    for (line, offset) in lines(text) {
-        let end = offset as usize + line.len();
-        if first_cr.is_none()
-            && text.as_bytes().get(end) == Some(&b'\r')
-            && text.as_bytes().get(end + 1) != Some(&b'\n')
-        {
-            first_cr = Some(end as u64);
-        }
-        if let Some(b) = reader.line(line, offset, &mut program.exprs, &mut diags) {
-            program.blocks.push(b);
-        }
-    }
-    diags.extend(reader.finish());
-    diags.extend(cr_note(file, first_cr));
+    let mut blocks = Vec::new();
+    let diags = read_each(text, file, spec, &mut program.exprs, |b, _| blocks.push(b));
+    program.blocks = blocks;
     (program, diags)
 }
 
@@ -214,6 +200,22 @@ pub fn read_blocks(
     mut on_block: impl FnMut(&Block, &Arena<Expr>),
 ) -> Vec<Diagnostic> {
     let mut exprs = Arena::new();
+    read_each(text, file, spec, &mut exprs, |b, exprs| {
+        on_block(&b, exprs);
+        exprs.clear();
+    })
+}
+
+/// Reads `text` line by line into `exprs`, handing each block to
+/// `on_block`; the reader's closing diagnostics and the CR-only note
+/// come last.
+fn read_each(
+    text: &str,
+    file: FileId,
+    spec: &DialectSpec,
+    exprs: &mut Arena<Expr>,
+    mut on_block: impl FnMut(Block, &mut Arena<Expr>),
+) -> Vec<Diagnostic> {
     let mut diags = Vec::new();
     let mut reader = Reader::new(spec, file);
     let mut first_cr = None;
@@ -225,10 +227,9 @@ pub fn read_blocks(
         {
             first_cr = Some(end as u64);
         }
-        if let Some(b) = reader.line(line, offset, &mut exprs, &mut diags) {
-            on_block(&b, &exprs);
+        if let Some(b) = reader.line(line, offset, exprs, &mut diags) {
+            on_block(b, exprs);
         }
-        exprs.clear();
     }
     diags.extend(reader.finish());
     diags.extend(cr_note(file, first_cr));

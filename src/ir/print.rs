@@ -5,8 +5,8 @@
 
 use super::expr::{BinaryOp, DimMode, ExprId, ExprKind, UnaryOp, Value, Var};
 use super::program::Program;
-use super::{Arena, Expr};
 use super::stmt::*;
+use super::{Arena, Expr};
 use crate::span::Span;
 use std::fmt::Write;
 

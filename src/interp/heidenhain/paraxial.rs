@@ -3,10 +3,10 @@
 //! (with the TOOL CALL's DR), along the direction it moves. The front
 //! end has checked that the block moves one axis without RL/RR.
 
-use std::borrow::Cow;
 use super::super::target::{target, Frame};
 use super::super::{siemens, Interp, Stop};
 use crate::ir::{Arena, Block, Expr, Motion, StmtKind, TncFunctionKind};
+use std::borrow::Cow;
 
 /// The move with its end point moved by the tool radius, when the block
 /// says `R+`/`R-`.

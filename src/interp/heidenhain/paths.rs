@@ -1,7 +1,6 @@
 //! Klartext path blocks: the pole (`CC`), `C`/`CP` round it, polar `LP`/
 //! `CTP`; straight feeds are held for a following corner ([`super::corner`]).
 
-use std::borrow::Cow;
 use super::super::target::{target, Frame};
 use super::super::{exec::phase, motion as core_motion, siemens, Interp, Stop};
 use super::corner::{corner_join, send_held, send_line, Held};
@@ -11,6 +10,7 @@ use crate::ir::{
     StmtKind, Value,
 };
 use crate::span::Span;
+use std::borrow::Cow;
 
 /// `CC X.. Y..`: the pole, in the programmed system (no axes: here).
 pub fn pole(it: &mut Interp<'_, '_>, axes: &Axes, exprs: &Arena<Expr>) -> Result<(), Stop> {

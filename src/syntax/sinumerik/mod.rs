@@ -92,7 +92,10 @@ impl FrontEnd for SinumerikFrontEnd {
             if !self.table.as_ref().is_some_and(|t| t.is_for(input.spec)) {
                 self.table = Some(fast::FastTable::new(input.spec, &self.declared));
             }
-            let plain = self.table.as_ref().is_some_and(|t| t.plain_words(input.text));
+            let plain = self
+                .table
+                .as_ref()
+                .is_some_and(|t| t.plain_words(input.text));
             if plain {
                 if let Some(line) = word_fast::fast_line_with(input, &mut self.spare) {
                     return Some(line);
