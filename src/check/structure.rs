@@ -67,6 +67,8 @@ pub struct StructureChecker {
     first_program_wins: bool,
     /// `strict-sub-styles`: an M99 inside an o-word sub is an error.
     strict_sub_styles: bool,
+    /// `main-return-ends`: an M99 outside any sub ends the program as M2.
+    main_return_ends: bool,
     /// o-word subs called from the main program since its last M2/M30
     /// (lower case), for `strict-sub-styles`.
     called_in_main: std::collections::HashSet<String>,
@@ -93,6 +95,7 @@ impl StructureChecker {
             first_program_wins: spec.has(Capability::FirstProgramWins),
             strict_sub_styles: spec.has(Capability::StrictSubStyles),
             called_in_main: Default::default(),
+            main_return_ends: spec.has(Capability::MainReturnEnds),
             stack: Vec::new(),
             subs_open: 0,
             diags: Vec::new(),
@@ -170,6 +173,10 @@ impl StructureChecker {
     fn track_content(&mut self, s: &Stmt) {
         match &s.kind {
             StmtKind::Stop(StopKind::End | StopKind::EndRewind) => {
+                self.saw_end = true;
+                self.called_in_main.clear();
+            }
+            StmtKind::SubReturn { .. } if self.main_return_ends && !self.in_sub() => {
                 self.saw_end = true;
                 self.called_in_main.clear();
             }
