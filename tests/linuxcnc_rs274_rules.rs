@@ -250,3 +250,14 @@ fn text_after_the_closing_percent_is_not_read() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(stderr(&o).contains("W0007"), "{}", stderr(&o));
 }
+
+/// Zero-radius compensation (G41.1 D0) in G18: the arc is written in the
+/// plane's axis order (Z X, then Y), as rs274 writes it.
+#[test]
+fn zero_radius_comp_arc_in_xz_keeps_the_plane_order() {
+    let out = rules("d0_xz_arc.ngc");
+    assert!(
+        out.contains("ARC_FEED(3.0000, 1.0000, 2.0000, 1.0000, 1, 0.0000, 0.0000, 0.0000, 0.0000)"),
+        "{out}"
+    );
+}

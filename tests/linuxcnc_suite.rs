@@ -38,10 +38,6 @@ const KNOWN: &[(&str, &str)] = &[
         "lathe cutter compensation with a tool orientation (Q2): the nose-radius shift is not modelled",
     ),
     (
-        "interp/inside-corners",
-        "zero-radius compensation (D0): cncc makes degenerate corner arcs where rs274 makes none",
-    ),
-    (
         "interp/g71-endless-loop2",
         "G70/G71/G72 lathe roughing cycles are not implemented",
     ),
