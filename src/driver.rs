@@ -113,7 +113,11 @@ impl<'s> Reader<'s> {
         block.label = syntax.label;
         self.structure.block(self.index, block, exprs);
         self.index += 1;
-        if block.stmts.iter().any(|s| matches!(s.kind, crate::ir::StmtKind::Tape)) {
+        if block
+            .stmts
+            .iter()
+            .any(|s| matches!(s.kind, crate::ir::StmtKind::Tape))
+        {
             self.percents += 1;
         }
         true
@@ -122,8 +126,17 @@ impl<'s> Reader<'s> {
     /// Where the dialect has `stop-at-closing-percent` (LinuxCNC): a line
     /// after the second `%` is not read; the first such line with text gets
     /// a note (W0007).
-    fn past_closing_percent(&mut self, text: &str, offset: u32, diags: &mut Vec<Diagnostic>) -> bool {
-        if self.percents < 2 || !self.spec.has(crate::dialect::Capability::StopAtClosingPercent) {
+    fn past_closing_percent(
+        &mut self,
+        text: &str,
+        offset: u32,
+        diags: &mut Vec<Diagnostic>,
+    ) -> bool {
+        if self.percents < 2
+            || !self
+                .spec
+                .has(crate::dialect::Capability::StopAtClosingPercent)
+        {
             return false;
         }
         if !self.after_end_noted && !text.trim().is_empty() {

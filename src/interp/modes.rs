@@ -136,9 +136,7 @@ fn later_comment(it: &Interp<'_, '_>, s: &Stmt, block: &Block) -> bool {
         )
     };
     paren(&s.kind)
-        && it
-            .spec
-            .has(crate::dialect::Capability::LastCommentOnly)
+        && it.spec.has(crate::dialect::Capability::LastCommentOnly)
         && block
             .stmts
             .iter()

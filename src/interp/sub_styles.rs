@@ -21,9 +21,12 @@ pub fn check_call(it: &Interp<'_, '_>, kind: CallKind, def: Option<&Block>) -> R
     let Some(def) = def else { return Ok(()) };
     for s in &def.stmts {
         let msg = match (&s.kind, kind) {
-            (StmtKind::ProgramStart { number: Some(_), .. }, CallKind::OWord) => {
-                "Fanuc 'O....' subroutine must be called with 'M98'"
-            }
+            (
+                StmtKind::ProgramStart {
+                    number: Some(_), ..
+                },
+                CallKind::OWord,
+            ) => "Fanuc 'O....' subroutine must be called with 'M98'",
             (
                 StmtKind::SubStart {
                     id: FlowId::OWord(_),

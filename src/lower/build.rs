@@ -151,9 +151,7 @@ fn spindle(cw: &CodeWord<'_>, f: SpindleFn, words: &mut Words) -> SpindleState {
         SpindleFn::Stop => SpindleState::Stop,
         // The angle is the first `uses` word (LinuxCNC R); the others
         // (LinuxCNC P direction, Q timeout) stay words of the block.
-        SpindleFn::Orient => {
-            SpindleState::Orient(uses(cw).first().and_then(|c| words.value(*c)))
-        }
+        SpindleFn::Orient => SpindleState::Orient(uses(cw).first().and_then(|c| words.value(*c))),
     }
 }
 
