@@ -35,6 +35,10 @@ pub struct Reader<'s> {
     lowering: Lowering<'s>,
     structure: StructureChecker,
     index: usize,
+    /// `%` lines read so far.
+    percents: u32,
+    /// Whether the lines after the closing `%` were reported (W0007).
+    after_end_noted: bool,
 }
 
 impl<'s> Reader<'s> {
@@ -46,6 +50,8 @@ impl<'s> Reader<'s> {
             lowering: Lowering::new(spec),
             structure: StructureChecker::new(spec),
             index: 0,
+            percents: 0,
+            after_end_noted: false,
         }
     }
 
@@ -78,6 +84,9 @@ impl<'s> Reader<'s> {
             offset,
             spec: self.spec,
         };
+        if self.past_closing_percent(text, offset, diags) {
+            return false;
+        }
         if text.len() > MAX_LINE {
             diags.push(too_long(Span::new(
                 self.file,
@@ -104,6 +113,44 @@ impl<'s> Reader<'s> {
         block.label = syntax.label;
         self.structure.block(self.index, block, exprs);
         self.index += 1;
+        if block
+            .stmts
+            .iter()
+            .any(|s| matches!(s.kind, crate::ir::StmtKind::Tape))
+        {
+            self.percents += 1;
+        }
+        true
+    }
+
+    /// Where the dialect has `stop-at-closing-percent` (LinuxCNC): a line
+    /// after the second `%` is not read; the first such line with text gets
+    /// a note (W0007).
+    fn past_closing_percent(
+        &mut self,
+        text: &str,
+        offset: u32,
+        diags: &mut Vec<Diagnostic>,
+    ) -> bool {
+        if self.percents < 2
+            || !self
+                .spec
+                .has(crate::dialect::Capability::StopAtClosingPercent)
+        {
+            return false;
+        }
+        if !self.after_end_noted && !text.trim().is_empty() {
+            self.after_end_noted = true;
+            let end = offset as usize + text.len().min(80);
+            diags.push(
+                Diagnostic::new(
+                    crate::diag::Code::AfterClosingPercent,
+                    "text after the closing `%` is not read",
+                )
+                .primary(Span::new(self.file, offset as usize, end), "from here on")
+                .help("move what should run before the closing `%`"),
+            );
+        }
         true
     }
 

@@ -167,3 +167,97 @@ fn m73_restores_coolant_that_was_on() {
     assert!(tail.contains("MIST_ON()"), "{out}");
     assert_eq!(out.matches("FLOOD_OFF()").count(), 2, "{out}");
 }
+
+/// rs274 drops blanks inside words (`o100 end sub`, `else if`, `end if`),
+/// keeps only the last of two comments on a line, orients with M19 only
+/// when R or P is given and waits only when Q is, and ends at a
+/// main-program M99 as at M2, showing that line's comment (the calls rs274
+/// printed, line for line).
+#[test]
+fn blanks_comments_m19_and_main_m99() {
+    let out = rules("blanks_and_comments.ngc");
+    let calls: Vec<&str> = out.lines().skip(6).take(9).collect();
+    assert_eq!(
+        calls,
+        [
+            "STRAIGHT_TRAVERSE(0.0000, 0.0000, 2.0000, 0.0000, 0.0000, 0.0000)",
+            "SET_FEED_RATE(100.0000)",
+            "STRAIGHT_FEED(3.0000, 0.0000, 2.0000, 0.0000, 0.0000, 0.0000)",
+            "COMMENT(\"second\")",
+            "STRAIGHT_TRAVERSE(1.0000, 0.0000, 2.0000, 0.0000, 0.0000, 0.0000)",
+            "ORIENT_SPINDLE(0, 45.0000, 0)",
+            "ORIENT_SPINDLE(0, 0.0000, 1)",
+            "SPINDLE.0.WAIT_ORIENT_COMPLETE(2.0000)",
+            "COMMENT(\"the end\")",
+        ],
+        "{out}"
+    );
+    assert!(out.contains("PROGRAM_END()"), "{out}");
+    assert!(!out.contains("PALLET_SHUTTLE"), "{out}");
+}
+
+/// Sub styles do not mix, and flow must not run into a sub it called:
+/// rs274's error, on the line rs274 shows.
+#[test]
+fn mixed_sub_styles_are_refused_where_rs274_stops() {
+    for (file, msg, line) in [
+        (
+            "sub_style_call.ngc",
+            "Fanuc 'O....' subroutine must be called with 'M98'",
+            5,
+        ),
+        (
+            "sub_style_m98.ngc",
+            "'O.... sub' subroutine must be called with 'O.... call'",
+            5,
+        ),
+        (
+            "sub_style_m99.ngc",
+            "'O.... endsub' or 'O.... return' must follow",
+            7,
+        ),
+        (
+            "sub_after_call.ngc",
+            "sub: o|7| found in illegal location",
+            3,
+        ),
+    ] {
+        let o = cncc(&[
+            "canon",
+            "--dialect",
+            "linuxcnc",
+            &format!("tests/programs/linuxcnc/rs274_rules/{file}"),
+        ]);
+        assert_eq!(o.status.code(), Some(1), "{file}");
+        let e = stderr(&o);
+        assert!(
+            e.contains(msg) && e.contains(&format!("{file}:{line}:")),
+            "{file}: {e}"
+        );
+    }
+}
+
+/// Nothing after the closing `%` is read (a nested comment and a bad word
+/// there are no errors), with a note.
+#[test]
+fn text_after_the_closing_percent_is_not_read() {
+    let o = cncc(&[
+        "canon",
+        "--dialect",
+        "linuxcnc",
+        "tests/programs/linuxcnc/rs274_rules/after_percent.ngc",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).contains("W0007"), "{}", stderr(&o));
+}
+
+/// Zero-radius compensation (G41.1 D0) in G18: the arc is written in the
+/// plane's axis order (Z X, then Y), as rs274 writes it.
+#[test]
+fn zero_radius_comp_arc_in_xz_keeps_the_plane_order() {
+    let out = rules("d0_xz_arc.ngc");
+    assert!(
+        out.contains("ARC_FEED(3.0000, 1.0000, 2.0000, 1.0000, 1, 0.0000, 0.0000, 0.0000, 0.0000)"),
+        "{out}"
+    );
+}

@@ -38,10 +38,6 @@ const KNOWN: &[(&str, &str)] = &[
         "lathe cutter compensation with a tool orientation (Q2): the nose-radius shift is not modelled",
     ),
     (
-        "interp/inside-corners",
-        "zero-radius compensation (D0): cncc makes degenerate corner arcs where rs274 makes none",
-    ),
-    (
         "interp/g71-endless-loop2",
         "G70/G71/G72 lathe roughing cycles are not implemented",
     ),
@@ -51,39 +47,11 @@ const KNOWN: &[(&str, &str)] = &[
     ),
     (
         "interp/g72-facing",
-        "`o100 end sub` (rs274 drops blanks inside words) and G72 are not read",
+        "G70/G71/G72 lathe roughing cycles are not implemented (G72)",
     ),
     (
         "interp/g72-missing-iteration",
-        "`o100 end sub` (rs274 drops blanks inside words) and G72 are not read",
-    ),
-    (
-        "interp/m19@no-ini (variant, not in suite)",
-        "M19: ORIENT_SPINDLE with neither R nor P, P read as the angle",
-    ),
-    (
-        "interp/m98m99/06-error-mixed-sub-styles:O...-called-with-O..._call",
-        "rs274 refuses `O1 call` on a Fanuc `O1 ... M99` program; cncc runs it until the loop limit",
-    ),
-    (
-        "interp/m98m99/06-error-mixed-sub-styles:O...-sub-called-with-M98",
-        "rs274 refuses `M98 P1` on an `O1 sub`; cncc runs it",
-    ),
-    (
-        "interp/m98m99/06-error-mixed-sub-styles:O...-sub-ended-with-M99",
-        "rs274 refuses M99 inside `O1 sub` at the M99; cncc reports the unclosed sub at its start",
-    ),
-    (
-        "interp/m98m99/11-main-program-oword:illegal-no-m30-before-osub",
-        "rs274 refuses an `O2 sub` after a main program with no M2/M30; cncc only reports the missing end",
-    ),
-    (
-        "interp/m98m99/11-main-program-oword:illegal-sub-after-percent",
-        "text after the closing `%` is still lexed by cncc (a comment error), rs274 ignores it",
-    ),
-    (
-        "interp/m98m99/12-M99-endless-main-program",
-        "a main-program M99 (task loops; standalone rs274 ends), and rs274 keeps only the last of two comments on a line",
+        "G70/G71/G72 lathe roughing cycles are not implemented (G72)",
     ),
 ];
 

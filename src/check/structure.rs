@@ -65,6 +65,13 @@ pub struct StructureChecker {
     end_required: bool,
     /// A program number given twice is no error (the first is called).
     first_program_wins: bool,
+    /// `strict-sub-styles`: an M99 inside an o-word sub is an error.
+    strict_sub_styles: bool,
+    /// `main-return-ends`: an M99 outside any sub ends the program as M2.
+    main_return_ends: bool,
+    /// o-word subs called from the main program since its last M2/M30
+    /// (lower case), for `strict-sub-styles`.
+    called_in_main: std::collections::HashSet<String>,
     stack: Vec<Open>,
     /// How many `Sub` openers `stack` holds (kept so that asking is O(1)
     /// however deep the nesting).
@@ -86,6 +93,9 @@ impl StructureChecker {
         StructureChecker {
             end_required: spec.has(Capability::ProgramEndRequired),
             first_program_wins: spec.has(Capability::FirstProgramWins),
+            strict_sub_styles: spec.has(Capability::StrictSubStyles),
+            called_in_main: Default::default(),
+            main_return_ends: spec.has(Capability::MainReturnEnds),
             stack: Vec::new(),
             subs_open: 0,
             diags: Vec::new(),
@@ -162,7 +172,27 @@ impl StructureChecker {
     /// Notes program ends and the main program's statements.
     fn track_content(&mut self, s: &Stmt) {
         match &s.kind {
-            StmtKind::Stop(StopKind::End | StopKind::EndRewind) => self.saw_end = true,
+            StmtKind::Stop(StopKind::End | StopKind::EndRewind) => {
+                self.saw_end = true;
+                self.called_in_main.clear();
+            }
+            StmtKind::SubReturn { .. } if self.main_return_ends && !self.in_sub() => {
+                self.saw_end = true;
+                self.called_in_main.clear();
+            }
+            StmtKind::Call {
+                kind: crate::ir::CallKind::OWord,
+                target,
+                ..
+            } if !self.in_sub() => {
+                let name = match target {
+                    crate::ir::CallTarget::Number(n) => n.to_string(),
+                    crate::ir::CallTarget::Name(n) => n.to_ascii_lowercase(),
+                    crate::ir::CallTarget::Computed(_) => String::new(),
+                };
+                self.called_in_main.insert(name);
+                self.last_main = Some(s.span);
+            }
             StmtKind::Tape if self.last_main.is_some() => self.saw_end = true,
             StmtKind::Tape | StmtKind::Comment { .. } | StmtKind::ProgramStart { .. } => {}
             StmtKind::SubStart { .. } | StmtKind::SubEnd { .. } => {}
@@ -198,6 +228,7 @@ impl StructureChecker {
             StmtKind::SubStart { name, id, .. } => self.sub_start(name, id, sp),
             StmtKind::SubEnd { id, .. } => self.close(&[O::Sub], id, sp, "ENDSUB"),
             StmtKind::Return { .. } => self.misplaced_return(sp),
+            StmtKind::SubReturn { .. } => self.return_in_oword_sub(sp),
             StmtKind::Break { id } => self.misplaced_break(id, sp, "break"),
             StmtKind::Continue { id } => self.misplaced_break(id, sp, "continue"),
             StmtKind::ProgramStart {
@@ -317,6 +348,20 @@ impl StructureChecker {
                 "end the outer sub before defining this one",
             );
         }
+        // rs274 runs on from a call into the definition of the sub it
+        // called (no M2/M30 between): "sub found in illegal location"
+        // [?: a call under a condition not taken is counted too].
+        let reached = matches!(id, FlowId::OWord(_))
+            && self.strict_sub_styles
+            && !nested
+            && self.called_in_main.contains(&name.to_ascii_lowercase());
+        if reached {
+            self.misplaced(
+                span,
+                format!("sub: o|{name}| found in illegal location"),
+                "end the main program with M2 or M30 before the subroutines it calls",
+            );
+        }
         let first = self.subs.get(name).copied();
         self.duplicate(first, span, &format!("subroutine `{name}`"));
         self.subs.entry(name.to_string()).or_insert(span);
@@ -342,6 +387,24 @@ impl StructureChecker {
                 .primary(span, "not allowed here")
                 .help(help),
         );
+    }
+
+    /// Where subroutine styles do not mix (LinuxCNC): an M99 inside an
+    /// `O1 sub` is rs274's error at the M99; the sub counts as closed.
+    fn return_in_oword_sub(&mut self, span: Span) {
+        let in_oword_sub = self
+            .stack
+            .last()
+            .is_some_and(|o| o.kind == Opener::Sub && matches!(o.id, FlowId::OWord(_)));
+        if !self.strict_sub_styles || !in_oword_sub {
+            return;
+        }
+        self.misplaced(
+            span,
+            "'O.... endsub' or 'O.... return' must follow 'O.... sub' subroutine definition".into(),
+            "end an `O1 sub` with `O1 endsub`; M99 ends an `O1` program called by M98",
+        );
+        self.pop();
     }
 
     fn misplaced_return(&mut self, span: Span) {

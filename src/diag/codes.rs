@@ -284,6 +284,9 @@ codes! {
     CrLineEnds = "W0006", "cr-line-ends", Note,
         "lines that end with a lone carriage return",
         "The file ends its lines with CR alone (classic Mac OS, some DNC software), not LF or CR LF. cncc reads each CR as a line end; a controller or DNC link set for LF may read the whole file as one block. Convert the line ends if the machine needs it.";
+    AfterClosingPercent = "W0007", "after-closing-percent", Note,
+        "text after the closing % that is not read",
+        "In this dialect the useful contents of a file stop at the second `%` line (LinuxCNC); everything after it is ignored, as the controller ignores it. Move what should run before the closing `%`.";
     DivisionByZero = "E0503", "division-by-zero", Error,
         "a division by zero while the program runs",
         "An expression divides by zero (or takes MOD of zero) with the values the variables have at that point. Check the divisor's variables.";

@@ -206,6 +206,31 @@ pub enum Capability {
     /// "Cannot put an a in canned cycle"); elsewhere it moves with the
     /// positioning.
     CycleRotaryWordsRefused,
+    /// Blanks inside words are dropped before a line is read, so `end sub`
+    /// is `endsub` and `else if` is `elseif` (LinuxCNC rs274 drops every
+    /// blank outside comments; its g72 tests write `o100 end sub`).
+    BlanksInsideWords,
+    /// Of several comments on one line only the last is the block's comment
+    /// (LinuxCNC rs274 2.9 keeps one comment per block; its
+    /// 12-M99-endless-main-program test). Elsewhere every comment counts.
+    LastCommentOnly,
+    /// An M99 in the main program ends the run as M2 does (the standalone
+    /// LinuxCNC interpreter; task would loop). Elsewhere it starts the main
+    /// program again.
+    MainReturnEnds,
+    /// Subroutine styles do not mix (LinuxCNC): an `O1 ... M99` program is
+    /// called with M98 only, an `O1 sub` with `O1 call` only, and an M99 in
+    /// an `O1 sub` is an error; and normal flow reaching a sub definition
+    /// already known (called before it, or passed before, as in a loop) is
+    /// "sub found in illegal location".
+    StrictSubStyles,
+    /// Nothing after the closing `%` is read (LinuxCNC: the useful contents
+    /// of a file stop at the second `%`).
+    StopAtClosingPercent,
+    /// M19 orients only when R (angle) or P (direction) is given, and waits
+    /// only when Q (timeout) is given (LinuxCNC); elsewhere M19 always
+    /// orients and waits.
+    OrientByWords,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -292,6 +317,12 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
         "length-register-names-tool",
         Capability::LengthRegisterNamesTool,
     ),
+    ("blanks-inside-words", Capability::BlanksInsideWords),
+    ("last-comment-only", Capability::LastCommentOnly),
+    ("main-return-ends", Capability::MainReturnEnds),
+    ("strict-sub-styles", Capability::StrictSubStyles),
+    ("stop-at-closing-percent", Capability::StopAtClosingPercent),
+    ("orient-by-words", Capability::OrientByWords),
     ("change-names-tool", Capability::ChangeNamesTool),
     ("bare-motion-code-moves", Capability::BareMotionCodeMoves),
 ];

@@ -67,6 +67,9 @@ pub struct Walker<'l> {
     /// The file is a subprogram run alone: a return with no caller ends
     /// the run (it goes back to the caller cncc does not have).
     called: bool,
+    /// Sub definitions rs274 has recorded (passed in sequence or found by
+    /// a call), by program and block: see [`super::sub_styles`].
+    known_defs: std::collections::HashSet<(usize, usize)>,
 }
 
 /// What a block asks the walker to do next.
@@ -101,6 +104,7 @@ impl<'l> Walker<'l> {
             modal: None,
             start: 0,
             called: false,
+            known_defs: Default::default(),
         }
     }
 
@@ -254,6 +258,8 @@ impl<'l> Walker<'l> {
             .find(|s| matches!(s.kind, StmtKind::SubStart { .. }))
         {
             it.span = s.span;
+            let known = !self.known_defs.insert((prog, pc));
+            super::sub_styles::check_reached(it, block, known)?;
             return Ok(match self.progs[prog].index.partner.get(&pc) {
                 Some(&end) => Next::Jump(end + 1),
                 None => Next::Step,
@@ -626,7 +632,7 @@ impl<'l> Walker<'l> {
                 }
                 None
             }
-            SubReturn { to } => Some(self.sub_return(it, to.as_ref(), exprs)?),
+            SubReturn { to } => Some(self.sub_return(it, to.as_ref(), (prog, pc), exprs)?),
             Call {
                 kind,
                 target,
@@ -708,6 +714,7 @@ impl<'l> Walker<'l> {
         &mut self,
         it: &mut Interp<'_, '_>,
         to: Option<&Value>,
+        (prog, pc): (usize, usize),
         exprs: &Arena<Expr>,
     ) -> Result<Next, Stop> {
         if self.frames.is_empty()
@@ -720,6 +727,14 @@ impl<'l> Walker<'l> {
         }
         if self.frames.is_empty() && self.called {
             // The end of a subprogram checked alone: back to its caller.
+            return Ok(Next::End);
+        }
+        if self.frames.is_empty() && it.spec.has(crate::dialect::Capability::MainReturnEnds) {
+            // The standalone LinuxCNC interpreter ends here as at M2 (and
+            // the line's comment, skipped on a return, is shown).
+            let program = self.progs[prog].program.clone();
+            super::modes::block_comments(it, &program.blocks[pc])?;
+            super::machine::program_end(it, false)?;
             return Ok(Next::End);
         }
         if self.frames.is_empty() {
@@ -820,6 +835,12 @@ impl<'l> Walker<'l> {
                 ))
             }
         };
+        let def = at.checked_sub(1);
+        let def_block = def.and_then(|i| self.progs[to_prog].program.blocks.get(i));
+        super::sub_styles::check_call(it, kind, def_block)?;
+        if let Some(i) = def {
+            self.known_defs.insert((to_prog, i));
+        }
         let repeat = (passes > 1).then_some(((to_prog, at), passes));
         let call_span = it.span;
         let mut frame = Frame {

@@ -36,6 +36,7 @@ pub mod siemens;
 pub mod splines;
 pub mod state;
 pub mod stream;
+pub mod sub_styles;
 pub mod target;
 pub mod threading;
 pub mod tool_header;

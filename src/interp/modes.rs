@@ -24,6 +24,7 @@ pub fn exec(
     match &s.kind {
         // rs274 ignores comments on o-word lines.
         Comment { .. } if block.stmts.iter().any(|s| is_oword(&s.kind)) => Ok(()),
+        Comment { .. } | Message(_) if later_comment(it, s, block) => Ok(()),
         Comment { text, style } => comment(it, text, *style),
         Message(m) => {
             it.out(Canon::Message(m.clone().unwrap_or_default()));
@@ -104,6 +105,42 @@ pub fn exec(
             "this statement is not run by the interpreter yet",
         )),
     }
+}
+
+/// The comments and messages of `block` run as on a line without control
+/// flow (a main-program M99 that ends the run shows them).
+pub fn block_comments(it: &mut Interp<'_, '_>, block: &Block) -> Result<(), Stop> {
+    for s in &block.stmts {
+        match &s.kind {
+            _ if later_comment(it, s, block) => {}
+            StmtKind::Comment { text, style } => comment(it, text, *style)?,
+            StmtKind::Message(m) => it.out(Canon::Message(m.clone().unwrap_or_default())),
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// Where the dialect has `last-comment-only` (rs274 keeps one comment per
+/// block, the last): whether a later `( )` comment on the line replaces
+/// this one.
+fn later_comment(it: &Interp<'_, '_>, s: &Stmt, block: &Block) -> bool {
+    let paren = |k: &StmtKind| {
+        matches!(
+            k,
+            StmtKind::Message(_)
+                | StmtKind::Comment {
+                    style: CommentStyle::Paren,
+                    ..
+                }
+        )
+    };
+    paren(&s.kind)
+        && it.spec.has(crate::dialect::Capability::LastCommentOnly)
+        && block
+            .stmts
+            .iter()
+            .any(|o| paren(&o.kind) && o.span.start > s.span.start)
 }
 
 /// A control-flow statement (an o-word line in LinuxCNC).
@@ -316,15 +353,24 @@ fn spindle(
             it.out(Canon::StopSpindle);
         }
         SpindleState::Orient(angle) => {
+            let given = angle.is_some();
             let angle = match angle {
                 Some(v) => it.value(v, exprs)?,
                 None => 0.0,
             };
-            let mode = aux::block_word(it, block, 'P', exprs)?.unwrap_or(0.0) as i64;
-            let wait = aux::block_word(it, block, 'Q', exprs)?.unwrap_or(0.0);
+            let mode = aux::block_word(it, block, 'P', exprs)?;
+            let wait = aux::block_word(it, block, 'Q', exprs)?;
             it.state.spindle = SpindleDir::Stopped;
-            it.out(Canon::OrientSpindle { angle, mode });
-            it.out(Canon::WaitOrientComplete(wait));
+            // LinuxCNC (`orient-by-words`): orient only with R or P, wait
+            // only with Q; elsewhere always both.
+            let by_words = it.spec.has(crate::dialect::Capability::OrientByWords);
+            if !by_words || given || mode.is_some() {
+                let mode = mode.unwrap_or(0.0) as i64;
+                it.out(Canon::OrientSpindle { angle, mode });
+            }
+            if !by_words || wait.is_some() {
+                it.out(Canon::WaitOrientComplete(wait.unwrap_or(0.0)));
+            }
         }
     }
     Ok(())

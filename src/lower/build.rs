@@ -149,7 +149,9 @@ fn spindle(cw: &CodeWord<'_>, f: SpindleFn, words: &mut Words) -> SpindleState {
         SpindleFn::Cw => SpindleState::Cw,
         SpindleFn::Ccw => SpindleState::Ccw,
         SpindleFn::Stop => SpindleState::Stop,
-        SpindleFn::Orient => SpindleState::Orient(first_used(cw, words)),
+        // The angle is the first `uses` word (LinuxCNC R); the others
+        // (LinuxCNC P direction, Q timeout) stay words of the block.
+        SpindleFn::Orient => SpindleState::Orient(uses(cw).first().and_then(|c| words.value(*c))),
     }
 }
 

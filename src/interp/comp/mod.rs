@@ -263,14 +263,21 @@ impl RadiusComp {
                 return Err(self.error(CompErrorKind::ArcAfterExit, None));
             }
             self.queue.flush(out);
+            // Zero-radius compensation (D0) in G18 still writes the arc in
+            // the plane's axis order (Z X, Y the axis end), as rs274 does.
+            let p = if self.side.is_some() {
+                self.to_plane(to)
+            } else {
+                to
+            };
             out(Canon::ArcFeed {
-                first_end: to[0],
-                second_end: to[1],
+                first_end: p[0],
+                second_end: p[1],
                 first_axis: centre.0,
                 second_axis: centre.1,
                 rotation,
-                axis_end: to[2],
-                abc: [to[3], to[4], to[5]],
+                axis_end: p[2],
+                abc: [p[3], p[4], p[5]],
             });
             return Ok(());
         }

@@ -37,10 +37,38 @@ pub fn split(
                 feed.push((l, Tok::O, r))
             }
             Tok::Bad | Tok::Colon => diags.push(bad_char(input.text.get(l..r).unwrap_or("?"), sp)),
+            _ if join_blanked(input, feed, l, t, r) => {}
             _ => feed.push((l, t, r)),
         }
     }
     side
+}
+
+/// Where the dialect has `blanks-inside-words` (LinuxCNC drops every blank
+/// outside comments): a keyword or name right after another, with only
+/// blanks between, joins it when the two spell one keyword (`end sub` is
+/// `endsub`, `else if` is `elseif`). True when `t` was joined.
+fn join_blanked(input: &LineInput<'_>, feed: &mut [Spanned], l: usize, t: Tok, r: usize) -> bool {
+    let wordy = |t: Tok| matches!(t, Tok::Kw(_) | Tok::Name);
+    if !wordy(t) || !input.spec.has(Capability::BlanksInsideWords) {
+        return false;
+    }
+    let Some(last) = feed.last_mut() else {
+        return false;
+    };
+    let (pl, pt, pr) = *last;
+    let between = input.text.get(pr..l).unwrap_or("x");
+    if !wordy(pt) || !between.chars().all(|c| c == ' ' || c == '\t') {
+        return false;
+    }
+    let joined = format!("{}{}", &input.text[pl..pr], &input.text[l..r]);
+    match Kw::lookup(&joined) {
+        Some(kw) => {
+            *last = (pl, Tok::Kw(kw), r);
+            true
+        }
+        None => false,
+    }
 }
 
 /// Where the dialect has `no-nested-comments` (LinuxCNC): a `(` inside a
