@@ -58,6 +58,14 @@ pub struct Verdict {
 }
 
 impl Verdict {
+    /// Keeps the first cutting difference found, else takes `d`.
+    fn with_cutting(mut self, d: Option<Difference>) -> Self {
+        if self.cutting.is_none() {
+            self.cutting = d;
+        }
+        self
+    }
+
     pub fn same(&self) -> bool {
         self.cutting.is_none() && self.low_rapid.is_none()
     }
@@ -84,6 +92,12 @@ pub fn events(
             }
             out.push(e)
         });
+        if matches!(call, crate::canon::Canon::UseToolLengthOffset(_)) {
+            out.push(Event::Comment {
+                text: format!("{LENGTH_MARK}{}", tracker.length_offset_mm()),
+                span,
+            });
+        }
     };
     let diags = crate::interp::run(p, spec, opts, loader, &mut sink);
     (out, diags)
@@ -95,6 +109,10 @@ pub fn events(
 /// know, so the rapids after it, up to the next feed move, are an
 /// approach (not compared). Comments are not compared.
 pub const MACHINE_MARK: &str = "\u{0}cncc: machine-referenced move";
+
+/// A comment [`events`] puts where a tool length offset (mm, along Z)
+/// comes into force, for [`length_offsets`].
+const LENGTH_MARK: &str = "\u{0}cncc: tool length offset ";
 
 /// The statements of blocks that move in machine coordinates or to a
 /// reference point.
@@ -158,6 +176,13 @@ pub fn compare_within(
         rapids: c.rapid_differences.iter().map(diff).collect(),
         low_rapid: low_rapids(&a, b),
     }
+    // A tool the map renumbers is the same tool under the target's
+    // number: its length is in the target's table, not the run's.
+    .with_cutting(if tools.is_empty() {
+        length_offsets(&a, b)
+    } else {
+        None
+    })
 }
 
 /// The highest Z of any feed move (None: nothing is cut).
@@ -267,6 +292,53 @@ fn low_rapids(a: &[Event], b: &[Event]) -> Option<Difference> {
     None
 }
 
+/// The tool length offsets (mm) each tool cuts with, where one is in
+/// force: a tool cut with another length on each side (`G43 H2` while T1
+/// is in the spindle) cuts at another depth. A side that cuts with no
+/// offset at all (LinuxCNC without `G43`, the control's convention) is
+/// not compared.
+fn length_offsets(a: &[Event], b: &[Event]) -> Option<Difference> {
+    let (la, lb) = (cut_lengths(a), cut_lengths(b));
+    for (tool, (len_a, span_a)) in &la {
+        let Some((len_b, span_b)) = lb.get(tool) else {
+            continue;
+        };
+        if (len_a - len_b).abs() > TOLERANCE_MM {
+            return Some(Difference {
+                what: format!(
+                    "tool length offset: T{tool} cuts with A {}; B {} mm",
+                    num(*len_a),
+                    num(*len_b)
+                ),
+                a: Some(*span_a),
+                b: Some(*span_b),
+            });
+        }
+    }
+    None
+}
+
+/// The first non-zero length offset each tool makes a feed move with,
+/// and that move's statement.
+fn cut_lengths(ev: &[Event]) -> std::collections::BTreeMap<i64, (f64, Span)> {
+    let mut now = 0.0;
+    let mut out = std::collections::BTreeMap::new();
+    for e in ev {
+        match e {
+            Event::Comment { text, .. } => {
+                if let Some(v) = text.strip_prefix(LENGTH_MARK) {
+                    now = v.parse().unwrap_or(0.0);
+                }
+            }
+            Event::Move(m) if m.is_feed() && now != 0.0 => {
+                out.entry(m.tool).or_insert((now, m.span));
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
 fn num(v: f64) -> String {
     crate::ir::num::short_text(v, 3)
 }
@@ -312,6 +384,22 @@ mod tests {
     }
 
     const PART: &str = "G21 G90 G54 G17\nG0 X0 Y0 Z5.\nG1 Z-5. F100.\nG1 X50.\nG1 Y50.\n";
+
+    /// `G43 H2` while T1 is in the spindle cuts at T2's length: the same
+    /// program coordinates, another depth in the part.
+    #[test]
+    fn a_length_offset_of_another_tool_fails() {
+        let cut = "G0 X0 Y0\nG1 Z-5. F100.\nG1 X50.\nG0 Z5.\nM30\n";
+        let src = format!("G21 G90 G17\nT1 M6\nG43 H1 Z5.\n{cut}");
+        let bad = format!("G21 G90 G17\nT1 M6\nG43 H2 Z5.\n{cut}");
+        let v = verdict(&src, &bad);
+        let d = v.cutting.as_ref().expect("the length offset differs");
+        assert!(d.what.contains("tool length offset: T1"), "{}", d.what);
+        assert!(verdict(&src, &src).same());
+        // No offset at all on one side is a convention, not compared.
+        let none = format!("G21 G90 G17\nT1 M6\nG0 Z5.\n{cut}");
+        assert!(verdict(&src, &none).cutting.is_none());
+    }
 
     /// The port rapids across the part at Z-5 after the last cut: the
     /// cuts are the same, the verification must still fail.

@@ -70,6 +70,11 @@ impl Tracker {
         self.pos
     }
 
+    /// The tool length offset in force along Z (mm).
+    pub fn length_offset_mm(&self) -> f64 {
+        self.length_offset[2] * self.scale
+    }
+
     /// The tool in the spindle.
     pub fn tool(&self) -> i64 {
         self.tool
