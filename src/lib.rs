@@ -16,6 +16,7 @@ pub mod driver;
 pub mod emit;
 pub mod encoding;
 pub mod fuzzing;
+pub mod geom;
 pub mod interp;
 pub mod interpolate;
 pub mod ir;

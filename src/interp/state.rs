@@ -264,9 +264,10 @@ pub struct Placement {
 }
 
 /// Turns (x, y) by `deg` degrees counterclockwise.
+/// The geometry kernel's rotation about Z, unsnapped as rs274 computes it.
 pub fn rotate_xy(x: f64, y: f64, deg: f64) -> (f64, f64) {
-    let (s, c) = deg.to_radians().sin_cos();
-    (x * c - y * s, x * s + y * c)
+    let v = crate::geom::Transform::rot_z_unsnapped(deg).apply_dir(crate::geom::V3::new(x, y, 0.0));
+    (v.x, v.y)
 }
 
 impl Placement {

@@ -1,10 +1,11 @@
 //! Rigid frames (an origin and orthonormal axes) for the STEP-NC placement
-//! chain: setup → workpiece setup → feature → profile. The transforms
-//! are nalgebra isometries; the fields are their origin and axes, for
-//! the writers that set cycle parameters from them.
+//! chain: setup → workpiece setup → feature → profile. Composing,
+//! applying and inverting them is the geometry kernel's
+//! ([`crate::geom::Transform`]); the fields are the frame's origin and
+//! axes, for the writers that set cycle parameters from them.
 
+use crate::geom::{Transform, V3};
 use crate::stepnc::model::{Axis2Placement, P3};
-use nalgebra::{IsometryMatrix3, Matrix3, Point3, Rotation3, Translation3, Vector3};
 
 /// A placement as a transform: `apply(p) = origin + x*p.x + y*p.y + z*p.z`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -17,7 +18,7 @@ pub struct Frame {
 
 impl Frame {
     pub fn identity() -> Self {
-        Frame::from_iso(&IsometryMatrix3::identity())
+        Frame::from_transform(&Transform::identity())
     }
 
     /// From an `axis2_placement_3d` (axis default +Z, ref_direction +X;
@@ -26,41 +27,35 @@ impl Frame {
         let z = p
             .axis
             .as_ref()
-            .map(|d| v(d.ratios))
+            .map(|d| V3::from(d.ratios))
             .and_then(|a| a.try_normalize(1e-12))
-            .unwrap_or_else(Vector3::z);
+            .unwrap_or_else(V3::z);
         let xr = p
             .ref_direction
             .as_ref()
-            .map(|d| v(d.ratios))
-            .unwrap_or_else(Vector3::x);
+            .map(|d| V3::from(d.ratios))
+            .unwrap_or_else(V3::x);
         let x = (xr - z * xr.dot(&z))
             .try_normalize(1e-9)
             .unwrap_or_else(|| any_orthogonal(&z));
         let y = z.cross(&x);
-        let r = Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[x, y, z]));
-        Frame::from_iso(&IsometryMatrix3::from_parts(
-            Translation3::from(v(p.location.xyz)),
-            r,
-        ))
+        Frame::from_transform(&Transform::from_axes(V3::from(p.location.xyz), x, y, z))
     }
 
-    /// The frame as a rigid transform (nalgebra).
-    pub fn iso(&self) -> IsometryMatrix3<f64> {
-        let r = Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[
-            v(self.x),
-            v(self.y),
-            v(self.z),
-        ]));
-        IsometryMatrix3::from_parts(Translation3::from(v(self.origin)), r)
+    /// The frame as the kernel's transform.
+    pub fn transform(&self) -> Transform {
+        Transform::from_axes(
+            V3::from(self.origin),
+            V3::from(self.x),
+            V3::from(self.y),
+            V3::from(self.z),
+        )
     }
 
-    pub fn from_iso(i: &IsometryMatrix3<f64>) -> Self {
-        let m = i.rotation.matrix();
-        let col = |k: usize| -> P3 { [m[(0, k)], m[(1, k)], m[(2, k)]] };
-        let t = &i.translation.vector;
+    pub fn from_transform(t: &Transform) -> Self {
+        let col = |k: usize| -> P3 { t.m.column(k).into_owned().into() };
         Frame {
-            origin: [t.x, t.y, t.z],
+            origin: t.t.into(),
             x: col(0),
             y: col(1),
             z: col(2),
@@ -69,19 +64,24 @@ impl Frame {
 
     /// `inner` placed in this frame.
     pub fn then(&self, inner: &Frame) -> Frame {
-        Frame::from_iso(&(self.iso() * inner.iso()))
+        Frame::from_transform(&self.transform().then(&inner.transform()))
+    }
+
+    /// `other` seen from this frame (this frame's inverse, then `other`);
+    /// `None` only for a degenerate frame.
+    pub fn relative(&self, other: &Frame) -> Option<Frame> {
+        let inv = self.transform().inverse()?;
+        Some(Frame::from_transform(&inv.then(&other.transform())))
     }
 
     /// A point given in this frame, in the outer frame.
     pub fn apply(&self, p: P3) -> P3 {
-        let q = self.iso() * Point3::from(v(p));
-        [q.x, q.y, q.z]
+        self.transform().to_base(p)
     }
 
     /// A direction given in this frame, in the outer frame.
     pub fn rotate(&self, d: P3) -> P3 {
-        let q = self.iso().rotation * v(d);
-        [q.x, q.y, q.z]
+        self.transform().dir_to_base(d)
     }
 
     /// True when the local z axis is the outer +Z.
@@ -95,16 +95,8 @@ impl Frame {
     }
 }
 
-fn v(a: P3) -> Vector3<f64> {
-    Vector3::new(a[0], a[1], a[2])
-}
-
-fn any_orthogonal(z: &Vector3<f64>) -> Vector3<f64> {
-    let t = if z.x.abs() < 0.9 {
-        Vector3::x()
-    } else {
-        Vector3::y()
-    };
+fn any_orthogonal(z: &V3) -> V3 {
+    let t = if z.x.abs() < 0.9 { V3::x() } else { V3::y() };
     (t - z * t.dot(z)).normalize()
 }
 

@@ -356,8 +356,8 @@ fn repeated_placement(f: &Feature) -> Diagnostic {
 
 /// `--profiles-absolute`: a profile whose placement repeats its feature's
 /// is read as written in workpiece coordinates: it is carried into the
-/// feature's frame (the feature's placement inverted, then the profile's;
-/// nalgebra isometries). Only such profiles change.
+/// feature's frame (the feature's placement inverted, then the profile's,
+/// by the geometry kernel). Only such profiles change.
 pub fn profiles_absolute(project: &mut Project) {
     for f in &mut project.features {
         if !repeats_placement(f) {
@@ -379,8 +379,9 @@ pub fn profiles_absolute(project: &mut Project) {
             _ => None,
         };
         if let Some(p) = p {
-            let rel = feature.iso().inverse() * Frame::from_placement(p).iso();
-            let r = Frame::from_iso(&rel);
+            let Some(r) = feature.relative(&Frame::from_placement(p)) else {
+                continue;
+            };
             let clean = |v: P3| v.map(|c| if c.abs() < 1e-12 { 0.0 } else { c });
             p.location.xyz = clean(r.origin);
             if let Some(a) = p.axis.as_mut() {

@@ -44,9 +44,8 @@ pub fn turn(side: CompSide, radius: f64) -> f64 {
 }
 
 fn rotate(p: P2, c: P2, deg: f64) -> P2 {
-    let (s, co) = deg.to_radians().sin_cos();
-    let (x, y) = (p.0 - c.0, p.1 - c.1);
-    (c.0 + x * co - y * s, c.1 + x * s + y * co)
+    let [x, y] = crate::geom::turn_about([p.0, p.1], [c.0, c.1], deg);
+    (x, y)
 }
 
 /// The centre of the arc tangent to direction `d` (unit) at `p`.

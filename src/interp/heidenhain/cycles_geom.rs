@@ -143,7 +143,7 @@ impl Place {
     pub fn new(host: &dyn MotionHost, origin: (f64, f64), angle_deg: f64) -> Place {
         let (a, b, n) = plane_axes(host.plane());
         let (sin, cos) = angle_deg.to_radians().sin_cos();
-        let snap = crate::interp::siemens::frame::snap;
+        let snap = crate::geom::snap;
         Place {
             a,
             b,

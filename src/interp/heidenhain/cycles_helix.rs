@@ -99,7 +99,7 @@ pub(super) fn bore_mill(host: &mut dyn MotionHost, q: &Qs, r: f64) -> Result<Don
 }
 
 fn snap(v: f64) -> f64 {
-    crate::interp::siemens::frame::snap(v)
+    crate::geom::snap(v)
 }
 
 /// 262: internal thread milling.

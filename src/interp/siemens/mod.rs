@@ -100,8 +100,7 @@ pub fn arc_to_base(
 /// swaps them under MIRROR]; the core's radius compensation asks this.
 pub fn mirrors_plane(it: &Interp<'_, '_>) -> bool {
     let (a, b, _) = crate::interp::host::plane_axes(it.state.plane);
-    let m = &it.siemens.frame.m;
-    m[a][a] * m[b][b] - m[a][b] * m[b][a] < 0.0
+    it.siemens.frame.mirrors(a, b)
 }
 
 /// Runs a frame, cutting-edge, cycle-call or MCALL statement.

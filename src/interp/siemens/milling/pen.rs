@@ -22,10 +22,7 @@ impl Pen {
     pub fn new(host: &dyn MotionHost, origin: (f64, f64), angle_deg: f64) -> Pen {
         let (a, b, n) = plane_axes(host.plane());
         let (sin, cos) = angle_deg.to_radians().sin_cos();
-        let (sin, cos) = (
-            crate::interp::siemens::frame::snap(sin),
-            crate::interp::siemens::frame::snap(cos),
-        );
+        let (sin, cos) = (crate::geom::snap(sin), crate::geom::snap(cos));
         Pen {
             a,
             b,
