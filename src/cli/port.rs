@@ -13,7 +13,8 @@ use crate::emit::write_program_warned;
 use crate::ir::Program;
 use crate::port::subload::PortingLoader;
 use crate::port::verify::{self, Difference, Verdict};
-use crate::port::{port_program, PortOptions, ToolMap};
+use crate::port::verify_text;
+use crate::port::{port_owned, PortOptions, ToolMap};
 use crate::span::Span;
 use std::path::Path;
 use std::rc::Rc;
@@ -66,7 +67,11 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
         return Ok(EXIT_INPUT_ERRORS);
     }
     let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
-    let first = attempt(ctx, &dir, &program, &spec, &target, &opts);
+    // The port works on the program in place; where it is needed again
+    // (the fallback, the proof) it is read again from the source text,
+    // so a large program is never held twice.
+    let reread = || read_program(&text, id, &spec).0;
+    let first = attempt(ctx, &dir, program, &spec, &target, &opts);
     let (out, expanded) = match first {
         Ok((out, d)) => {
             diags.extend(d);
@@ -81,14 +86,14 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
             let mut scratch = crate::source::SourceMap::new();
             let mut loader = FsLoader::new(dir.clone(), spec.clone(), &mut scratch);
             let tried = crate::port::expand_range::legalize(
-                &program,
+                &reread(),
                 &text,
                 &spec,
                 &target,
                 &a.options,
                 &mut loader,
                 errors,
-                |p| attempt(ctx, &dir, p, &spec, &target, &opts),
+                |p| attempt(ctx, &dir, p.clone(), &spec, &target, &opts),
             );
             match tried {
                 Ok(((out, d), notes)) => {
@@ -113,11 +118,11 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
         let sides = Sides {
             dir: &dir,
             run: &a.options,
-            source: (program, &spec),
+            source: (&text, id, &spec),
             target: &target,
             opts: &opts,
         };
-        let ok = verify_port(ctx, &sides, &name, &out, &mut diags);
+        let ok = verify_port(ctx, sides, &name, &out, &mut diags);
         if std::env::var_os("CNCC_DEBUG_PORT").is_some() {
             eprintln!("{out}");
         }
@@ -138,23 +143,26 @@ struct Sides<'a> {
     dir: &'a Path,
     /// How both programs run (the analysis commands' machine).
     run: &'a crate::interp::Options,
-    source: (Program, &'a Arc<DialectSpec>),
+    /// The source's text, its file and dialect.
+    source: (&'a str, crate::span::FileId, &'a Arc<DialectSpec>),
     target: &'a Arc<DialectSpec>,
     opts: &'a PortOptions,
 }
 
 /// Reads the output back, runs both and compares; prints the verdict.
+/// Both sides run as streams ([`verify_text`]) and only their events
+/// are held; a subprogram ported alone runs whole, as `check` runs it.
 fn verify_port(
     ctx: &mut Context,
-    s: &Sides<'_>,
+    s: Sides<'_>,
     name: &str,
     out: &str,
     diags: &mut Vec<Diagnostic>,
 ) -> bool {
     let out_id = ctx.files.add(name.to_string(), out.to_string());
-    let (reread, read_diags) = read_program(out, out_id, s.target);
-    if read_diags.iter().any(|d| d.is_error()) {
-        diags.extend(read_diags);
+    let back = verify_text::scan(out, out_id, s.target);
+    if back.has_errors() {
+        diags.extend(back.diags);
         eprintln!(
             "verify: FAILED: the ported program does not read back as {}",
             s.target.id
@@ -162,17 +170,17 @@ fn verify_port(
         return false;
     }
     let opts = s.run.clone();
-    let (src_prog, src_spec) = (&s.source.0, s.source.1);
-    let fragment = crate::interp::fragment::detect(src_prog).is_some();
+    let (src_text, src_id, src_spec) = s.source;
+    let front = verify_text::scan(src_text, src_id, src_spec);
+    let fragment = front.fragment;
     let (ea, da) = {
         let mut loader = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
-        run_events(
-            Rc::new(src_prog.clone()),
-            src_spec,
-            &opts,
-            &mut loader,
-            fragment,
-        )
+        if fragment {
+            let p = read_program(src_text, src_id, src_spec).0;
+            run_fragment(Rc::new(p), src_spec, &opts, &mut loader)
+        } else {
+            verify_text::events(src_text, src_id, front, src_spec, &opts, &mut loader)
+        }
     };
     let (eb, mut db) = {
         let source = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
@@ -184,7 +192,12 @@ fn verify_port(
             diags: Vec::new(),
         };
         let topts = with_source_tools(&opts, s.target, &ea, diags);
-        let (e, mut d) = run_events(Rc::new(reread), s.target, &topts, &mut loader, fragment);
+        let (e, mut d) = if fragment {
+            let p = read_program(out, out_id, s.target).0;
+            run_fragment(Rc::new(p), s.target, &topts, &mut loader)
+        } else {
+            verify_text::events(out, out_id, back, s.target, &topts, &mut loader)
+        };
         d.extend(loader.diags.into_iter().filter(Diagnostic::is_error));
         (e, d)
     };
@@ -268,12 +281,12 @@ fn mismatch(d: &Difference) -> Diagnostic {
 fn attempt(
     ctx: &mut Context,
     dir: &Path,
-    program: &Program,
+    program: Program,
     spec: &Arc<DialectSpec>,
     target: &Arc<DialectSpec>,
     opts: &PortOptions,
 ) -> Result<(String, Vec<Diagnostic>), Vec<Diagnostic>> {
-    let (ported, mut diags) = port_program(program, spec, target, opts);
+    let (ported, mut diags) = port_owned(program, spec, target, opts);
     if diags.iter().any(|d| d.is_error()) {
         return Err(diags.into_iter().filter(|d| d.is_error()).collect());
     }
@@ -302,19 +315,15 @@ fn attempt(
     Ok((out, diags))
 }
 
-/// The moves of a run, as `--verify` compares them. A subprogram or
-/// macro ported alone runs as `check` runs it: from its first block, with
+/// The moves of a subprogram or macro ported alone, as `--verify`
+/// compares them: it runs as `check` runs it, from its first block, with
 /// the values it gets from its caller unknown.
-fn run_events(
+fn run_fragment(
     p: Rc<Program>,
     spec: &DialectSpec,
     opts: &crate::interp::Options,
     loader: &mut dyn crate::interp::flow::ProgramLoader,
-    fragment: bool,
 ) -> (Vec<crate::toolpath::Event>, Vec<Diagnostic>) {
-    if !fragment {
-        return verify::events(p, spec, opts, loader);
-    }
     let kind =
         crate::interp::fragment::detect(&p).unwrap_or(crate::interp::fragment::Fragment::Called);
     let mut tracker = crate::toolpath::Tracker::new();

@@ -6,7 +6,7 @@
 //! [`run_text`] runs a program held in memory the same way (a STEP-NC
 //! plan posted for running, see `crate::cli::stepnc_input`).
 
-use super::{stream::StreamRun, Interp, Options, Sink};
+use super::{flow::ProgramLoader, stream::StreamRun, Interp, Options, Sink};
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
 use crate::driver::{check_stream_flagged, decode, read_program, FsLoader};
@@ -35,13 +35,10 @@ pub fn run_file(
         crate::cli::context::read_limited(path, crate::cli::context::MAX_INPUT).map(|b| decode(&b))
     };
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let run = Run {
-        id,
-        spec,
-        opts,
-        dir: &dir,
-    };
-    run.go(input, whole, files, sink)
+    let mut loader = FsLoader::new(dir, spec.clone(), files);
+    let mut diags = Run { id, spec, opts }.go(input, whole, &mut loader, sink)?;
+    diags.append(&mut loader.diags);
+    Ok(diags)
 }
 
 /// [`run_file`] for a program held in memory (registered as `id`);
@@ -55,13 +52,26 @@ pub fn run_text(
     files: &mut SourceMap,
     sink: &mut Sink<'_>,
 ) -> std::io::Result<Vec<Diagnostic>> {
-    let run = Run {
-        id,
-        spec,
-        opts,
-        dir,
-    };
-    run.go(text.as_bytes(), || Ok(text.to_string()), files, sink)
+    let mut loader = FsLoader::new(dir.to_path_buf(), spec.clone(), files);
+    let mut diags = run_text_loading(text, id, spec, opts, &mut loader, sink);
+    diags.append(&mut loader.diags);
+    Ok(diags)
+}
+
+/// [`run_text`] with the caller's loader for the programs it calls (the
+/// port's proof loads the source's subprograms as ported).
+pub fn run_text_loading(
+    text: &str,
+    id: FileId,
+    spec: &Arc<DialectSpec>,
+    opts: &Options,
+    loader: &mut dyn ProgramLoader,
+    sink: &mut Sink<'_>,
+) -> Vec<Diagnostic> {
+    let run = Run { id, spec, opts };
+    // Reading from memory cannot fail.
+    run.go(text.as_bytes(), || Ok(text.to_string()), loader, sink)
+        .unwrap_or_default()
 }
 
 /// What a run needs besides its input.
@@ -69,25 +79,19 @@ struct Run<'r> {
     id: FileId,
     spec: &'r Arc<DialectSpec>,
     opts: &'r Options,
-    dir: &'r Path,
 }
 
 impl Run<'_> {
     /// Streams `input`; `whole` gives the whole text when the walker takes
-    /// over (control flow).
+    /// over (control flow), which loads called programs with `loader`.
     fn go(
         self,
         input: impl BufRead,
         whole: impl FnOnce() -> std::io::Result<String>,
-        files: &mut SourceMap,
+        loader: &mut dyn ProgramLoader,
         sink: &mut Sink<'_>,
     ) -> std::io::Result<Vec<Diagnostic>> {
-        let Run {
-            id,
-            spec,
-            opts,
-            dir,
-        } = self;
+        let Run { id, spec, opts } = self;
         let mut sink = sink;
         let mut it = Interp::new(spec, opts, &mut sink);
         it.start();
@@ -108,10 +112,7 @@ impl Run<'_> {
                 let text = whole()?;
                 let program = std::rc::Rc::new(read_program(&text, id, spec).0);
                 drop(text);
-                let mut loader = FsLoader::new(dir.to_path_buf(), spec.clone(), files);
-                let mut d = stream.continue_with(&mut it, program, &mut loader);
-                d.append(&mut loader.diags);
-                d
+                stream.continue_with(&mut it, program, loader)
             }
         };
         diags.extend(run);

@@ -93,6 +93,7 @@ mod tool_call;
 pub mod toolmap;
 mod tools;
 pub mod verify;
+pub mod verify_text;
 
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
@@ -118,9 +119,19 @@ pub fn port_program(
     to: &DialectSpec,
     opts: &PortOptions,
 ) -> (Program, Vec<Diagnostic>) {
-    let mut out = p.clone();
+    port_owned(p.clone(), from, to, opts)
+}
+
+/// [`port_program`] on a program the caller no longer needs: the passes
+/// work on it in place (a large program is not held twice).
+pub fn port_owned(
+    mut out: Program,
+    from: &DialectSpec,
+    to: &DialectSpec,
+    opts: &PortOptions,
+) -> (Program, Vec<Diagnostic>) {
     let mut diags = Vec::new();
-    haas_cycles::run(p, from, to, opts.expand_cycles, &mut diags);
+    haas_cycles::run(&out, from, to, opts.expand_cycles, &mut diags);
     if opts.expand_cycles {
         expand::expand_unmappable(&mut out, from, to, &mut diags);
     }

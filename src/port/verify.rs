@@ -31,7 +31,7 @@ use crate::interp::Options;
 use crate::ir::Program;
 use crate::span::Span;
 use crate::toolpath::{Event, Move, Tracker, P3};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::rc::Rc;
 
 /// Positions and centres must agree within this (mm).
@@ -78,12 +78,36 @@ pub fn events(
     opts: &Options,
     loader: &mut dyn ProgramLoader,
 ) -> (Vec<Event>, Vec<Diagnostic>) {
-    let machine = machine_spans(&p);
-    let mut tracker = Tracker::new();
-    let mut out = Vec::new();
-    let mut sink = |call: crate::canon::Canon, span: Span| {
-        let mark = machine.contains(&span);
-        tracker.push(&call, span, |e| {
+    let mut rec = Recorder::new(machine_spans(&p));
+    let diags = {
+        let mut sink = |call: crate::canon::Canon, span: Span| rec.call(call, span);
+        crate::interp::run(p, spec, opts, loader, &mut sink)
+    };
+    (rec.out, diags)
+}
+
+/// Turns a run's canonical calls into the events [`compare`] reads,
+/// with the marks it needs ([`MACHINE_MARK`], [`LENGTH_MARK`]).
+pub(crate) struct Recorder {
+    /// The statements of blocks that move in machine coordinates.
+    machine: HashSet<Span>,
+    tracker: Tracker,
+    pub out: Vec<Event>,
+}
+
+impl Recorder {
+    pub fn new(machine: HashSet<Span>) -> Self {
+        Recorder {
+            machine,
+            tracker: Tracker::new(),
+            out: Vec::new(),
+        }
+    }
+
+    pub fn call(&mut self, call: crate::canon::Canon, span: Span) {
+        let mark = self.machine.contains(&span);
+        let out = &mut self.out;
+        self.tracker.push(&call, span, |e| {
             if mark && matches!(e, Event::Move(_)) {
                 out.push(Event::Comment {
                     text: MACHINE_MARK.into(),
@@ -94,13 +118,11 @@ pub fn events(
         });
         if matches!(call, crate::canon::Canon::UseToolLengthOffset(_)) {
             out.push(Event::Comment {
-                text: format!("{LENGTH_MARK}{}", tracker.length_offset_mm()),
+                text: format!("{LENGTH_MARK}{}", self.tracker.length_offset_mm()),
                 span,
             });
         }
-    };
-    let diags = crate::interp::run(p, spec, opts, loader, &mut sink);
-    (out, diags)
+    }
 }
 
 /// A comment [`events`] puts before a move in machine coordinates or to
@@ -116,17 +138,25 @@ const LENGTH_MARK: &str = "\u{0}cncc: tool length offset ";
 
 /// The statements of blocks that move in machine coordinates or to a
 /// reference point.
-fn machine_spans(p: &Program) -> std::collections::HashSet<Span> {
+fn machine_spans(p: &Program) -> HashSet<Span> {
+    let mut spans = HashSet::new();
+    for b in &p.blocks {
+        add_machine_spans(b, &mut spans);
+    }
+    spans
+}
+
+/// Adds the statements of `b` when it moves in machine coordinates or to
+/// a reference point.
+pub(crate) fn add_machine_spans(b: &crate::ir::Block, spans: &mut HashSet<Span>) {
     use crate::ir::StmtKind;
-    p.blocks
+    let machine = b
+        .stmts
         .iter()
-        .filter(|b| {
-            b.stmts
-                .iter()
-                .any(|s| matches!(s.kind, StmtKind::MachineCoords | StmtKind::RefReturn { .. }))
-        })
-        .flat_map(|b| b.stmts.iter().map(|s| s.span))
-        .collect()
+        .any(|s| matches!(s.kind, StmtKind::MachineCoords | StmtKind::RefReturn { .. }));
+    if machine {
+        spans.extend(b.stmts.iter().map(|s| s.span));
+    }
 }
 
 /// Compares the events of the source (`a`) and the port (`b`) with the

@@ -1,0 +1,68 @@
+//! `port --verify` over program texts read as streams: each side is
+//! scanned once (its read diagnostics, the blocks that move in machine
+//! coordinates, whether it is a subprogram rather than a main program)
+//! and then run while it is read ([`crate::interp::file`]), so the proof
+//! holds the events of the two runs, not the two programs. A program
+//! with control flow is read whole from its first such block, as `canon`
+//! reads it.
+
+use super::verify::{add_machine_spans, Recorder};
+use crate::diag::Diagnostic;
+use crate::dialect::DialectSpec;
+use crate::interp::flow::ProgramLoader;
+use crate::interp::fragment::Detector;
+use crate::interp::Options;
+use crate::span::{FileId, Span};
+use crate::toolpath::Event;
+use std::collections::HashSet;
+use std::sync::Arc;
+
+/// What one reading of a program's text tells the proof.
+pub struct Scan {
+    /// The reader's diagnostics.
+    pub diags: Vec<Diagnostic>,
+    /// The statements of blocks that move in machine coordinates.
+    pub machine: HashSet<Span>,
+    /// A subprogram or macro ported alone (see [`crate::interp::fragment`]).
+    pub fragment: bool,
+}
+
+impl Scan {
+    pub fn has_errors(&self) -> bool {
+        self.diags.iter().any(Diagnostic::is_error)
+    }
+}
+
+/// Reads `text` (registered as `id`) block by block, keeping no block.
+pub fn scan(text: &str, id: FileId, spec: &DialectSpec) -> Scan {
+    let mut machine = HashSet::new();
+    let mut detector = Detector::default();
+    let read = crate::driver::check_stream_flagged(text.as_bytes(), id, spec, |b, _, _| {
+        add_machine_spans(b, &mut machine);
+        detector.block(b);
+    });
+    Scan {
+        // Reading from memory cannot fail.
+        diags: read.map(|r| r.diagnostics).unwrap_or_default(),
+        machine,
+        fragment: detector.is_fragment(),
+    }
+}
+
+/// Runs `text` while it is read and returns its toolpath events, as
+/// [`super::verify::events`] does for a program held whole.
+pub fn events(
+    text: &str,
+    id: FileId,
+    scan: Scan,
+    spec: &Arc<DialectSpec>,
+    opts: &Options,
+    loader: &mut dyn ProgramLoader,
+) -> (Vec<Event>, Vec<Diagnostic>) {
+    let mut rec = Recorder::new(scan.machine);
+    let diags = {
+        let mut sink = |call: crate::canon::Canon, span: Span| rec.call(call, span);
+        crate::interp::file::run_text_loading(text, id, spec, opts, loader, &mut sink)
+    };
+    (rec.out, diags)
+}
