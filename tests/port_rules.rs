@@ -247,3 +247,51 @@ fn a_bare_g1_sets_the_mode_and_needs_no_feed_except_on_linuxcnc() {
         port_verified("siemens840d", to, mpf.to_str().unwrap());
     }
 }
+
+/// An operator message (`MSG`) goes to a target that shows none without
+/// stopping as a comment with its text, warned once (W0610); LinuxCNC
+/// keeps it as `(MSG,..)`.
+#[test]
+fn an_operator_message_is_a_comment_where_the_target_has_none() {
+    let file = "tests/programs/siemens840d/port_message.mpf";
+    for to in ["fanuc", "haas", "heidenhain"] {
+        let (out, err) = port_verified("siemens840d", to, file);
+        assert!(
+            out.contains("MSG: ROUGHING [1 OF 2]") || out.contains("MSG: ROUGHING (1 OF 2)"),
+            "{to}:\n{out}"
+        );
+        assert!(out.contains("MSG cleared"), "{to}:\n{out}");
+        assert_eq!(err.matches("W0610").count(), 1, "{to}: {err}");
+    }
+    let (out, _) = port_verified("siemens840d", "linuxcnc", file);
+    assert!(out.contains("(MSG,ROUGHING"), "{out}");
+}
+
+/// `G4 P.. G0 X.. S.. M3` in one block: LinuxCNC runs speed and spindle,
+/// the dwell, then the move. Fanuc reads a dwell block's X as the time
+/// and the 840D wants G4 alone, so the port writes three blocks in that
+/// order; LinuxCNC to itself keeps the block.
+#[test]
+fn a_dwell_gets_its_own_block_where_the_target_wants_it() {
+    let file = "tests/programs/linuxcnc/port_dwell_block.ngc";
+    for (to, dwell, mv) in [
+        ("fanuc", "G4 X0.5", "G0 X10. Y5."),
+        ("haas", "G4 X0.5", "G0 X10. Y5."),
+        ("siemens840d", "G4 F0.5", "G0 X10 Y5"),
+    ] {
+        let (out, _) = port_verified("linuxcnc", to, file);
+        let lines: Vec<&str> = out.lines().map(str::trim).collect();
+        let at = lines
+            .iter()
+            .position(|l| l.starts_with(dwell))
+            .unwrap_or_else(|| panic!("{to}: no dwell block:\n{out}"));
+        assert!(lines[at - 1].contains("S1000 M3"), "{to}:\n{out}");
+        assert!(
+            !lines[at].contains('S') && !lines[at].contains("G0"),
+            "{to}:\n{out}"
+        );
+        assert!(lines[at + 1].starts_with(mv), "{to}:\n{out}");
+    }
+    let (out, _) = port_verified("linuxcnc", "linuxcnc", file);
+    assert!(out.contains("G4 P0.5 G0 X10 Y5 S1000 M3"), "{out}");
+}

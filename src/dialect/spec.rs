@@ -184,6 +184,14 @@ pub enum Capability {
     /// move that needs a feed rate: rs274's "Cannot do G1 with zero feed
     /// rate"); elsewhere it only sets the motion mode.
     BareMotionCodeMoves,
+    /// The program can show the operator a message without stopping
+    /// (Siemens `MSG("..")`, LinuxCNC `(MSG,..)`); elsewhere a port
+    /// writes a message as a comment (W0610).
+    OperatorMessages,
+    /// A dwell may share a block with a move and runs before it
+    /// (LinuxCNC's order of execution); elsewhere a port moves the move to
+    /// a block of its own after the dwell.
+    DwellWithMove,
     /// An N word may have a fraction, which is dropped: `N4567.789` is N4567
     /// (LinuxCNC, checked with rs274 2.9); elsewhere it is an error.
     FractionalSequenceNumbers,
@@ -325,6 +333,8 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("orient-by-words", Capability::OrientByWords),
     ("change-names-tool", Capability::ChangeNamesTool),
     ("bare-motion-code-moves", Capability::BareMotionCodeMoves),
+    ("operator-messages", Capability::OperatorMessages),
+    ("dwell-with-move", Capability::DwellWithMove),
 ];
 
 impl Capability {

@@ -42,6 +42,10 @@
 //!   called program, and its calls with their arguments.
 //! * [`funcs`]: rounding and power functions the target lacks, written
 //!   exactly with the ones it has (`POT(x)` → `x*x`, `FUP` → `INT` + `SGN`).
+//! * [`dwell_block`]: a move that shares a block with a dwell gets a
+//!   block of its own after it where the target wants that.
+//! * [`messages`]: operator messages as comments where the target shows
+//!   none without stopping.
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
 //!   as the moves the interpreter makes for it.
 //!
@@ -56,6 +60,7 @@ mod case;
 mod change_tool;
 mod comp_register;
 mod decls;
+mod dwell_block;
 pub mod expand;
 pub mod expand_range;
 mod flow_ids;
@@ -71,6 +76,7 @@ mod haas_cycles;
 mod levels;
 mod loops;
 mod machine_functions;
+mod messages;
 mod named_params;
 mod named_tools;
 mod old_cycles;
@@ -169,10 +175,12 @@ pub fn port_owned(
     forms::run(&mut out, from, to, opts, &mut diags);
     spf::run(&mut out, from, to);
     groups::run(&mut out, to);
+    dwell_block::run(&mut out, to);
     change_tool::run(&mut out, to);
     tool_call::run(&mut out, from, to);
     comp_register::run(&mut out, to);
     to_tnc::subprograms::run(&mut out, from, to, &mut diags);
+    messages::run(&mut out, to, &mut diags);
     text::run(&mut out, from, to, &mut diags);
     out.dialect = to.id.clone();
     (out, diags)
