@@ -2,6 +2,7 @@
 //! words, evaluated to numbers but not yet resolved (absolute/incremental,
 //! sticky values, retract plane are the cycle code's business).
 
+use crate::dialect::ShiftDir;
 use crate::ir::{CycleKind, DwellUnit};
 use crate::span::Span;
 
@@ -41,5 +42,9 @@ pub struct CycleBlock {
     /// (degrees) each repeat adds to the hole's polar position about the
     /// program origin (`G91 G81 ^60 L6` drills six holes round a circle).
     pub polar_step: Option<(f64, f64)>,
+    /// Fine and back boring in the Fanuc manner (the `shift` attribute of
+    /// the code in the dialect spec): the direction Q shifts the tool at
+    /// the oriented stop. None: LinuxCNC's back boring with I J K.
+    pub shift: Option<ShiftDir>,
     pub span: Span,
 }

@@ -382,6 +382,10 @@ fn base_block(
             .has(crate::dialect::Capability::CycleRotaryWordsRefused),
         code_in_block: false,
         polar_step: None,
+        shift: it
+            .spec
+            .code_for(crate::dialect::Meaning::Cycle(kind))
+            .and_then(|c| c.shift),
         span: it.span,
     })
 }

@@ -246,6 +246,7 @@ impl Driver {
             rotary_refused: true,
             code_in_block,
             polar_step: None,
+            shift: None,
             span: Span::default(),
         }
     }
