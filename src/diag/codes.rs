@@ -340,7 +340,7 @@ codes! {
         "LinuxCNC accepts G80 in a block with another motion code (`G80 G0 X0 Y0`): the motion code sets the motion mode and the G80 counts for nothing. cncc reads the block the same way and notes it; remove the G80, or put it in a block of its own to cancel a cycle before the move.";
     CycleRBelowBottom = "E0540", "cycle-r-below-bottom", Error,
         "a canned cycle whose R plane is below its bottom",
-        "The retract (R) plane of a drilling cycle must not be below the hole bottom along the drilling axis. Check the signs of R and Z (in G91, R is measured from the initial level and Z from R). Fanuc back boring (G87, Haas G77) is the other way round (R below Z, W0521).";
+        "In LinuxCNC (capability `cycle-r-above-bottom`) the retract (R) plane of a drilling cycle must not be below the hole bottom along the drilling axis; Fanuc and Haas drill from R towards the bottom whichever way that is (a right-angle head drilling up the Y axis). Check the signs of R and Z (in G91, R is measured from the initial level and Z from R). Fanuc back boring (G87, Haas G77) is the other way round (R below Z, W0521).";
     CycleMissingWord = "E0541", "cycle-missing-word", Error,
         "a canned cycle without a word it needs",
         "The first block of a canned cycle must give the bottom (Z, or the drilling axis of the plane) and R; G82/G86/G88/G89 need P, G73/G83 need Q, LinuxCNC's G87 needs I, J and K (Fanuc's G76/G87 shift by the retained Q instead). Later blocks of the same cycle may leave them out: the values stay in force.";

@@ -148,6 +148,12 @@ pub enum Capability {
     /// cycle (LinuxCNC). Without it a missing R is the initial level [?]
     /// and a missing P no dwell (Fanuc, Haas).
     CycleWordsRequired,
+    /// The R plane of a word-address cycle must not lie beyond its bottom
+    /// along the drilling axis (LinuxCNC: "R less than Z in cycle").
+    /// Without it the cycle feeds from R towards the bottom whichever way
+    /// that is (Fanuc, Haas: a right-angle head drilling up the Y axis in
+    /// G18 [?: no alarm for it is documented]).
+    CycleRAboveBottom,
     /// `:` is the program number address as `O` is (ISO code, Fanuc,
     /// Fadal, Haas: `:0097` is program O0097).
     ColonProgramNumber,
@@ -291,6 +297,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("comp-on-when-on-error", Capability::CompOnWhenOnError),
     ("power-on-linear", Capability::PowerOnLinear),
     ("cycle-words-required", Capability::CycleWordsRequired),
+    ("cycle-r-above-bottom", Capability::CycleRAboveBottom),
     ("colon-program-number", Capability::ColonProgramNumber),
     (
         "cycle-rotary-words-refused",

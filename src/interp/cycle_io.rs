@@ -33,6 +33,10 @@ pub struct CycleBlock {
     /// (capability `cycle-words-required`, LinuxCNC); otherwise a missing
     /// R is the initial level and a missing P no dwell (Fanuc, Haas).
     pub words_required: bool,
+    /// R beyond the bottom is an error (capability `cycle-r-above-bottom`,
+    /// LinuxCNC); otherwise the cycle drills from R towards the bottom
+    /// whichever way that is.
+    pub r_above_bottom: bool,
     /// An A, B or C word in a cycle block is an error (capability
     /// `cycle-rotary-words-refused`, LinuxCNC).
     pub rotary_refused: bool,

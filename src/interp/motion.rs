@@ -377,6 +377,7 @@ fn base_block(
         incremental: !it.state.absolute,
         return_initial: it.state.retract_initial,
         words_required: it.spec.has(crate::dialect::Capability::CycleWordsRequired),
+        r_above_bottom: it.spec.has(crate::dialect::Capability::CycleRAboveBottom),
         rotary_refused: it
             .spec
             .has(crate::dialect::Capability::CycleRotaryWordsRefused),

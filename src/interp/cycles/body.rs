@@ -122,22 +122,25 @@ fn peck(
         );
     }
     let full_retract = p.kind == CycleKind::Peck;
-    // Bounded: at most (r - bottom) / q pecks; refuse absurd counts.
-    if (l.r - l.bottom) / q > 1.0e6 {
+    // Bounded: at most |r - bottom| / q pecks; refuse absurd counts.
+    if (l.r - l.bottom).abs() / q > 1.0e6 {
         return Err(
             Diagnostic::new(Code::CycleBadPeck, "peck depth Q too small for this hole")
                 .primary(block.span, "more than a million pecks")
                 .help("use a larger Q"),
         );
     }
-    let mut depth = l.r - q;
-    while depth > l.bottom {
+    // Downwards (s = -1) as usual; upwards where the dialect allows R
+    // below the bottom (a right-angle head).
+    let s = super::word::toward(l.r, l.bottom);
+    let mut depth = l.r + s * q;
+    while s * (l.bottom - depth) > 0.0 {
         f.feed(h, l.at, depth);
         if full_retract {
             f.rapid(h, l.at, l.r);
         }
-        f.rapid(h, l.at, depth + p.rapid_delta);
-        depth -= q;
+        f.rapid(h, l.at, depth - s * p.rapid_delta);
+        depth += s * q;
     }
     f.feed(h, l.at, l.bottom);
     f.rapid(h, l.at, l.clear);

@@ -96,8 +96,9 @@ fn try_run(
     if below {
         super::oriented::downward_note(host, plan.r, plan.bottom, block);
     }
+    let s = toward(plan.r, plan.bottom);
     let mut old = plan.old;
-    if old < plan.r && !below {
+    if s * (old - plan.r) > 0.0 && !below {
         let (at, _) = frame.here(host);
         frame.rapid(host, at, plan.r);
         old = plan.r;
@@ -140,6 +141,17 @@ fn try_run(
 /// the initial level.
 fn enters_below(block: &CycleBlock) -> bool {
     block.kind == CycleKind::BackBore && block.shift.is_some()
+}
+
+/// The way the cycle drills along its axis from R: -1 down (R above the
+/// bottom, the usual), +1 up (a right-angle head in G18, where the dialect
+/// allows R below the bottom).
+pub(super) fn toward(r: f64, bottom: f64) -> f64 {
+    if bottom > r {
+        1.0
+    } else {
+        -1.0
+    }
 }
 
 fn remember(mem: &mut CycleMemory, block: &CycleBlock, plan: &Plan) {
@@ -219,7 +231,7 @@ fn plan(
         r = r_word;
         bottom = bottom_word;
     }
-    if r < bottom && !enters_below(block) {
+    if r < bottom && !enters_below(block) && block.r_above_bottom {
         let msg = format!(
             "R less than {} in cycle in {} plane",
             axis_name(f.n).to_lowercase(),
@@ -421,6 +433,7 @@ fn positions_and_bodies(
     block: &CycleBlock,
 ) -> Result<(), Diagnostic> {
     let below = enters_below(block);
+    let s = toward(plan.r, plan.bottom);
     let mut at = plan.start;
     for n in 0..plan.repeats {
         at = match plan.polar_step {
@@ -428,14 +441,15 @@ fn positions_and_bodies(
             None => (at.0 + plan.step.0, at.1 + plan.step.1),
         };
         let (_, cur) = f.here(host);
-        if n == 0 && cur > plan.r {
+        // "Above R": on the side of R away from the bottom.
+        if n == 0 && s * (cur - plan.r) < 0.0 {
             f.rapid(host, at, cur);
             if !below {
                 f.rapid(host, at, plan.r);
             }
         } else {
             f.rapid(host, at, clear);
-            if clear > plan.r && !below {
+            if s * (clear - plan.r) < 0.0 && !below {
                 f.rapid(host, at, plan.r);
             }
         }
