@@ -167,3 +167,32 @@ fn a_dialect_file_sets_the_shift_direction() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_port_writes_oriented_boring_only_where_it_means_the_same() {
+    // Fanuc G76/G87 (shift by Q) are Haas G76/G77.
+    let o = cncc(&[
+        "port",
+        "--to",
+        "haas",
+        "tests/programs/fanuc/oriented_boring.nc",
+    ]);
+    let out = stdout(&o);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        out.contains("G98 G76 X10. Y10. Z-20. R2. Q1. P500 F100"),
+        "{out}"
+    );
+    assert!(out.contains("G77 X10. Y10. Z-5. R-30. F80"), "{out}");
+    // LinuxCNC's G87 takes I J K: another cycle.
+    let o = cncc(&[
+        "port",
+        "--to",
+        "linuxcnc",
+        "tests/programs/fanuc/oriented_boring.nc",
+    ]);
+    let err = stderr(&o);
+    assert!(!o.status.success(), "{}", stdout(&o));
+    assert!(err.contains("error[E0601"), "{err}");
+    assert!(err.contains("different cycles"), "{err}");
+}

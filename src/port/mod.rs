@@ -74,6 +74,7 @@ mod machine_functions;
 mod named_params;
 mod named_tools;
 mod old_cycles;
+mod oriented_boring;
 pub(crate) mod osubs;
 mod pockets;
 mod poles;
@@ -141,6 +142,7 @@ pub fn port_program(
     to_named::run(&mut out, from, to, &mut diags);
     to_tnc::named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
+    oriented_boring::run(&out, from, to, &mut diags);
     to_tnc::run(&mut out, from, to, &mut diags);
     to_tnc::modes::run(&mut out, to, &mut diags);
     to_tnc::variables_and_flow(&mut out, to, &mut diags);
