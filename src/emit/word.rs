@@ -92,6 +92,9 @@ fn same_oriented_boring(w: &mut Writer<'_>, c: &CannedCycle, span: Span) -> bool
     let Some(target) = w.spec.code_for(meaning) else {
         return true; // `push_code` says the target has none.
     };
+    if target.uses.is_empty() {
+        return true; // A spec that declares no words for it says nothing.
+    }
     let written = [
         ('R', c.r.is_some()),
         ('Q', c.q.is_some()),
