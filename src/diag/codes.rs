@@ -340,10 +340,10 @@ codes! {
         "LinuxCNC accepts G80 in a block with another motion code (`G80 G0 X0 Y0`): the motion code sets the motion mode and the G80 counts for nothing. cncc reads the block the same way and notes it; remove the G80, or put it in a block of its own to cancel a cycle before the move.";
     CycleRBelowBottom = "E0540", "cycle-r-below-bottom", Error,
         "a canned cycle whose R plane is below its bottom",
-        "The retract (R) plane of a drilling cycle must not be below the hole bottom along the drilling axis. Check the signs of R and Z (in G91, R is measured from the initial level and Z from R).";
+        "In LinuxCNC (capability `cycle-r-above-bottom`) the retract (R) plane of a drilling cycle must not be below the hole bottom along the drilling axis; Fanuc and Haas drill from R towards the bottom whichever way that is (a right-angle head drilling up the Y axis). Check the signs of R and Z (in G91, R is measured from the initial level and Z from R). Fanuc back boring (G87, Haas G77) is the other way round (R below Z, W0521).";
     CycleMissingWord = "E0541", "cycle-missing-word", Error,
         "a canned cycle without a word it needs",
-        "The first block of a canned cycle must give the bottom (Z, or the drilling axis of the plane) and R; G82/G86/G88/G89 need P, G73/G83 need Q, G87 needs I, J and K. Later blocks of the same cycle may leave them out: the values stay in force.";
+        "The first block of a canned cycle must give the bottom (Z, or the drilling axis of the plane) and R; G82/G86/G88/G89 need P, G73/G83 need Q, LinuxCNC's G87 needs I, J and K (Fanuc's G76/G87 shift by the retained Q instead). Later blocks of the same cycle may leave them out: the values stay in force.";
     CycleBadPeck = "E0542", "cycle-bad-peck", Error,
         "a peck depth Q that is zero or negative",
         "G73 and G83 drill in steps of Q, which must be greater than zero.";
@@ -356,6 +356,12 @@ codes! {
     CycleBadArgument = "E0545", "cycle-bad-argument", Error,
         "a named cycle or hole pattern with a missing or impossible argument",
         "A Siemens drilling cycle needs RTP and RFP and a depth (DP or DPR); the reference plane must lie above the depth. Hole patterns need a positive whole number of holes.";
+    BoreNoShift = "W0520", "bore-no-shift", Warning,
+        "an oriented boring cycle that shifts by nothing",
+        "Fanuc and Haas fine boring (G76) and back boring (Fanuc G87, Haas G77) stop the spindle oriented and shift the tool by Q away from its tip, so that the edge leaves the wall. Q is the canned cycles' retained value (also the G73/G83 peck depth): a block without Q uses the last Q, which is 0 at power-on. With no shift the control still runs the cycle, but the edge drags up the finished bore (G76) or meets the part on the way down (back boring). Give Q (a positive distance) in the cycle block; the direction is a machine setting (Fanuc parameter 5101, Haas setting 27), `shift` in the dialect spec.";
+    BackBoreDownward = "W0521", "back-bore-downward", Warning,
+        "a back boring cycle whose R is above its Z",
+        "In Fanuc back boring (G87; Haas G77) R is the level below the part where the oriented, shifted tool enters, and Z the top of the bore it then cuts upwards, so R lies below Z. With R above Z the control still runs the cycle as written [?: no alarm is documented]: down to R, then a feed down to Z, which is a plain boring pass, not a back bore. Posts that write G87 with the R and Z of their other cycles make this; give R below the part and Z at the top of the counterbore.";
     CycleZeroFeed = "E0546", "cycle-zero-feed", Error,
         "a canned cycle with no feed rate",
         "Drilling cycles feed into the material at the active feed rate, which is zero here. Program F before or in the cycle block.";

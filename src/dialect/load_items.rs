@@ -328,6 +328,7 @@ pub struct CodeCommon {
     pub dwell_units: Vec<(char, DwellUnit)>,
     pub preferred: bool,
     pub run: crate::dialect::spec::AuxRun,
+    pub shift: Option<crate::dialect::spec::ShiftDir>,
     pub doc: String,
 }
 
@@ -341,6 +342,7 @@ pub const CODE_ATTRS: &[&str] = &[
     "dwell",
     "preferred",
     "run",
+    "shift",
     "doc",
     "confidence",
 ];
@@ -403,6 +405,17 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
         ),
         None => Some(Default::default()),
     };
+    let shift = match n.attr("shift") {
+        Some(a) => cx
+            .parse(
+                a,
+                "a shift direction",
+                "`+X`, `-X`, `+Y` or `-Y` (as in G17)",
+                crate::dialect::spec::ShiftDir::parse,
+            )
+            .map(Some),
+        None => Some(None),
+    };
     Some(CodeCommon {
         group: group?,
         meaning: meaning?,
@@ -411,6 +424,7 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
         dwell_units: dwell_units?,
         preferred,
         run: run?,
+        shift: shift?,
         doc: cx.doc(n),
     })
 }
@@ -449,6 +463,7 @@ pub fn read_code(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<CodeDef>
         dwell_units: c.dwell_units,
         preferred: c.preferred,
         run: c.run,
+        shift: c.shift,
         doc: c.doc,
         span: n.span,
     })
@@ -496,6 +511,7 @@ pub fn read_code_range(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Vec<CodeD
             dwell_units: c.dwell_units.clone(),
             preferred: c.preferred,
             run: c.run,
+            shift: c.shift,
             doc: c.doc.clone(),
             span: n.span,
         })

@@ -291,3 +291,31 @@ fn codes_overridden_removed_and_added_again_by_key() {
     };
     assert_eq!(at(&s, "3"), at(&base, "3"));
 }
+
+#[test]
+fn oriented_boring_shift_is_spec_data() {
+    use super::ShiftDir;
+    use crate::ir::CycleKind;
+    let reg = Registry::with_builtins();
+    let fanuc = reg.get("fanuc").unwrap();
+    let g76 = fanuc.code('G', num("76")).unwrap();
+    assert_eq!(g76.shift, Some(ShiftDir::PlusFirst));
+    assert_eq!(
+        fanuc.code('G', num("87")).unwrap().shift,
+        Some(ShiftDir::PlusFirst)
+    );
+    let haas = reg.get("haas").unwrap();
+    let back = haas.code_for(Meaning::Cycle(CycleKind::BackBore)).unwrap();
+    assert_eq!(
+        (back.code.clone(), back.shift),
+        (num("77"), Some(ShiftDir::PlusFirst))
+    );
+    // LinuxCNC's G87 is its own (I J K), with no shift.
+    let lcnc = reg.get("linuxcnc").unwrap();
+    assert_eq!(lcnc.code('G', num("87")).unwrap().shift, None);
+    assert_eq!(ShiftDir::MinusSecond.vector(-2.0), (0.0, -2.0));
+    let (codes, _) = errors(
+        "<dialect id=\"x\" extends=\"fanuc\">\n  <code letter=\"G\" number=\"76\" group=\"canned-cycle\" meaning=\"cycle.fine-bore\" shift=\"+Z\"/>\n</dialect>",
+    );
+    assert_eq!(codes, vec![Code::SpecBadValue]);
+}

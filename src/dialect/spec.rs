@@ -148,6 +148,12 @@ pub enum Capability {
     /// cycle (LinuxCNC). Without it a missing R is the initial level [?]
     /// and a missing P no dwell (Fanuc, Haas).
     CycleWordsRequired,
+    /// The R plane of a word-address cycle must not lie beyond its bottom
+    /// along the drilling axis (LinuxCNC: "R less than Z in cycle").
+    /// Without it the cycle feeds from R towards the bottom whichever way
+    /// that is (Fanuc, Haas: a right-angle head drilling up the Y axis in
+    /// G18 [?: no alarm for it is documented]).
+    CycleRAboveBottom,
     /// `:` is the program number address as `O` is (ISO code, Fanuc,
     /// Fadal, Haas: `:0097` is program O0097).
     ColonProgramNumber,
@@ -299,6 +305,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("comp-on-when-on-error", Capability::CompOnWhenOnError),
     ("power-on-linear", Capability::PowerOnLinear),
     ("cycle-words-required", Capability::CycleWordsRequired),
+    ("cycle-r-above-bottom", Capability::CycleRAboveBottom),
     ("colon-program-number", Capability::ColonProgramNumber),
     (
         "cycle-rotary-words-refused",
@@ -400,9 +407,48 @@ pub struct CodeDef {
     pub preferred: bool,
     /// For `aux` codes: what the canonical run does with it.
     pub run: AuxRun,
+    /// For fine and back boring: the tool shifts by Q, in this direction,
+    /// away from the wall at the oriented stop (Fanuc parameter 5101
+    /// RD1/RD2, Haas setting 27). None: LinuxCNC's back boring (I J K).
+    pub shift: Option<ShiftDir>,
     pub doc: String,
     /// Where it is defined in the spec file.
     pub span: Span,
+}
+
+/// The direction of the shift of an oriented boring cycle (the `shift`
+/// attribute of `<code>`), named as in G17: the first (X) or second (Y)
+/// axis of the plane. In G18 the first axis is Z, in G19 Y, as Fanuc's
+/// RD1/RD2 table gives them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShiftDir {
+    PlusFirst,
+    MinusFirst,
+    PlusSecond,
+    MinusSecond,
+}
+
+impl ShiftDir {
+    pub fn parse(s: &str) -> Option<ShiftDir> {
+        match s {
+            "+X" => Some(ShiftDir::PlusFirst),
+            "-X" => Some(ShiftDir::MinusFirst),
+            "+Y" => Some(ShiftDir::PlusSecond),
+            "-Y" => Some(ShiftDir::MinusSecond),
+            _ => None,
+        }
+    }
+
+    /// The shift of length `q` (its sign ignored) in plane terms.
+    pub fn vector(self, q: f64) -> (f64, f64) {
+        let q = q.abs();
+        match self {
+            ShiftDir::PlusFirst => (q, 0.0),
+            ShiftDir::MinusFirst => (-q, 0.0),
+            ShiftDir::PlusSecond => (0.0, q),
+            ShiftDir::MinusSecond => (0.0, -q),
+        }
+    }
 }
 
 /// What the canonical run does with an `aux` code it has no function for

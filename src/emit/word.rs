@@ -54,6 +54,9 @@ pub fn program_start(
 
 /// `G83 X Y Z R Q P I J K` and the repeat count under the spec's letter.
 pub fn cycle(w: &mut Writer<'_>, c: &CannedCycle, span: Span, words: &mut Vec<String>) {
+    if !same_oriented_boring(w, c, span) {
+        return;
+    }
     w.push_code(words, Meaning::Cycle(c.kind), span);
     w.push_axes(words, &c.target);
     let parts = [
@@ -73,6 +76,53 @@ pub fn cycle(w: &mut Writer<'_>, c: &CannedCycle, span: Span, words: &mut Vec<St
         let letter = w.spec.repeat_letter.to_string();
         w.push_word(words, &letter, v, NumKind::Int, span);
     }
+}
+
+/// Fine and back boring are other cycles from one control to the next:
+/// Fanuc's G87 shifts by the retained Q (`shift` in its spec), LinuxCNC's
+/// takes I J K, Haas's G76/G77 take Q or I J. The target writes such a
+/// cycle only when its code uses every word the block gives; otherwise
+/// E0601 (the port also compares the two codes' `shift`).
+fn same_oriented_boring(w: &mut Writer<'_>, c: &CannedCycle, span: Span) -> bool {
+    use crate::ir::CycleKind;
+    if !matches!(c.kind, CycleKind::FineBore | CycleKind::BackBore) {
+        return true;
+    }
+    let meaning = Meaning::Cycle(c.kind);
+    let Some(target) = w.spec.code_for(meaning) else {
+        return true; // `push_code` says the target has none.
+    };
+    if target.uses.is_empty() {
+        return true; // A spec that declares no words for it says nothing.
+    }
+    let written = [
+        ('R', c.r.is_some()),
+        ('Q', c.q.is_some()),
+        ('P', c.p.is_some()),
+        ('I', c.i.is_some()),
+        ('J', c.j.is_some()),
+        ('K', c.k.is_some()),
+    ];
+    let missing: Vec<char> = written
+        .iter()
+        .filter(|(l, given)| *given && !target.uses.contains(l))
+        .map(|(l, _)| *l)
+        .collect();
+    if missing.is_empty() {
+        return true;
+    }
+    let code = format!("{}{}", target.letter, target.code.format(0, false));
+    let letters: String = missing.iter().collect();
+    let what = format!(
+        "the {letters} of this {} (its {code} does not take them)",
+        meaning.name()
+    );
+    w.cannot(
+        span,
+        &what,
+        "write the boring as the moves it makes in the source dialect, or choose a target whose cycle shifts the same way",
+    );
+    false
 }
 
 /// A cycle's `P` dwell is whole milliseconds where the target's dwell code

@@ -2,6 +2,7 @@
 //! words, evaluated to numbers but not yet resolved (absolute/incremental,
 //! sticky values, retract plane are the cycle code's business).
 
+use crate::dialect::ShiftDir;
 use crate::ir::{CycleKind, DwellUnit};
 use crate::span::Span;
 
@@ -32,6 +33,10 @@ pub struct CycleBlock {
     /// (capability `cycle-words-required`, LinuxCNC); otherwise a missing
     /// R is the initial level and a missing P no dwell (Fanuc, Haas).
     pub words_required: bool,
+    /// R beyond the bottom is an error (capability `cycle-r-above-bottom`,
+    /// LinuxCNC); otherwise the cycle drills from R towards the bottom
+    /// whichever way that is.
+    pub r_above_bottom: bool,
     /// An A, B or C word in a cycle block is an error (capability
     /// `cycle-rotary-words-refused`, LinuxCNC).
     pub rotary_refused: bool,
@@ -41,5 +46,9 @@ pub struct CycleBlock {
     /// (degrees) each repeat adds to the hole's polar position about the
     /// program origin (`G91 G81 ^60 L6` drills six holes round a circle).
     pub polar_step: Option<(f64, f64)>,
+    /// Fine and back boring in the Fanuc manner (the `shift` attribute of
+    /// the code in the dialect spec): the direction Q shifts the tool at
+    /// the oriented stop. None: LinuxCNC's back boring with I J K.
+    pub shift: Option<ShiftDir>,
     pub span: Span,
 }

@@ -377,11 +377,16 @@ fn base_block(
         incremental: !it.state.absolute,
         return_initial: it.state.retract_initial,
         words_required: it.spec.has(crate::dialect::Capability::CycleWordsRequired),
+        r_above_bottom: it.spec.has(crate::dialect::Capability::CycleRAboveBottom),
         rotary_refused: it
             .spec
             .has(crate::dialect::Capability::CycleRotaryWordsRefused),
         code_in_block: false,
         polar_step: None,
+        shift: it
+            .spec
+            .code_for(crate::dialect::Meaning::Cycle(kind))
+            .and_then(|c| c.shift),
         span: it.span,
     })
 }

@@ -507,6 +507,7 @@ impl Linter {
         if let (Some(min), Some(xy)) = (self.min_cut_mm, hole) {
             let r = step.cycles.r * scale;
             if step.state.absolute
+                && !step.cycles.r_below_part
                 && step.state.plane == CanonPlane::XY
                 && r < min - self.cfg.below_tolerance_mm
                 && self.over_cuts(xy)

@@ -32,6 +32,7 @@ pub fn def(
         dwell_units: Vec::new(),
         preferred: false,
         run: Default::default(),
+        shift: None,
         doc: String::new(),
         span: Span::default(),
     }

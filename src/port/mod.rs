@@ -80,6 +80,7 @@ mod messages;
 mod named_params;
 mod named_tools;
 mod old_cycles;
+mod oriented_boring;
 pub(crate) mod osubs;
 mod pockets;
 mod poles;
@@ -158,6 +159,7 @@ pub fn port_owned(
     to_named::run(&mut out, from, to, &mut diags);
     to_tnc::named::run(&mut out, from, to, &mut diags);
     to_word::run(&mut out, from, to, &mut diags);
+    oriented_boring::run(&out, from, to, &mut diags);
     to_tnc::run(&mut out, from, to, &mut diags);
     to_tnc::modes::run(&mut out, to, &mut diags);
     to_tnc::variables_and_flow(&mut out, to, &mut diags);

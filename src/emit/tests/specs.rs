@@ -24,6 +24,7 @@ fn code(spec: &str, meaning: &str) -> CodeDef {
         dwell_units: vec![],
         preferred: false,
         run: Default::default(),
+        shift: None,
         doc: String::new(),
         span: Span::default(),
     }

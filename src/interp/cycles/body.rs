@@ -53,6 +53,7 @@ pub(super) fn run_body(
             f.rapid(h, l.at, l.clear);
             h.emit(start(dir));
         }
+        BackBore if p.shift.is_some() => super::oriented::back_bore(h, f, l, p, block)?,
         BackBore => back_bore(h, f, l, p, block)?,
         BoreManual => {
             let dir = turning(h, block)?;
@@ -76,7 +77,7 @@ pub(super) fn run_body(
     Ok(())
 }
 
-fn start(dir: SpindleDir) -> Canon {
+pub(super) fn start(dir: SpindleDir) -> Canon {
     match dir {
         SpindleDir::Ccw => Canon::SpindleCcw,
         SpindleDir::Cw | SpindleDir::Stopped => Canon::SpindleCw,
@@ -84,7 +85,7 @@ fn start(dir: SpindleDir) -> Canon {
 }
 
 /// `CANON_DIRECTION` as ORIENT_SPINDLE prints it (stopped 1, CW 2, CCW 3).
-fn orient_mode(dir: SpindleDir) -> i64 {
+pub(super) fn orient_mode(dir: SpindleDir) -> i64 {
     match dir {
         SpindleDir::Stopped => 1,
         SpindleDir::Cw => 2,
@@ -92,7 +93,7 @@ fn orient_mode(dir: SpindleDir) -> i64 {
     }
 }
 
-fn turning(h: &dyn MotionHost, block: &CycleBlock) -> Result<SpindleDir, Diagnostic> {
+pub(super) fn turning(h: &dyn MotionHost, block: &CycleBlock) -> Result<SpindleDir, Diagnostic> {
     match h.spindle() {
         SpindleDir::Stopped => {
             let msg = format!("spindle not turning in {}", gcode(block.kind));
@@ -121,22 +122,25 @@ fn peck(
         );
     }
     let full_retract = p.kind == CycleKind::Peck;
-    // Bounded: at most (r - bottom) / q pecks; refuse absurd counts.
-    if (l.r - l.bottom) / q > 1.0e6 {
+    // Bounded: at most |r - bottom| / q pecks; refuse absurd counts.
+    if (l.r - l.bottom).abs() / q > 1.0e6 {
         return Err(
             Diagnostic::new(Code::CycleBadPeck, "peck depth Q too small for this hole")
                 .primary(block.span, "more than a million pecks")
                 .help("use a larger Q"),
         );
     }
-    let mut depth = l.r - q;
-    while depth > l.bottom {
+    // Downwards (s = -1) as usual; upwards where the dialect allows R
+    // below the bottom (a right-angle head).
+    let s = super::word::toward(l.r, l.bottom);
+    let mut depth = l.r + s * q;
+    while s * (l.bottom - depth) > 0.0 {
         f.feed(h, l.at, depth);
         if full_retract {
             f.rapid(h, l.at, l.r);
         }
-        f.rapid(h, l.at, depth + p.rapid_delta);
-        depth -= q;
+        f.rapid(h, l.at, depth - s * p.rapid_delta);
+        depth += s * q;
     }
     f.feed(h, l.at, l.bottom);
     f.rapid(h, l.at, l.clear);
@@ -263,10 +267,11 @@ fn back_bore(
 /// given, oriented spindle stop, shift by Q away from the wall, rapid out to
 /// the clear level, shift back, restart the spindle.
 ///
-/// Assumptions [?]: the shift goes along +first axis of the plane (+X in
-/// G17), as with parameter 5101 RD1/RD2 = 0; the orientation angle is the
-/// controller's fixed M19 position, written here as 0; the shift back is a
-/// rapid at the clear level; the spindle restarts in its old direction.
+/// The shift is the dialect's (`shift` of the code, resolved in
+/// `oriented`); a code without one shifts by Q along +first axis.
+/// Assumptions [?]: the orientation angle is the controller's fixed M19
+/// position, written here as 0; the shift back is a rapid at the clear
+/// level; the spindle restarts in its old direction.
 fn fine_bore(
     h: &mut dyn MotionHost,
     f: Frame,
@@ -275,8 +280,11 @@ fn fine_bore(
     block: &CycleBlock,
 ) -> Result<(), Diagnostic> {
     let dir = turning(h, block)?;
-    let q = p.q.unwrap_or(0.0).abs();
-    let off = (l.at.0 + q, l.at.1);
+    let s = match p.shift {
+        Some(s) => s.by,
+        None => (p.q.unwrap_or(0.0).abs(), 0.0),
+    };
+    let off = (l.at.0 + s.0, l.at.1 + s.1);
     f.feed(h, l.at, l.bottom);
     if p.dwell > 0.0 {
         h.dwell(p.dwell);

@@ -20,8 +20,13 @@ pub struct CycleMemory {
     pub q: f64,
     /// Dwell in seconds as last used (LinuxCNC keeps it across cycles).
     pub dwell: f64,
-    /// G87 I J K as last used.
+    /// G87 I J K as last used (and Haas's I J shift of G76/G77).
     pub ijk: [f64; 3],
+    /// The last oriented-boring shift came from I/J (in `ijk`), not Q.
+    pub shift_ij: bool,
+    /// The active cycle's R lies below the part by design (Fanuc back
+    /// boring enters there through the hole): lints leave its R alone.
+    pub r_below_part: bool,
     /// Fanuc: `K0` stores the cycle without drilling. LinuxCNC rejects
     /// zero repeats. The core sets this from the dialect.
     pub allow_zero_repeats: bool,

@@ -17,6 +17,7 @@ mod body;
 mod float_tap;
 mod frame;
 mod memory;
+mod oriented;
 mod patterns;
 mod siemens;
 mod word;

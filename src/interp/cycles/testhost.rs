@@ -243,9 +243,11 @@ impl Driver {
             incremental: self.incremental,
             return_initial: self.return_initial,
             words_required: true,
+            r_above_bottom: true,
             rotary_refused: true,
             code_in_block,
             polar_step: None,
+            shift: None,
             span: Span::default(),
         }
     }

@@ -92,19 +92,31 @@ fn try_run(
         remember(mem, block, &plan);
         return Ok(());
     }
+    let below = enters_below(block);
+    if below {
+        super::oriented::downward_note(host, plan.r, plan.bottom, block);
+    }
+    let s = toward(plan.r, plan.bottom);
     let mut old = plan.old;
-    if old < plan.r {
+    if s * (old - plan.r) > 0.0 && !below {
         let (at, _) = frame.here(host);
         frame.rapid(host, at, plan.r);
         old = plan.r;
     }
-    let clear = if block.return_initial { old } else { plan.r };
+    // [?] Fanuc back boring returns to the initial level only ("G99 is
+    // not used" in its figure); the run takes G99 there as G98.
+    let clear = if block.return_initial || below {
+        old
+    } else {
+        plan.r
+    };
     let (mode, naive) = host.path_mode();
     let wrap = mode != MotionMode::ExactPath;
     if wrap {
         host.emit(Canon::SetMotionControlMode(MotionMode::ExactPath));
     }
     let params = params(host, mem, block, same, plan.bottom, frame)?;
+    super::oriented::no_shift_note(host, &params, block);
     positions_and_bodies(host, frame, &plan, clear, &params, block)?;
     if wrap {
         host.emit(Canon::SetMotionControlMode(mode));
@@ -118,11 +130,33 @@ fn try_run(
     if let Some(ijk) = params.ijk_words {
         mem.ijk = ijk;
     }
+    if let Some(s) = &params.shift {
+        super::oriented::remember(mem, s);
+    }
     Ok(())
+}
+
+/// Fanuc back boring (a `shift` code): the tool enters below the part at R
+/// from the initial level, oriented and shifted, so positioning stays on
+/// the initial level.
+fn enters_below(block: &CycleBlock) -> bool {
+    block.kind == CycleKind::BackBore && block.shift.is_some()
+}
+
+/// The way the cycle drills along its axis from R: -1 down (R above the
+/// bottom, the usual), +1 up (a right-angle head in G18, where the dialect
+/// allows R below the bottom).
+pub(super) fn toward(r: f64, bottom: f64) -> f64 {
+    if bottom > r {
+        1.0
+    } else {
+        -1.0
+    }
 }
 
 fn remember(mem: &mut CycleMemory, block: &CycleBlock, plan: &Plan) {
     mem.active = Some(block.kind);
+    mem.r_below_part = enters_below(block);
     mem.bottom = plan.bottom_word;
     mem.r = plan.r_word;
 }
@@ -197,7 +231,7 @@ fn plan(
         r = r_word;
         bottom = bottom_word;
     }
-    if r < bottom {
+    if r < bottom && !enters_below(block) && block.r_above_bottom {
         let msg = format!(
             "R less than {} in cycle in {} plane",
             axis_name(f.n).to_lowercase(),
@@ -245,6 +279,8 @@ pub(super) struct Params {
     pub middle: f64,
     pub rapid_delta: f64,
     pub kind: CycleKind,
+    /// Fanuc/Haas oriented boring: the resolved shift.
+    pub shift: Option<super::oriented::Shift>,
 }
 
 fn params(
@@ -275,11 +311,13 @@ fn params(
         .p
         .map(|p| to_seconds(p, block.p_unit, host.spindle_speed()))
         .unwrap_or(mem.dwell);
+    let shift = super::oriented::resolve(mem, block, f);
     let q = match block.kind {
+        _ if shift.is_some() => shift.and_then(|s| s.q),
         Peck | ChipBreak | FineBore => Some(q_word(mem, block, same)?),
         _ => None,
     };
-    let (ijk_words, middle) = if block.kind == BackBore {
+    let (ijk_words, middle) = if block.kind == BackBore && shift.is_none() {
         g87_words(mem, block, same, bottom, f)?
     } else {
         (None, 0.0)
@@ -295,6 +333,7 @@ fn params(
         middle,
         rapid_delta,
         kind: block.kind,
+        shift,
     })
 }
 
@@ -393,6 +432,8 @@ fn positions_and_bodies(
     params: &Params,
     block: &CycleBlock,
 ) -> Result<(), Diagnostic> {
+    let below = enters_below(block);
+    let s = toward(plan.r, plan.bottom);
     let mut at = plan.start;
     for n in 0..plan.repeats {
         at = match plan.polar_step {
@@ -400,12 +441,15 @@ fn positions_and_bodies(
             None => (at.0 + plan.step.0, at.1 + plan.step.1),
         };
         let (_, cur) = f.here(host);
-        if n == 0 && cur > plan.r {
+        // "Above R": on the side of R away from the bottom.
+        if n == 0 && s * (cur - plan.r) < 0.0 {
             f.rapid(host, at, cur);
-            f.rapid(host, at, plan.r);
+            if !below {
+                f.rapid(host, at, plan.r);
+            }
         } else {
             f.rapid(host, at, clear);
-            if clear > plan.r {
+            if s * (clear - plan.r) < 0.0 && !below {
                 f.rapid(host, at, plan.r);
             }
         }

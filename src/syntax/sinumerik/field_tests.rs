@@ -71,3 +71,20 @@ fn rotary_positions_with_a_direction_are_functions() {
     assert!(out.contains("PosPlus"), "{out}");
     assert!(out.contains("PosShortest"), "{out}");
 }
+
+#[test]
+fn elseif_is_a_located_error_not_text() {
+    let text = "DEF REAL A\nIF A==1\nG0 X1\nELSEIF A==2\nG0 X2\nELSE\nG0 X3\nENDIF";
+    let (out, ds) = read(text);
+    assert_eq!(ds.len(), 1, "{ds:?}");
+    assert_eq!(ds[0].code, Code::NotInDialect);
+    assert!(ds[0].message.contains("ELSEIF"), "{}", ds[0].message);
+    let help = ds[0].help.as_deref().unwrap_or("");
+    assert!(help.contains("nested IF"), "{help}");
+    // Not kept as text, and the IF / ELSE / ENDIF round it stay.
+    assert!(!out.contains("Raw"), "{out}");
+    assert!(
+        out.contains("stmt If {") && out.contains("stmt Else") && out.contains("stmt EndIf"),
+        "{out}"
+    );
+}

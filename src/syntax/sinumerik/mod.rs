@@ -154,6 +154,20 @@ impl FrontEnd for SinumerikFrontEnd {
     }
 }
 
+/// `ELSEIF`: the 840D's IF has only ELSE and ENDIF (Job Planning manual,
+/// "Control structures"; no ELSEIF up to SINUMERIK ONE [K]). Dropping it
+/// would run its branch as part of the IF branch, so it is an error; the
+/// IF/ELSE/ENDIF round it stay as they are.
+fn no_elseif(at: crate::span::Span) -> Diagnostic {
+    Diagnostic::new(
+        Code::NotInDialect,
+        "`ELSEIF` is not a Sinumerik 840D statement",
+        )
+    .primary(at, "no ELSEIF in IF ... ELSE ... ENDIF")
+    .note("the control refuses the block (a syntax alarm): its IF has only ELSE and ENDIF")
+    .help("write ELSE, then a nested IF cond ... ENDIF inside it (and one more ENDIF), or use CASE for many values")
+}
+
 impl SinumerikFrontEnd {
     fn body(
         &mut self,
@@ -197,6 +211,11 @@ impl SinumerikFrontEnd {
                 let Tok::Name(n) = &cl.toks[0].1 else {
                     unreachable!()
                 };
+                let at = sp.span(cl.toks[0].0, cl.toks[0].2);
+                if n.eq_ignore_ascii_case("ELSEIF") {
+                    diags.push(no_elseif(at));
+                    return Vec::new();
+                }
                 raw(
                     format!("`{n}` is not a statement this front end knows"),
                     sp.span(cl.toks[0].0, cl.toks[0].2),
