@@ -24,6 +24,7 @@ pub mod features;
 pub mod fixture;
 pub mod frame;
 mod group;
+mod hole_mill;
 mod holes;
 mod milling;
 mod names;

@@ -85,7 +85,8 @@ pub fn write(
             .set("angle", w.fmt.angle(frame.angle_deg().rem_euclid(180.0))),
         Shape::Circle { diameter } => v
             .set("prad", w.fmt.len(diameter / 2.0))
-            .set_derived("diameter", w.fmt.len(*diameter)),
+            .set_derived("diameter", w.fmt.len(*diameter))
+            .set_derived("plunge", if helical(c.approach) { "1" } else { "0" }),
     };
     let units = match (c.finish, s.roughed_by.is_some()) {
         (false, _) => 1,
@@ -145,6 +146,11 @@ fn cutmode(s: Option<&Strategy>) -> Option<CutMode> {
         | Strategy::Unidirectional { cutmode, .. } => *cutmode,
         _ => None,
     }
+}
+
+/// The approach enters on a helix.
+fn helical(a: Option<&ApproachRetract>) -> bool {
+    matches!(a, Some(ApproachRetract::PlungeHelix { .. }))
 }
 
 /// POCKET3 insertion (VARI tens): 1 vertical at feed, 2 helical (RAD1
