@@ -11,9 +11,9 @@
 //! bottom's corner radius is the tool's; other bottoms (conical,
 //! spherical) are refused: the floor of a milled hole is flat.
 
-use super::milling::{explicit_moves, layers, spindle_cw, Cut};
+use super::milling::{explicit_moves, Cut};
 use super::paths::helix::{self, HoleCut};
-use super::paths::pocket::{PocketCut, Shape};
+use super::paths::pocket::Shape;
 use super::plan::Step;
 use super::pockets::cuts_across_centre;
 use super::{PostError, Writer};
@@ -46,16 +46,7 @@ pub fn write(
         return super::pockets::write(w, s, c, &shape, &s.frame, true);
     }
     let d = s.tool.body.dimension.diameter;
-    let cut = PocketCut {
-        tool_radius: d / 2.0,
-        stepover: c.stepover(d),
-        allowance_side: if c.finish { 0.0 } else { c.allow_side },
-        levels: layers(s, c, if c.finish { 0.0 } else { c.allow_bottom }),
-        walls_only_above_bottom: c.finish && s.roughed_by.is_some(),
-        ccw: c.ccw(spindle_cw(s)?),
-        clear: s.clear,
-        r_plane: s.top + s.sdis,
-    };
+    let cut = super::pockets::pocket_cut(s, c)?;
     let hr = helix::helix_radius(diameter, &cut);
     let pitch = pitch(c, hr, d / 2.0);
     let hc = HoleCut { cut, pitch };

@@ -96,10 +96,21 @@ pub fn write(w: &mut Writer<'_>, steps: &[&Step<'_>]) -> Result<(), PostError> {
                         diameter: diameter.nominal,
                     },
                 ),
+                (
+                    OperationKind::BottomAndSideMilling { .. },
+                    ClosedProfile::General { placement, shape },
+                ) => {
+                    let frame = match placement {
+                        Some(p) => s.frame.then(&Frame::from_placement(p)),
+                        None => s.frame,
+                    };
+                    pocket_notes(w, s, pocket)?;
+                    return super::pocket_general::write(w, s, &cut, pocket, shape, &frame);
+                }
                 _ => {
                     return Err(PostError::unsupported(
                         &s.feature.id,
-                        "a pocket that is not rectangular or circular, or not cut by bottom and side milling,",
+                        "a pocket whose outline cncc does not read, or not cut by bottom and side milling,",
                     ))
                 }
             };

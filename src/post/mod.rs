@@ -32,6 +32,7 @@ pub mod paths;
 mod pecking;
 pub mod plan;
 mod pocket_g12;
+mod pocket_general;
 mod pockets;
 mod raw_curves;
 pub mod render;

@@ -22,25 +22,14 @@ pub fn write(
     frame: &Frame,
     cycles: bool,
 ) -> Result<(), PostError> {
-    let d = s.tool.body.dimension.diameter;
-    let cw = spindle_cw(s)?;
-    let ccw = c.ccw(cw);
+    let ccw = c.ccw(spindle_cw(s)?);
     // Finishing removes what an earlier roughing left.
     let (fal, fald) = match (c.finish, s.roughed_by) {
         (false, _) => (c.allow_side, c.allow_bottom),
         (true, Some(r)) => allowances(r),
         (true, None) => (0.0, 0.0),
     };
-    let pcut = PocketCut {
-        tool_radius: d / 2.0,
-        stepover: c.stepover(d),
-        allowance_side: if c.finish { 0.0 } else { c.allow_side },
-        levels: layers(s, c, if c.finish { 0.0 } else { c.allow_bottom }),
-        walls_only_above_bottom: c.finish && s.roughed_by.is_some(),
-        ccw,
-        clear: s.clear,
-        r_plane: s.top + s.sdis,
-    };
+    let pcut = pocket_cut(s, c)?;
     pocket::check(shape, &pcut).map_err(|e| PostError::geometry(&s.feature.id, e))?;
     // Haas G12/G13 plunge at the centre: centre-cutting tools only.
     let g12 = cycles && w.post.has("pocket_circ_g12.j2") && cuts_across_centre(&s.tool.body.kind);
@@ -122,6 +111,21 @@ pub fn write(
         .set("rad1", w.fmt.len(rad1))
         .set("dp1", w.fmt.len(dp1));
     w.emit(any_cycle, v)
+}
+
+/// The explicit pocket path's parameters of a step and its cut.
+pub(super) fn pocket_cut(s: &Step<'_>, c: &Cut<'_>) -> Result<PocketCut, PostError> {
+    let d = s.tool.body.dimension.diameter;
+    Ok(PocketCut {
+        tool_radius: d / 2.0,
+        stepover: c.stepover(d),
+        allowance_side: if c.finish { 0.0 } else { c.allow_side },
+        levels: layers(s, c, if c.finish { 0.0 } else { c.allow_bottom }),
+        walls_only_above_bottom: c.finish && s.roughed_by.is_some(),
+        ccw: c.ccw(spindle_cw(s)?),
+        clear: s.clear,
+        r_plane: s.top + s.sdis,
+    })
 }
 
 fn allowances(op: &Operation) -> (f64, f64) {

@@ -8,6 +8,7 @@ pub mod coverage;
 pub mod face;
 pub mod helix;
 pub mod pocket;
+pub mod polygon;
 
 use super::frame::Frame;
 
