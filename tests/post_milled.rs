@@ -2,7 +2,8 @@
 //! `tests/stepnc/milled_holes.stp` (a blind hole roughed and finished
 //! with an end mill, a through hole with a face mill entering on a helix)
 //! and `tests/stepnc/general_pockets.stp` (a convex pentagon with corner
-//! radii, a concave L given as a composite curve). Every target posts
+//! radii, a concave L given as a composite curve, a half disc whose arc
+//! is a trimmed circle). Every target posts
 //! them, each post checks clean in its dialect, the LinuxCNC post runs in
 //! rs274 (skipped with a note where it is absent), and each hole is the
 //! target's circular pocket cycle or exact helical moves.
@@ -103,6 +104,8 @@ fn general_pockets_post_as_generated_paths_everywhere() {
         let text = post_and_check(&p, t);
         assert!(text.contains("5 corners, convex"), "{t}: {text}");
         assert!(text.contains("6 corners, concave"), "{t}: {text}");
+        // The half disc's arc as chords within 0.002 mm: many corners.
+        assert!(text.contains("94 corners, convex"), "{t}: {text}");
     }
 }
 

@@ -5,8 +5,10 @@
 //! subprogram [?: not declared in the dialect specs]), so every target
 //! gets the generated paths of [`super::paths::polygon`]: contour-parallel
 //! loops for a convex outline, zigzag inside the finishing contour for a
-//! concave one. An outline with arcs, or one the generator cannot offset
-//! (a neck narrower than the tool), is a located refusal.
+//! concave one. Arcs of the outline (trimmed circles about the tool axis)
+//! are taken as chords within [`ARC_TOLERANCE`] of the arc. An outline
+//! the generator cannot offset (a neck narrower than the tool) is a
+//! located refusal.
 
 use super::frame::Frame;
 use super::milling::{explicit_moves, Cut};
@@ -70,7 +72,14 @@ fn outline(c: &Curve, forward: bool, out: &mut Vec<P2>) -> Result<(), &'static s
             }
             v
         }
-        Curve::Arc { .. } => return Err("a pocket whose outline has arcs (no generator yet)"),
+        Curve::Arc {
+            circle,
+            radius,
+            start,
+            end,
+            sense,
+            ..
+        } => arc_points(circle, *radius, start, end, *sense)?,
         Curve::Other(_) => return Err("a pocket whose outline is not a polyline or lines"),
     };
     if !forward {
@@ -78,4 +87,43 @@ fn outline(c: &Curve, forward: bool, out: &mut Vec<P2>) -> Result<(), &'static s
     }
     out.extend(pts);
     Ok(())
+}
+
+/// How far (mm) the chords standing for an arc of the outline may lie
+/// from it [?: below any drawing tolerance; the posted path follows the
+/// chords, so the wall may deviate by this much either way].
+pub const ARC_TOLERANCE: f64 = 0.002;
+
+/// The points of a trimmed circle about an axis along the tool's, from
+/// its start to its end in its sense (a full circle when they meet).
+fn arc_points(
+    circle: &Axis2Placement,
+    radius: f64,
+    start: &Point,
+    end: &Point,
+    sense: bool,
+) -> Result<Vec<P2>, &'static str> {
+    let axis = circle.axis.as_ref().map_or([0.0, 0.0, 1.0], |d| d.ratios);
+    let n = (axis[0].powi(2) + axis[1].powi(2) + axis[2].powi(2)).sqrt();
+    if radius <= 0.0 || n < 1e-12 || (axis[2] / n).abs() < 1.0 - 1e-9 {
+        return Err("a pocket whose outline has an arc not about the tool axis");
+    }
+    let ccw = sense == (axis[2] > 0.0);
+    let c = [circle.location.xyz[0], circle.location.xyz[1]];
+    let angle = |p: &Point| (p.xyz[1] - c[1]).atan2(p.xyz[0] - c[0]);
+    let (a0, a1) = (angle(start), angle(end));
+    let tau = std::f64::consts::TAU;
+    let mut sweep = if ccw { a1 - a0 } else { a0 - a1 }.rem_euclid(tau);
+    if sweep < 1e-9 {
+        sweep = tau;
+    }
+    let piece = 2.0 * (1.0 - (ARC_TOLERANCE / radius).min(1.0)).acos();
+    let k = (sweep / piece.max(1e-3)).ceil().clamp(1.0, 10_000.0) as usize;
+    Ok((0..=k)
+        .map(|i| {
+            let t = sweep * i as f64 / k as f64;
+            let a = if ccw { a0 + t } else { a0 - t };
+            [c[0] + radius * a.cos(), c[1] + radius * a.sin()]
+        })
+        .collect())
 }

@@ -914,6 +914,13 @@ mod tests {
             })
             .collect();
         let chamfered = [[0.0, 0.0], [40.0, 0.0], [40.0, 25.0], [37.0, 30.0], [0.0, 30.0]];
+        // A half disc of radius 14 (its arc as 93 chords).
+        let half_disc: Vec<P2> = (0..=93)
+            .map(|k| {
+                let a = k as f64 * std::f64::consts::PI / 93.0;
+                [14.0 * a.cos(), 14.0 * a.sin()]
+            })
+            .collect();
         let cases: Vec<(GeneralPocket, PocketCut)> = vec![
             (pocket(&TRIANGLE, 12.0), cut(10.0, 15.0, 0.5)),
             (pocket(&TRIANGLE, 12.0), cut(5.0, 7.5, 0.5)),
@@ -922,6 +929,8 @@ mod tests {
             (pocket(&hexagon, 0.0), cut(3.0, 4.5, 0.0)),
             (pocket(&hexagon, 6.0), cut(4.0, 7.9, 0.2)),
             (pocket(&chamfered, 0.0), cut(3.0, 6.0, 0.0)),
+            (pocket(&half_disc, 0.0), cut(4.0, 5.0, 0.0)),
+            (pocket(&half_disc, 0.0), cut(2.0, 3.9, 0.2)),
         ];
         for (p, c) in cases {
             check(&p, &c).unwrap();
