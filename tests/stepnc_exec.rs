@@ -22,6 +22,8 @@ fn plans() -> Vec<PathBuf> {
     let mut v = vec![
         common::root().join("tests/programs/stepnc/tapped_holes.stp"),
         common::root().join("tests/programs/stepnc/ap238_slot.stpnc"),
+        common::root().join("tests/stepnc/milled_holes.stp"),
+        common::root().join("tests/stepnc/general_pockets.stp"),
     ];
     if let Some(shared) = common::shared() {
         let s = shared.join("stepnc-samples");
@@ -33,6 +35,7 @@ fn plans() -> Vec<PathBuf> {
             "field/sanssouci__RanhuraPerfilRoundedU.p21",
             "field/sanssouci__STEP-NC_pocket1_File.p21",
             "field/sanssouci__Hole",
+            "field/sanssouci__testePrecedencias.p21",
         ] {
             v.push(s.join(name));
         }

@@ -40,7 +40,6 @@ const REFUSED: &[(&str, &str, &str)] = &[
     ("sanssouci__STEP-NC_slot_File.p21", "E0900", "a workingstep whose tool is MILLING_CUTTING_TOOL($,$,...): kept raw"),
     ("sanssouci__STEP-NC_pocket_File.p21", "E0900", "features whose axis is not the machine's Z (3-axis posts only)"),
     ("sanssouci__testBoxy.p21", "E0900", "holes on the part's sides (axis not Z; 3-axis posts only)"),
-    ("sanssouci__testePrecedencias.p21", "E0900", "a pocket with a GENERAL_CLOSED_PROFILE and a trochoidal strategy (GRIMA extension): no generator yet"),
 ];
 
 fn dir() -> Option<PathBuf> {

@@ -1,7 +1,8 @@
 //! Feeds plausible for the tool: the chip load a workingstep's feed and
 //! spindle speed imply (feed per revolution for drilling-type tools, per
 //! tooth for cutters), warned about (W0901) when far above what such a
-//! tool takes. The limits are deliberately loose [?]: they catch unit
+//! tool takes; and the cutting speed the spindle speed implies at the
+//! tool's diameter (W0901 above [`MAX_CUTTING_SPEED`]). The limits are deliberately loose [?]: they catch unit
 //! mistakes (a feed in mm/s read as m/s gives 60 times too much), not
 //! tuning.
 
@@ -65,6 +66,32 @@ pub fn check(s: &Step<'_>) -> Option<Diagnostic> {
             "ISO 14649 gives feeds in m/s and spindle speeds in rev/s; check the MILLING_TECHNOLOGY of the operation",
         ),
     )
+}
+
+/// Most cutting speed (m/min) the spindle speed may imply at the tool's
+/// circumference [?]: above what carbide takes even in aluminium; a plan
+/// that writes rpm where ISO 14649 wants rev/s gives 60 times more.
+const MAX_CUTTING_SPEED: f64 = 3000.0;
+
+/// A warning when the step's spindle speed implies an implausible
+/// cutting speed for the tool's diameter.
+pub fn check_speed(s: &Step<'_>) -> Option<Diagnostic> {
+    let rpm = spindle_rpm(s).ok()?.abs();
+    let d = s.tool.body.dimension.diameter;
+    let vc = rpm * std::f64::consts::PI * d / 1000.0;
+    (vc > MAX_CUTTING_SPEED).then(|| {
+        Diagnostic::new(
+            Code::ImplausibleFeed,
+            format!(
+                "`{}`: {} rpm on a {} mm tool is a cutting speed of {} m/min",
+                s.op.id,
+                r3(rpm),
+                r3(d),
+                r3(vc)
+            ),
+        )
+        .help("ISO 14649 gives spindle speeds in rev/s and cutting speeds in m/s; check the MILLING_TECHNOLOGY of the operation (rpm or m/min written instead?)")
+    })
 }
 
 fn is_drilling(k: &OperationKind) -> bool {

@@ -33,7 +33,9 @@ pub fn units<'a, 'p>(items: &'a [Item<'p>]) -> Vec<Unit<'a, 'p>> {
             }
             continue;
         }
-        if !matches!(s.feature.kind, FeatureKind::RoundHole { .. }) {
+        // A milled hole is a pocket of its own, never a cycle position.
+        if !matches!(s.feature.kind, FeatureKind::RoundHole { .. }) || super::plan::is_milling(s.op)
+        {
             out.push(Unit::Item(item));
             continue;
         }

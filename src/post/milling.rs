@@ -96,10 +96,21 @@ pub fn write(w: &mut Writer<'_>, steps: &[&Step<'_>]) -> Result<(), PostError> {
                         diameter: diameter.nominal,
                     },
                 ),
+                (
+                    OperationKind::BottomAndSideMilling { .. },
+                    ClosedProfile::General { placement, shape },
+                ) => {
+                    let frame = match placement {
+                        Some(p) => s.frame.then(&Frame::from_placement(p)),
+                        None => s.frame,
+                    };
+                    pocket_notes(w, s, pocket)?;
+                    return super::pocket_general::write(w, s, &cut, pocket, shape, &frame);
+                }
                 _ => {
                     return Err(PostError::unsupported(
                         &s.feature.id,
-                        "a pocket that is not rectangular or circular, or not cut by bottom and side milling,",
+                        "a pocket whose outline cncc does not read, or not cut by bottom and side milling,",
                     ))
                 }
             };
@@ -111,13 +122,25 @@ pub fn write(w: &mut Writer<'_>, steps: &[&Step<'_>]) -> Result<(), PostError> {
             super::pockets::write(w, s, &cut, &shape, &frame, true)
         }
         FeatureKind::PlanarFace { .. } => super::faces::write(w, s, &cut),
+        FeatureKind::RoundHole {
+            diameter, bottom, ..
+        } if matches!(s.op.kind, OperationKind::BottomAndSideMilling { .. }) => {
+            super::hole_mill::write(w, s, &cut, diameter.nominal, bottom)
+        }
         FeatureKind::Slot { .. } => {
             if w.post.has("slot.j2") && super::slot_cycle::write(w, s, &cut)? {
                 return Ok(());
             }
             super::slots::write_group(w, steps, &cut)
         }
-        _ => Err(PostError::unsupported(&s.feature.id, "this feature")),
+        _ => Err(PostError::unsupported(
+            &s.op.id,
+            &format!(
+                "a {} on a {}",
+                operation_kind(&s.op.kind),
+                super::names::feature_kind(&s.feature.kind)
+            ),
+        )),
     }
 }
 

@@ -243,6 +243,16 @@ fn through_bottom(project: &Project, f: &Feature, base: &Frame) -> Result<f64, P
 }
 
 /// True for roughing milling operations.
+/// A milling operation (plane, side, bottom and side milling).
+pub fn is_milling(op: &Operation) -> bool {
+    matches!(
+        op.kind,
+        OperationKind::PlaneMilling { .. }
+            | OperationKind::SideMilling { .. }
+            | OperationKind::BottomAndSideMilling { .. }
+    )
+}
+
 pub fn is_rough(op: &Operation) -> bool {
     match &op.kind {
         OperationKind::PlaneMilling { finish, .. }

@@ -22,25 +22,14 @@ pub fn write(
     frame: &Frame,
     cycles: bool,
 ) -> Result<(), PostError> {
-    let d = s.tool.body.dimension.diameter;
-    let cw = spindle_cw(s)?;
-    let ccw = c.ccw(cw);
+    let ccw = c.ccw(spindle_cw(s)?);
     // Finishing removes what an earlier roughing left.
     let (fal, fald) = match (c.finish, s.roughed_by) {
         (false, _) => (c.allow_side, c.allow_bottom),
         (true, Some(r)) => allowances(r),
         (true, None) => (0.0, 0.0),
     };
-    let pcut = PocketCut {
-        tool_radius: d / 2.0,
-        stepover: c.stepover(d),
-        allowance_side: if c.finish { 0.0 } else { c.allow_side },
-        levels: layers(s, c, if c.finish { 0.0 } else { c.allow_bottom }),
-        walls_only_above_bottom: c.finish && s.roughed_by.is_some(),
-        ccw,
-        clear: s.clear,
-        r_plane: s.top + s.sdis,
-    };
+    let pcut = pocket_cut(s, c)?;
     pocket::check(shape, &pcut).map_err(|e| PostError::geometry(&s.feature.id, e))?;
     // Haas G12/G13 plunge at the centre: centre-cutting tools only.
     let g12 = cycles && w.post.has("pocket_circ_g12.j2") && cuts_across_centre(&s.tool.body.kind);
@@ -85,7 +74,8 @@ pub fn write(
             .set("angle", w.fmt.angle(frame.angle_deg().rem_euclid(180.0))),
         Shape::Circle { diameter } => v
             .set("prad", w.fmt.len(diameter / 2.0))
-            .set_derived("diameter", w.fmt.len(*diameter)),
+            .set_derived("diameter", w.fmt.len(*diameter))
+            .set_derived("plunge", if helical(c.approach) { "1" } else { "0" }),
     };
     let units = match (c.finish, s.roughed_by.is_some()) {
         (false, _) => 1,
@@ -123,6 +113,21 @@ pub fn write(
     w.emit(any_cycle, v)
 }
 
+/// The explicit pocket path's parameters of a step and its cut.
+pub(super) fn pocket_cut(s: &Step<'_>, c: &Cut<'_>) -> Result<PocketCut, PostError> {
+    let d = s.tool.body.dimension.diameter;
+    Ok(PocketCut {
+        tool_radius: d / 2.0,
+        stepover: c.stepover(d),
+        allowance_side: if c.finish { 0.0 } else { c.allow_side },
+        levels: layers(s, c, if c.finish { 0.0 } else { c.allow_bottom }),
+        walls_only_above_bottom: c.finish && s.roughed_by.is_some(),
+        ccw: c.ccw(spindle_cw(s)?),
+        clear: s.clear,
+        r_plane: s.top + s.sdis,
+    })
+}
+
 fn allowances(op: &Operation) -> (f64, f64) {
     match &op.kind {
         OperationKind::BottomAndSideMilling {
@@ -145,6 +150,11 @@ fn cutmode(s: Option<&Strategy>) -> Option<CutMode> {
         | Strategy::Unidirectional { cutmode, .. } => *cutmode,
         _ => None,
     }
+}
+
+/// The approach enters on a helix.
+fn helical(a: Option<&ApproachRetract>) -> bool {
+    matches!(a, Some(ApproachRetract::PlungeHelix { .. }))
 }
 
 /// POCKET3 insertion (VARI tens): 1 vertical at feed, 2 helical (RAD1

@@ -109,8 +109,8 @@ fn geometry(s: &Step<'_>) -> Option<(Frame, f64, f64)> {
             second_radius,
             second_angle,
             ..
-        } if (first_angle.unwrap_or(90.0) - 90.0).abs() < 1e-9
-            && (second_angle.unwrap_or(90.0) - 90.0).abs() < 1e-9
+        } if super::slots::upright(*first_angle)
+            && super::slots::upright(*second_angle)
             && first_radius.as_ref().map_or(0.0, |t| t.nominal) <= 0.0
             && second_radius.as_ref().map_or(0.0, |t| t.nominal) <= 0.0 =>
         {

@@ -36,6 +36,16 @@ impl Parts<'_> {
 
 /// The slot's geometry in workpiece coordinates, or why it cannot be
 /// posted at all.
+/// A `SQUARE_U_PROFILE` wall angle that means an upright wall. ISO
+/// 14649-10 measures it against the profile's local z axis (NIST
+/// STEPNC++'s attribute text), so 0 is upright, and real plans write 0.0;
+/// 90 (measured from the floor, as cncc's raiser wrote before) is read
+/// as upright too [?: a wall at 90 degrees to z would be no wall]; unset
+/// is upright (W0803 at reading).
+pub fn upright(angle: Option<f64>) -> bool {
+    angle.is_none_or(|a| a.abs() < 1e-9 || (a - 90.0).abs() < 1e-9)
+}
+
 pub fn parts<'p>(s: &Step<'p>) -> Result<Parts<'p>, PostError> {
     let FeatureKind::Slot {
         course_of_travel,
@@ -73,10 +83,8 @@ pub fn parts<'p>(s: &Step<'p>) -> Result<Parts<'p>, PostError> {
             second_angle,
             ..
         } => {
-            let angle = |a: &Option<f64>| a.unwrap_or(90.0);
             let radius = |r: &Option<Toleranced>| r.as_ref().map_or(0.0, |t| t.nominal);
-            if (angle(first_angle) - 90.0).abs() > 1e-9 || (angle(second_angle) - 90.0).abs() > 1e-9
-            {
+            if !upright(*first_angle) || !upright(*second_angle) {
                 return Err(PostError::unsupported(
                     &s.feature.id,
                     "a slot with sloped walls",
@@ -223,4 +231,18 @@ fn outline(
         &s.feature.id,
         "a slot without two end conditions, or with woodruff, loop or mixed ends,",
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::upright;
+
+    #[test]
+    fn square_u_wall_angles_read_against_the_tool_axis() {
+        // 0: along the profile's z axis (ISO 14649-10); unset; 90 as cncc
+        // wrote it before [?].
+        assert!(upright(None) && upright(Some(0.0)) && upright(Some(90.0)));
+        // A draft of 30 degrees (or GRIMA's 0.5236, radians) is a slope.
+        assert!(!upright(Some(30.0)) && !upright(Some(0.5235987755982988)));
+    }
 }

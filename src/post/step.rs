@@ -225,6 +225,7 @@ fn write_step_body(
         return w.emit("retract.j2", Vals::new().set("z", w.fmt.len(s.clear)));
     }
     match &s.feature.kind {
+        FeatureKind::RoundHole { .. } if super::plan::is_milling(s.op) => milling::write(w, steps)?,
         FeatureKind::RoundHole { .. } => holes::write(w, steps)?,
         FeatureKind::ClosedPocket { .. } | FeatureKind::PlanarFace { .. } => {
             milling::write(w, steps)?

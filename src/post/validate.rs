@@ -281,6 +281,9 @@ pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings
         if let Some(w) = super::chipload::check(s) {
             out.warnings.push(w);
         }
+        if let Some(w) = super::chipload::check_speed(s) {
+            out.warnings.push(w);
+        }
     }
     out
 }

@@ -365,7 +365,8 @@ pub enum OpenProfile {
     /// Radii and angles are mandatory in ISO 14649-10, but generators
     /// leave them `$` (GRIMA's `SQUARE_U_PROFILE(#p,#w,$,$,$,$)`): read as
     /// unset (W0803). Posting reads an unset radius as no fillet asked
-    /// and an unset angle as a vertical wall (90 degrees) [?].
+    /// and an unset angle as an upright wall; the angles are measured
+    /// against the profile's z axis (0 upright; see `post::slots::upright`).
     SquareU {
         placement: Option<Axis2Placement>,
         width: Toleranced,

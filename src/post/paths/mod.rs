@@ -1,11 +1,14 @@
 //! Explicit toolpaths for features the target has no cycle for: pockets
-//! cleared contour-parallel from the inside out ([`pocket`]) and faces
-//! milled zigzag ([`face`]). Geometry is made in the feature's plane
+//! cleared contour-parallel from the inside out ([`pocket`], general
+//! polygon boundaries in [`polygon`]), holes milled on a helix
+//! ([`helix`]) and faces milled zigzag ([`face`]). Geometry is made in the feature's plane
 //! (2-D, mm) and placed with the feature's frame.
 
 pub mod coverage;
 pub mod face;
+pub mod helix;
 pub mod pocket;
+pub mod polygon;
 
 use super::frame::Frame;
 
@@ -17,7 +20,8 @@ pub type P2 = [f64; 2];
 pub enum Move {
     Rapid([f64; 3]),
     Line([f64; 3]),
-    /// An arc in the XY plane at the current z.
+    /// An arc about an axis parallel to Z: in the XY plane when `to` is
+    /// at the current z, else one piece (at most half a turn) of a helix.
     Arc {
         to: [f64; 3],
         centre: P2,

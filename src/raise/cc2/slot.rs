@@ -6,8 +6,8 @@
 //! or lower Y for a slot along Y) over the distance between the end
 //! centres; the cross-section is a SQUARE_U_PROFILE with the tool's
 //! corner radius (0 for a flat end mill) and upright walls (angles
-//! written as 90° [?: ISO 14649-10 gives the walls' angles but the
-//! samples we have show no SQUARE_U_PROFILE to confirm the convention]).
+//! written as 0: ISO 14649-10 measures them against the profile's local
+//! z axis, as NIST STEPNC++'s attribute text says and real plans write).
 //! An end whose tool envelope leaves the stock is OPEN, else RADIUSED (a
 //! milled end is round with the tool's radius). A slot whose side wall
 //! reaches the stock's side is left to [`super::open`] (a step). Strategy CENTER_MILLING
@@ -244,9 +244,9 @@ fn slot_feature(r: &Raiser, name: &str, g: &SlotGeom, edge: f64) -> Feature {
                 placement: None,
                 width: tol(g.width),
                 first_radius: Some(tol(edge)),
-                first_angle: Some(90.0),
+                first_angle: Some(0.0),
                 second_radius: Some(tol(edge)),
-                second_angle: Some(90.0),
+                second_angle: Some(0.0),
             },
             end_conditions: vec![end_type(g.start, -1.0), end_type(end, 1.0)],
         },
