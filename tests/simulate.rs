@@ -276,12 +276,36 @@ fn a_flat_end_mill_plunging_into_solid_stock_is_a_warning() {
 
 #[test]
 fn the_stock_checks_stop_after_a_tool_of_unknown_size_cuts() {
-    // blk_slot.h: T1 of no known size (TOOL DEF is not read before the
-    // run) ramps in and cuts; what it leaves is not known.
-    let (code, err) = check_json("blk_slot.h", &[]);
+    // blk_unknown.h: T1 of no known size ramps in and cuts a slot; the
+    // later rapid into it (3 mm beside the axis line the simulation cut)
+    // is not judged.
+    let (code, err) = check_json("blk_unknown.h", &[]);
     assert_eq!(code, 0, "{err}");
     assert!(
-        err.contains(r#""code":"W1003""#) && err.contains(r#""line":8"#),
+        err.contains(r#""code":"W1003""#) && err.contains(r#""line":7"#),
         "{err}"
     );
+    assert!(!err.contains("E1001"), "{err}");
+    // blk_slot.h gives T1 its size with TOOL DEF: checked to the end.
+    let (code, err) = check_json("blk_slot.h", &[]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("W1003"), "{err}");
+}
+
+#[test]
+fn tool_def_gives_the_simulation_its_tool() {
+    // blk_slot.h: TOOL DEF 1 R+5, a slot 10 wide, 2 deep from X30 to X60
+    // with a ramp from X20 (Z+2) to X30 (Z-2) in front.
+    let (code, out, err) = cncc(&[
+        "simulate",
+        "--machine-units",
+        "mm",
+        "--format",
+        "json",
+        "tests/programs/simulate/blk_slot.h",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(v["tools"][0]["radius_mm"].as_f64(), Some(5.0), "{out}");
+    assert_eq!(v["stock"]["from"], "the program's BLK FORM", "{out}");
 }

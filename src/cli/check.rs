@@ -258,7 +258,8 @@ fn rapid_checker(
     let cell = crate::sim::HeightField::auto_cell(&stock, Some(longest / 10.0));
     let field = crate::sim::HeightField::new(&stock, cell).map_err(Failure)?;
     let mm = crate::cli::stats::machine_mm(options);
-    let cutters = crate::sim::Cutters::from_table(&options.tool_table, head, mm, true);
+    let table = crate::sim::tool_defs::with_tool_defs(&options.tool_table, head, spec, mm);
+    let cutters = crate::sim::Cutters::from_table(&table, head, mm, true);
     let mut sim = crate::sim::Simulation::new(field, cutters);
     sim.check_rapids = true;
     Ok((Some(sim), from))

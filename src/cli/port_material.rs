@@ -73,8 +73,8 @@ impl Proof {
         };
         let head = head_of(text);
         let opts = crate::cli::check::program_tools(options, head, spec);
-        let table = &opts.tool_table;
         let mm = crate::cli::stats::machine_mm(&opts);
+        let table = &crate::sim::tool_defs::with_tool_defs(&opts.tool_table, head, spec, mm);
         Ok(Proof {
             given,
             cutters: Cutters::from_table(table, head, mm, false),

@@ -20,6 +20,7 @@ pub mod material;
 pub mod report;
 pub mod stl;
 pub mod sweep;
+pub mod tool_defs;
 
 use crate::interp::tool_header::HeaderTool;
 use crate::interp::tooltable::ToolTable;
