@@ -279,13 +279,18 @@ fn the_stock_checks_stop_after_a_tool_of_unknown_size_cuts() {
     // blk_unknown.h: T1 of no known size ramps in and cuts a slot; the
     // later rapid into it (3 mm beside the axis line the simulation cut)
     // is not judged.
-    let (code, err) = check_json("blk_unknown.h", &[]);
+    let (code, err) = check_json("blk_unknown.h", &["--stock", "100x50x20"]);
     assert_eq!(code, 0, "{err}");
     assert!(
         err.contains(r#""code":"W1003""#) && err.contains(r#""line":7"#),
         "{err}"
     );
     assert!(!err.contains("E1001"), "{err}");
+    // With the program's own BLK FORM (not asked for) the checks stop
+    // without a word: a clean program checks silently.
+    let (code, err) = check_json("blk_unknown.h", &[]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("W1003") && !err.contains("E1001"), "{err}");
     // blk_slot.h gives T1 its size with TOOL DEF: checked to the end.
     let (code, err) = check_json("blk_slot.h", &[]);
     assert_eq!(code, 0, "{err}");

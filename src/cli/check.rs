@@ -183,7 +183,13 @@ fn check_file(
         };
         drop(it);
         if let Some(s) = sim.take() {
-            run.extend(crate::sim::report::safety_diagnostics(&s, stock_from));
+            let mut d = crate::sim::report::safety_diagnostics(&s, stock_from);
+            // Where the checks stopped is said when the stock was asked
+            // for; a program's own blank is checked as far as it can be.
+            if stock_from != crate::sim::report::StockFrom::Option {
+                d.retain(|d| d.code != Code::MaterialCheckStopped);
+            }
+            run.extend(d);
         }
         // A subprogram or library checked alone runs again from its top
         // with its caller's values unknown: at once when it has control

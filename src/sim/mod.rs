@@ -183,7 +183,10 @@ impl Simulation {
             rapid_hits: Vec::new(),
             chord,
             watch: None,
-            unknown_height: false,
+            // Where the tool starts is not known either (the run starts
+            // it at the work zero): taken as above the work, as after a
+            // move in machine coordinates.
+            unknown_height: true,
             probe_stopped: None,
             plunges: Vec::new(),
         }
