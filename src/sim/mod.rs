@@ -202,10 +202,10 @@ impl Simulation {
     /// relative to the work is not known at check time (the run takes
     /// the machine datum at the work zero). Such a move neither cuts nor
     /// is probed, and the tool is then at an unknown height, taken to be
-    /// above the work [?: the datums machine builders set are]: moves
-    /// that keep that height are passed by too, and the first move that
+    /// above the work [?: the datums machine builders set are]: rapids
+    /// that keep that height are passed by too, the first rapid that
     /// changes Z comes straight down onto its end point from above the
-    /// stock.
+    /// stock, and a feed is cut as it is (the program cuts from there).
     pub fn push_in_frame(&mut self, e: &Event, machine: bool) {
         let Event::Move(m) = e else { return };
         if machine {
@@ -213,11 +213,12 @@ impl Simulation {
             return;
         }
         if self.unknown_height {
-            if m.from[2] == m.to[2] {
+            let rapid = matches!(m.kind, MoveKind::Rapid);
+            if rapid && m.from[2] == m.to[2] {
                 return;
             }
             self.unknown_height = false;
-            if !matches!(m.kind, MoveKind::Arc(_)) {
+            if rapid {
                 let mut m = m.clone();
                 m.from = [m.to[0], m.to[1], m.to[2].max(self.field.top)];
                 return self.push_move(&m);
