@@ -7,7 +7,10 @@
 #   LINES=2000000      lines of the generated program for the speed figures
 #   MEM_LINES=5000000  lines of the second program for the memory figures
 #   ROUNDS=3           runs of each timed command (the least CPU time counts)
-#   SECTIONS="check canon memory"   which parts to run
+#   SECTIONS="check canon memory"   which parts to run; "simulate" (not run
+#                      by default, minutes): issue 19's material benchmark,
+#                      the LinuxCNC program at LINES lines cut on a 0.1 mm
+#                      grid over a 200 x 200 mm stock, one run
 #   MEM_LIMIT_MB=4096  address-space limit of each memory run (ulimit -v);
 #                      a command that needs more dies and is flagged OVER
 #   TIMEOUT=300        seconds before a memory run is killed (TIMEOUT)
@@ -172,6 +175,20 @@ if [[ " $SECTIONS " == *" canon "* ]]; then
 fi
 
 # --- memory of every command, LINES and MEM_LINES -------------------------
+# --- simulate: issue 19 (2M lines, 0.1 mm grid, 200 x 200 mm stock) ----------
+if [[ " $SECTIONS " == *" simulate "* ]]; then
+    p=$(program linuxcnc "$LINES"); m=$(mb "$p")
+    # The generator's tools (its comments give D12 flat, D6 and D3 ball,
+    # D8.5 drill); its stock is 200 x 150 x 30 with the top at Z0.
+    printf '%s\n' "T1 P1 Z0 D12 ;D12 flat end mill" "T2 P2 Z0 D6 ;D6 ball end mill" \
+        "T3 P3 Z0 D3 ;D3 ball end mill" "T4 P4 Z0 D8.5 ;D8.5 drill" >"$work/sim.tbl"
+    echo "## simulate on $LINES lines ($m MB): grid 0.1 mm over 200 x 200 mm (2000 x 2000 cells)"
+    timed "$cncc" simulate --dialect linuxcnc --machine-units mm --tool-table "$work/sim.tbl" \
+        --stock 200x200x30+0-25-30 --resolution 0.1 "$p"
+    echo "CPU ${cpu} s, peak RSS ${rss} MB, exit $code (issue 19 asks under 10 s on one core)"
+    echo
+fi
+
 if [[ " $SECTIONS " == *" memory "* ]]; then
     echo "## peak memory per command (limit ${MEM_LIMIT_MB} MB address space, ${TIMEOUT} s)"
     printf '%-22s' command

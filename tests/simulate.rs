@@ -175,3 +175,142 @@ fn a_zigzag_and_a_spiral_pocket_compare_equal() {
     let (code, out) = diff_material_on("pocket.nc", "slot.nc", stock);
     assert_eq!(code, 1, "a pocket is not a slot: {out}");
 }
+
+fn cncc(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_cncc"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn port_verify_material_compares_the_cut_parts() {
+    let port = |file: &str, to: &str, extra: &[&str]| {
+        let file = format!("tests/programs/simulate/{file}");
+        let mut args = vec!["port", file.as_str(), "--to", to, "--verify", "--material"];
+        args.extend(["--machine-units", "mm"]);
+        args.extend(extra);
+        cncc(&args)
+    };
+    for to in ["heidenhain", "siemens840d", "linuxcnc"] {
+        let (code, out, err) = port("pocket.nc", to, &[]);
+        assert_eq!(code, 0, "{to}: {err}");
+        assert!(!out.is_empty(), "{to}: the port is written");
+        assert!(err.contains("verify: OK: the same"), "{to}: {err}");
+        assert!(
+            err.contains("verify: material: the same part within 0.01 mm")
+                && err.contains("stock: guessed from the feed moves"),
+            "{to}: {err}"
+        );
+    }
+    let (code, _, err) = port("ring.nc", "heidenhain", &["--stock", "40x40x20-20-20-20"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("grid 400 x 400 cells") && err.contains("stock: --stock"), "{err}");
+    let (code, _, err) = port("blk_slot.h", "fanuc", &[]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("stock: the program's BLK FORM"), "{err}");
+    // Without --material the parts are not compared.
+    let (code, _, err) = cncc(&[
+        "port",
+        "tests/programs/simulate/pocket.nc",
+        "--to",
+        "heidenhain",
+        "--verify",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("material"), "{err}");
+    let (code, _, err) = cncc(&[
+        "port",
+        "tests/programs/simulate/pocket.nc",
+        "--to",
+        "heidenhain",
+        "--stock",
+        "10x10x10",
+    ]);
+    assert_ne!(code, 0, "--stock alone means nothing: {err}");
+    assert!(err.contains("--features or --verify --material"), "{err}");
+}
+
+fn check_json(program: &str, extra: &[&str]) -> (i32, String) {
+    let file = format!("tests/programs/simulate/{program}");
+    let mut args = vec!["check", "--machine-units", "mm", "--format", "json", &file];
+    args.extend(extra);
+    let (code, _, err) = cncc(&args);
+    (code, err)
+}
+
+#[test]
+fn check_takes_the_stock_from_blk_form() {
+    let (code, err) = check_json("blk_rapid.h", &[]);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains(r#""code":"E1001""#) && err.contains(r#""line":7"#),
+        "{err}"
+    );
+    assert!(err.contains("stock from the program's BLK FORM"), "{err}");
+    let (code, err) = check_json("blk_slot.h", &[]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("E1001"), "{err}");
+    // --stock wins: a blank whose top is at Z-10 lies below the rapid.
+    let (code, err) = check_json("blk_rapid.h", &["--stock", "100x50x10-0-0-20"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("E1001"), "{err}");
+}
+
+#[test]
+fn a_flat_end_mill_plunging_into_solid_stock_is_a_warning() {
+    let (code, err) = check_json("plunge.nc", &["--stock", "100x50x20"]);
+    assert_eq!(code, 0, "a warning only: {err}");
+    // Only T1 straight down at X20: not T2 (a drill), not T1 into T2's
+    // hole, not the ramp, not T3 (a ball).
+    assert_eq!(err.matches(r#""code":"W1004""#).count(), 1, "{err}");
+    assert!(err.contains(r#""line":18"#), "{err}");
+    let (_, err) = check_json("plunge.nc", &[]);
+    assert!(!err.contains("W1004"), "no stock, no check: {err}");
+}
+
+#[test]
+fn the_stock_checks_stop_after_a_tool_of_unknown_size_cuts() {
+    // blk_unknown.h: T1 of no known size ramps in and cuts a slot; the
+    // later rapid into it (3 mm beside the axis line the simulation cut)
+    // is not judged.
+    let (code, err) = check_json("blk_unknown.h", &["--stock", "100x50x20"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        err.contains(r#""code":"W1003""#) && err.contains(r#""line":7"#),
+        "{err}"
+    );
+    assert!(!err.contains("E1001"), "{err}");
+    // With the program's own BLK FORM (not asked for) the checks stop
+    // without a word: a clean program checks silently.
+    let (code, err) = check_json("blk_unknown.h", &[]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("W1003") && !err.contains("E1001"), "{err}");
+    // blk_slot.h gives T1 its size with TOOL DEF: checked to the end.
+    let (code, err) = check_json("blk_slot.h", &[]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("W1003"), "{err}");
+}
+
+#[test]
+fn tool_def_gives_the_simulation_its_tool() {
+    // blk_slot.h: TOOL DEF 1 R+5, a slot 10 wide, 2 deep from X30 to X60
+    // with a ramp from X20 (Z+2) to X30 (Z-2) in front.
+    let (code, out, err) = cncc(&[
+        "simulate",
+        "--machine-units",
+        "mm",
+        "--format",
+        "json",
+        "tests/programs/simulate/blk_slot.h",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(v["tools"][0]["radius_mm"].as_f64(), Some(5.0), "{out}");
+    assert_eq!(v["stock"]["from"], "the program's BLK FORM", "{out}");
+}

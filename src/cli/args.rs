@@ -130,15 +130,23 @@ pub enum Command {
         /// --features: their features); exit 1 if they differ.
         #[arg(long)]
         verify: bool,
+        /// With --verify: also cut the stock with both programs and compare
+        /// the finished parts (always done with --features); exit 1 if they
+        /// differ by more than 0.01 mm.
+        #[arg(long, requires = "verify")]
+        material: bool,
         /// Raise to STEP-NC features (CC2) and post them with the target's
         /// feature cycles (POCKET1, CYCLE71, CYCL DEF ...).
         #[arg(long, conflicts_with = "expand_cycles")]
         features: bool,
-        /// With --features: a tool table in LinuxCNC's .tbl format (tool geometry).
-        #[arg(long = "tool-table", value_name = "T.tbl", requires = "features")]
+        /// With --features or --material: a tool table in LinuxCNC's .tbl
+        /// format (tool geometry).
+        #[arg(long = "tool-table", value_name = "T.tbl")]
         tool_table: Option<PathBuf>,
-        /// With --features: the stock block, mm: `LxWxH[+X+Y+Z]`.
-        #[arg(long, value_name = "LxWxH[+X+Y+Z]", requires = "features")]
+        /// With --features or --material: the stock block, mm:
+        /// `LxWxH[+X+Y+Z]` (else the program's BLK FORM, else round the
+        /// feed moves).
+        #[arg(long, value_name = "LxWxH[+X+Y+Z]")]
         stock: Option<String>,
         #[arg(long, value_enum, default_value_t = Format::Human)]
         format: Format,

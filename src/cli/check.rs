@@ -8,6 +8,7 @@
 //! on large CAM files; one with control flow (jumps, loops, calls,
 //! parameters) is read whole and run by the program walker.
 
+use crate::sim::report::StockFrom;
 use crate::cli::args::Format;
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::cli::output::summary_line;
@@ -124,11 +125,16 @@ fn check_file(
     let input = BufReader::with_capacity(1 << 16, File::open(path).map_err(fail)?);
     let id = ctx.files.add_sparse(path.display().to_string(), Vec::new());
     let options = program_tools(&a.options, &head, &spec);
-    let mut sim = rapid_checker(a.stock, &options, &head)?;
+    let (mut sim, stock_from) = rapid_checker(a.stock, &options, &head, path, id, &spec)?;
+    let has_blank = sim.is_some();
     let mut tracker = crate::toolpath::Tracker::new();
+    // The statements that move in machine coordinates (see
+    // `Simulation::push_in_frame`), marked as their blocks are read.
+    let machine = std::cell::RefCell::new(std::collections::HashSet::new());
     let mut discard = |c: crate::canon::Canon, span: crate::span::Span| {
         if let Some(s) = sim.as_mut() {
-            tracker.push(&c, span, |e| s.push(&e));
+            let framed = machine.borrow().contains(&span);
+            tracker.push(&c, span, |e| s.push_in_frame(&e, framed));
         }
     };
     let linter = lint_for(path, a, &spec, &options)?;
@@ -143,6 +149,9 @@ fn check_file(
     let mut top_level = crate::interp::fragment::Detector::default();
     let result = check_stream(input, id, &spec, |b, e| {
         top_level.block(b);
+        if a.stock.is_some() || has_blank {
+            mark_machine_frame(&mut machine.borrow_mut(), b, &spec);
+        }
         if let Some(l) = &linter {
             l.borrow_mut().read_block(b);
         }
@@ -157,6 +166,9 @@ fn check_file(
             None => None,
             Some(_) => Some(read_whole(path, id, &spec)?),
         };
+        for b in program.iter().flat_map(|p| &p.blocks) {
+            mark_machine_frame(&mut machine.borrow_mut(), b, &spec);
+        }
         let fragment = program.as_deref().and_then(crate::interp::fragment::detect);
         let mut run = match (&program, &fragment) {
             (None, _) => stream.finish(&mut it),
@@ -171,12 +183,13 @@ fn check_file(
         };
         drop(it);
         if let Some(s) = sim.take() {
-            let from = crate::sim::report::StockFrom::Option;
-            run.extend(
-                s.rapid_hits
-                    .iter()
-                    .map(|h| crate::sim::report::rapid_diagnostic(h, from)),
-            );
+            let mut d = crate::sim::report::safety_diagnostics(&s, stock_from);
+            // Where the checks stopped is said when the stock was asked
+            // for; a program's own blank is checked as far as it can be.
+            if stock_from != crate::sim::report::StockFrom::Option {
+                d.retain(|d| d.code != Code::MaterialCheckStopped);
+            }
+            run.extend(d);
         }
         // A subprogram or library checked alone runs again from its top
         // with its caller's values unknown: at once when it has control
@@ -222,24 +235,54 @@ fn check_file(
     Ok(diags)
 }
 
-/// With `--stock`: the material simulation that probes every rapid
-/// (tools of invented size are checked along their axis only; a grid of
-/// about 1000 cells along the stock's longest side).
+/// With a stock (`--stock`, else the program's own blank: Heidenhain
+/// `BLK FORM`): the material simulation that probes every rapid (tools
+/// of invented size are checked along their axis only; a grid of about
+/// 1000 cells along the stock's longest side).
 fn rapid_checker(
     stock: Option<&str>,
     options: &Options,
     head: &str,
-) -> Result<Option<crate::sim::Simulation>, Failure> {
-    let Some(text) = stock else { return Ok(None) };
-    let stock = text.parse::<crate::toolpath::Stock>().map_err(Failure)?;
+    path: &Path,
+    id: crate::span::FileId,
+    spec: &DialectSpec,
+) -> Result<(Option<crate::sim::Simulation>, StockFrom), Failure> {
+    let (stock, from) = match stock {
+        Some(text) => (
+            text.parse::<crate::toolpath::Stock>().map_err(Failure)?,
+            StockFrom::Option,
+        ),
+        None => {
+            let file = File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+            match crate::toolpath::Stock::from_program(file, id, spec).0 {
+                Some(b) => (b, StockFrom::Blank),
+                None => return Ok((None, StockFrom::Blank)),
+            }
+        }
+    };
     let longest = stock.size[0].max(stock.size[1]);
     let cell = crate::sim::HeightField::auto_cell(&stock, Some(longest / 10.0));
     let field = crate::sim::HeightField::new(&stock, cell).map_err(Failure)?;
     let mm = crate::cli::stats::machine_mm(options);
-    let cutters = crate::sim::Cutters::from_table(&options.tool_table, head, mm, true);
+    let table = crate::sim::tool_defs::with_tool_defs(&options.tool_table, head, spec, mm);
+    let cutters = crate::sim::Cutters::from_table(&table, head, mm, true);
     let mut sim = crate::sim::Simulation::new(field, cutters);
     sim.check_rapids = true;
-    Ok(Some(sim))
+    Ok((Some(sim), from))
+}
+
+/// Adds the statements of `b` when the block moves in machine coordinates.
+fn mark_machine_frame(
+    spans: &mut std::collections::HashSet<crate::span::Span>,
+    b: &crate::ir::Block,
+    spec: &DialectSpec,
+) {
+    let machine = b.stmts.iter().any(|s| {
+        matches!(s.kind, crate::ir::StmtKind::MachineCoords) || spec.is_machine_datum(&s.kind)
+    });
+    if machine {
+        spans.extend(b.stmts.iter().map(|s| s.span));
+    }
 }
 
 /// The lint of one program (None with `--no-lint`, `--no-run`, or when

@@ -38,7 +38,9 @@ pub fn run(ctx: &mut Context, mut a: MaterialArgs<'_>) -> Result<i32, Failure> {
         let opts = crate::cli::check::program_tools(&a.options, &head, &spec);
         let s = survey(ctx, a.files[k], a.dialects[k], &opts)?;
         diags.extend(s.diags.iter().cloned());
-        let cutters = Cutters::from_table(&opts.tool_table, &s.head, machine_mm(&opts), false);
+        let mm = machine_mm(&opts);
+        let table = crate::sim::tool_defs::with_tool_defs(&opts.tool_table, &s.head, &spec, mm);
+        let cutters = Cutters::from_table(&table, &s.head, mm, false);
         runs.push((opts, s, cutters));
     }
     ctx.print(&diags, a.format);

@@ -14,6 +14,7 @@ pub mod output;
 pub mod plot;
 pub mod port;
 pub mod port_features;
+pub mod port_material;
 pub mod post;
 pub mod query;
 pub mod raise;
@@ -85,6 +86,7 @@ pub fn run(cli: Cli) -> i32 {
             expand_cycles,
             strict,
             verify,
+            material,
             features,
             tool_table,
             stock,
@@ -102,6 +104,11 @@ pub fn run(cli: Cli) -> i32 {
                 strict: *strict,
                 options: run.analysis_options(),
                 verify: *verify,
+                material: (*material && !*features).then(|| port_material::MaterialArgs {
+                    tool_table: tool_table.as_deref(),
+                    stock: stock.as_deref(),
+                }),
+                side_options: !*features && !*material && (tool_table.is_some() || stock.is_some()),
                 format: *format,
                 features: features.then(|| port_features::FeatureArgs {
                     tool_table: tool_table.as_deref(),

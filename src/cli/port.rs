@@ -32,16 +32,29 @@ pub struct PortArgs<'a> {
     /// How programs run for the expansion and the proof.
     pub options: crate::interp::Options,
     pub verify: bool,
+    /// `--verify --material` (without `--features`): compare the parts too.
+    pub material: Option<crate::cli::port_material::MaterialArgs<'a>>,
+    /// `--stock` or `--tool-table` given without `--features`/`--material`.
+    pub side_options: bool,
     pub format: Format,
     /// `--features`: port through STEP-NC features instead.
     pub features: Option<crate::cli::port_features::FeatureArgs<'a>>,
 }
 
-pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
+pub fn run(ctx: &mut Context, mut a: PortArgs<'_>) -> Result<i32, Failure> {
+    if a.side_options {
+        return Err(Failure(
+            "--stock and --tool-table need --features or --verify --material".into(),
+        ));
+    }
     if a.features.is_some() {
         return crate::cli::port_features::run(ctx, a);
     }
     let target = ctx.spec(a.to)?;
+    let mut table_diags = Vec::new();
+    if let Some(m) = &a.material {
+        table_diags = crate::cli::port_material::load_table(ctx, m, &mut a.options)?;
+    }
     let tool_map = match a.tool_map {
         Some(m) => ToolMap::from_arg(m).map_err(|why| {
             Failure::from(
@@ -62,6 +75,13 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
         report_detection(a.file, &spec, &r);
     }
     let (program, mut diags) = read_program(&text, id, &spec);
+    diags.splice(0..0, table_diags);
+    let proof = match &a.material {
+        Some(m) => Some(crate::cli::port_material::Proof::new(
+            m, &a.options, &text, id, &spec, &mut diags,
+        )?),
+        None => None,
+    };
     if diags.iter().any(|d| d.is_error()) {
         ctx.print(&diags, a.format);
         return Ok(EXIT_INPUT_ERRORS);
@@ -121,6 +141,7 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
             source: (&text, id, &spec),
             target: &target,
             opts: &opts,
+            material: proof.as_ref(),
         };
         let ok = verify_port(ctx, sides, &name, &out, &mut diags);
         if std::env::var_os("CNCC_DEBUG_PORT").is_some() {
@@ -147,6 +168,8 @@ struct Sides<'a> {
     source: (&'a str, crate::span::FileId, &'a Arc<DialectSpec>),
     target: &'a Arc<DialectSpec>,
     opts: &'a PortOptions,
+    /// `--material`: the parts are compared too.
+    material: Option<&'a crate::cli::port_material::Proof>,
 }
 
 /// Reads the output back, runs both and compares; prints the verdict.
@@ -228,7 +251,11 @@ fn verify_port(
     if let Some(first) = v.cutting.as_ref().or(v.low_rapid.as_ref()) {
         diags.push(mismatch(first));
     }
-    v.same()
+    let by_material = match s.material {
+        Some(p) => p.verify(&ea, &eb, &s.opts.tool_map, diags),
+        None => true,
+    };
+    v.same() && by_material
 }
 
 fn place(ctx: &Context, sp: Option<Span>) -> String {

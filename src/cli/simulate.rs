@@ -15,7 +15,7 @@ use crate::cli::stats::{keep_lines_at, load_tool_table, machine_mm, stream_event
 use crate::diag::Diagnostic;
 use crate::interp::Options;
 use crate::sim::material::guess_stock;
-use crate::sim::report::{rapid_diagnostic, StockFrom, Summary};
+use crate::sim::report::{safety_diagnostics, StockFrom, Summary};
 use crate::sim::{Cutters, HeightField, Simulation};
 use crate::toolpath::{Event, Stock, P3};
 use std::collections::BTreeSet;
@@ -98,6 +98,8 @@ pub(crate) fn cut(
 ) -> Result<Simulation, Failure> {
     let (id, _) = stream_events(ctx, path, dialect, options, false, |e| sim.push(e))?;
     let mut spans: Vec<_> = sim.rapid_hits.iter().map(|h| h.span).collect();
+    spans.extend(sim.plunges.iter().map(|p| p.span));
+    spans.extend(sim.probe_stopped.map(|(s, _)| s));
     spans.extend(sim.watch.and_then(|w| w.last).map(|(s, _)| s));
     keep_lines_at(ctx, path, id, &[], &spans)?;
     Ok(sim)
@@ -160,7 +162,8 @@ pub fn run(ctx: &mut Context, mut a: SimulateArgs<'_>) -> Result<i32, Failure> {
         ctx.print(&diags, a.format);
         return Ok(EXIT_INPUT_ERRORS);
     }
-    let table = &a.options.tool_table;
+    let mm = machine_mm(&a.options);
+    let table = &crate::sim::tool_defs::with_tool_defs(&a.options.tool_table, &survey.head, &spec, mm);
     let cutters = Cutters::from_table(table, &survey.head, machine_mm(&a.options), false);
     let (stock, from) = stock_for(a.stock, &survey, &cutters)?;
     let cell = cell_for(a.resolution, &stock, &survey.tools, &cutters);
@@ -168,7 +171,7 @@ pub fn run(ctx: &mut Context, mut a: SimulateArgs<'_>) -> Result<i32, Failure> {
     let mut sim = Simulation::new(field, cutters);
     sim.check_rapids = true;
     let sim = cut(ctx, a.file, a.dialect, &a.options, sim)?;
-    diags.extend(sim.rapid_hits.iter().map(|h| rapid_diagnostic(h, from)));
+    diags.extend(safety_diagnostics(&sim, from));
     ctx.print(&diags, a.format);
     let invented = table.invented
         && survey

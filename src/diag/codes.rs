@@ -663,6 +663,12 @@ codes! {
     MaterialDiffers = "E1002", "material-differs", Error,
         "the port cuts another part than the source",
         "`cncc port --verify` (always with `--features`) cuts the same stock with the source and with the ported program (docs/simulate.md) and compares the finished parts cell by cell. A cell where the two parts' heights differ by more than the tolerance (0.01 mm) means the port does not cut the same part: the port is not written. The message gives the largest deviation, where it is, the move of each program that last cut there, and the volume only one of them removed. A pocket cycle that clears an island the source left standing is the classic case.";
+    MaterialCheckStopped = "W1003", "material-check-stopped", Note,
+        "the rapid and plunge checks stop: a tool of unknown size cut the stock",
+        "The checks against the stock (E1001 rapid into the stock, W1004 plunge) need to know what material is left. A tool whose size cncc does not know (no `--tool-table` row, no CAM tool list, no `TOOL DEF` read before the run) is simulated as its axis line only, so after it has cut, the simulation leaves more material standing than the real tool does, and a rapid or a plunge into it is no longer certain. The checks stop at its first cut, said once with the block. Give the tools' sizes (`--tool-table`) to check the whole program.";
+    PlungeWithoutCentreCutting = "W1004", "plunge-without-centre-cutting", Warning,
+        "a flat end mill fed straight down into solid material",
+        "With the stock known (`--stock`, or the program's `BLK FORM`), a feed straight down the tool axis (a pure -Z move) of a flat end mill whose centre goes into material that no earlier cut removed. An end mill without centre-cutting edges cannot cut under its centre: it rubs, chips or breaks. A drill, a ball or bull nose mill, a tool with a point angle, and a tool whose name says it plunges (drill, tap, reamer, boring, counterbore, plunge, centre cutting) are not reported; neither is a ramp or a helix, nor a plunge into a hole cut before. The first plunge of each tool is shown with how many it makes. The tool's shape comes from the tool table's comment or the program's CAM tool list.\n\nBad (flat end mill):\n    G0 X10. Y10. Z2.\n    G1 Z-5. F100.\n\nGood:\n    G0 X10. Y10. Z2.\n    G1 X20. Z-5. F100.   (a ramp)";
 }
 
 impl Code {

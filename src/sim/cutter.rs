@@ -123,6 +123,31 @@ impl Cutter {
     }
 }
 
+/// Does a tool's name say it is made to feed along its axis: a drill, a
+/// tap, a reamer, a boring or counterboring tool, a plunge mill, a
+/// centre-cutting end mill (English and German words)? [?] Names are
+/// free text: a name that says none of these is taken as a tool that
+/// cannot plunge only when its shape is flat.
+pub fn axial_name(name: &str) -> bool {
+    let c = name.to_ascii_lowercase();
+    let words: Vec<&str> = c
+        .split(|ch: char| !ch.is_ascii_alphabetic())
+        .filter(|w| !w.is_empty())
+        .collect();
+    let centre_cutting = c.contains("center cut") || c.contains("centre cut");
+    centre_cutting
+        || words.iter().any(|w| {
+            *w == "tap"
+                || w.starts_with("tapping")
+                || w.starts_with("ream")
+                || w.contains("bor")
+                || w.contains("bohr")
+                || w.contains("drill")
+                || w.starts_with("plung")
+                || w.starts_with("gewinde")
+        })
+}
+
 fn half_tan(angle: f64) -> f64 {
     (angle.to_radians() / 2.0).tan().max(1e-9)
 }
@@ -268,5 +293,15 @@ mod tests {
         };
         assert!((corner - 2.54).abs() < 1e-9);
         assert_eq!(Cutter::from_tool(None, None, 1.0).radius, 0.0);
+    }
+
+    #[test]
+    fn axial_tools_by_name() {
+        for yes in ["M8 TAP", "10H7 REAMER", "boring bar", "COUNTERBORE", "FLAT BOTTOM DRILL", "Gewindebohrer M6", "center cutting end mill"] {
+            assert!(axial_name(yes), "{yes}");
+        }
+        for no in ["FLAT END MILL", "tapered end mill", "face mill", ""] {
+            assert!(!axial_name(no), "{no}");
+        }
     }
 }

@@ -20,6 +20,7 @@ pub mod material;
 pub mod report;
 pub mod stl;
 pub mod sweep;
+pub mod tool_defs;
 
 use crate::interp::tool_header::HeaderTool;
 use crate::interp::tooltable::ToolTable;
@@ -48,6 +49,21 @@ pub struct RapidHit {
     pub depth: f64,
 }
 
+/// A flat tool fed straight down (pure -Z feed) into material standing
+/// under its centre: a flat end mill without centre cutting cannot cut
+/// there. The first plunge of each tool, with how many it made.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Plunge {
+    pub span: Span,
+    pub tool: i64,
+    /// The tool's axis and the material's height there.
+    pub at: P3,
+    /// How deep the centre went into the material, mm.
+    pub depth: f64,
+    /// Plunges of this tool in all.
+    pub count: usize,
+}
+
 /// What one tool did.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ToolReport {
@@ -66,6 +82,9 @@ pub struct ToolReport {
 #[derive(Clone, Debug, Default)]
 pub struct Cutters {
     pub by_tool: HashMap<i64, Cutter>,
+    /// Flat tools whose name says they are made to feed along their axis
+    /// (see [`cutter::axial_name`]): no plunge warning for them.
+    pub axial: std::collections::HashSet<i64>,
 }
 
 impl Cutters {
@@ -75,6 +94,15 @@ impl Cutters {
     /// is a point: only its axis is simulated.
     pub fn from_table(table: &ToolTable, head: &str, mm: f64, known_only: bool) -> Cutters {
         let header: Vec<HeaderTool> = crate::interp::tool_header::header_tools(head);
+        let axial = table
+            .tools
+            .iter()
+            .filter(|t| {
+                let h = header.iter().find(|h| h.number == t.number);
+                cutter::axial_name(&t.comment) || h.is_some_and(|h| cutter::axial_name(&h.name))
+            })
+            .map(|t| t.number)
+            .collect();
         let by_tool = table
             .tools
             .iter()
@@ -89,7 +117,16 @@ impl Cutters {
                 (t.number, c)
             })
             .collect();
-        Cutters { by_tool }
+        Cutters { by_tool, axial }
+    }
+
+    /// Can tool `tool` feed straight down into solid material? Any shape
+    /// but a flat one can (a drill's point, a ball), and a flat tool
+    /// whose name says it is made to (a tap, a reamer); a tool of unknown
+    /// size is not judged.
+    pub fn may_plunge(&self, tool: i64) -> bool {
+        let c = self.get(tool);
+        !c.is_flat() || self.axial.contains(&tool)
     }
 
     pub fn get(&self, tool: i64) -> Cutter {
@@ -113,6 +150,16 @@ pub struct Simulation {
     pub chord: f64,
     /// A cell whose last cut is wanted (see [`Watch`]).
     pub watch: Option<Watch>,
+    /// The tool stands at a height not known at check time: it moved in
+    /// machine coordinates (see [`Simulation::push_in_frame`]).
+    unknown_height: bool,
+    /// Where the rapid probe stopped: the first cut of a tool of unknown
+    /// size (a point here, narrower than the real tool), after which the
+    /// material left is more than the real run leaves and a hit is no
+    /// longer certain.
+    pub probe_stopped: Option<(Span, i64)>,
+    /// Plunges of flat tools into material (checked with the rapids).
+    pub plunges: Vec<Plunge>,
 }
 
 /// The move that last lowered one cell of the field: where a difference
@@ -136,28 +183,70 @@ impl Simulation {
             rapid_hits: Vec::new(),
             chord,
             watch: None,
+            // Where the tool starts is not known either (the run starts
+            // it at the work zero): taken as above the work, as after a
+            // move in machine coordinates.
+            unknown_height: true,
+            probe_stopped: None,
+            plunges: Vec::new(),
         }
     }
 
     /// Takes one event of the run.
     pub fn push(&mut self, e: &Event) {
+        self.push_in_frame(e, false)
+    }
+
+    /// Takes one event; `machine`: it comes from a block that moves in
+    /// machine coordinates (Heidenhain `M91`/`M92`, `G53`), whose place
+    /// relative to the work is not known at check time (the run takes
+    /// the machine datum at the work zero). Such a move neither cuts nor
+    /// is probed, and the tool is then at an unknown height, taken to be
+    /// above the work [?: the datums machine builders set are]: rapids
+    /// that keep that height are passed by too, the first rapid that
+    /// changes Z comes straight down onto its end point from above the
+    /// stock, and a feed is cut as it is (the program cuts from there).
+    pub fn push_in_frame(&mut self, e: &Event, machine: bool) {
         let Event::Move(m) = e else { return };
+        if machine {
+            self.unknown_height = true;
+            return;
+        }
+        if self.unknown_height {
+            let rapid = matches!(m.kind, MoveKind::Rapid);
+            if rapid && m.from[2] == m.to[2] {
+                return;
+            }
+            self.unknown_height = false;
+            if rapid {
+                let mut m = m.clone();
+                m.from = [m.to[0], m.to[1], m.to[2].max(self.field.top)];
+                return self.push_move(&m);
+            }
+        }
+        self.push_move(m)
+    }
+
+    fn push_move(&mut self, m: &Move) {
         let cutter = self.cutters.get(m.tool);
         let i = self.report_for(m.tool, cutter);
         let rapid = matches!(m.kind, MoveKind::Rapid);
         let len = m.length();
         if rapid {
             self.tools[i].rapid_length += len;
-            if self.check_rapids {
+            if self.check_rapids && self.probe_stopped.is_none() {
                 self.probe_rapid(m, &cutter);
             }
         } else {
+            if self.check_rapids && self.probe_stopped.is_none() {
+                self.probe_plunge(m, &cutter);
+            }
             self.tools[i].feed_length += len;
             if let Some(rate) = rate(m).filter(|r| *r > 0.0 && r.is_finite()) {
                 self.tools[i].feed_minutes += len / rate;
             }
         }
-        let reach = cutter.radius.max(self.field.dx.max(self.field.dy) / 2.0);
+        let reach = cutter.radius.max(self.half_cell());
         let before = self.watch.and_then(|w| self.field.z.get(w.cell).copied());
         let mut removed = 0.0;
         for (a, b) in self.chords(m) {
@@ -170,6 +259,9 @@ impl Simulation {
             .cut(&mut self.field);
         }
         self.tools[i].volume += removed;
+        if self.check_rapids && cutter.radius == 0.0 && removed > 0.0 && !rapid {
+            self.probe_stopped.get_or_insert((m.span, m.tool));
+        }
         if let (Some(w), Some(h)) = (self.watch.as_mut(), before) {
             let after = self.field.z.get(w.cell).copied().unwrap_or(h);
             if after < h {
@@ -214,7 +306,7 @@ impl Simulation {
 
     fn probe_rapid(&mut self, m: &Move, cutter: &Cutter) {
         let play = RAPID_PLAY.max(self.field.dx.max(self.field.dy) / 2.0);
-        let reach = (cutter.radius - play).max(0.0);
+        let reach = (cutter.radius - play).max(self.half_cell());
         let hit = Sweep {
             cutter,
             a: Vector3::from(m.from),
@@ -230,6 +322,43 @@ impl Simulation {
                 depth: h.depth,
             });
         }
+    }
+
+    /// A pure -Z feed of a flat tool that cannot plunge (see
+    /// [`Cutters::may_plunge`]) whose axis goes into material.
+    fn probe_plunge(&mut self, m: &Move, cutter: &Cutter) {
+        let straight_down = matches!(m.kind, MoveKind::Line)
+            && (m.from[0] - m.to[0]).abs() < 1e-6
+            && (m.from[1] - m.to[1]).abs() < 1e-6
+            && m.to[2] < m.from[2];
+        if !straight_down || cutter.radius <= 0.0 || self.cutters.may_plunge(m.tool) {
+            return;
+        }
+        let Some(k) = self.field.cell_at(m.to[0], m.to[1]) else {
+            return;
+        };
+        let h = self.field.z[k] as f64;
+        let depth = h.min(m.from[2]) - m.to[2];
+        if depth <= RAPID_DEPTH {
+            return;
+        }
+        if let Some(p) = self.plunges.iter_mut().find(|p| p.tool == m.tool) {
+            p.count += 1;
+            return;
+        }
+        self.plunges.push(Plunge {
+            span: m.span,
+            tool: m.tool,
+            at: [m.to[0], m.to[1], h],
+            depth,
+            count: 1,
+        });
+    }
+
+    /// Half a cell's diagonal: a tool of no size still reaches the
+    /// nearest cell centre, wherever its axis stands.
+    fn half_cell(&self) -> f64 {
+        self.field.dx.hypot(self.field.dy) / 2.0
     }
 
     /// The volume removed in all, mm³.

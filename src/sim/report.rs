@@ -3,7 +3,7 @@
 //! (feed moves at their programmed rate; rapids at a stated rate, or
 //! left out); and the rapid hits as located diagnostics (E1001).
 
-use super::{RapidHit, Simulation};
+use super::{Plunge, RapidHit, Simulation};
 use crate::diag::{Code, Diagnostic};
 use crate::stats::report::duration;
 use crate::toolpath::Stock;
@@ -194,4 +194,52 @@ pub fn rapid_diagnostic(hit: &RapidHit, stock_from: StockFrom) -> Diagnostic {
         stock_from.says()
     ))
     .help("retract above the material before the rapid, or make this move a feed (G1)")
+}
+
+/// The warning for a flat tool fed straight down into material (W1004).
+pub fn plunge_diagnostic(p: &Plunge, stock_from: StockFrom) -> Diagnostic {
+    let more = match p.count {
+        1 => String::new(),
+        n => format!("; T{} plunges so {n} times in all, the first is shown", p.tool),
+    };
+    Diagnostic::new(
+        Code::PlungeWithoutCentreCutting,
+        format!(
+            "the flat end mill T{} is fed straight down {} mm into solid material",
+            p.tool,
+            num((p.depth * 1000.0).round() / 1000.0)
+        ),
+    )
+    .primary(p.span, "plunge")
+    .note(format!(
+        "at X{} Y{}, where the material stands at Z{} (stock from {}){more}",
+        num(p.at[0]),
+        num(p.at[1]),
+        num(p.at[2]),
+        stock_from.says()
+    ))
+    .help("ramp or helix into the material, drill a start hole first, or use a centre-cutting tool (say so in its name)")
+}
+
+/// The note where the checks against the stock stopped (W1003).
+pub fn stopped_diagnostic(span: crate::span::Span, tool: i64) -> Diagnostic {
+    Diagnostic::new(
+        Code::MaterialCheckStopped,
+        format!("T{tool}'s size is not known: rapids and plunges after its first cut are not checked against the stock"),
+    )
+    .primary(span, "first cut of a tool of unknown size")
+    .help("give the tool's size with --tool-table")
+}
+
+/// Every diagnostic of the checks against the stock, in program order
+/// of kind: rapid hits, plunges, where the checks stopped.
+pub fn safety_diagnostics(sim: &Simulation, stock_from: StockFrom) -> Vec<Diagnostic> {
+    let mut d: Vec<Diagnostic> = sim
+        .rapid_hits
+        .iter()
+        .map(|h| rapid_diagnostic(h, stock_from))
+        .collect();
+    d.extend(sim.plunges.iter().map(|p| plunge_diagnostic(p, stock_from)));
+    d.extend(sim.probe_stopped.map(|(s, t)| stopped_diagnostic(s, t)));
+    d
 }

@@ -14,7 +14,7 @@
 //! Arcs and helices are swept as chords within a tolerance (see
 //! [`super::Simulation`]).
 
-use super::cutter::Cutter;
+use super::cutter::{Cutter, Shape};
 use super::grid::HeightField;
 use nalgebra::{Vector2, Vector3};
 
@@ -170,11 +170,35 @@ impl Segment {
             } else {
                 hi
             }
+        } else if matches!(c.shape, Shape::Ball) {
+            self.ball_lowest(c.radius, w)
+                .map_or_else(|| self.lowest(c, e2, t0, lo, hi), |t| t.clamp(lo, hi))
         } else {
             self.lowest(c, e2, t0, lo, hi)
         };
         let rho = (e2 + self.l2 * (t - t0).powi(2)).sqrt();
         Some(self.a.z + t * self.dz + c.profile(rho))
+    }
+
+    /// For a ball of radius `r`, where along the whole line the ball's
+    /// lowest point over `p` (`w` = p - a, in XY) is lowest, in closed
+    /// form: the point (p, z) lowest at distance `r` from the line of the
+    /// ball's centre, `z - (a.z + r) = s` the smaller root of
+    /// `l2 s² - 2 k dz s + (L3 |w|² - k² - r² L3) = 0` (`k = w . d`,
+    /// `L3 = l2 + dz²`); its foot on the line is the parameter. The
+    /// height is convex in the parameter, so clamped to the cells' range
+    /// it is the lowest there. None when the line passes further than `r`.
+    fn ball_lowest(&self, r: f64, w: Vector2<f64>) -> Option<f64> {
+        let k = w.dot(&self.d2);
+        let l3 = self.l2 + self.dz * self.dz;
+        let c = l3 * w.norm_squared() - k * k - r * r * l3;
+        let b = k * self.dz;
+        let disc = b * b - self.l2 * c;
+        if disc < 0.0 || !disc.is_finite() {
+            return None;
+        }
+        let s = (b - disc.sqrt()) / self.l2;
+        Some((k + s * self.dz) / l3)
     }
 
     /// Where in `[lo, hi]` the convex height is lowest: bisection on its slope.
@@ -207,7 +231,6 @@ impl Segment {
 
 #[cfg(test)]
 mod tests {
-    use super::super::cutter::Shape;
     use super::*;
     use crate::toolpath::Stock;
 
@@ -269,5 +292,43 @@ mod tests {
         assert!(sweep(&c, [10.0, 20.0, 5.0], [60.0, 20.0, 1.0])
             .probe(&mut f)
             .is_none());
+    }
+
+    #[test]
+    fn the_ball_closed_form_agrees_with_the_bisection() {
+        let ball = Cutter {
+            radius: 3.0,
+            shape: Shape::Ball,
+        };
+        let moves = [
+            ([0.0, 0.0, 0.0], [10.0, 4.0, -5.0]),
+            ([0.0, 0.0, -2.0], [1.0, -0.5, 3.0]),
+            ([5.0, 5.0, 0.0], [5.5, 5.0, -20.0]),
+            ([0.0, 0.0, 0.0], [0.3, 0.1, -0.01]),
+        ];
+        for (a, b) in moves {
+            let seg = Segment::new(Vector3::from(a), Vector3::from(b));
+            for k in 0..400 {
+                let p = Vector2::new(-4.0 + 0.037 * k as f64, -3.0 + 0.029 * k as f64);
+                let w = p - seg.a.xy();
+                let t0 = w.dot(&seg.d2) / seg.l2;
+                let e2 = (w - seg.d2 * t0).norm_squared();
+                if e2 >= 9.0 {
+                    continue;
+                }
+                let half = ((9.0 - e2) / seg.l2).sqrt();
+                let (lo, hi) = ((t0 - half).max(0.0), (t0 + half).min(1.0));
+                if lo > hi {
+                    continue;
+                }
+                let z = |t: f64| {
+                    let rho = (e2 + seg.l2 * (t - t0).powi(2)).sqrt();
+                    seg.a.z + t * seg.dz + ball.profile(rho)
+                };
+                let closed = z(seg.ball_lowest(3.0, w).unwrap().clamp(lo, hi));
+                let bisected = z(seg.lowest(&ball, e2, t0, lo, hi));
+                assert!((closed - bisected).abs() < 1e-7, "{a:?} {b:?} {p:?}: {closed} {bisected}");
+            }
+        }
     }
 }
