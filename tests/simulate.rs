@@ -210,7 +210,10 @@ fn port_verify_material_compares_the_cut_parts() {
     }
     let (code, _, err) = port("ring.nc", "heidenhain", &["--stock", "40x40x20-20-20-20"]);
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("grid 400 x 400 cells") && err.contains("stock: --stock"), "{err}");
+    assert!(
+        err.contains("grid 400 x 400 cells") && err.contains("stock: --stock"),
+        "{err}"
+    );
     let (code, _, err) = port("blk_slot.h", "fanuc", &[]);
     assert_eq!(code, 0, "{err}");
     assert!(err.contains("stock: the program's BLK FORM"), "{err}");

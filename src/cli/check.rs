@@ -8,7 +8,6 @@
 //! on large CAM files; one with control flow (jumps, loops, calls,
 //! parameters) is read whole and run by the program walker.
 
-use crate::sim::report::StockFrom;
 use crate::cli::args::Format;
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::cli::output::summary_line;
@@ -16,6 +15,7 @@ use crate::diag::{Code, Diagnostic, Severity};
 use crate::dialect::DialectSpec;
 use crate::driver::{check_stream, read_program, FsLoader};
 use crate::interp::{stream::StreamRun, tooltable::ToolTable, Interp, Options};
+use crate::sim::report::StockFrom;
 use std::fs::File;
 use std::io::BufReader;
 use std::path::Path;

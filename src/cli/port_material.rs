@@ -149,7 +149,10 @@ impl Proof {
             ""
         };
         if v.same() {
-            eprintln!("verify: material: {}; {stock}{sizes}", material::summary(&v));
+            eprintln!(
+                "verify: material: {}; {stock}{sizes}",
+                material::summary(&v)
+            );
             return true;
         }
         eprintln!(
@@ -157,7 +160,10 @@ impl Proof {
             material::summary(&v)
         );
         let mut d = material::diagnostic(&v);
-        d.help = Some("the port is not written; report the construct, or use --expand-cycles for cycles".into());
+        d.help = Some(
+            "the port is not written; report the construct, or use --expand-cycles for cycles"
+                .into(),
+        );
         diags.push(d);
         false
     }
@@ -181,7 +187,8 @@ mod tests {
 
     const HEAD: &str = "(T1 D=10. CR=0. - FLAT END MILL)\nG21 G90 G17\nT1 M6\nS3000 M3\n";
     /// A ring round an island, and the same circle with its centre cleared.
-    const RING: &str = "G0 X10. Y0.\nG0 Z1.\nG1 Z-5. F100.\nG3 X10. Y0. I-10. J0. F300.\nG0 Z5.\nM30\n";
+    const RING: &str =
+        "G0 X10. Y0.\nG0 Z1.\nG1 Z-5. F100.\nG3 X10. Y0. I-10. J0. F300.\nG0 Z5.\nM30\n";
     const FULL: &str =
         "G0 X0. Y0.\nG0 Z1.\nG1 Z-5. F100.\nG1 X10. F300.\nG3 X10. Y0. I-10. J0.\nG0 Z5.\nM30\n";
 

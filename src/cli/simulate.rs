@@ -163,7 +163,8 @@ pub fn run(ctx: &mut Context, mut a: SimulateArgs<'_>) -> Result<i32, Failure> {
         return Ok(EXIT_INPUT_ERRORS);
     }
     let mm = machine_mm(&a.options);
-    let table = &crate::sim::tool_defs::with_tool_defs(&a.options.tool_table, &survey.head, &spec, mm);
+    let table =
+        &crate::sim::tool_defs::with_tool_defs(&a.options.tool_table, &survey.head, &spec, mm);
     let cutters = Cutters::from_table(table, &survey.head, machine_mm(&a.options), false);
     let (stock, from) = stock_for(a.stock, &survey, &cutters)?;
     let cell = cell_for(a.resolution, &stock, &survey.tools, &cutters);

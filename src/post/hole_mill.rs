@@ -76,7 +76,8 @@ fn pitch(c: &Cut<'_>, helix_radius: f64, tool_radius: f64) -> f64 {
         }
         _ => None,
     };
-    from_angle
-        .filter(|p| *p > 1e-3)
-        .unwrap_or_else(|| c.ap.filter(|a| *a > 1e-3).map_or(tool_radius, |a| a.min(tool_radius)))
+    from_angle.filter(|p| *p > 1e-3).unwrap_or_else(|| {
+        c.ap.filter(|a| *a > 1e-3)
+            .map_or(tool_radius, |a| a.min(tool_radius))
+    })
 }

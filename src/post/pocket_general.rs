@@ -64,7 +64,9 @@ pub fn write(
 fn outline(c: &Curve, forward: bool, out: &mut Vec<P2>) -> Result<(), &'static str> {
     let mut pts: Vec<P2> = match c {
         Curve::Polyline { points, .. } => points.iter().map(|p| [p.xyz[0], p.xyz[1]]).collect(),
-        Curve::Line { start, end, .. } => vec![[start.xyz[0], start.xyz[1]], [end.xyz[0], end.xyz[1]]],
+        Curve::Line { start, end, .. } => {
+            vec![[start.xyz[0], start.xyz[1]], [end.xyz[0], end.xyz[1]]]
+        }
         Curve::Composite { segments, .. } => {
             let mut v = Vec::new();
             for seg in segments {

@@ -123,6 +123,30 @@ impl Cutter {
     }
 }
 
+/// Does the tool's data say what shape it is (the CAM tool list or the
+/// tool's comment), rather than leave it to the flat default?
+/// A corner radius written (`CR=0.` is a flat end), a shape the list
+/// or the comment names, or a name that says flat or end mill counts.
+pub fn shape_stated(tool: &Tool, header: Option<&HeaderTool>) -> bool {
+    let r = (tool.diameter / 2.0).max(1.0);
+    let names_flat = |name: &str| {
+        let c = name.to_ascii_lowercase();
+        [
+            "flat",
+            "end mill",
+            "endmill",
+            "face mill",
+            "facemill",
+            "slot",
+        ]
+        .iter()
+        .any(|w| c.contains(w))
+    };
+    header.is_some_and(|h| h.corner.is_some() || from_header(h, r).is_some() || names_flat(&h.name))
+        || from_comment(&tool.comment, r).is_some()
+        || names_flat(&tool.comment)
+}
+
 /// Does a tool's name say it is made to feed along its axis: a drill, a
 /// tap, a reamer, a boring or counterboring tool, a plunge mill, a
 /// centre-cutting end mill (English and German words)? [?] Names are
@@ -297,7 +321,15 @@ mod tests {
 
     #[test]
     fn axial_tools_by_name() {
-        for yes in ["M8 TAP", "10H7 REAMER", "boring bar", "COUNTERBORE", "FLAT BOTTOM DRILL", "Gewindebohrer M6", "center cutting end mill"] {
+        for yes in [
+            "M8 TAP",
+            "10H7 REAMER",
+            "boring bar",
+            "COUNTERBORE",
+            "FLAT BOTTOM DRILL",
+            "Gewindebohrer M6",
+            "center cutting end mill",
+        ] {
             assert!(axial_name(yes), "{yes}");
         }
         for no in ["FLAT END MILL", "tapered end mill", "face mill", ""] {

@@ -83,7 +83,8 @@ pub struct ToolReport {
 pub struct Cutters {
     pub by_tool: HashMap<i64, Cutter>,
     /// Flat tools whose name says they are made to feed along their axis
-    /// (see [`cutter::axial_name`]): no plunge warning for them.
+    /// (see [`cutter::axial_name`]), and tools whose shape nothing
+    /// states: no plunge warning for them.
     pub axial: std::collections::HashSet<i64>,
 }
 
@@ -94,12 +95,16 @@ impl Cutters {
     /// is a point: only its axis is simulated.
     pub fn from_table(table: &ToolTable, head: &str, mm: f64, known_only: bool) -> Cutters {
         let header: Vec<HeaderTool> = crate::interp::tool_header::header_tools(head);
+        // A tool whose shape nothing states (a `TOOL DEF` or a table row
+        // with sizes only) is not judged: it may be a drill.
         let axial = table
             .tools
             .iter()
             .filter(|t| {
                 let h = header.iter().find(|h| h.number == t.number);
-                cutter::axial_name(&t.comment) || h.is_some_and(|h| cutter::axial_name(&h.name))
+                cutter::axial_name(&t.comment)
+                    || h.is_some_and(|h| cutter::axial_name(&h.name))
+                    || !cutter::shape_stated(t, h)
             })
             .map(|t| t.number)
             .collect();
@@ -338,7 +343,7 @@ impl Simulation {
             return;
         };
         let h = self.field.z[k] as f64;
-        let depth = h.min(m.from[2]) - m.to[2];
+        let depth = h.min(m.from[2]) - m.to[2].max(self.field.bottom);
         if depth <= RAPID_DEPTH {
             return;
         }

@@ -200,7 +200,10 @@ pub fn rapid_diagnostic(hit: &RapidHit, stock_from: StockFrom) -> Diagnostic {
 pub fn plunge_diagnostic(p: &Plunge, stock_from: StockFrom) -> Diagnostic {
     let more = match p.count {
         1 => String::new(),
-        n => format!("; T{} plunges so {n} times in all, the first is shown", p.tool),
+        n => format!(
+            "; T{} plunges so {n} times in all, the first is shown",
+            p.tool
+        ),
     };
     Diagnostic::new(
         Code::PlungeWithoutCentreCutting,

@@ -62,8 +62,11 @@ impl Sweep<'_> {
     /// Looks without cutting: the deepest material above the tool.
     pub fn probe(&self, field: &mut HeightField) -> Option<Hit> {
         let mut best: Option<(f64, usize, f64)> = None;
+        // Below the stock's bottom there is no material (the way out of
+        // a through hole).
+        let bottom = field.bottom;
         self.visit_indexed(field, |idx, h, s| {
-            let depth = *h as f64 - s;
+            let depth = *h as f64 - s.max(bottom);
             if depth > best.map_or(0.0, |b| b.0) {
                 best = Some((depth, idx, *h as f64));
             }
@@ -327,7 +330,10 @@ mod tests {
                 };
                 let closed = z(seg.ball_lowest(3.0, w).unwrap().clamp(lo, hi));
                 let bisected = z(seg.lowest(&ball, e2, t0, lo, hi));
-                assert!((closed - bisected).abs() < 1e-7, "{a:?} {b:?} {p:?}: {closed} {bisected}");
+                assert!(
+                    (closed - bisected).abs() < 1e-7,
+                    "{a:?} {b:?} {p:?}: {closed} {bisected}"
+                );
             }
         }
     }

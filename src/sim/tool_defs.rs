@@ -51,7 +51,13 @@ pub fn with_tool_defs(table: &ToolTable, head: &str, spec: &DialectSpec, mm: f64
     for (n, r) in tool_defs(head, spec) {
         let d = 2.0 * r / mm;
         match t.tools.iter_mut().find(|x| x.number == n) {
-            Some(x) => x.diameter = d,
+            Some(x) => {
+                x.diameter = d;
+                // A built-in row's description is not this tool's.
+                if table.invented && !table.from_program.contains(&n) {
+                    x.comment.clear();
+                }
+            }
             None => {
                 let mut x = Tool::blank(n, String::new());
                 x.diameter = d;

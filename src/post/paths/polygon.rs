@@ -60,10 +60,7 @@ fn left(a: P2, b: P2) -> P2 {
 /// Signed area (positive counter-clockwise).
 pub fn area(pts: &[P2]) -> f64 {
     let n = pts.len();
-    (0..n)
-        .map(|i| cross(pts[i], pts[(i + 1) % n]))
-        .sum::<f64>()
-        / 2.0
+    (0..n).map(|i| cross(pts[i], pts[(i + 1) % n])).sum::<f64>() / 2.0
 }
 
 impl Polygon {
@@ -138,7 +135,11 @@ impl Polygon {
     pub fn is_convex(&self) -> bool {
         let n = self.pts.len();
         (0..n).all(|i| {
-            let (a, b, c) = (self.pts[(i + n - 1) % n], self.pts[i], self.pts[(i + 1) % n]);
+            let (a, b, c) = (
+                self.pts[(i + n - 1) % n],
+                self.pts[i],
+                self.pts[(i + 1) % n],
+            );
             cross(sub(b, a), sub(c, b)) > 0.0
         })
     }
@@ -562,7 +563,11 @@ pub fn scan(poly: &Polygon, d: f64, y: f64) -> Vec<(f64, f64)> {
         }
     }
     xs.sort_by(f64::total_cmp);
-    let mut inside: Vec<(f64, f64)> = xs.chunks(2).filter(|c| c.len() == 2).map(|c| (c[0], c[1])).collect();
+    let mut inside: Vec<(f64, f64)> = xs
+        .chunks(2)
+        .filter(|c| c.len() == 2)
+        .map(|c| (c[0], c[1]))
+        .collect();
     for i in 0..n {
         let (a, b) = poly.edge(i);
         if let Some(f) = capsule(a, b, d, y) {
@@ -669,7 +674,12 @@ fn convex_moves(p: &GeneralPocket, c: &PocketCut, sink: &mut MoveSink<'_>) {
     let all = convex_loops(p, c);
     let start = match all.first() {
         Some((_, l)) if !l.is_empty() => l[0].from,
-        Some((d, _)) => p.boundary.inset_convex(*d).first().copied().unwrap_or([0.0, 0.0]),
+        Some((d, _)) => p
+            .boundary
+            .inset_convex(*d)
+            .first()
+            .copied()
+            .unwrap_or([0.0, 0.0]),
         None => [0.0, 0.0],
     };
     let loops: Vec<Vec<Seg>> = all.into_iter().map(|(_, l)| oriented(l, c.ccw)).collect();
@@ -778,7 +788,6 @@ fn go(sink: &mut MoveSink<'_>, poly: &Polygon, d: f64, c: &PocketCut, at: &mut P
     *at = to;
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -885,8 +894,15 @@ mod tests {
 
     #[test]
     fn a_polygon_is_read_counter_clockwise_without_repeats() {
-        let p = Polygon::new(&[[0.0, 0.0], [0.0, 10.0], [5.0, 10.0], [10.0, 10.0], [10.0, 0.0], [0.0, 0.0]])
-            .unwrap();
+        let p = Polygon::new(&[
+            [0.0, 0.0],
+            [0.0, 10.0],
+            [5.0, 10.0],
+            [10.0, 10.0],
+            [10.0, 0.0],
+            [0.0, 0.0],
+        ])
+        .unwrap();
         assert_eq!(p.pts.len(), 4);
         assert!(area(&p.pts) > 0.0);
         assert!(p.is_convex());
@@ -913,7 +929,13 @@ mod tests {
                 [30.0 * a.cos(), 30.0 * a.sin()]
             })
             .collect();
-        let chamfered = [[0.0, 0.0], [40.0, 0.0], [40.0, 25.0], [37.0, 30.0], [0.0, 30.0]];
+        let chamfered = [
+            [0.0, 0.0],
+            [40.0, 0.0],
+            [40.0, 25.0],
+            [37.0, 30.0],
+            [0.0, 30.0],
+        ];
         // A half disc of radius 14 (its arc as 93 chords).
         let half_disc: Vec<P2> = (0..=93)
             .map(|k| {
@@ -935,7 +957,12 @@ mod tests {
         for (p, c) in cases {
             check(&p, &c).unwrap();
             let l = left(&p, &c);
-            assert!(l.is_empty(), "{:?} r {}: {l:?}", p.boundary.pts, c.tool_radius);
+            assert!(
+                l.is_empty(),
+                "{:?} r {}: {l:?}",
+                p.boundary.pts,
+                c.tool_radius
+            );
             no_gouge(&p, &c);
         }
     }
