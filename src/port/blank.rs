@@ -10,18 +10,14 @@
 
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec};
-use crate::ir::{Axes, CommentStyle, ExprKind, Program, StmtKind, StockCorner, Value};
+use crate::ir::{Axes, ExprKind, Program, StmtKind, StockCorner, Value};
 use crate::span::Span;
 
 pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     if to.has(Capability::BlankForm) {
         return;
     }
-    let style = if to.has(Capability::ParenComments) {
-        CommentStyle::Paren
-    } else {
-        CommentStyle::Semicolon
-    };
+    let style = super::comment_style(to);
     let mut min: Option<[Option<(f64, bool)>; 3]> = None;
     let mut first: Option<Span> = None;
     for b in &mut p.blocks {

@@ -9,17 +9,13 @@
 
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec};
-use crate::ir::{CommentStyle, Program, StmtKind};
+use crate::ir::{Program, StmtKind};
 
 pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     if to.has(Capability::OperatorMessages) {
         return;
     }
-    let style = if to.has(Capability::ParenComments) {
-        CommentStyle::Paren
-    } else {
-        CommentStyle::Semicolon
-    };
+    let style = super::comment_style(to);
     let mut first = None;
     for s in p.blocks.iter_mut().flat_map(|b| b.stmts.iter_mut()) {
         let StmtKind::Message(text) = &s.kind else {

@@ -192,6 +192,16 @@ pub fn port_owned(
 /// structures); a target that numbers them does not keep their names.
 pub(crate) const MADE_LABEL: &str = "CNCC_";
 
+/// The comment form a port writes its own notes in for `to`: `( )` where
+/// the target has it, else `;`.
+pub(crate) fn comment_style(to: &DialectSpec) -> crate::ir::CommentStyle {
+    if to.has(crate::dialect::Capability::ParenComments) {
+        crate::ir::CommentStyle::Paren
+    } else {
+        crate::ir::CommentStyle::Semicolon
+    }
+}
+
 /// A number as an expression in `p`'s arena (for cycle arguments).
 pub(crate) fn number_expr(p: &mut Program, d: Decimal, span: Span) -> ExprId {
     p.exprs.alloc(Expr {
