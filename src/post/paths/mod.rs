@@ -83,6 +83,20 @@ impl<'f> MoveSink<'f> {
         [q[0], q[1], z]
     }
 
+    /// The plane point (in the feature's plane) of the last move: its
+    /// offset from the frame's origin projected on the frame's x and y
+    /// axes (the inverse of [`Self::at`] for the frame's orthonormal axes).
+    pub fn last_xy(&self) -> P2 {
+        let last = match self.moves.last() {
+            Some(Move::Rapid(p)) | Some(Move::Line(p)) => *p,
+            Some(Move::Arc { to, .. }) => *to,
+            None => return [0.0, 0.0],
+        };
+        let f = self.frame;
+        let v = [last[0] - f.origin[0], last[1] - f.origin[1]];
+        [v[0] * f.x[0] + v[1] * f.x[1], v[0] * f.y[0] + v[1] * f.y[1]]
+    }
+
     pub fn rapid(&mut self, p: P2, z: f64) {
         let to = self.at(p, z);
         self.moves.push(Move::Rapid(to));

@@ -225,22 +225,9 @@ pub fn moves(shape: &Shape, c: &PocketCut, sink: &mut MoveSink<'_>) {
                 sink.seg(s, z);
             }
         }
-        sink.rapid(sink_last_xy(sink), c.r_plane);
+        sink.rapid(sink.last_xy(), c.r_plane);
     }
-    sink.rapid(sink_last_xy(sink), c.clear);
-}
-
-/// The plane position of the last move (in the feature's plane).
-fn sink_last_xy(sink: &MoveSink<'_>) -> P2 {
-    let last = match sink.moves.last() {
-        Some(super::Move::Rapid(p)) | Some(super::Move::Line(p)) => *p,
-        Some(super::Move::Arc { to, .. }) => *to,
-        None => return [0.0, 0.0],
-    };
-    // Back into the feature's plane: subtract the origin, rotate back.
-    let f = sink.frame;
-    let v = [last[0] - f.origin[0], last[1] - f.origin[1]];
-    [v[0] * f.x[0] + v[1] * f.x[1], v[0] * f.y[0] + v[1] * f.y[1]]
+    sink.rapid(sink.last_xy(), c.clear);
 }
 
 #[cfg(test)]

@@ -701,20 +701,8 @@ fn convex_moves(p: &GeneralPocket, c: &PocketCut, sink: &mut MoveSink<'_>) {
         }
         sink.rapid(at, c.r_plane);
     }
-    let end = last_xy(sink);
+    let end = sink.last_xy();
     sink.rapid(end, c.clear);
-}
-
-/// The plane point of the last move.
-fn last_xy(sink: &MoveSink<'_>) -> P2 {
-    let last = match sink.moves.last() {
-        Some(super::Move::Rapid(p)) | Some(super::Move::Line(p)) => *p,
-        Some(super::Move::Arc { to, .. }) => *to,
-        None => return [0.0, 0.0],
-    };
-    let f = sink.frame;
-    let v = [last[0] - f.origin[0], last[1] - f.origin[1]];
-    [v[0] * f.x[0] + v[1] * f.x[1], v[0] * f.y[0] + v[1] * f.y[1]]
 }
 
 /// The zigzag lines of a concave pocket at the offset `d`, in cutting
@@ -768,7 +756,7 @@ fn concave_moves(p: &GeneralPocket, c: &PocketCut, sink: &mut MoveSink<'_>) {
         at = first;
         sink.rapid(at, c.r_plane);
     }
-    let end = last_xy(sink);
+    let end = sink.last_xy();
     sink.rapid(end, c.clear);
 }
 
