@@ -204,15 +204,23 @@ fn empty_block() -> Block {
 /// `\r`), with the byte offset of each line's start.
 pub fn lines(text: &str) -> impl Iterator<Item = (&str, u32)> {
     let mut offset = 0usize;
-    let mut pieces = Vec::new();
-    for raw in text.split_inclusive('\n') {
-        let _ = crate::encoding::split_lone_cr::<()>(raw, |p, _| {
-            pieces.push((strip_ending(p), offset as u32));
-            offset += p.len();
-            Ok(true)
-        });
-    }
-    pieces.into_iter()
+    text.split_inclusive('\n').flat_map(move |raw| {
+        // Only a piece without LF (a CR-only file, the last line) can hold
+        // lone CRs; every other line is one line, with no allocation.
+        let mut pieces = Vec::new();
+        let mut one = None;
+        if raw.ends_with('\n') {
+            one = Some((strip_ending(raw), offset as u32));
+            offset += raw.len();
+        } else {
+            let _ = crate::encoding::split_lone_cr::<()>(raw, |p, _| {
+                pieces.push((strip_ending(p), offset as u32));
+                offset += p.len();
+                Ok(true)
+            });
+        }
+        one.into_iter().chain(pieces)
+    })
 }
 
 /// The note for a file whose lines end with a lone CR, at the first one.

@@ -11,6 +11,7 @@ use crate::dialect::DialectSpec;
 use crate::driver::{read_program, FsLoader};
 use crate::emit::write_program_warned;
 use crate::ir::Program;
+use crate::port::stream::{self, Chunking};
 use crate::port::subload::PortingLoader;
 use crate::port::verify::{self, Difference, Verdict};
 use crate::port::verify_text;
@@ -74,8 +75,7 @@ pub fn run(ctx: &mut Context, mut a: PortArgs<'_>) -> Result<i32, Failure> {
     if let Some(r) = reason {
         report_detection(a.file, &spec, &r);
     }
-    let (program, mut diags) = read_program(&text, id, &spec);
-    diags.splice(0..0, table_diags);
+    let mut diags = table_diags;
     let proof = match &a.material {
         Some(m) => Some(crate::cli::port_material::Proof::new(
             m, &a.options, &text, id, &spec, &mut diags,
@@ -86,49 +86,116 @@ pub fn run(ctx: &mut Context, mut a: PortArgs<'_>) -> Result<i32, Failure> {
         ctx.print(&diags, a.format);
         return Ok(EXIT_INPUT_ERRORS);
     }
+    let streamed = (text.len() >= STREAM_FROM_BYTES)
+        .then(|| stream::port_text(&text, id, &spec, &target, &opts, Chunking::default()))
+        .flatten();
+    let (out, expanded) = match streamed {
+        Some(s) => {
+            diags.extend(s.read);
+            diags.extend(s.port);
+            (s.text, false)
+        }
+        None => match whole(ctx, &a, (&text, id, &spec), &target, &opts, &mut diags) {
+            Ok(done) => done,
+            Err(code) => return Ok(code),
+        },
+    };
+    finish(
+        ctx,
+        &a,
+        (&text, id, &spec),
+        &target,
+        &opts,
+        proof.as_ref(),
+        out,
+        expanded,
+        diags,
+        encoding,
+    )
+}
+
+/// Programs from this size (bytes) are ported as a stream where they can
+/// be ([`stream`]); below it the whole port is as cheap.
+const STREAM_FROM_BYTES: usize = 1 << 20;
+
+/// The port of the program held whole: the text and whether cycles were
+/// expanded, or the exit code (the diagnostics printed).
+fn whole(
+    ctx: &mut Context,
+    a: &PortArgs<'_>,
+    source: (&str, crate::span::FileId, &Arc<DialectSpec>),
+    target: &Arc<DialectSpec>,
+    opts: &PortOptions,
+    diags: &mut Vec<Diagnostic>,
+) -> Result<(String, bool), i32> {
+    let (text, id, spec) = source;
+    let (program, read) = read_program(text, id, spec);
+    diags.extend(read);
+    if diags.iter().any(|d| d.is_error()) {
+        ctx.print(diags, a.format);
+        return Err(EXIT_INPUT_ERRORS);
+    }
     let dir = a.file.parent().map(Path::to_path_buf).unwrap_or_default();
     // The port works on the program in place; where it is needed again
     // (the fallback, the proof) it is read again from the source text,
     // so a large program is never held twice.
-    let reread = || read_program(&text, id, &spec).0;
-    let first = attempt(ctx, &dir, program, &spec, &target, &opts);
-    let (out, expanded) = match first {
+    let reread = || read_program(text, id, spec).0;
+    let first = attempt(ctx, &dir, program, spec, target, opts);
+    match first {
         Ok((out, d)) => {
             diags.extend(d);
-            (out, false)
+            Ok((out, false))
         }
         Err(errors) if a.strict => {
             diags.extend(errors);
-            ctx.print(&diags, a.format);
-            return Ok(EXIT_INPUT_ERRORS);
+            ctx.print(diags, a.format);
+            Err(EXIT_INPUT_ERRORS)
         }
         Err(errors) => {
             let mut scratch = crate::source::SourceMap::new();
             let mut loader = FsLoader::new(dir.clone(), spec.clone(), &mut scratch);
             let tried = crate::port::expand_range::legalize(
                 &reread(),
-                &text,
-                &spec,
-                &target,
+                text,
+                spec,
+                target,
                 &a.options,
                 &mut loader,
                 errors,
-                |p| attempt(ctx, &dir, p.clone(), &spec, &target, &opts),
+                |p| attempt(ctx, &dir, p.clone(), spec, target, opts),
             );
             match tried {
                 Ok(((out, d), notes)) => {
                     diags.extend(notes);
                     diags.extend(d);
-                    (out, true)
+                    Ok((out, true))
                 }
                 Err(errors) => {
                     diags.extend(errors);
-                    ctx.print(&diags, a.format);
-                    return Ok(EXIT_INPUT_ERRORS);
+                    ctx.print(diags, a.format);
+                    Err(EXIT_INPUT_ERRORS)
                 }
             }
         }
-    };
+    }
+}
+
+/// Proves the port where asked (or where cycles were expanded), prints
+/// the diagnostics and writes the output.
+#[allow(clippy::too_many_arguments)]
+fn finish(
+    ctx: &mut Context,
+    a: &PortArgs<'_>,
+    source: (&str, crate::span::FileId, &Arc<DialectSpec>),
+    target: &Arc<DialectSpec>,
+    opts: &PortOptions,
+    proof: Option<&crate::cli::port_material::Proof>,
+    out: String,
+    expanded: bool,
+    mut diags: Vec<Diagnostic>,
+    encoding: crate::encoding::SourceEncoding,
+) -> Result<i32, Failure> {
+    let (text, id, spec) = source;
     if a.verify || expanded {
         let name = match a.output {
             Some(p) => p.display().to_string(),
@@ -138,10 +205,10 @@ pub fn run(ctx: &mut Context, mut a: PortArgs<'_>) -> Result<i32, Failure> {
         let sides = Sides {
             dir: &dir,
             run: &a.options,
-            source: (&text, id, &spec),
-            target: &target,
-            opts: &opts,
-            material: proof.as_ref(),
+            source: (text, id, spec),
+            target,
+            opts,
+            material: proof,
         };
         let ok = verify_port(ctx, sides, &name, &out, &mut diags);
         if std::env::var_os("CNCC_DEBUG_PORT").is_some() {

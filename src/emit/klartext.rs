@@ -47,6 +47,19 @@ pub fn write_klartext_warned(
     p: &Program,
     spec: &DialectSpec,
 ) -> Result<(String, Vec<Diagnostic>), Vec<Diagnostic>> {
+    let (lines, diags) = kept_lines(p, spec, &|_| true, true)?;
+    Ok((number_lines(&lines), diags))
+}
+
+/// The logical blocks of the blocks `keep` selects (unnumbered), written
+/// with the state the whole program gives them; `frame` adds `BEGIN PGM`
+/// and `END PGM` where the program has none.
+pub(super) fn kept_lines(
+    p: &Program,
+    spec: &DialectSpec,
+    keep: &dyn Fn(&crate::ir::Block) -> bool,
+    frame: bool,
+) -> Result<(Vec<String>, Vec<Diagnostic>), Vec<Diagnostic>> {
     let mut w = Writer::new(p, spec, Style::Sinumerik);
     let mut out = Out::default();
     let stmts = || p.blocks.iter().flat_map(|b| b.stmts.iter());
@@ -59,27 +72,42 @@ pub fn write_klartext_warned(
     let has_start = stmts().any(|s| matches!(s.kind, K::ProgramStart { .. }));
     let has_end = stmts().any(|s| matches!(s.kind, K::ProgramEnd { .. }));
     let unit_word = unit_word(unit);
-    if !has_start {
+    if frame && !has_start {
         out.lines.push(format!("BEGIN PGM PGM {unit_word}"));
     }
     for b in &p.blocks {
+        let before = out.lines.len();
         lines::block(&mut w, &mut out, b);
+        if !keep(b) {
+            out.lines.truncate(before);
+        }
     }
-    if !has_end {
+    if frame && !has_end {
         let name = first_name(p).unwrap_or_else(|| "PGM".into());
         out.lines.push(format!("END PGM {name} {unit_word}"));
     }
     if w.diags.iter().any(Diagnostic::is_error) {
         return Err(w.diags);
     }
-    let mut text = String::new();
-    for (i, l) in out.lines.iter().enumerate() {
-        match l.strip_prefix('/') {
-            Some(rest) => text.push_str(&format!("/{i} {rest}\n")),
-            None => text.push_str(&format!("{i} {l}\n")),
-        }
+    Ok((out.lines, w.diags))
+}
+
+/// Numbers logical blocks 0, 1, 2 ... (a skipped block `/n`).
+fn number_lines(lines: &[String]) -> String {
+    let mut text = String::with_capacity(lines.iter().map(|l| l.len() + 8).sum());
+    for (i, l) in lines.iter().enumerate() {
+        push_numbered(&mut text, i, l);
     }
-    Ok((text, w.diags))
+    text
+}
+
+/// Appends logical block `l` as block number `n`, with its line end.
+pub fn push_numbered(text: &mut String, n: usize, l: &str) {
+    use std::fmt::Write;
+    let _ = match l.strip_prefix('/') {
+        Some(rest) => writeln!(text, "/{n} {rest}"),
+        None => writeln!(text, "{n} {l}"),
+    };
 }
 
 pub(super) fn unit_word(u: Option<LengthUnit>) -> &'static str {

@@ -38,12 +38,62 @@ pub fn write_program_warned(
         Family::Sinumerik => Style::Sinumerik,
         Family::Klartext => return klartext::write_klartext_warned(p, spec),
     };
+    let (lines, diags) = word_lines(p, spec, style, &|_| true)?;
+    let mut out = String::with_capacity(lines.iter().map(|l| l.len() + 1).sum());
+    for line in &lines {
+        out.push_str(line);
+        out.push('\n');
+    }
+    Ok((out, diags))
+}
+
+/// The lines of the blocks `keep` selects, each written with the writer
+/// state the whole of `p` gives it (the streamed port writes a piece of a
+/// program in the context of what precedes it). Klartext lines are
+/// logical blocks without their numbers and without the `BEGIN PGM` /
+/// `END PGM` frame ([`push_klartext_numbered`] numbers them).
+pub fn write_kept_lines(
+    p: &Program,
+    spec: &DialectSpec,
+    keep: &dyn Fn(&Block) -> bool,
+) -> Result<(Vec<String>, Vec<Diagnostic>), Vec<Diagnostic>> {
+    match spec.family {
+        Family::WordAddress => word_lines(p, spec, Style::Bracket, keep),
+        Family::Sinumerik => word_lines(p, spec, Style::Sinumerik, keep),
+        Family::Klartext => klartext::kept_lines(p, spec, keep, false),
+    }
+}
+
+/// [`write_kept_lines`] with the Klartext frame (`BEGIN PGM`/`END PGM`
+/// where the program has none) when `keep` selects every block.
+pub fn write_framed_lines(
+    p: &Program,
+    spec: &DialectSpec,
+    keep: &dyn Fn(&Block) -> bool,
+) -> Result<(Vec<String>, Vec<Diagnostic>), Vec<Diagnostic>> {
+    match spec.family {
+        Family::Klartext => klartext::kept_lines(p, spec, keep, true),
+        Family::WordAddress | Family::Sinumerik => write_kept_lines(p, spec, keep),
+    }
+}
+
+/// Appends a logical Klartext block with its number, as the writer does.
+pub use klartext::push_numbered as push_klartext_numbered;
+
+/// The word-address or Sinumerik lines of the kept blocks.
+fn word_lines(
+    p: &Program,
+    spec: &DialectSpec,
+    style: Style,
+    keep: &dyn Fn(&Block) -> bool,
+) -> Result<(Vec<String>, Vec<Diagnostic>), Vec<Diagnostic>> {
     let mut w = Writer::new(p, spec, style);
-    let mut out = String::new();
+    let mut out = Vec::new();
     for b in &p.blocks {
         let line = block(&mut w, b);
-        out.push_str(&line);
-        out.push('\n');
+        if keep(b) {
+            out.push(line);
+        }
     }
     if w.diags.iter().any(Diagnostic::is_error) {
         return Err(w.diags);

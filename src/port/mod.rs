@@ -49,6 +49,9 @@
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
 //!   as the moves the interpreter makes for it.
 //!
+//! A large program without control flow is ported as a stream
+//! ([`stream`]): the same passes, run on pieces of it in their context.
+//!
 //! What the target cannot express is an error naming the construct and
 //! where it is (E0601, E0610..E0614, E0621..E0623); the writer reports
 //! the rest.
@@ -90,6 +93,7 @@ mod program_end;
 mod program_name;
 mod ref_return;
 mod spf;
+pub mod stream;
 pub mod subload;
 mod text;
 mod tnc_labels;
