@@ -54,6 +54,45 @@ impl SourceMap {
         Self::default()
     }
 
+    /// The number of files.
+    pub fn len(&self) -> usize {
+        self.files.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.files.is_empty()
+    }
+
+    /// A map for a task that runs beside others: the ids below `self`'s
+    /// length stand for `self`'s files (they hold nothing there), new
+    /// files get the ids after them; [`SourceMap::absorb`] takes them back.
+    pub fn branch(&self) -> SourceMap {
+        let empty = || SourceFile {
+            name: String::new(),
+            view: String::new(),
+            view_starts: vec![0],
+            sparse: None,
+        };
+        SourceMap {
+            files: (0..self.files.len()).map(|_| empty()).collect(),
+        }
+    }
+
+    /// Takes the files a [`SourceMap::branch`] of this map added; gives
+    /// the id each of the branch's ids now has.
+    pub fn absorb(&mut self, branch: SourceMap, shared: usize) -> impl Fn(FileId) -> FileId {
+        let base = self.files.len() as u32;
+        self.files.extend(branch.files.into_iter().skip(shared));
+        let shared = shared as u32;
+        move |id: FileId| {
+            if id.0 < shared {
+                id
+            } else {
+                FileId(base + id.0 - shared)
+            }
+        }
+    }
+
     /// Adds a file held whole.
     pub fn add(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
         let view = text.into();

@@ -293,3 +293,51 @@ fn named_tools_without_a_table_warn_and_with_one_must_be_there() {
     assert_eq!(o.status.code(), Some(1));
     assert!(stderr(&o).contains("E0501"), "{}", stderr(&o));
 }
+
+/// Several files are checked on every core: the notes and diagnostics
+/// come out as they do file by file, in the order the files were given.
+#[test]
+fn a_multi_file_check_reports_each_file_in_input_order() {
+    let root = common::root().join("tests/programs");
+    let files: Vec<String> = [
+        "fanuc/mistakes.nc",
+        "linuxcnc/mistakes.ngc",
+        "fanuc/demo_part.nc",
+        "linuxcnc/g81-no-r.ngc",
+        "fanuc/oriented_boring_mistakes.nc",
+        "linuxcnc/flow.ngc",
+        "fanuc/duplicate_program_number.nc",
+        "linuxcnc/g82-no-p.ngc",
+    ]
+    .iter()
+    .map(|f| root.join(f).display().to_string())
+    .collect();
+    let summary = |l: &&str| {
+        let l = l.trim();
+        !(l.ends_with(" warnings") || l.ends_with(" warning") || l.contains(" error"))
+            || l.starts_with("error[")
+    };
+    let body = |o: &std::process::Output| -> Vec<String> {
+        common::stderr(o)
+            .lines()
+            .filter(summary)
+            .map(str::to_string)
+            .collect()
+    };
+    let mut args = vec!["check", "--color", "never"];
+    args.extend(files.iter().map(String::as_str));
+    let together = body(&common::cncc(&args));
+    let (mut notes, mut alone) = (Vec::new(), Vec::new());
+    for f in &files {
+        for l in body(&common::cncc(&["check", "--color", "never", f])) {
+            if l.starts_with("note: reading") {
+                notes.push(l);
+            } else {
+                alone.push(l);
+            }
+        }
+    }
+    notes.extend(alone);
+    assert!(together.len() > 40, "{}", together.join("\n"));
+    assert_eq!(together, notes);
+}

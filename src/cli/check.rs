@@ -9,7 +9,7 @@
 //! parameters) is read whole and run by the program walker.
 
 use crate::cli::args::Format;
-use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
+use crate::cli::context::{detection_note, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
 use crate::cli::output::summary_line;
 use crate::diag::{Code, Diagnostic, Severity};
 use crate::dialect::DialectSpec;
@@ -48,8 +48,12 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
     // A check names invented tool sizes only where they mattered (W0592).
     a.options.report_tool_sizes = false;
     let mut failed = false;
-    for path in a.files {
-        match check_one(ctx, path, &a) {
+    let results = check_all(ctx, &a);
+    for note in ctx.notes.drain(..) {
+        eprintln!("{note}");
+    }
+    for result in results {
+        match result {
             Ok(d) => all.extend(d),
             Err(Failure(msg)) => {
                 // Each file is independent: the others are still checked.
@@ -84,6 +88,42 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
     } else {
         EXIT_OK
     })
+}
+
+/// Checks every file, in input order. Several files are checked on every
+/// core, each with its own source map, merged back in input order.
+fn check_all(ctx: &mut Context, a: &CheckArgs<'_>) -> Vec<Result<Vec<Diagnostic>, Failure>> {
+    if a.files.len() < 2 {
+        return a.files.iter().map(|p| check_one(ctx, p, a)).collect();
+    }
+    use rayon::prelude::*;
+    let (registry, color, shared) = (&ctx.registry, ctx.color, &ctx.files);
+    let done: Vec<_> = a
+        .files
+        .par_iter()
+        .map(|path| {
+            let mut local = Context {
+                registry: registry.clone(),
+                files: shared.branch(),
+                color,
+                notes: Vec::new(),
+            };
+            (check_one(&mut local, path, a), local.files, local.notes)
+        })
+        .collect();
+    let shared = ctx.files.len();
+    done.into_iter()
+        .map(|(result, files, mut notes)| {
+            ctx.notes.append(&mut notes);
+            let id = ctx.files.absorb(files, shared);
+            result.map(|mut diags| {
+                for l in diags.iter_mut().flat_map(|d| d.labels.iter_mut()) {
+                    l.span.file = id(l.span.file);
+                }
+                diags
+            })
+        })
+        .collect()
 }
 
 /// Checks one file (a program or STEP-NC); a panic in cncc while checking
@@ -229,7 +269,7 @@ fn check_file(
     keep_lines(ctx, path, id, &diags)?;
     if let Some(r) = reason {
         if a.verbose || !diags.is_empty() {
-            report_detection(path, &spec, &r);
+            ctx.notes.push(detection_note(path, &spec, &r));
         }
     }
     Ok(diags)

@@ -19,6 +19,9 @@ pub struct Context {
     pub registry: Registry,
     pub files: SourceMap,
     pub color: ColorChoice,
+    /// Notes for stderr that a multi-file command prints in input order,
+    /// before the diagnostics (the dialect each file was read as).
+    pub notes: Vec<String>,
 }
 
 /// A usage or I/O failure: message for stderr, exit 2.
@@ -53,6 +56,7 @@ impl Context {
             registry: Registry::with_builtins(),
             files: SourceMap::new(),
             color: cli.color,
+            notes: Vec::new(),
         };
         for path in &cli.dialect_files {
             let text = match read_text_limited(path, MAX_SIDE_FILE) {
@@ -163,9 +167,14 @@ pub fn read_limited(path: &Path, limit: u64) -> std::io::Result<Vec<u8>> {
 
 /// Says which dialect was chosen and why, on stderr.
 pub fn report_detection(path: &Path, spec: &DialectSpec, reason: &str) {
-    eprintln!(
+    eprintln!("{}", detection_note(path, spec, reason));
+}
+
+/// The note saying which dialect a file was read as, and why.
+pub fn detection_note(path: &Path, spec: &DialectSpec, reason: &str) -> String {
+    format!(
         "note: reading {} as {} ({reason}); use --dialect to choose",
         path.display(),
         spec.id
-    );
+    )
 }
