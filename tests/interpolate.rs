@@ -43,6 +43,7 @@ fn blu1(accel: f64) -> Settings {
         period: 0.001,
         blu: 1.0,
         accel,
+        jerk: 0.0,
         rapid_rate: 10_000.0,
     }
 }
@@ -165,6 +166,7 @@ fn the_time_of_a_move_with_acceleration_phases_is_the_analytic_one() {
             period: 0.001,
             blu: 0.001,
             accel: 500.0,
+            jerk: 0.0,
             rapid_rate: 10_000.0,
         },
         &[mv(MoveKind::Line, [0.0; 3], [100.0, 0.0, 0.0], 3000.0)],
@@ -274,4 +276,33 @@ fn a_dwell_passes_time_standing_still() {
         .iter()
         .all(|s| s.pulses == [0, 0, 0] && s.speed == 0.0));
     assert_eq!(sums(&samples), [10_000, 5_000, 0]);
+}
+
+#[test]
+fn a_jerk_limited_move_takes_its_analytic_time_and_ends_exactly() {
+    // 100 mm at 3000 mm/min (50 mm/s), 500 mm/s², 5000 mm/s³: each ramp
+    // takes 50/500 + 500/5000 = 0.2 s over 5 mm; 90 mm cruise, 1.8 s:
+    // 2.2 s in all (the trapezoid takes 2.1 s).
+    let s = Settings {
+        accel: 500.0,
+        jerk: 5000.0,
+        ..Settings::default()
+    };
+    let (samples, t) = run(
+        s,
+        &[mv(MoveKind::Line, [0.0; 3], [100.0, 0.0, 0.0], 3000.0)],
+    );
+    assert!((t - 2.2).abs() / 2.2 < 1e-3, "{t}");
+    assert_eq!(sums(&samples), [100_000, 0, 0]);
+    // The speed rises smoothly: after 0.1 s (the first jerk phase) it is
+    // j t^2 / 2 = 25 mm/s, 1500 mm/min.
+    let at = samples.iter().find(|s| s.index == 100).unwrap();
+    assert!((at.speed - 1500.0).abs() < 1e-6, "{}", at.speed);
+    // The acceleration never steps: speed changes per period stay under
+    // a·period and change by at most j·period² between periods.
+    let v: Vec<f64> = samples.iter().map(|s| s.speed / 60.0).collect();
+    for w in v.windows(3) {
+        let (a1, a2) = ((w[1] - w[0]) / 0.001, (w[2] - w[1]) / 0.001);
+        assert!(a1.abs() <= 500.0 + 1e-6 && ((a2 - a1) / 0.001).abs() <= 5000.0 * 1.01);
+    }
 }

@@ -302,8 +302,8 @@ pub enum Command {
         run: RunArgs,
     },
     /// Set-points for a controller's position loop at a fixed sampling
-    /// period (trapezoidal feed profile per move, stopping at each move's
-    /// end), or reference pulses per axis and period at the BLU resolution.
+    /// period (trapezoidal or jerk-limited feed profile per move, stopping
+    /// at each move's end), or reference pulses per axis and period at the BLU resolution.
     Interpolate {
         file: PathBuf,
         #[arg(long)]
@@ -319,6 +319,10 @@ pub enum Command {
         /// Path acceleration and deceleration, mm/s² (0: no limit).
         #[arg(long, default_value_t = 1000.0)]
         accel: f64,
+        /// Path jerk, mm/s³: a jerk-limited (S-curve) profile instead of
+        /// the trapezoid (0: no limit, the trapezoid).
+        #[arg(long, default_value_t = 0.0)]
+        jerk: f64,
         /// Rapid traverse rate, mm/min.
         #[arg(long = "rapid-rate", value_name = "MM/MIN", default_value_t = 10000.0)]
         rapid_rate: f64,

@@ -62,6 +62,11 @@ fn check_settings(s: &Settings) -> Result<(), Failure> {
             "--accel must be zero (no limit) or a positive number of mm/s²".into(),
         ));
     }
+    if !(s.jerk >= 0.0 && s.jerk.is_finite()) {
+        return Err(Failure(
+            "--jerk must be zero (no limit) or a positive number of mm/s³".into(),
+        ));
+    }
     if !(s.rapid_rate > 0.0 && s.rapid_rate.is_finite()) {
         return Err(Failure(
             "--rapid-rate must be a positive number of mm/min".into(),

@@ -2,7 +2,7 @@
 //! a run ([`crate::toolpath::Move`]) become set-points at a fixed sampling
 //! period, along the path (lines, circular and helical arcs) at the
 //! programmed feed, with a trapezoidal acceleration-limited feed profile
-//! per move ([`profile`]); and, on the BLU grid, reference pulses per
+//! per move ([`profile`]), or a jerk-limited one ([`scurve`]); and, on the BLU grid, reference pulses per
 //! axis and period ([`pulses`]).
 //!
 //! Every move starts and ends at rest: there is no look-ahead blending of
@@ -20,11 +20,12 @@
 pub mod path;
 pub mod profile;
 pub mod pulses;
+pub mod scurve;
 
 use crate::toolpath::{Event, FeedMode, Move, MoveKind};
 use nalgebra::Vector3;
 use path::Path;
-use profile::Trapezoid;
+use profile::Profile;
 use pulses::Q3;
 
 /// How to interpolate.
@@ -36,6 +37,8 @@ pub struct Settings {
     pub blu: f64,
     /// Path acceleration, mm/s² (0: unlimited).
     pub accel: f64,
+    /// Path jerk, mm/s³ (0: unlimited: the trapezoidal profile).
+    pub jerk: f64,
     /// Rapid traverse rate, mm/min.
     pub rapid_rate: f64,
 }
@@ -46,6 +49,7 @@ impl Default for Settings {
             period: 0.001,
             blu: 0.001,
             accel: 1000.0,
+            jerk: 0.0,
             rapid_rate: 10_000.0,
         }
     }
@@ -176,7 +180,7 @@ impl<F: FnMut(&Sample)> Interpolator<F> {
             }
         };
         self.moves += 1;
-        let prof = Trapezoid::new(length, v, self.s.accel);
+        let prof = Profile::new(length, v, self.s.accel, self.s.jerk);
         let qe = pulses::round_point(&path.end(), self.s.blu);
         let end = self.clock + prof.duration();
         while (self.next as f64) * self.s.period <= end {

@@ -3,6 +3,43 @@
 //! the move is too short to reach the feed. Every move starts and ends at
 //! rest (no look-ahead blending across moves).
 
+/// The profile a move runs with: trapezoidal, or jerk-limited
+/// ([`super::scurve`]) when a jerk limit is given.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Profile {
+    Trapezoid(Trapezoid),
+    SCurve(super::scurve::SCurve),
+}
+
+impl Profile {
+    /// A move `length` mm long at `speed` mm/s, with acceleration `accel`
+    /// mm/s² and jerk `jerk` mm/s³ (0 or less: no limit of that kind).
+    pub fn new(length: f64, speed: f64, accel: f64, jerk: f64) -> Self {
+        if jerk > 0.0 && jerk.is_finite() {
+            let accel = if accel > 0.0 { accel } else { f64::INFINITY };
+            Profile::SCurve(super::scurve::SCurve::new(length, speed, accel, jerk))
+        } else {
+            Profile::Trapezoid(Trapezoid::new(length, speed, accel))
+        }
+    }
+
+    /// The move's duration, seconds.
+    pub fn duration(&self) -> f64 {
+        match self {
+            Profile::Trapezoid(p) => p.duration(),
+            Profile::SCurve(p) => p.duration(),
+        }
+    }
+
+    /// Distance travelled and speed (mm, mm/s) `t` seconds into the move.
+    pub fn at(&self, t: f64) -> (f64, f64) {
+        match self {
+            Profile::Trapezoid(p) => p.at(t),
+            Profile::SCurve(p) => p.at(t),
+        }
+    }
+}
+
 /// A move's speed over time: `v` mm/s at most, `a` mm/s² (0: no limit,
 /// the feed from the first instant).
 #[derive(Clone, Copy, Debug, PartialEq)]
