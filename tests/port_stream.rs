@@ -21,6 +21,16 @@ const DIALECTS: [&str; 5] = ["fanuc", "haas", "heidenhain", "linuxcnc", "siemens
 /// Ports `path` (read as `from`) to every other dialect both ways; the
 /// differences found, and how many ports were streamed.
 fn both_ways(from: &str, path: &Path, streamed: &mut (usize, usize)) -> Vec<String> {
+    both_ways_in(from, path, Chunking { chunk: 2 }, streamed)
+}
+
+/// [`both_ways`] with the stream cut as `chunking` says.
+fn both_ways_in(
+    from: &str,
+    path: &Path,
+    chunking: Chunking,
+    streamed: &mut (usize, usize),
+) -> Vec<String> {
     let mut out = Vec::new();
     let Ok(bytes) = std::fs::read(path) else {
         return out;
@@ -42,7 +52,7 @@ fn both_ways(from: &str, path: &Path, streamed: &mut (usize, usize)) -> Vec<Stri
         } else {
             cncc::emit::write_program(&ported, &target).ok()
         };
-        let stream = port_text(&text, id, &spec, &target, &opts, Chunking { chunk: 2 });
+        let stream = port_text(&text, id, &spec, &target, &opts, chunking);
         let name = format!("{} -> {to}", path.display());
         match (whole, stream) {
             (Some(w), Some(s)) => {
@@ -191,4 +201,26 @@ fn a_large_program_streams_the_same_text_and_verifies() {
     assert!(o.status.success(), "{err}");
     assert!(err.contains("verify: OK"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The large real programs (`../shared/field/big/`, 1.3 to 3.9 MB, the
+/// dialect first in the name) as the command cuts them.
+#[test]
+fn the_streamed_port_is_the_whole_port_on_large_real_programs() {
+    let Some(shared) = common::shared() else {
+        return;
+    };
+    let (mut diffs, mut streamed) = (Vec::new(), (0, 0));
+    for f in common::files_in(&shared.join("field/big")) {
+        let name = f.file_name().unwrap().to_string_lossy().to_string();
+        let from = DIALECTS
+            .iter()
+            .find(|d| name.starts_with(&format!("{d}_")))
+            .copied()
+            .unwrap_or("linuxcnc");
+        diffs.extend(both_ways_in(from, &f, Chunking::default(), &mut streamed));
+    }
+    eprintln!("{} ports streamed, {} blocks in chunks", streamed.0, streamed.1);
+    assert!(diffs.is_empty(), "{} differ:\n{}", diffs.len(), diffs.join("\n"));
+    assert!(streamed.1 > 100_000, "only {} blocks were ported in chunks", streamed.1);
 }
