@@ -39,6 +39,7 @@ pub struct Running {
     /// The words D E I P R U W as given (`None`: the default).
     words: [Option<f64>; 7],
     start: Pt,
+    /// The cycle's block.
     span: Span,
     pub contour: Contour,
 }
@@ -154,7 +155,9 @@ pub fn finish(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
         span,
         contour,
     } = *run;
-    it.span = span;
+    // rs274 has read the contour's last line when it makes the passes: its
+    // errors show that line (the cycle's block is named beside it).
+    let end_span = it.span;
     it.state.motion = match contour.motion {
         Some(k) => ModalMotion::Move(k),
         None => ModalMotion::None,
@@ -215,7 +218,12 @@ pub fn finish(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
     if let Some(k) = out.last {
         it.state.motion = ModalMotion::Move(k);
     }
-    result.map_err(|e| turn_error(it, e, sink))
+    result.map_err(|e| match turn_error(it, e, sink) {
+        Stop::Error(d) if span != end_span => {
+            Stop::Error(d.secondary(span, "the cycle whose contour this is"))
+        }
+        other => other,
+    })
 }
 
 fn turn_error(it: &Interp<'_, '_>, e: TurnError, sink: Option<Stop>) -> Stop {

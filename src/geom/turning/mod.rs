@@ -18,6 +18,8 @@
 
 mod offset;
 mod pocket;
+#[cfg(test)]
+mod tests;
 pub mod segment;
 
 pub use segment::{Corner, Seg, Shape};

@@ -117,8 +117,9 @@ impl Seg {
         }
     }
 
-    /// Shifts the element sideways by `d` (left of its direction for a
-    /// line; away from the centre of a counter-clockwise arc).
+    /// Shifts the element sideways by `d` (to the right of its direction
+    /// for a line, so up in X for one running to -Z; away from the centre
+    /// of a counter-clockwise arc).
     pub fn offset(&mut self, d: f64) {
         match self.shape {
             Shape::Line => {
