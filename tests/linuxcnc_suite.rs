@@ -32,11 +32,6 @@ const KNOWN: &[(&str, &str)] = &[
         "interp/g71-endless-loop_2",
         "rs274 2.9-pre never ends (the bug the test was written for); cncc ends (G7 diameter mode and G70 under G42 are not checked against rs274)",
     ),
-    // ---- our gaps
-    (
-        "ccomp/lathe-comp",
-        "lathe cutter compensation with a tool orientation (Q2): the nose-radius shift is not modelled",
-    ),
 ];
 
 /// Cases `run.sh` cannot run, by id prefix, with the reason.
