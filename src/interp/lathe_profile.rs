@@ -3,7 +3,8 @@
 //! its blocks are not executed; each block's motion words add a line, an
 //! arc, or a corner (A fillet, C chamfer) to the profile, in absolute
 //! coordinates (rs274 reads the contour in G90 and G90.1 whatever is in
-//! force, adding the programmed increments itself under G91). Control
+//! force, adding the programmed increments itself under G91; X and U are
+//! diameters under G7 and halved, arc centres are not [?]). Control
 //! flow and parameter assignments still run (the walker does them); feed,
 //! speed and the other words of the contour's blocks are not used.
 
@@ -77,7 +78,8 @@ fn motion(
         }
         end.im += if it.state.lathe_diameter { u / 2.0 } else { u };
     } else if let Some(x) = x {
-        end.im = x;
+        // rs274 halves X as it reads it in diameter mode (G7).
+        end.im = if it.state.lathe_diameter { x / 2.0 } else { x };
     }
     if let Some(w) = w {
         if c.incremental {

@@ -50,11 +50,6 @@ pub trait Motion {
     fn rapid(&mut self, to: Pt) -> Result<(), TurnError>;
     fn feed(&mut self, to: Pt) -> Result<(), TurnError>;
     fn arc(&mut self, ccw: bool, center: Pt, to: Pt) -> Result<(), TurnError>;
-    /// The rapid that starts a G70 pass (LinuxCNC makes it with cutter
-    /// compensation suspended).
-    fn approach(&mut self, to: Pt) -> Result<(), TurnError> {
-        self.rapid(to)
-    }
 }
 
 /// How the profile was placed into normal position: a quarter turn, then
@@ -100,9 +95,6 @@ impl Motion for Placed<'_> {
     }
     fn feed(&mut self, to: Pt) -> Result<(), TurnError> {
         self.out.feed(self.place.back(to))
-    }
-    fn approach(&mut self, to: Pt) -> Result<(), TurnError> {
-        self.out.approach(self.place.back(to))
     }
     fn arc(&mut self, ccw: bool, center: Pt, to: Pt) -> Result<(), TurnError> {
         let ccw = ccw ^ self.place.reverses();
@@ -284,7 +276,7 @@ impl Profile {
             let mut path = self.clone();
             path.offset(allowance)?;
             let first = *path.front()?;
-            out.approach(first.start)?;
+            out.rapid(first.start)?;
             out.rapid(first.end)?;
             for s in &path.segs[1..] {
                 s.draw(&mut out)?;
