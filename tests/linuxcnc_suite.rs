@@ -26,32 +26,11 @@ const KNOWN: &[(&str, &str)] = &[
     // ---- LinuxCNC's own bugs, not matched
     (
         "interp/g71-endless-loop",
-        "rs274 2.9-pre never ends (the bug the test was written for); cncc has no G71",
+        "rs274 2.9-pre never ends (the bug the test was written for); cncc stops with E0506 where the passes would not end",
     ),
     (
         "interp/g71-endless-loop_2",
-        "rs274 2.9-pre never ends (the bug the test was written for); cncc has no G71",
-    ),
-    // ---- our gaps
-    (
-        "ccomp/lathe-comp",
-        "lathe cutter compensation with a tool orientation (Q2): the nose-radius shift is not modelled",
-    ),
-    (
-        "interp/g71-endless-loop2",
-        "G70/G71/G72 lathe roughing cycles are not implemented",
-    ),
-    (
-        "interp/g71-with-g70",
-        "G70/G71/G72 lathe roughing cycles are not implemented",
-    ),
-    (
-        "interp/g72-facing",
-        "G70/G71/G72 lathe roughing cycles are not implemented (G72)",
-    ),
-    (
-        "interp/g72-missing-iteration",
-        "G70/G71/G72 lathe roughing cycles are not implemented (G72)",
+        "rs274 2.9-pre never ends (the bug the test was written for); cncc stops with E0506 where the passes would not end",
     ),
 ];
 

@@ -669,6 +669,9 @@ codes! {
     PlungeWithoutCentreCutting = "W1004", "plunge-without-centre-cutting", Warning,
         "a flat end mill fed straight down into solid material",
         "With the stock known (`--stock`, or the program's `BLK FORM`), a feed straight down the tool axis (a pure -Z move) of a flat end mill whose centre goes into material that no earlier cut removed. An end mill without centre-cutting edges cannot cut under its centre: it rubs, chips or breaks. A drill, a ball or bull nose mill, a tool with a point angle, and a tool whose name says it plunges (drill, tap, reamer, boring, counterbore, plunge, centre cutting) are not reported; neither is a ramp or a helix, nor a plunge into a hole cut before. The first plunge of each tool is shown with how many it makes. The tool's shape comes from the tool table's comment or the program's CAM tool list.\n\nBad (flat end mill):\n    G0 X10. Y10. Z2.\n    G1 Z-5. F100.\n\nGood:\n    G0 X10. Y10. Z2.\n    G1 X20. Z-5. F100.   (a ramp)";
+    LatheProfileFailed = "E0547", "lathe-profile-failed", Error,
+        "a lathe profile cycle (G70/G71/G72) cannot be made from its contour",
+        "LinuxCNC's G70 (finishing), G71 (roughing along Z) and G72 (facing) read the contour from the subroutine named by Q and cut towards it from the block's X Z. The contour must run one way in Z (and, for G72, in X) without turning back: every element moves away from the start, arcs stay on one side of their centre. D (the finishing allowance) offsets it; I (the depth of cut) must be greater than zero; a corner rounded with A or broken with C needs room between its neighbours. The message is LinuxCNC's (`G7X error: ...`). cncc also stops where the roughing passes would never end (LinuxCNC 2.9 loops for ever there).";
 }
 
 impl Code {

@@ -115,6 +115,10 @@ pub enum MachineFn {
     Spline(u8),
     /// The lathe threading cycle (LinuxCNC G76), modal.
     LatheThread,
+    /// A lathe profile cycle on a contour subroutine Q (LinuxCNC G70
+    /// finishing, G71 roughing along Z, G72 facing; .1 without pockets,
+    /// .2 pockets only).
+    LatheProfile(LatheProfile),
     /// Circular pocket milling, clockwise or not (Haas G12/G13).
     CircularPocket { clockwise: bool },
     /// General pocket milling from a contour subprogram (Haas G150):
@@ -128,9 +132,22 @@ impl MachineFn {
     pub fn is_motion(self) -> bool {
         matches!(
             self,
-            MachineFn::Spline(_) | MachineFn::LatheThread | MachineFn::CircularPocket { .. }
+            MachineFn::Spline(_)
+                | MachineFn::LatheThread
+                | MachineFn::LatheProfile(_)
+                | MachineFn::CircularPocket { .. }
         )
     }
+}
+
+/// Which lathe profile cycle (see [`MachineFn::LatheProfile`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LatheProfile {
+    /// Finishing passes along the profile (G70).
+    Finish,
+    /// Roughing: along Z (turning) or along X (`facing`), and which
+    /// parts: 0 everything, 1 no pockets, 2 only the pockets.
+    Rough { facing: bool, part: u8 },
 }
 
 use MachineFn as F;
@@ -403,6 +420,31 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
     ("spline.nurbs-point", M::Machine(F::Spline(2))),
     ("spline.nurbs-end", M::Machine(F::Spline(3))),
     ("cycle.lathe-thread", M::Machine(F::LatheThread)),
+    ("cycle.lathe-finish", M::Machine(F::LatheProfile(LatheProfile::Finish))),
+    (
+        "cycle.lathe-rough",
+        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: false, part: 0 })),
+    ),
+    (
+        "cycle.lathe-rough-no-pockets",
+        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: false, part: 1 })),
+    ),
+    (
+        "cycle.lathe-rough-pockets",
+        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: false, part: 2 })),
+    ),
+    (
+        "cycle.lathe-face",
+        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: true, part: 0 })),
+    ),
+    (
+        "cycle.lathe-face-no-pockets",
+        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: true, part: 1 })),
+    ),
+    (
+        "cycle.lathe-face-pockets",
+        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: true, part: 2 })),
+    ),
     (
         "pocket.circular-cw",
         M::Machine(F::CircularPocket { clockwise: true }),

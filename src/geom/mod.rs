@@ -16,6 +16,8 @@
 //! order; applying, composing and inverting is done here, the same way
 //! for all of them.
 
+pub mod turning;
+
 use nalgebra::{Matrix3, Vector3};
 
 /// A point or a direction, mm.

@@ -162,7 +162,7 @@ fn centre_from_radius(
     Ok((mid.0 + offset * theta.cos(), mid.1 + offset * theta.sin()))
 }
 
-fn check_radii(
+pub(crate) fn check_radii(
     it: &Interp<'_, '_>,
     s: (f64, f64),
     c: (f64, f64),

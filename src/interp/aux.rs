@@ -73,6 +73,9 @@ pub fn exec_motion(
     match machine_fn(it.spec, letter, code) {
         Some(MachineFn::Spline(kind)) => super::splines::exec(it, kind, words, block, exprs),
         Some(MachineFn::LatheThread) => super::threading::exec(it, words, block, exprs),
+        Some(MachineFn::LatheProfile(kind)) => {
+            super::lathe_cycles::exec(it, kind, code, words, block, exprs)
+        }
         Some(MachineFn::CircularPocket { clockwise }) => {
             super::haas_pocket::exec(it, letter, code, clockwise, words, block, exprs)
         }
@@ -269,7 +272,7 @@ pub fn exec(
             it.state.motion = super::state::ModalMotion::Move(crate::ir::MotionKind::Other(code));
         }
         // Motions run in the motion phase; a dynamic one is not run.
-        F::Spline(_) | F::LatheThread | F::CircularPocket { .. } => {
+        F::Spline(_) | F::LatheThread | F::LatheProfile(_) | F::CircularPocket { .. } => {
             return Err(it.error_at(
                 it.span,
                 Code::UnsupportedHere,

@@ -44,6 +44,9 @@ struct Frame {
     modal: bool,
     /// The statement that made the call (shown with errors inside it).
     call_span: crate::span::Span,
+    /// The contour subroutine of a lathe profile cycle: its return makes
+    /// the cycle's passes ([`super::lathe_cycles`]).
+    profile: bool,
 }
 
 struct Loaded {
@@ -194,7 +197,11 @@ impl<'l> Walker<'l> {
                         (prog, pc) = at;
                         continue;
                     }
+                    let profile = self.frames.last().is_some_and(|f| f.profile);
                     (prog, pc) = self.pop_frame(it);
+                    if profile {
+                        super::lathe_cycles::finish(it)?;
+                    }
                 }
                 Next::End => return Err(Stop::End),
             }
@@ -273,7 +280,17 @@ impl<'l> Walker<'l> {
             super::heidenhain::flush(it)?;
             return Ok(Next::Return);
         }
-        it.block(block, exprs)?;
+        if it.lathe.reading() {
+            let mut run = it.lathe.running.take().expect("a cycle reading its contour");
+            let r = super::lathe_profile::record(it, &mut run.contour, block, exprs);
+            it.lathe.running = Some(run);
+            r?;
+        } else {
+            it.block(block, exprs)?;
+            if let Some(q) = it.lathe.take_call() {
+                return self.profile_call(it, prog, pc, q);
+            }
+        }
         self.assignments(it, &block.stmts, exprs)?;
         for s in &block.stmts {
             it.span = s.span;
@@ -285,6 +302,26 @@ impl<'l> Walker<'l> {
             return Ok(Next::End);
         }
         self.modal_call(it, prog, pc, block)
+    }
+
+    /// A lathe profile cycle's block: its contour subroutine is called,
+    /// and read instead of run.
+    fn profile_call(
+        &mut self,
+        it: &mut Interp<'_, '_>,
+        prog: usize,
+        pc: usize,
+        q: u32,
+    ) -> Result<Next, Stop> {
+        let target = CallTarget::Number(q);
+        let mut next = self.enter(it, prog, pc, CallKind::OWord, &target, Vec::new(), 1)?;
+        match &mut next {
+            Next::Call { frame, .. } => frame.profile = true,
+            _ => {
+                it.lathe.running = None;
+            }
+        }
+        Ok(next)
     }
 
     /// The `G66` hook: after a block that moves (and not inside the modal
@@ -418,6 +455,7 @@ impl<'l> Walker<'l> {
             repeat: None,
             modal: false,
             call_span: s.span,
+            profile: false,
         };
         Ok(Next::Call {
             prog,
@@ -852,6 +890,7 @@ impl<'l> Walker<'l> {
             repeat,
             modal: false,
             call_span,
+            profile: false,
         };
         if matches!(
             kind,

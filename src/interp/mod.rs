@@ -22,6 +22,8 @@ pub mod haas_pocket;
 pub mod heidenhain;
 pub mod host;
 pub mod index;
+pub mod lathe_cycles;
+pub mod lathe_profile;
 pub mod machine;
 pub mod machine_desc;
 pub mod modal_save;
@@ -92,6 +94,8 @@ pub struct Interp<'a, 's> {
     pub heidenhain: heidenhain::HeidenhainState,
     /// Canned-cycle values that carry over between blocks.
     pub cycles: cycles::CycleMemory,
+    /// A lathe profile cycle (G70/G71/G72) reading its contour.
+    pub lathe: lathe_cycles::LatheCycles,
     /// Cutter radius compensation (every move goes through it).
     pub comp: comp::RadiusComp,
     /// Recent blocks' spans by compensation tag (errors name them).
@@ -187,6 +191,7 @@ impl<'a, 's> Interp<'a, 's> {
             ended: false,
             params: params::Params::new(),
             cycles: cycles::CycleMemory::new(),
+            lathe: Default::default(),
             comp,
             comp_tags: std::collections::VecDeque::new(),
             tool_table: opts.tool_table.clone(),

@@ -32,7 +32,7 @@ impl StreamRun {
         if self.stopped || self.handover.is_some() {
             return;
         }
-        if b.stmts.iter().any(|s| needs_walker(&s.kind)) {
+        if b.stmts.iter().any(|s| needs_walker(&s.kind) || calls_contour(it, &s.kind)) {
             self.handover = Some(index);
             return;
         }
@@ -131,6 +131,14 @@ impl StreamRun {
         }
         diags
     }
+}
+
+/// A lathe profile cycle (G70/G71/G72): it calls its contour subroutine,
+/// which only the walker can do.
+fn calls_contour(it: &Interp<'_, '_>, kind: &StmtKind) -> bool {
+    matches!(kind, StmtKind::Aux { letter, code, .. }
+        if matches!(super::aux::machine_fn(it.spec, *letter, *code),
+            Some(crate::dialect::MachineFn::LatheProfile(_))))
 }
 
 /// Statements only the program walker runs (control flow and variables).

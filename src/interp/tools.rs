@@ -253,7 +253,7 @@ fn radius_comp(
         CompSide::Left => Side::Left,
         CompSide::Right => Side::Right,
     };
-    let radius = comp_radius(it, register, diameter, exprs)?;
+    let (radius, orientation) = comp_radius(it, register, diameter, exprs)?;
     let what = if side == Side::Left { "left" } else { "right" };
     it.out(Canon::Comment(format!(
         "interpreter: cutter radius compensation on {what}"
@@ -262,6 +262,7 @@ fn radius_comp(
     it.comp
         .start(side, radius, plane)
         .map_err(|e| it.comp_error(e))?;
+    it.comp.set_tip(orientation);
     it.state.comp_side = if side == Side::Left {
         CompSide::Left
     } else {
@@ -272,25 +273,27 @@ fn radius_comp(
 }
 
 /// G41/G42 [D]: half the table diameter of tool D (or of the tool in the
-/// spindle), in program units; G41.1/G42.1 D: half of D itself.
+/// spindle), in program units, and that tool's orientation (lathe tools,
+/// the table's Q); G41.1/G42.1 D: half of D itself [?: its L orientation
+/// is not read].
 fn comp_radius(
     it: &mut Interp<'_, '_>,
     register: Option<&Value>,
     dynamic: bool,
     exprs: &Arena<Expr>,
-) -> Result<f64, Stop> {
+) -> Result<(f64, i64), Stop> {
     let d = match register {
         Some(v) => Some(it.value(v, exprs)?),
         None => None,
     };
     if dynamic {
-        return Ok(d.unwrap_or(0.0) / 2.0);
+        return Ok((d.unwrap_or(0.0) / 2.0, 0));
     }
     let t = d
         .map(|v| v.round() as i64)
         .unwrap_or(it.state.tool_in_spindle);
     if t == 0 {
-        return Ok(0.0);
+        return Ok((0.0, 0));
     }
     known_tool(it, t)?;
     let invented = it.tools_without_data.contains_key(&t);
@@ -298,10 +301,10 @@ fn comp_radius(
         // The built-in sizes are not this control's: compensating by them
         // would report gouges the real tool may not make (W0592 says so).
         it.comp_without_size = true;
-        return Ok(0.0);
+        return Ok((0.0, 0));
     }
-    let dia = match it.tool_table.get(t) {
-        Some(tool) => tool.diameter,
+    let (dia, orientation) = match it.tool_table.get(t) {
+        Some(tool) => (tool.diameter, tool.orientation),
         None => {
             return Err(it.error_at(
                 it.span,
@@ -310,7 +313,7 @@ fn comp_radius(
             ))
         }
     };
-    Ok(it.state.to_prog(dia * machine_scale(it)) / 2.0)
+    Ok((it.state.to_prog(dia * machine_scale(it)) / 2.0, orientation))
 }
 
 fn length_comp(

@@ -159,6 +159,19 @@ impl RadiusComp {
         Ok(())
     }
 
+    /// The lathe tool's orientation (the tool table's Q, 1..8): in the XZ
+    /// plane the moves go out for the tool's imaginary tip, not the
+    /// centre of its nose radius, as rs274 does (shifts measured with
+    /// rs274 2.9, `tests/programs/linuxcnc/oracle/comp-lathe-q*.ngc`).
+    pub fn set_tip(&mut self, orientation: i64) {
+        let (dx, dz) = tip_direction(orientation);
+        self.queue.tip = if self.queue.xz {
+            (dz * self.radius, dx * self.radius)
+        } else {
+            (0.0, 0.0)
+        };
+    }
+
     /// Whether compensation is on.
     pub fn is_on(&self) -> bool {
         self.side.is_some()
@@ -309,6 +322,23 @@ impl RadiusComp {
         self.queue
             .move_end_and_flush(p, out)
             .map_err(|(kind, held)| self.error(kind, Some(held)))
+    }
+}
+
+/// From the nose centre to the imaginary tip of a lathe tool, in radii
+/// along X and Z, by orientation (LinuxCNC's numbering; 0 and 9: the
+/// centre).
+fn tip_direction(orientation: i64) -> (f64, f64) {
+    match orientation {
+        1 => (-1.0, 1.0),
+        2 => (-1.0, -1.0),
+        3 => (1.0, -1.0),
+        4 => (1.0, 1.0),
+        5 => (0.0, 1.0),
+        6 => (-1.0, 0.0),
+        7 => (0.0, -1.0),
+        8 => (1.0, 0.0),
+        _ => (0.0, 0.0),
     }
 }
 

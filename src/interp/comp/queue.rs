@@ -39,6 +39,9 @@ pub(super) struct Queue {
     pub start: Option<(f64, f64)>,
     /// Compensation in the XZ plane: held moves are in Z X Y order.
     pub xz: bool,
+    /// Added to every compensated point (plane order): a lathe tool's
+    /// imaginary tip seen from its nose centre ([`super::RadiusComp::set_tip`]).
+    pub tip: (f64, f64),
 }
 
 impl Queue {
@@ -59,7 +62,7 @@ impl Queue {
     pub fn flush(&mut self, out: &mut dyn FnMut(Canon)) {
         self.start = None;
         for q in self.items.drain(..) {
-            out(to_canon(q, self.xz));
+            out(to_canon(q, self.xz, self.tip));
         }
     }
 
@@ -140,14 +143,16 @@ fn gouge_kind(kind: MoveKind) -> CompErrorKind {
 
 /// A held-back call as it goes out; `xz`: straight moves are held in
 /// Z X Y order (arcs are already in `ARC_FEED`'s plane order).
-fn to_canon(q: Queued, xz: bool) -> Canon {
+fn to_canon(q: Queued, xz: bool, tip: (f64, f64)) -> Canon {
     let real = |p: Pose| {
+        let (a, b) = (p[0] + tip.0, p[1] + tip.1);
         if xz {
-            [p[1], p[2], p[0], p[3], p[4], p[5]]
+            [b, p[2], a, p[3], p[4], p[5]]
         } else {
-            p
+            [a, b, p[2], p[3], p[4], p[5]]
         }
     };
+    let shift = |p: (f64, f64)| (p.0 + tip.0, p.1 + tip.1);
     match q {
         Queued::Line {
             kind: MoveKind::Rapid,
@@ -167,10 +172,10 @@ fn to_canon(q: Queued, xz: bool) -> Canon {
             abc,
             ..
         } => Canon::ArcFeed {
-            first_end: end.0,
-            second_end: end.1,
-            first_axis: centre.0,
-            second_axis: centre.1,
+            first_end: shift(end).0,
+            second_end: shift(end).1,
+            first_axis: shift(centre).0,
+            second_axis: shift(centre).1,
             rotation: turn,
             axis_end: z,
             abc,
