@@ -212,6 +212,9 @@ codes! {
     PostNotCarried = "W0900", "post-not-carried", Warning,
         "a STEP-NC value the target's cycle or toolpath cannot carry",
         "The posted program cannot express this value (a drilling strategy's reduced feeds, a spindle stop at the bottom of a reaming pass...). It is named in a comment in the program at the workingstep it belongs to, so nothing is dropped silently; check whether the machining still meets the plan.";
+    SecplaneBelowRetract = "W0904", "secplane-below-retract", Warning,
+        "a workingstep's security plane below its operation's retract plane",
+        "ISO 14649-10 gives a workingstep's security plane and its operation's retract_plane both in the feature's frame: the tool approaches from the retract plane at cutting feed and may rapid only above it, and the security plane is where rapids are safe. Here the security plane lies below the retract plane, so the file contradicts itself. The post does not refuse it: it makes its rapids at the retract plane (the higher of the two, the safe choice) and goes on. Raise the security plane or lower the retract_plane in the STEP-NC file.";
     FeaturesMismatch = "E0940", "features-mismatch", Error,
         "a ported program whose features differ from the source's",
         "`cncc port --features --verify` raises the posted program to STEP-NC CC2 again and compares its features, operations, tools and workingsteps with those raised from the source (by meaning: ids and instance numbers aside). The message names the first difference; the port is not written. The expanded toolpaths are not compared.";

@@ -8,12 +8,29 @@
 //! a height above the feature's top, and becomes the R plane (Fanuc R =
 //! top + retract, Siemens SDIS = retract above RFP = top). NIST's STEPNC++
 //! maps retract_plane to RTP instead; we follow the standard's meaning so
-//! that every target makes the same moves. The security plane is read in
-//! workpiece coordinates (NIST's interpreter does the same; ex1 shares one
-//! plane across features of different heights).
+//! that every target makes the same moves.
+//!
+//! Both planes are in the feature's frame: ISO 14649-10 says of
+//! `workingstep.its_secplane` that its "dimensions given are relative
+//! coordinates as measured from the workpiece co-ordinate system or, if
+//! this workingstep is associated with a manufacturing_feature, in the
+//! local co-ordinate system of the feature", and that "all geometry and
+//! parameters of the machining_operation are defined in the local
+//! co-ordinate system of the feature" (NIST's ISO 14649 interpreter reads
+//! the workingstep's plane in the feature's frame too). Generators that
+//! write one absolute plane for the setup and every workingstep (ex1 at
+//! z 30 over features at z 0 and 5; field files at z 75 over a 50 mm block)
+//! then get a plane that much higher: safe, only longer rapids.
+//!
+//! A security plane below the retract plane (a file inconsistent even so)
+//! is not refused: the tool cannot rapid below the retract plane, so the
+//! post rapids at the retract plane and warns (W0904), which is what the
+//! operation's own definition guarantees ("a change to rapid feed ... can
+//! only occur above this plane").
 
 use super::frame::Frame;
 use super::PostError;
+use crate::diag::{Code, Diagnostic};
 use crate::stepnc::model::*;
 
 /// The clearance above the top used when an operation has no retract plane.
@@ -40,9 +57,9 @@ pub struct Step<'p> {
     pub sdis: f64,
     /// An earlier roughing operation on the same feature, if any.
     pub roughed_by: Option<&'p Operation>,
-    /// The security plane below the retract plane (E0901), reported by
-    /// the validator.
-    pub plane_error: Option<PostError>,
+    /// The security plane below the retract plane (W0904: `clear` is
+    /// raised to the retract plane), reported by the validator.
+    pub plane_warning: Option<Diagnostic>,
 }
 
 /// Anything else in the workplan, in order.
@@ -188,19 +205,8 @@ fn resolve<'p>(
         Some(d) => frame.apply(d.position.location.xyz)[2],
         None => through_bottom(project, feature, base)?,
     };
-    let clear = base.apply(ws.secplane.position.location.xyz)[2];
     let sdis = op.retract_plane.unwrap_or(DEFAULT_SDIS);
-    // Reported by the validator, after the stock check (a feature placed
-    // outside the stock is the likelier cause).
-    let plane_error = (clear < top + sdis).then(|| {
-        PostError::broken(
-            &ws.id,
-            &format!(
-                "the security plane (z {clear}) is below the operation's retract plane (z {})",
-                top + sdis
-            ),
-        )
-    });
+    let (clear, plane_warning) = clearance(&ws.id, &frame, &ws.secplane, top, sdis);
     let tool_no = match tools.iter().position(|t| *t == op.tool) {
         Some(i) => i as u32 + 1,
         None => {
@@ -225,8 +231,37 @@ fn resolve<'p>(
         clear,
         sdis,
         roughed_by,
-        plane_error,
+        plane_warning,
     })
+}
+
+/// The clearance height (absolute z) of a workingstep: its security plane
+/// read in the feature's `frame`, or the retract plane (`top + sdis`)
+/// when the security plane lies below it, with a W0904 warning naming the
+/// workingstep `ws`.
+pub fn clearance(
+    ws: &str,
+    frame: &Frame,
+    secplane: &Plane,
+    top: f64,
+    sdis: f64,
+) -> (f64, Option<Diagnostic>) {
+    let clear = frame.apply(secplane.position.location.xyz)[2];
+    let retract = top + sdis;
+    if clear >= retract - 1e-9 {
+        return (clear, None);
+    }
+    let r = |v: f64| (v * 1000.0).round() / 1000.0;
+    let d = Diagnostic::new(
+        Code::SecplaneBelowRetract,
+        format!(
+            "`{ws}`: the security plane (z {}) is below the operation's retract plane (z {}): rapids are made at the retract plane",
+            r(clear),
+            r(retract)
+        ),
+    )
+    .help("both planes are in the feature's frame (ISO 14649-10); raise the workingstep's security plane or lower the operation's retract_plane");
+    (retract, Some(d))
 }
 
 /// The bottom of a through feature whose depth plane is `$`: the stock's

@@ -245,8 +245,8 @@ pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings
         let Item::Step(s) = item else { continue };
         // Once per feature, however many workingsteps cut it.
         if named.iter().any(|f| std::ptr::eq(*f, s.feature)) {
-            if let Some(e) = &s.plane_error {
-                out.errors.push(e.clone());
+            if let Some(w) = &s.plane_warning {
+                out.warnings.push(w.clone());
             }
             continue;
         }
@@ -275,8 +275,8 @@ pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings
             ));
         }
         check_stock(project, s, base, &mut out);
-        if let Some(e) = &s.plane_error {
-            out.errors.push(e.clone());
+        if let Some(w) = &s.plane_warning {
+            out.warnings.push(w.clone());
         }
         if let Some(w) = super::chipload::check(s) {
             out.warnings.push(w);
