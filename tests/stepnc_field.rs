@@ -37,8 +37,8 @@ const REFUSED: &[(&str, &str, &str)] = &[
     ("sanssouci__STEP-NC2DifHOLES.p21", "E0900", "ROUND_HOLE with its_workpiece `$`: the workingstep is kept raw"),
     ("sanssouci__STEP-NC_File.p21", "E0900", "MULTISTEP_DRILLING with its technology `$`: the workingstep is kept raw"),
     ("sanssouci__STEP-NC_slot_File.p21", "E0900", "a workingstep whose tool is MILLING_CUTTING_TOOL($,$,...): kept raw"),
-    ("sanssouci__STEP-NC_pocket_File.p21", "E0900", "features whose axis is not the machine's Z (3-axis posts only)"),
-    ("sanssouci__testBoxy.p21", "E0900", "holes on the part's sides (axis not Z; 3-axis posts only)"),
+    ("sanssouci__STEP-NC_pocket_File.p21", "", "every placement's axis is +X (axis and ref_direction swapped?): E0900 where the target cannot tilt; where it can (840D, Heidenhain), the depth planes at +30/+50 are not below the tops and the pocket lies outside the block (E0908)"),
+    ("sanssouci__testBoxy.p21", "", "holes on the part's sides: E0900 where the target cannot tilt; where it can (840D, Heidenhain) the side holes post as 3+2 and the validator refuses the holes placed at z 100 facing up, the front holes at z 107..195 and the pockets whose profile repeats their placement (E0908)"),
 ];
 
 fn dir() -> Option<PathBuf> {
