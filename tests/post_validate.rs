@@ -131,3 +131,17 @@ fn a_drill_fed_70_mm_per_revolution_is_warned_about() {
         .expect("W0901");
     assert!(w.message.contains("70 mm per revolution"), "{}", w.message);
 }
+
+/// ISO 14649-111's BORING_TOOL (field files drill with one): the 840D
+/// tool data gets the boring bar's type 210, where it had no type code.
+#[test]
+fn a_boring_tool_gets_the_840d_boring_bar_type() {
+    let mut p = ex1();
+    for t in &mut p.tools {
+        if matches!(t.body.kind, ToolBodyKind::TwistDrill) {
+            t.body.kind = ToolBodyKind::Other("BORING_TOOL".into());
+        }
+    }
+    let posted = post(&p, "siemens840d").expect("posts");
+    assert!(posted.text.contains("$TC_DP1[2,1]=210 "), "{}", posted.text);
+}

@@ -30,7 +30,7 @@ const REFUSED: &[(&str, &str, &str)] = &[
     ("sanssouci__OneHoleOneSlot", "E0901", "the slot's MILLING_TECHNOLOGY gives no spindle speed"),
     ("sanssouci__OneHoleOneSlotIntegration", "E0901", "the slot's MILLING_TECHNOLOGY gives no spindle speed"),
     ("sanssouci__OneHoleOneSlotReaderTest.p21", "E0901", "the slot's MILLING_TECHNOLOGY gives no spindle speed"),
-    ("sanssouci__STEP-NC_2HolesFile.p21", "", "no spindle speed (E0901); the 840D refuses first on the hole cycle (E0900)"),
+    ("sanssouci__STEP-NC_2HolesFile.p21", "E0901", "the MILLING_TECHNOLOGY gives a feed only: no spindle speed (its BORING_TOOL is the 840D's boring bar, type 210)"),
     ("sanssouci__RanhuraPerfilUQuadrado.p21", "E0900", "a square U slot with sloped walls (angles non-zero): no cycle or path generator"),
     ("sanssouci__RanhuraPerfilVee.p21", "E0900", "a V slot: no cycle or path generator"),
     ("sanssouci__STEP-NC_Slot1_File.p21", "E0908", "a 120 mm slot across a 100 mm block (its profile's radii `$` now read)"),
