@@ -34,7 +34,7 @@ const REFUSED: &[(&str, &str, &str)] = &[
     ("sanssouci__RanhuraPerfilUQuadrado.p21", "E0900", "a square U slot with sloped walls (angles non-zero): no cycle or path generator"),
     ("sanssouci__RanhuraPerfilVee.p21", "E0900", "a V slot: no cycle or path generator"),
     ("sanssouci__STEP-NC_Slot1_File.p21", "E0908", "a 120 mm slot across a 100 mm block (its profile's radii `$` now read)"),
-    ("sanssouci__STEP-NC2DifHOLES.p21", "E0900", "ROUND_HOLE with its_workpiece `$`: the workingstep is kept raw"),
+    ("sanssouci__STEP-NC2DifHOLES.p21", "E0901", "the DRILLING technologies give a feed only: no spindle speed (the holes' its_workpiece `$` is read as the project's one workpiece)"),
     ("sanssouci__STEP-NC_File.p21", "E0900", "MULTISTEP_DRILLING with its technology `$`: the workingstep is kept raw"),
     ("sanssouci__STEP-NC_slot_File.p21", "E0900", "a workingstep whose tool is MILLING_CUTTING_TOOL($,$,...): kept raw"),
     ("sanssouci__STEP-NC_pocket_File.p21", "", "every placement's axis is +X (axis and ref_direction swapped?): E0900 where the target cannot tilt; where it can (840D, Heidenhain), the depth planes at +30/+50 are not below the tops and the pocket lies outside the block (E0908)"),
