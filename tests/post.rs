@@ -64,10 +64,13 @@ fn check_clean(path: &Path, dialect: &str) -> String {
 fn siemens_cycles_carry_the_features() {
     let p = posted("siemens840d");
     let l = lines(&p.text);
-    // Face: RTP 30, RFP 5 (face top), SDIS 10 (retract plane), DP 0,
-    // corner (0,0), 100 x 120, MID 2.5, MIDA 18*(1-0.05), finishing
-    // allowance 0, F 2400, VARI 41 (roughing mode, 2nd axis alternating).
-    assert!(l.contains(&"CYCLE71(30,5,10,0,0,0,100,120,0,2.5,17.1,9,0,2400,41,0.9)"));
+    // Face: RTP 35 (the shared security plane at z 30 in the face's frame,
+    // whose top is at z 5: ISO 14649-10 gives a workingstep's security
+    // plane in its feature's frame), RFP 5 (face top), SDIS 10 (retract
+    // plane), DP 0, corner (0,0), 100 x 120, MID 2.5, MIDA 18*(1-0.05),
+    // finishing allowance 0, F 2400, VARI 41 (roughing mode, 2nd axis
+    // alternating).
+    assert!(l.contains(&"CYCLE71(35,5,10,0,0,0,100,120,0,2.5,17.1,9,0,2400,41,0.9)"));
     assert!(l.contains(&"MCALL CYCLE81(30,0,10,-36.109,)"));
     assert!(l.contains(&"MCALL CYCLE85(30,0,10,-30,,0,1800,1800)"));
     // Rough: LENG 80 WID 50 CRAD 10 at (70,70), long axis along Y (90),

@@ -95,9 +95,11 @@ fn ex1_face_is_cycle_232_and_raises_back() {
     let text = tnc(&fixture::ex1());
     let l = lines(&text);
     // The face 100 x 120 from (0, 0), surface 5 down to 0, infeed 2.5,
-    // stepover 17.1 = 1.9 x the tool radius 9, meander.
+    // stepover 17.1 = 1.9 x the tool radius 9, meander; 2nd set-up
+    // clearance 30 above the face's top (the security plane at z 30 is in
+    // the face's frame, ISO 14649-10).
     assert!(l.contains(
-        &"CYCL DEF 232 FACE MILLING Q389=0 Q225=0 Q226=0 Q227=5 Q386=0 Q218=100 Q219=120 Q202=2.5 Q369=0 Q370=1.9 Q207=2400 Q385=2400 Q253=2400 Q200=10 Q357=9 Q204=25"
+        &"CYCL DEF 232 FACE MILLING Q389=0 Q225=0 Q226=0 Q227=5 Q386=0 Q218=100 Q219=120 Q202=2.5 Q369=0 Q370=1.9 Q207=2400 Q385=2400 Q253=2400 Q200=10 Q357=9 Q204=30"
     ));
     let at = l
         .iter()

@@ -131,3 +131,41 @@ fn a_drill_fed_70_mm_per_revolution_is_warned_about() {
         .expect("W0901");
     assert!(w.message.contains("70 mm per revolution"), "{}", w.message);
 }
+
+/// ISO 14649-111's BORING_TOOL (field files drill with one): the 840D
+/// tool data gets the boring bar's type 210, where it had no type code.
+#[test]
+fn a_boring_tool_gets_the_840d_boring_bar_type() {
+    let mut p = ex1();
+    for t in &mut p.tools {
+        if matches!(t.body.kind, ToolBodyKind::TwistDrill) {
+            t.body.kind = ToolBodyKind::Other("BORING_TOOL".into());
+        }
+    }
+    let posted = post(&p, "siemens840d").expect("posts");
+    assert!(posted.text.contains("$TC_DP1[2,1]=210 "), "{}", posted.text);
+}
+
+/// A feature whose its_workpiece is `$` (mandatory; some generators
+/// leave it out) in a project of one workpiece is read as on that one,
+/// with the W0803 warning saying so, and posts.
+#[test]
+fn a_feature_without_its_workpiece_is_on_the_projects_only_one() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/stepnc/planes.stp");
+    let text = std::fs::read_to_string(path)
+        .unwrap()
+        .replace("#40=ROUND_HOLE('HOLE A',#10,", "#40=ROUND_HOLE('HOLE A',$,");
+    let mut map = cncc::source::SourceMap::new();
+    let id = map.add("no_workpiece.stp", text.clone());
+    let r = cncc::stepnc::read_text(&text, id);
+    assert!(r.diagnostics.iter().all(|d| !d.is_error()), "{:?}", r.diagnostics);
+    let w = r
+        .diagnostics
+        .iter()
+        .find(|d| d.message == "ROUND_HOLE.its_workpiece is mandatory but `$`")
+        .expect("W0803");
+    assert!(w.help.as_deref().unwrap_or("").contains("the project's workpiece"));
+    let p = r.project.expect("a model");
+    assert_eq!(p.features[0].workpiece, WorkpieceId(0));
+    post(&p, "linuxcnc").expect("posts");
+}

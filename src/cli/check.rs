@@ -222,8 +222,21 @@ fn check_file(
             }
         };
         drop(it);
-        if let Some(s) = sim.take() {
-            let mut d = crate::sim::report::safety_diagnostics(&s, stock_from);
+        if let Some(mut s) = sim.take() {
+            // A tilt the run does not make (W0518) moves the tool where
+            // the run does not: the stock is not checked after it.
+            let tilt = run
+                .iter()
+                .filter(|d| d.code == Code::KinematicsNotRun)
+                .filter_map(Diagnostic::span)
+                .min_by_key(|s| s.start);
+            let mut d = Vec::new();
+            if let Some(at) = tilt {
+                if crate::sim::report::stop_at_tilt(&mut s, at) {
+                    d.push(crate::sim::report::tilt_stopped_diagnostic(at));
+                }
+            }
+            d.extend(crate::sim::report::safety_diagnostics(&s, stock_from));
             // Where the checks stopped is said when the stock was asked
             // for; a program's own blank is checked as far as it can be.
             if stock_from != crate::sim::report::StockFrom::Option {

@@ -198,6 +198,12 @@ pub enum Capability {
     /// (LinuxCNC's order of execution); elsewhere a port moves the move to
     /// a block of its own after the dwell.
     DwellWithMove,
+    /// The control can tilt its working plane (3+2 machining: a frame
+    /// whose Z is a feature's axis, the rotary axes or head turning the
+    /// tool onto it): Siemens CYCLE800, Heidenhain PLANE SPATIAL. A post
+    /// machines a feature whose axis is not the machine's Z in such a
+    /// plane; without it the feature is a located refusal.
+    TiltedWorkingPlane,
     /// An N word may have a fraction, which is dropped: `N4567.789` is N4567
     /// (LinuxCNC, checked with rs274 2.9); elsewhere it is an error.
     FractionalSequenceNumbers,
@@ -342,6 +348,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("bare-motion-code-moves", Capability::BareMotionCodeMoves),
     ("operator-messages", Capability::OperatorMessages),
     ("dwell-with-move", Capability::DwellWithMove),
+    ("tilted-working-plane", Capability::TiltedWorkingPlane),
 ];
 
 impl Capability {

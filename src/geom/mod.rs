@@ -108,6 +108,43 @@ impl Transform {
             .then(&Transform::rot_about(0, angles[0]))
     }
 
+    /// Rotations about X, then Y', then Z'' (each about the axes the
+    /// previous ones turned; `angles` = [x, y, z] degrees): the reverse
+    /// order of [`Self::rot_xyz`].
+    pub fn rot_xyz_intrinsic(angles: [f64; 3]) -> Self {
+        Transform::rot_about(0, angles[0])
+            .then(&Transform::rot_about(1, angles[1]))
+            .then(&Transform::rot_about(2, angles[2]))
+    }
+
+    /// The angles [x, y, z] (degrees) that [`Self::rot_xyz`] turns by to
+    /// give this map's rotation (about Z, then Y', then X''; the same as
+    /// about the fixed X, then Y, then Z). `None` when the linear part is
+    /// not a rotation. At a quarter turn about Y (gimbal lock) the
+    /// rotation about X is 0 [nalgebra's choice].
+    pub fn angles_zyx(&self) -> Option<[f64; 3]> {
+        let r = self.rotation()?;
+        let (x, y, z) = r.euler_angles();
+        Some([x, y, z].map(|a| clean_deg(a.to_degrees())))
+    }
+
+    /// The angles [x, y, z] (degrees) that [`Self::rot_xyz_intrinsic`]
+    /// turns by to give this map's rotation (about X, then Y', then Z'').
+    pub fn angles_xyz_intrinsic(&self) -> Option<[f64; 3]> {
+        // m = Rx(a) Ry(b) Rz(c) exactly when mᵀ = Rz(-c) Ry(-b) Rx(-a).
+        let r = self.rotation()?.inverse();
+        let (x, y, z) = r.euler_angles();
+        Some([-x, -y, -z].map(|a| clean_deg(a.to_degrees())))
+    }
+
+    /// The linear part as a rotation, when it is one (orthonormal, no
+    /// mirror).
+    fn rotation(&self) -> Option<nalgebra::Rotation3<f64>> {
+        let m = self.m;
+        let ortho = (m.transpose() * m - Matrix3::identity()).norm() < 1e-9;
+        (ortho && m.determinant() > 0.0).then(|| nalgebra::Rotation3::from_matrix_unchecked(m))
+    }
+
     /// Scale factors per axis.
     pub fn scale(f: [f64; 3]) -> Self {
         Transform::linear(Matrix3::from_diagonal(&V3::from(f)))
@@ -227,6 +264,17 @@ pub fn turn_about(p: [f64; 2], centre: [f64; 2], deg: f64) -> [f64; 2] {
     [q.x + centre[0], q.y + centre[1]]
 }
 
+/// An angle in degrees with rounding noise removed (nine places, and no
+/// negative zero).
+fn clean_deg(a: f64) -> f64 {
+    let r = (a * 1e9).round() / 1e9;
+    if r == 0.0 {
+        0.0
+    } else {
+        r
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -245,6 +293,36 @@ mod tests {
         assert!(close(f.apply(V3::new(1.0, 0.0, 0.0)), [10.0, 6.0, 0.0]));
         let back = f.unapply(V3::new(10.0, 6.0, 0.0)).unwrap();
         assert!(close(back, [1.0, 0.0, 0.0]));
+    }
+
+    /// The frames of a box's faces (axis, x axis), as STEP-NC feature
+    /// placements give them, and a skew one: both angle sets rebuild the
+    /// rotation.
+    #[test]
+    fn tilt_angles_rebuild_the_rotation_of_every_face_frame() {
+        let frames: [([f64; 3], [f64; 3]); 7] = [
+            ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
+            ([-1.0, 0.0, 0.0], [0.0, -1.0, 0.0]),
+            ([0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]),
+            ([0.0, -1.0, 0.0], [1.0, 0.0, 0.0]),
+            ([0.0, 0.0, -1.0], [1.0, 0.0, 0.0]),
+            ([0.0, 0.0, 1.0], [0.0, 1.0, 0.0]),
+            ([0.6, 0.0, 0.8], [0.8, 0.0, -0.6]),
+        ];
+        for (z, x) in frames {
+            let (z, x) = (V3::from(z), V3::from(x));
+            let f = Transform::from_axes(V3::zeros(), x, z.cross(&x), z);
+            let a = f.angles_zyx().unwrap();
+            let g = Transform::rot_xyz(a);
+            assert!((g.m - f.m).norm() < 1e-9, "zyx {a:?} for z {z:?}");
+            let b = f.angles_xyz_intrinsic().unwrap();
+            let h = Transform::rot_xyz_intrinsic(b);
+            assert!((h.m - f.m).norm() < 1e-9, "xyz {b:?} for z {z:?}");
+        }
+        // A hole drilled along -X from the right-hand face: a quarter turn.
+        let right = Transform::from_axes(V3::zeros(), V3::y(), V3::z(), V3::x());
+        assert_eq!(right.angles_xyz_intrinsic().unwrap(), [90.0, 90.0, 0.0]);
+        assert!(Transform::mirror([true, false, false]).angles_zyx().is_none());
     }
 
     #[test]

@@ -57,7 +57,9 @@ fn same_hole_op(a: &Step<'_>, b: &Step<'_>) -> bool {
         op
     };
     let (fa, fb) = (&a.feature.kind, &b.feature.kind);
-    a.tool_no == b.tool_no
+    a.tilt.is_none()
+        && b.tilt.is_none()
+        && a.tool_no == b.tool_no
         && blank(a) == blank(b)
         && fa == fb
         && (a.top - b.top).abs() < EPS
@@ -85,7 +87,9 @@ fn same_slot_op(a: &Step<'_>, b: &Step<'_>) -> bool {
         op.id.clear();
         op
     };
-    size(a).is_some()
+    a.tilt.is_none()
+        && b.tilt.is_none()
+        && size(a).is_some()
         && size(a) == size(b)
         && a.tool_no == b.tool_no
         && blank(a) == blank(b)

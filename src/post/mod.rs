@@ -132,7 +132,8 @@ pub fn post(project: &Project, target: &DialectSpec) -> Result<Posted, Vec<Diagn
         Some(Err(e)) => return Err(vec![PostError::template(e).into_diagnostic()]),
         Some(Ok(p)) => p,
     };
-    let items = plan::plan(project).map_err(into_diags)?;
+    let can_tilt = target.has(crate::dialect::Capability::TiltedWorkingPlane);
+    let items = plan::plan_for(project, can_tilt).map_err(into_diags)?;
     let found = validate::validate(project, &items, &plan::setup_frame(project));
     if !found.errors.is_empty() {
         let mut d = into_diags(found.errors);

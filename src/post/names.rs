@@ -20,6 +20,9 @@ pub fn siemens_tool_type(k: &ToolBodyKind) -> Option<u32> {
         ToolBodyKind::Counterbore => 231,
         ToolBodyKind::Tap => 240,
         ToolBodyKind::Reamer | ToolBodyKind::TaperedReamer => 250,
+        // ISO 14649-111 boring_tool: the 840D's boring bar (type 210
+        // [K: tool types 200-299 drills; 210 boring bar]).
+        ToolBodyKind::Other(e) if e.eq_ignore_ascii_case("BORING_TOOL") => 210,
         ToolBodyKind::Other(_) => return None,
     })
 }

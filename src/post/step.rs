@@ -202,6 +202,9 @@ fn write_step_body(
         .as_deref()
         .and_then(super::toolpaths::first_point)
         .unwrap_or(s.frame.origin);
+    if let Some(t) = &s.tilt {
+        tilt(w, t)?;
+    }
     w.emit(
         "approach.j2",
         Vals::new()
@@ -222,7 +225,8 @@ fn write_step_body(
     coolant(w, &s.op.machine_functions)?;
     if let Some(moves) = &explicit {
         super::toolpaths::write(w, moves, [at[0], at[1], s.clear])?;
-        return w.emit("retract.j2", Vals::new().set("z", w.fmt.len(s.clear)));
+        w.emit("retract.j2", Vals::new().set("z", w.fmt.len(s.clear)))?;
+        return untilt(w, s);
     }
     match &s.feature.kind {
         FeatureKind::RoundHole { .. } if super::plan::is_milling(s.op) => milling::write(w, steps)?,
@@ -242,7 +246,48 @@ fn write_step_body(
             ))
         }
     }
-    w.emit("retract.j2", Vals::new().set("z", w.fmt.len(s.clear)))
+    w.emit("retract.j2", Vals::new().set("z", w.fmt.len(s.clear)))?;
+    untilt(w, s)
+}
+
+/// Tilts the working plane onto the feature's frame `t` (3+2): origin
+/// `x0..z0` in workpiece coordinates and the rotation as the angles each
+/// target's template wants: `xyz_*` about X, then Y', then Z''
+/// (Siemens CYCLE800 axis by axis, mode 57), `zyx_*` about the fixed X,
+/// then Y, then Z (Heidenhain PLANE SPATIAL SPA SPB SPC).
+fn tilt(w: &mut Writer<'_>, t: &super::frame::Frame) -> Result<(), PostError> {
+    let tr = t.transform();
+    let (Some(xyz), Some(zyx)) = (tr.angles_xyz_intrinsic(), tr.angles_zyx()) else {
+        return Err(PostError::template(
+            "a tilted feature frame that is not a rotation".into(),
+        ));
+    };
+    if !w.post.has("tilt.j2") || !w.post.has("untilt.j2") {
+        return Err(PostError::template(format!(
+            "{} declares `tilted-working-plane` but its post has no tilt.j2/untilt.j2",
+            w.target.name
+        )));
+    }
+    let a = |v: f64| w.fmt.angle(v);
+    let vals = Vals::new()
+        .set("x0", w.fmt.len(t.origin[0]))
+        .set("y0", w.fmt.len(t.origin[1]))
+        .set("z0", w.fmt.len(t.origin[2]))
+        .set_derived("xyz_a", a(xyz[0]))
+        .set_derived("xyz_b", a(xyz[1]))
+        .set_derived("xyz_c", a(xyz[2]))
+        .set_derived("zyx_a", a(zyx[0]))
+        .set_derived("zyx_b", a(zyx[1]))
+        .set_derived("zyx_c", a(zyx[2]));
+    w.emit("tilt.j2", vals)
+}
+
+/// Back to the untilted working plane after a tilted workingstep.
+fn untilt(w: &mut Writer<'_>, s: &Step<'_>) -> Result<(), PostError> {
+    match s.tilt {
+        Some(_) => w.emit("untilt.j2", Vals::new()),
+        None => Ok(()),
+    }
 }
 
 fn coolant(w: &mut Writer<'_>, mf: &MachineFunctions) -> Result<(), PostError> {

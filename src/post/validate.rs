@@ -54,6 +54,17 @@ impl Aabb {
         })
     }
 
+    /// The eight corners.
+    pub fn corners(&self) -> [Point3<f64>; 8] {
+        std::array::from_fn(|k| {
+            Point3::new(
+                if k & 1 == 0 { self.min.x } else { self.max.x },
+                if k & 2 == 0 { self.min.y } else { self.max.y },
+                if k & 4 == 0 { self.min.z } else { self.max.z },
+            )
+        })
+    }
+
     pub fn describe(&self) -> String {
         let r = |v: f64| (v * 1000.0).round() / 1000.0;
         format!(
@@ -99,11 +110,12 @@ pub fn feature_box(s: &Step<'_>) -> Option<Aabb> {
         Some(p) => s.frame.then(&Frame::from_placement(p)),
         None => s.frame,
     };
+    // In the working plane, then (tilted) in workpiece coordinates.
     let pts = outline.into_iter().flat_map(|[x, y]| {
         [s.top, s.bottom].map(|z| {
             let mut p = frame.apply([x, y, 0.0]);
             p[2] = z;
-            Point3::from(p)
+            Point3::from(s.tilt.map_or(p, |t| t.apply(p)))
         })
     });
     Aabb::of(pts)
@@ -245,8 +257,8 @@ pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings
         let Item::Step(s) = item else { continue };
         // Once per feature, however many workingsteps cut it.
         if named.iter().any(|f| std::ptr::eq(*f, s.feature)) {
-            if let Some(e) = &s.plane_error {
-                out.errors.push(e.clone());
+            if let Some(w) = &s.plane_warning {
+                out.warnings.push(w.clone());
             }
             continue;
         }
@@ -275,8 +287,8 @@ pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings
             ));
         }
         check_stock(project, s, base, &mut out);
-        if let Some(e) = &s.plane_error {
-            out.errors.push(e.clone());
+        if let Some(w) = &s.plane_warning {
+            out.warnings.push(w.clone());
         }
         if let Some(w) = super::chipload::check(s) {
             out.warnings.push(w);

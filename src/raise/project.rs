@@ -90,16 +90,30 @@ pub fn skeleton(name: &str, stock: Option<&Stock>) -> Project {
 }
 
 /// Sets the security plane of the setup and of every workingstep and
-/// rapid movement (one plane for the whole workplan, as in ISO 14649-11
-/// Example 1).
+/// rapid movement at absolute `z` (one plane for the whole workplan, as in
+/// ISO 14649-11 Example 1). ISO 14649-10 gives a workingstep's plane in
+/// its feature's frame, so each workingstep's plane is written at `z`
+/// less its feature's height (raised features are vertical); the setup's
+/// is in setup coordinates and a rapid movement's in workpiece
+/// coordinates (both identity here).
 pub fn set_security_plane(project: &mut Project, z: f64) {
     let plane = plane_at("SECURITY PLANE", z);
     if let Some(setup) = project.main_workplan.setup.as_mut() {
         setup.secplane = plane.clone();
     }
+    let features = &project.features;
     for e in &mut project.main_workplan.elements {
         match e {
-            Executable::Workingstep(w) => w.secplane = plane.clone(),
+            Executable::Workingstep(w) => {
+                let top = features
+                    .get(w.feature.index())
+                    .map_or(0.0, |f| f.placement.location.xyz[2]);
+                w.secplane = if top == 0.0 {
+                    plane.clone()
+                } else {
+                    plane_at("SECURITY PLANE", z - top)
+                };
+            }
             Executable::Rapid(r) => r.secplane = plane.clone(),
             Executable::Workplan(_)
             | Executable::ProgramStop { .. }

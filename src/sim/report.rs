@@ -234,6 +234,28 @@ pub fn stopped_diagnostic(span: crate::span::Span, tool: i64) -> Diagnostic {
     .help("give the tool's size with --tool-table")
 }
 
+/// Drops the rapid hits and plunges after `at` (in its file), where the
+/// run met a tilted working plane it does not make (W0518): positions
+/// after it are the untilted ones, not the machine's, so a hit there is
+/// no finding. True when the checks stop there (the stock was checked
+/// that far).
+pub fn stop_at_tilt(sim: &mut Simulation, at: crate::span::Span) -> bool {
+    let after = |s: &crate::span::Span| s.file == at.file && s.start > at.start;
+    sim.rapid_hits.retain(|h| !after(&h.span));
+    sim.plunges.retain(|p| !after(&p.span));
+    sim.probe_stopped.is_none()
+}
+
+/// The note where the checks against the stock stopped at a tilt (W1003).
+pub fn tilt_stopped_diagnostic(span: crate::span::Span) -> Diagnostic {
+    Diagnostic::new(
+        Code::MaterialCheckStopped,
+        "the working plane is tilted here and the 3-axis run does not tilt it: rapids and plunges after it are not checked against the stock",
+    )
+    .primary(span, "tilted plane, not made by the run")
+    .help("the positions the run shows after the tilt are the untilted ones (see `cncc explain W0518`)")
+}
+
 /// Every diagnostic of the checks against the stock, in program order
 /// of kind: rapid hits, plunges, where the checks stopped.
 pub fn safety_diagnostics(sim: &Simulation, stock_from: StockFrom) -> Vec<Diagnostic> {

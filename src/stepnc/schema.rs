@@ -229,6 +229,9 @@ fn check_param(file: &P21File, def: &EntityDef, a: &Attr, p: &Param, diags: &mut
                 Kind::Str => "read as the empty string",
                 Kind::Bool => "read as .F. (not asked for); give the attribute a value",
                 Kind::Enum if a.name == "feedrate_reference" => "read as .TCP.",
+                _ if a.name == "its_workpiece" => {
+                    "read as the project's workpiece when the project has only one (otherwise the instance is kept as written)"
+                }
                 _ => "the instance is kept as written; give the attribute a value",
             };
             diags.push(

@@ -246,8 +246,13 @@ impl<'f> Reader<'f> {
             return None;
         };
         let operation = self.operation(op_inst)?;
-        let secplane = self.secplane(ws, operation);
         let feature = self.feature(ws, operation);
+        // AP238 gives the plane in workpiece coordinates; the ARM model
+        // holds it in the feature's frame (ISO 14649-10), which the
+        // feature's placement (a translation) shifts.
+        let mut secplane = self.secplane(ws, operation);
+        let origin = self.p.features[feature.index()].placement.location.xyz;
+        secplane.position.location.xyz[2] -= origin[2];
         Some(MachiningWorkingstep {
             id,
             secplane,

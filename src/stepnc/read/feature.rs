@@ -68,8 +68,15 @@ impl<'f> Rd<'f> {
 
     fn feature_body(&mut self, i: &'f Instance) -> R<Feature> {
         let id = string(arg(i, 0)?)?;
-        let w = self.inst(arg(i, 1)?)?;
-        let workpiece = self.workpiece(w)?;
+        let workpiece = match arg(i, 1)?.value {
+            // Mandatory, but `$` in some generators' files: the project's
+            // one workpiece is the only one it can mean (W0803 says so).
+            Value::Null => self.sole_workpiece(arg(i, 1)?)?,
+            _ => {
+                let w = self.inst(arg(i, 1)?)?;
+                self.workpiece(w)?
+            }
+        };
         let mut operations = Vec::new();
         for o in self.insts(arg(i, 2)?)? {
             operations.push(self.operation(o)?);
@@ -89,6 +96,28 @@ impl<'f> Rd<'f> {
             depth,
             kind,
         })
+    }
+
+    /// The workpiece of a feature whose its_workpiece is `$` (`p`): the
+    /// PROJECT's one workpiece, or the `$` error when it has several or
+    /// none.
+    fn sole_workpiece(&mut self, p: &'f Param) -> R<WorkpieceId> {
+        let file = self.file;
+        let listed = file
+            .instances
+            .iter()
+            .find(|i| i.entity.eq_ignore_ascii_case("PROJECT"))
+            .and_then(|proj| proj.params.get(2))
+            .and_then(|l| list(l).ok())
+            .filter(|l| l.len() == 1)
+            .map(|l| &l[0]);
+        match listed {
+            Some(q) => {
+                let w = self.inst(q)?;
+                self.workpiece(w)
+            }
+            None => self.inst(p).map(|_| WorkpieceId(0)),
+        }
     }
 
     fn feature_kind(&mut self, i: &'f Instance) -> R<FeatureKind> {
