@@ -91,17 +91,7 @@ fn the_streamed_port_is_the_whole_port_on_the_test_programs() {
             &mut streamed,
         );
     }
-    assert!(diffs.is_empty(), "{}", diffs.join("\n"));
-    eprintln!(
-        "{} ports streamed, {} blocks in chunks",
-        streamed.0, streamed.1
-    );
-    assert!(streamed.0 > 50, "only {} ports were streamed", streamed.0);
-    assert!(
-        streamed.1 > 200,
-        "only {} blocks were ported in chunks",
-        streamed.1
-    );
+    judge(&diffs, streamed, (50, 200));
 }
 
 #[test]
@@ -115,22 +105,7 @@ fn the_streamed_port_is_the_whole_port_on_real_programs() {
             check_tree(&shared.join(top), d, &mut diffs, &mut streamed);
         }
     }
-    assert!(
-        diffs.is_empty(),
-        "{} differ:\n{}",
-        diffs.len(),
-        diffs.join("\n")
-    );
-    eprintln!(
-        "{} ports streamed, {} blocks in chunks",
-        streamed.0, streamed.1
-    );
-    assert!(streamed.0 > 100, "only {} ports were streamed", streamed.0);
-    assert!(
-        streamed.1 > 10_000,
-        "only {} blocks were ported in chunks",
-        streamed.1
-    );
+    judge(&diffs, streamed, (100, 10_000));
 }
 
 /// A CAM-like program of about 1.5 MB: set-up, long runs of modal moves
@@ -220,7 +195,30 @@ fn the_streamed_port_is_the_whole_port_on_large_real_programs() {
             .unwrap_or("linuxcnc");
         diffs.extend(both_ways_in(from, &f, Chunking::default(), &mut streamed));
     }
-    eprintln!("{} ports streamed, {} blocks in chunks", streamed.0, streamed.1);
-    assert!(diffs.is_empty(), "{} differ:\n{}", diffs.len(), diffs.join("\n"));
-    assert!(streamed.1 > 100_000, "only {} blocks were ported in chunks", streamed.1);
+    judge(&diffs, streamed, (4, 100_000));
+}
+
+/// No differences, and enough streamed (ports, blocks in chunks) that
+/// the comparison means something.
+fn judge(diffs: &[String], streamed: (usize, usize), least: (usize, usize)) {
+    eprintln!(
+        "{} ports streamed, {} blocks in chunks",
+        streamed.0, streamed.1
+    );
+    assert!(
+        diffs.is_empty(),
+        "{} differ:\n{}",
+        diffs.len(),
+        diffs.join("\n")
+    );
+    assert!(
+        streamed.0 >= least.0,
+        "only {} ports were streamed",
+        streamed.0
+    );
+    assert!(
+        streamed.1 >= least.1,
+        "only {} blocks were ported in chunks",
+        streamed.1
+    );
 }

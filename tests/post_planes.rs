@@ -11,7 +11,6 @@
 mod common;
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 const TARGETS: &[&str] = &["fanuc", "haas", "linuxcnc", "siemens840d", "heidenhain"];
 
@@ -37,21 +36,9 @@ fn post_and_check(plan: &Path, target: &str) -> (String, String) {
     let c = common::cncc(&["check", "--dialect", target, out.to_str().unwrap()]);
     assert_eq!(c.status.code(), Some(0), "{target}: {}", common::stderr(&c));
     if target == "linuxcnc" {
-        runs_in_rs274(&out);
+        common::runs_in_rs274(&out);
     }
     (std::fs::read_to_string(&out).unwrap(), err)
-}
-
-fn runs_in_rs274(path: &Path) {
-    let oracle = common::root().join("../shared/tools/rs274-canon");
-    if !oracle.exists() || !common::rs274_present() {
-        eprintln!("note: rs274 or ../shared/tools/rs274-canon is absent; not running LinuxCNC");
-        return;
-    }
-    let ngc = path.with_extension("ngc");
-    std::fs::copy(path, &ngc).unwrap();
-    let o = Command::new(&oracle).arg(&ngc).output().unwrap();
-    assert_eq!(o.status.code(), Some(0), "rs274: {}", String::from_utf8_lossy(&o.stderr));
 }
 
 #[test]

@@ -44,9 +44,19 @@ fn siemens_swivels_with_cycle800_about_each_feature() {
     // The right-hand hole: X then Y' by 90 puts Z along +X, X along +Y;
     // the front pocket: X by 90 puts Z along -Y. The reference point is
     // the feature's origin; each tilted step swivels back at its end.
-    assert!(text.contains("CYCLE800(1,\"TC1\",0,57,100,40,25,90,90,0,0,0,0,-1,100,1)"), "{text}");
-    assert!(text.contains("CYCLE800(1,\"TC1\",0,57,50,0,25,90,0,0,0,0,0,-1,100,1)"), "{text}");
-    assert_eq!(text.matches("CYCLE800(1,\"TC1\",0,57,0,0,0,0,0,0").count(), 2, "{text}");
+    assert!(
+        text.contains("CYCLE800(1,\"TC1\",0,57,100,40,25,90,90,0,0,0,0,-1,100,1)"),
+        "{text}"
+    );
+    assert!(
+        text.contains("CYCLE800(1,\"TC1\",0,57,50,0,25,90,0,0,0,0,0,-1,100,1)"),
+        "{text}"
+    );
+    assert_eq!(
+        text.matches("CYCLE800(1,\"TC1\",0,57,0,0,0,0,0,0").count(),
+        2,
+        "{text}"
+    );
     // In the tilted plane the hole is at the origin, its top at Z0, 20
     // deep, the security plane 20 out and the retract plane 5.
     assert!(text.contains("MCALL CYCLE81(20,0,5,-20,)"), "{text}");
@@ -62,8 +72,15 @@ fn heidenhain_shifts_the_datum_and_tilts_with_plane_spatial() {
     // Spatial angles about the fixed X, Y, Z: the right-hand hole is A 90
     // then C 90; the front pocket A 90.
     assert!(text.contains("CYCL DEF 7.1 X100\nCYCL DEF 7.2 Y40\nCYCL DEF 7.3 Z25\nPLANE SPATIAL SPA90 SPB0 SPC90 TURN MB MAX FMAX"), "{text}");
-    assert!(text.contains("PLANE SPATIAL SPA90 SPB0 SPC0 TURN MB MAX FMAX"), "{text}");
-    assert_eq!(text.matches("PLANE RESET TURN MB MAX FMAX").count(), 2, "{text}");
+    assert!(
+        text.contains("PLANE SPATIAL SPA90 SPB0 SPC0 TURN MB MAX FMAX"),
+        "{text}"
+    );
+    assert_eq!(
+        text.matches("PLANE RESET TURN MB MAX FMAX").count(),
+        2,
+        "{text}"
+    );
     assert!(text.contains("Q203=0 Q204=20"), "{text}");
 }
 
@@ -74,7 +91,10 @@ fn targets_that_cannot_tilt_refuse_each_tilted_feature_at_its_line() {
         assert!(text.is_none(), "{t} posted a tilted feature");
         assert_eq!(err.matches("error[E0900").count(), 2, "{t}: {err}");
         assert!(err.contains("`HOLE RIGHT`: a feature whose axis (1, 0, 0) is not the machine's Z axis, on a target that cannot tilt its working plane"), "{t}: {err}");
-        assert!(err.contains("tilted.stp:29:1") && err.contains("tilted.stp:30:1"), "{t}: {err}");
+        assert!(
+            err.contains("tilted.stp:29:1") && err.contains("tilted.stp:30:1"),
+            "{t}: {err}"
+        );
         assert!(err.contains("`tilted-working-plane`"), "{t}: {err}");
     }
 }

@@ -158,13 +158,21 @@ fn a_feature_without_its_workpiece_is_on_the_projects_only_one() {
     let mut map = cncc::source::SourceMap::new();
     let id = map.add("no_workpiece.stp", text.clone());
     let r = cncc::stepnc::read_text(&text, id);
-    assert!(r.diagnostics.iter().all(|d| !d.is_error()), "{:?}", r.diagnostics);
+    assert!(
+        r.diagnostics.iter().all(|d| !d.is_error()),
+        "{:?}",
+        r.diagnostics
+    );
     let w = r
         .diagnostics
         .iter()
         .find(|d| d.message == "ROUND_HOLE.its_workpiece is mandatory but `$`")
         .expect("W0803");
-    assert!(w.help.as_deref().unwrap_or("").contains("the project's workpiece"));
+    assert!(w
+        .help
+        .as_deref()
+        .unwrap_or("")
+        .contains("the project's workpiece"));
     let p = r.project.expect("a model");
     assert_eq!(p.features[0].workpiece, WorkpieceId(0));
     post(&p, "linuxcnc").expect("posts");

@@ -420,30 +420,51 @@ pub const MEANINGS: &[(&str, Meaning)] = &[
     ("spline.nurbs-point", M::Machine(F::Spline(2))),
     ("spline.nurbs-end", M::Machine(F::Spline(3))),
     ("cycle.lathe-thread", M::Machine(F::LatheThread)),
-    ("cycle.lathe-finish", M::Machine(F::LatheProfile(LatheProfile::Finish))),
+    (
+        "cycle.lathe-finish",
+        M::Machine(F::LatheProfile(LatheProfile::Finish)),
+    ),
     (
         "cycle.lathe-rough",
-        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: false, part: 0 })),
+        M::Machine(F::LatheProfile(LatheProfile::Rough {
+            facing: false,
+            part: 0,
+        })),
     ),
     (
         "cycle.lathe-rough-no-pockets",
-        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: false, part: 1 })),
+        M::Machine(F::LatheProfile(LatheProfile::Rough {
+            facing: false,
+            part: 1,
+        })),
     ),
     (
         "cycle.lathe-rough-pockets",
-        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: false, part: 2 })),
+        M::Machine(F::LatheProfile(LatheProfile::Rough {
+            facing: false,
+            part: 2,
+        })),
     ),
     (
         "cycle.lathe-face",
-        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: true, part: 0 })),
+        M::Machine(F::LatheProfile(LatheProfile::Rough {
+            facing: true,
+            part: 0,
+        })),
     ),
     (
         "cycle.lathe-face-no-pockets",
-        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: true, part: 1 })),
+        M::Machine(F::LatheProfile(LatheProfile::Rough {
+            facing: true,
+            part: 1,
+        })),
     ),
     (
         "cycle.lathe-face-pockets",
-        M::Machine(F::LatheProfile(LatheProfile::Rough { facing: true, part: 2 })),
+        M::Machine(F::LatheProfile(LatheProfile::Rough {
+            facing: true,
+            part: 2,
+        })),
     ),
     (
         "pocket.circular-cw",

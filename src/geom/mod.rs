@@ -322,7 +322,9 @@ mod tests {
         // A hole drilled along -X from the right-hand face: a quarter turn.
         let right = Transform::from_axes(V3::zeros(), V3::y(), V3::z(), V3::x());
         assert_eq!(right.angles_xyz_intrinsic().unwrap(), [90.0, 90.0, 0.0]);
-        assert!(Transform::mirror([true, false, false]).angles_zyx().is_none());
+        assert!(Transform::mirror([true, false, false])
+            .angles_zyx()
+            .is_none());
     }
 
     #[test]

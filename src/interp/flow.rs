@@ -281,7 +281,11 @@ impl<'l> Walker<'l> {
             return Ok(Next::Return);
         }
         if it.lathe.reading() {
-            let mut run = it.lathe.running.take().expect("a cycle reading its contour");
+            let mut run = it
+                .lathe
+                .running
+                .take()
+                .expect("a cycle reading its contour");
             let r = super::lathe_profile::record(it, &mut run.contour, block, exprs);
             it.lathe.running = Some(run);
             r?;

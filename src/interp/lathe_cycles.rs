@@ -29,7 +29,7 @@ use crate::canon::{CanonPlane, Pose};
 use crate::diag::Code;
 use crate::dialect::meaning::LatheProfile;
 use crate::geom::turning::{Finish, Motion, Pockets, Profile, Pt, Rough, TurnError};
-use crate::ir::{Arena, ArcDir, Block, Decimal, Expr, MotionKind, StmtKind, Word};
+use crate::ir::{ArcDir, Arena, Block, Decimal, Expr, MotionKind, StmtKind, Word};
 use crate::span::Span;
 
 /// A cycle between its block and the end of its contour.
@@ -68,7 +68,11 @@ const LETTERS: [char; 7] = ['D', 'E', 'I', 'P', 'R', 'U', 'W'];
 /// `G71.1`, `G70.0`: the code as rs274 names it in messages.
 fn name(code: Decimal) -> String {
     let v = code.to_f64();
-    format!("G{}.{}", v.trunc() as i64, ((v.fract() * 10.0).round()) as i64)
+    format!(
+        "G{}.{}",
+        v.trunc() as i64,
+        ((v.fract() * 10.0).round()) as i64
+    )
 }
 
 fn fail(it: &Interp<'_, '_>, code: Code, msg: impl Into<String>) -> Stop {
@@ -177,7 +181,11 @@ pub fn finish(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
         get(6, 0.0),
     );
     if depth <= 0.0 {
-        return Err(fail(it, Code::LatheProfileFailed, "G7X error: I must be greater than zero."));
+        return Err(fail(
+            it,
+            Code::LatheProfileFailed,
+            "G7X error: I must be greater than zero.",
+        ));
     }
     let mut out = Emit {
         it,
@@ -193,7 +201,10 @@ pub fn finish(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
                 last: e,
                 passes: p,
             };
-            let profile = Profile { segs, ..Profile::default() };
+            let profile = Profile {
+                segs,
+                ..Profile::default()
+            };
             profile.finish(&c, &mut out)
         }
         LatheProfile::Rough { facing, part } => {
@@ -210,7 +221,10 @@ pub fn finish(it: &mut Interp<'_, '_>) -> Result<(), Stop> {
                 },
                 facing,
             };
-            let profile = Profile { segs, ..Profile::default() };
+            let profile = Profile {
+                segs,
+                ..Profile::default()
+            };
             profile.rough(&c, &mut out)
         }
     };
@@ -239,9 +253,7 @@ fn turn_error(it: &Interp<'_, '_>, e: TurnError, sink: Option<Stop>) -> Stop {
             Code::LimitExceeded,
             "G7X: the roughing passes never end (LinuxCNC 2.9 loops for ever on this contour)",
         ),
-        TurnError::Sink => {
-            sink.unwrap_or_else(|| fail(it, Code::LatheProfileFailed, "G7X error"))
-        }
+        TurnError::Sink => sink.unwrap_or_else(|| fail(it, Code::LatheProfileFailed, "G7X error")),
     }
 }
 
@@ -310,7 +322,11 @@ impl Motion for Emit<'_, '_, '_> {
 
 fn feed_check(it: &Interp<'_, '_>) -> Result<(), Stop> {
     if it.state.feed == 0.0 {
-        return Err(fail(it, Code::NoFeedRate, "Cannot do G1 with zero feed rate"));
+        return Err(fail(
+            it,
+            Code::NoFeedRate,
+            "Cannot do G1 with zero feed rate",
+        ));
     }
     Ok(())
 }

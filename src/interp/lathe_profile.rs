@@ -11,7 +11,7 @@
 use super::{Interp, Stop};
 use crate::diag::Code;
 use crate::geom::turning::{Corner, Pt, Seg};
-use crate::ir::{Arena, ArcDir, Block, Expr, Motion, MotionKind, StmtKind};
+use crate::ir::{ArcDir, Arena, Block, Expr, Motion, MotionKind, StmtKind};
 
 /// The contour read so far.
 #[derive(Clone, Debug, Default)]
@@ -68,10 +68,17 @@ fn motion(
     let (x, z) = (val(it, t.x.as_ref(), exprs)?, val(it, t.z.as_ref(), exprs)?);
     let (u, w) = (val(it, t.u.as_ref(), exprs)?, val(it, t.w.as_ref(), exprs)?);
     let start = c.at;
-    let mut end = if c.incremental { Pt::new(0.0, 0.0) } else { start };
+    let mut end = if c.incremental {
+        Pt::new(0.0, 0.0)
+    } else {
+        start
+    };
     if let Some(u) = u {
         if c.incremental {
-            return Err(fail(it, "G7x error: Cannot use U in incremental mode (G91)"));
+            return Err(fail(
+                it,
+                "G7x error: Cannot use U in incremental mode (G91)",
+            ));
         }
         if x.is_some() {
             return Err(fail(it, "G7x error: Cannot use U and X in the same block"));
@@ -83,7 +90,10 @@ fn motion(
     }
     if let Some(w) = w {
         if c.incremental {
-            return Err(fail(it, "G7x error: Cannot use W in incremental mode (G91)"));
+            return Err(fail(
+                it,
+                "G7x error: Cannot use W in incremental mode (G91)",
+            ));
         }
         if z.is_some() {
             return Err(fail(it, "G7x error: Cannot use W and Z in the same block"));
@@ -100,9 +110,7 @@ fn motion(
     }
     let seg = match c.motion {
         Some(MotionKind::Rapid | MotionKind::Linear) => Some(Seg::line(start, end)),
-        Some(MotionKind::Arc(dir)) => {
-            Some(arc(it, c, m, dir == ArcDir::Ccw, start, end, exprs)?)
-        }
+        Some(MotionKind::Arc(dir)) => Some(arc(it, c, m, dir == ArcDir::Ccw, start, end, exprs)?),
         _ => None,
     };
     if let Some(seg) = seg {

@@ -32,7 +32,10 @@ impl StreamRun {
         if self.stopped || self.handover.is_some() {
             return;
         }
-        if b.stmts.iter().any(|s| needs_walker(&s.kind) || calls_contour(it, &s.kind)) {
+        if b.stmts
+            .iter()
+            .any(|s| needs_walker(&s.kind) || calls_contour(it, &s.kind))
+        {
             self.handover = Some(index);
             return;
         }

@@ -104,7 +104,13 @@ pub fn plan_for(project: &Project, can_tilt: bool) -> Result<Vec<Item<'_>>, Vec<
         tools: &mut tools,
         count: &mut count,
     };
-    walk(project, &project.main_workplan, &mut ctx, &mut out, &mut errors);
+    walk(
+        project,
+        &project.main_workplan,
+        &mut ctx,
+        &mut out,
+        &mut errors,
+    );
     if errors.is_empty() {
         Ok(out)
     } else {

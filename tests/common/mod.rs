@@ -95,3 +95,22 @@ pub fn first_difference(a: &str, b: &str) -> Option<String> {
     }
     (la.len() != lb.len()).then(|| format!("{} blocks became {}", la.len(), lb.len()))
 }
+
+/// Runs a LinuxCNC program (a post's output) through rs274 and requires
+/// it to run to its end; a note when `rs274` or `../shared` is absent.
+pub fn runs_in_rs274(path: &Path) {
+    let oracle = root().join("../shared/tools/rs274-canon");
+    if !oracle.exists() || !rs274_present() {
+        eprintln!("note: rs274 or ../shared/tools/rs274-canon is absent; not running LinuxCNC");
+        return;
+    }
+    let ngc = path.with_extension("ngc");
+    std::fs::copy(path, &ngc).unwrap();
+    let o = Command::new(&oracle).arg(&ngc).output().unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "rs274: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}

@@ -18,9 +18,9 @@
 
 mod offset;
 mod pocket;
+pub mod segment;
 #[cfg(test)]
 mod tests;
-pub mod segment;
 
 pub use segment::{Corner, Seg, Shape};
 
@@ -209,7 +209,9 @@ impl Profile {
     }
 
     fn front(&self) -> Result<&Seg, TurnError> {
-        self.segs.first().ok_or(TurnError::Geometry("empty profile"))
+        self.segs
+            .first()
+            .ok_or(TurnError::Geometry("empty profile"))
     }
 
     /// G71/G72.
