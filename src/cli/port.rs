@@ -306,7 +306,18 @@ fn verify_port(
         return false;
     }
     let tolerance = verify::tolerance_for(s.target);
-    let v = verify::compare_within(&ea, &eb, &s.opts.tool_map, tolerance);
+    // The material proof needs the runs after the comparison; otherwise
+    // they go as their operations are made.
+    let (v, runs) = match s.material {
+        Some(_) => (
+            verify::compare_within(&ea, &eb, &s.opts.tool_map, tolerance),
+            Some((ea, eb)),
+        ),
+        None => (
+            verify::compare_owned(ea, eb, &s.opts.tool_map, tolerance),
+            None,
+        ),
+    };
     report(ctx, &v, tolerance);
     for r in &v.rapids {
         let mut d = Diagnostic::new(Code::VerifyRapids, r.what.clone());
@@ -318,9 +329,9 @@ fn verify_port(
     if let Some(first) = v.cutting.as_ref().or(v.low_rapid.as_ref()) {
         diags.push(mismatch(first));
     }
-    let by_material = match s.material {
-        Some(p) => p.verify(&ea, &eb, &s.opts.tool_map, diags),
-        None => true,
+    let by_material = match (s.material, &runs) {
+        (Some(p), Some((ea, eb))) => p.verify(ea, eb, &s.opts.tool_map, diags),
+        _ => true,
     };
     v.same() && by_material
 }

@@ -178,19 +178,37 @@ pub fn tolerance_for(target: &crate::dialect::DialectSpec) -> f64 {
         .max(step(n.length_places_mm, 1.0))
 }
 
-/// [`compare`] with the points' tolerance given (mm).
-pub fn compare_within(
-    a: &[Event],
-    b: &[Event],
+/// [`compare_within`] on runs the caller no longer needs: each run's
+/// events are dropped as soon as its operations are made, so the proof
+/// never holds both forms of both runs.
+pub fn compare_owned(
+    mut a: Vec<Event>,
+    b: Vec<Event>,
     tools: &crate::port::ToolMap,
     tolerance_mm: f64,
 ) -> Verdict {
-    let a: Vec<Event> = a.iter().cloned().map(|e| renumber(e, tools)).collect();
+    if !tools.is_empty() {
+        a = a.into_iter().map(|e| renumber(e, tools)).collect();
+    }
+    let low_rapid = low_rapids(&a, &b);
+    let lengths = if tools.is_empty() {
+        length_offsets(&a, &b)
+    } else {
+        None
+    };
     let opts = crate::compare::CompareOptions {
         tolerance_mm,
         ..crate::compare::CompareOptions::default()
     };
-    let c = crate::compare::compare(&a, b, &opts);
+    let oa = crate::compare::Ops::from_events(&a, tolerance_mm);
+    drop(a);
+    let ob = crate::compare::Ops::from_events(&b, tolerance_mm);
+    drop(b);
+    verdict(crate::compare::compare_ops(&oa, &ob, &opts), low_rapid).with_cutting(lengths)
+}
+
+/// The verdict of a comparison and the low-rapid check.
+fn verdict(c: crate::compare::Comparison, low_rapid: Option<Difference>) -> Verdict {
     let diff = |d: &crate::compare::Difference| Difference {
         what: d.what.clone(),
         a: d.a,
@@ -204,15 +222,39 @@ pub fn compare_within(
         },
         cutting_moves: c.ops_a,
         rapids: c.rapid_differences.iter().map(diff).collect(),
-        low_rapid: low_rapids(&a, b),
+        low_rapid,
     }
-    // A tool the map renumbers is the same tool under the target's
-    // number: its length is in the target's table, not the run's.
-    .with_cutting(if tools.is_empty() {
-        length_offsets(&a, b)
+}
+
+/// [`compare`] with the points' tolerance given (mm).
+pub fn compare_within(
+    a: &[Event],
+    b: &[Event],
+    tools: &crate::port::ToolMap,
+    tolerance_mm: f64,
+) -> Verdict {
+    // Renumbered only where the map renumbers: the source's events are
+    // not held twice for nothing (they are most of the proof's memory).
+    let renumbered: Vec<Event>;
+    let a: &[Event] = if tools.is_empty() {
+        a
     } else {
-        None
-    })
+        renumbered = a.iter().cloned().map(|e| renumber(e, tools)).collect();
+        &renumbered
+    };
+    let opts = crate::compare::CompareOptions {
+        tolerance_mm,
+        ..crate::compare::CompareOptions::default()
+    };
+    let c = crate::compare::compare(a, b, &opts);
+    verdict(c, low_rapids(a, b))
+        // A tool the map renumbers is the same tool under the target's
+        // number: its length is in the target's table, not the run's.
+        .with_cutting(if tools.is_empty() {
+            length_offsets(a, b)
+        } else {
+            None
+        })
 }
 
 /// The highest Z of any feed move (None: nothing is cut).
