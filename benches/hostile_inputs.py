@@ -122,8 +122,8 @@ def expressions(folder):
 
 def cam(folder):
     # Not hostile: large CAM programs (../shared/bench/gen_program.py), of
-    # 48 MB for the streaming commands and 24 MB for the port, which holds
-    # the whole program.
+    # 48 MB for the streaming commands (the port streams too) and 24 MB for
+    # `port --verify`, which holds both runs' events.
     here = os.path.dirname(os.path.abspath(__file__))
     gen = os.path.join(here, "..", "..", "shared", "bench", "gen_program.py")
     if not os.path.exists(gen):
