@@ -295,3 +295,41 @@ fn a_dwell_gets_its_own_block_where_the_target_wants_it() {
     let (out, _) = port_verified("linuxcnc", "linuxcnc", file);
     assert!(out.contains("G4 P0.5 G0 X10 Y5 S1000 M3"), "{out}");
 }
+
+/// A Klartext line is held back until the next block says whether a
+/// `RND`/`CHF` follows: a part written as its moves must not end between
+/// the line and the block its calls come out in (the plunge `L IZ-6` was
+/// lost and its feed went to the next line).
+#[test]
+fn a_held_klartext_line_stays_in_the_part_written_as_moves() {
+    for to in ["fanuc", "haas", "linuxcnc", "siemens840d"] {
+        let (out, _) = port_verified("heidenhain", to, "tests/programs/heidenhain/port_held_line.h");
+        assert!(out.contains("Z-1"), "{to}: the plunge is lost:\n{out}");
+    }
+}
+
+/// `FN 18: SYSREAD .. ID270` right after a `STOP` reads where the
+/// operator jogged the axes (a touch-off program): only the machine
+/// knows it, so the port refuses instead of writing the value the
+/// check-time run assumed (0).
+#[test]
+fn a_position_read_after_a_stop_is_not_written_as_a_number() {
+    for to in ["fanuc", "haas", "linuxcnc", "siemens840d"] {
+        let out = cncc(&[
+            "port",
+            "--from",
+            "heidenhain",
+            "--to",
+            to,
+            "--verify",
+            "tests/programs/heidenhain/port_touch_off.h",
+        ]);
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(1), "{to}: {err}");
+        assert!(
+            err.contains("known only while the machine runs"),
+            "{to}: {err}"
+        );
+        assert!(!stdout(&out).contains("#10=0"), "{to}");
+    }
+}
