@@ -333,3 +333,18 @@ fn a_position_read_after_a_stop_is_not_written_as_a_number() {
         assert!(!stdout(&out).contains("#10=0"), "{to}");
     }
 }
+
+/// `Z50. H2` while G43 is in force: Fanuc replaces the length by H2's
+/// (capability `offset-register-alone`); the port writes `G43 H2` (or the
+/// target's tool call) where an H needs its G43, and the run agrees.
+#[test]
+fn an_h_alone_in_g43_mode_changes_the_length_and_ports() {
+    let out = cncc(&["canon", "--dialect", "fanuc", "tests/programs/fanuc/port_h_alone.nc"]);
+    let canon = stdout(&out);
+    assert!(canon.contains("USE_TOOL_LENGTH_OFFSET(0.0000 0.0000 30.4800"), "{canon}");
+    let (ngc, _) = port_verified("fanuc", "linuxcnc", "tests/programs/fanuc/port_h_alone.nc");
+    assert!(ngc.contains("G43 H2"), "{ngc}");
+    for to in ["haas", "siemens840d", "heidenhain"] {
+        port_verified("fanuc", to, "tests/programs/fanuc/port_h_alone.nc");
+    }
+}

@@ -245,6 +245,11 @@ pub enum Capability {
     /// only when Q (timeout) is given (LinuxCNC); elsewhere M19 always
     /// orients and waits.
     OrientByWords,
+    /// A length register word alone (`Z4. H2`) while G43/G44 is in force
+    /// selects that register: its length is active from this block's
+    /// moves on (Fanuc, Haas [K]: a new H number in G43 mode replaces the
+    /// offset, it is not added). Elsewhere an H needs its G43.
+    OffsetRegisterAlone,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -342,6 +347,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("bare-motion-code-moves", Capability::BareMotionCodeMoves),
     ("operator-messages", Capability::OperatorMessages),
     ("dwell-with-move", Capability::DwellWithMove),
+    ("offset-register-alone", Capability::OffsetRegisterAlone),
 ];
 
 impl Capability {

@@ -45,7 +45,7 @@ pub fn exec(
             register,
             axes,
         } => length_comp(it, *mode, register.as_ref(), axes, exprs),
-        StmtKind::OffsetRegister { .. } => Ok(()),
+        StmtKind::OffsetRegister { letter, value } => register_alone(it, *letter, value, exprs),
         _ => Err(it.error_at(
             s.span,
             Code::UnsupportedHere,
@@ -313,6 +313,35 @@ fn comp_radius(
     Ok(it.state.to_prog(dia * machine_scale(it)) / 2.0)
 }
 
+/// A length register alone (`Z4. H2`) while G43/G44 is in force: where
+/// the spec says so (`offset-register-alone`, Fanuc and Haas [K]: a new H
+/// number in G43 mode replaces the offset), the new register's length is
+/// active from this block's moves on, as `G43 H2` would make it.
+/// Elsewhere it changes nothing here (LinuxCNC refuses it, see the lint).
+fn register_alone(
+    it: &mut Interp<'_, '_>,
+    letter: char,
+    value: &Value,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    let length = it
+        .spec
+        .addresses
+        .iter()
+        .any(|a| a.letter == letter && a.role == "length-offset");
+    if !length
+        || it.state.length_tool.is_none()
+        || !it.spec.has(crate::dialect::Capability::OffsetRegisterAlone)
+    {
+        return Ok(());
+    }
+    let mode = match it.state.length_negative {
+        true => LengthComp::Negative,
+        false => LengthComp::Positive,
+    };
+    length_comp(it, mode, Some(value), &Axes::default(), exprs)
+}
+
 fn length_comp(
     it: &mut Interp<'_, '_>,
     mode: LengthComp,
@@ -358,6 +387,7 @@ fn length_comp(
             let t = h.unwrap_or(spindle);
             let mut o = table_offset(it, t)?;
             it.state.length_tool = (t != 0).then_some(t);
+            it.state.length_negative = mode == LengthComp::Negative;
             if mode == LengthComp::Negative {
                 o.iter_mut().for_each(|v| *v = -*v);
             }
