@@ -214,7 +214,7 @@ fn verify_port(
             opts: s.opts,
             diags: Vec::new(),
         };
-        let topts = with_source_tools(&opts, s.target, &ea, diags);
+        let topts = with_source_tools(&opts, (src_spec, s.target), &ea, diags);
         let (e, mut d) = if fragment {
             let p = read_program(out, out_id, s.target).0;
             run_fragment(Rc::new(p), s.target, &topts, &mut loader)
@@ -370,12 +370,19 @@ fn run_fragment(
 /// the target machine's table must list it.
 fn with_source_tools(
     opts: &crate::interp::Options,
-    target: &DialectSpec,
+    (from, target): (&DialectSpec, &DialectSpec),
     source: &[crate::toolpath::Event],
     diags: &mut Vec<Diagnostic>,
 ) -> crate::interp::Options {
     let mut o = opts.clone();
-    if target.has(crate::dialect::Capability::ControlHoldsTools) {
+    let holds = crate::dialect::Capability::ControlHoldsTools;
+    if target.has(holds) {
+        // The machine gets the same physical tools: where the source ran
+        // with the table's sizes (it holds no tools of its own), the
+        // target compensates by them too instead of by no size.
+        if !from.has(holds) {
+            o.tool_table.invented = false;
+        }
         return o;
     }
     for e in source {
