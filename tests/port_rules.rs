@@ -348,3 +348,20 @@ fn an_h_alone_in_g43_mode_changes_the_length_and_ports() {
         port_verified("fanuc", to, "tests/programs/fanuc/port_h_alone.nc");
     }
 }
+
+/// `G41` without D takes the spindle tool's radius on LinuxCNC but the
+/// D last programmed (D0 before any: no radius) on Fanuc and Haas
+/// (capability `comp-register-modal`): the port names `D1` for the tool
+/// selected, and the proof compensates the target by the sizes the
+/// source ran with (the same physical tools), not by none.
+#[test]
+fn g41_without_d_gets_the_tools_register_where_d_is_modal() {
+    let file = "tests/programs/linuxcnc/port_comp_no_d.ngc";
+    for to in ["fanuc", "haas"] {
+        let (out, _) = port_verified("linuxcnc", to, file);
+        assert!(out.contains("G41 D1"), "{to}:\n{out}");
+    }
+    for to in ["heidenhain", "siemens840d"] {
+        port_verified("linuxcnc", to, file);
+    }
+}

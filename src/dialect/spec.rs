@@ -250,6 +250,11 @@ pub enum Capability {
     /// moves on (Fanuc, Haas [K]: a new H number in G43 mode replaces the
     /// offset, it is not added). Elsewhere an H needs its G43.
     OffsetRegisterAlone,
+    /// G41/G42 without a D uses the radius register last programmed, and
+    /// before any, D0: no radius (Fanuc, Haas [K]: D is modal; the D00
+    /// offset is always 0). Elsewhere it takes the radius of the tool in
+    /// the spindle (LinuxCNC; the 840D's active edge, Klartext RL/RR).
+    CompRegisterModal,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -348,6 +353,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("operator-messages", Capability::OperatorMessages),
     ("dwell-with-move", Capability::DwellWithMove),
     ("offset-register-alone", Capability::OffsetRegisterAlone),
+    ("comp-register-modal", Capability::CompRegisterModal),
 ];
 
 impl Capability {

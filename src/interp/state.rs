@@ -88,6 +88,9 @@ pub struct State {
     pub length_tool: Option<i64>,
     /// The active table length is subtracted (G44), not added (G43).
     pub length_negative: bool,
+    /// The radius register (D) last programmed (see capability
+    /// `comp-register-modal`).
+    pub comp_register: Option<f64>,
     /// Where the canon layer last put the tool (program frame, mm): the
     /// current position without tool-length shifts since the last move.
     pub canon_pos: [f64; 9],
@@ -149,6 +152,7 @@ impl State {
             m61_block: None,
             length_tool: None,
             length_negative: false,
+            comp_register: None,
             canon_pos: [0.0; 9],
             resync: false,
             prog_cache: std::cell::Cell::new(ProgCache {

@@ -286,6 +286,15 @@ fn comp_radius(
     if dynamic {
         return Ok(d.unwrap_or(0.0) / 2.0);
     }
+    let modal = it.spec.has(crate::dialect::Capability::CompRegisterModal);
+    if d.is_some() {
+        it.state.comp_register = d;
+    }
+    // No D here and none before: D0, no radius.
+    let d = match (d, modal) {
+        (None, true) => Some(it.state.comp_register.unwrap_or(0.0)),
+        _ => d,
+    };
     let t = d
         .map(|v| v.round() as i64)
         .unwrap_or(it.state.tool_in_spindle);
@@ -324,11 +333,20 @@ fn register_alone(
     value: &Value,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    let length = it
-        .spec
-        .addresses
-        .iter()
-        .any(|a| a.letter == letter && a.role == "length-offset");
+    let role = |r: &str| {
+        it.spec
+            .addresses
+            .iter()
+            .any(|a| a.letter == letter && a.role == r)
+    };
+    if role("radius-offset") {
+        // D alone: the register a later G41/G42 without D uses [?: one
+        // given while compensation is on changes the radius at once on a
+        // Fanuc; here it waits for the next G41/G42].
+        it.state.comp_register = Some(it.value(value, exprs)?);
+        return Ok(());
+    }
+    let length = role("length-offset");
     if !length
         || it.state.length_tool.is_none()
         || !it.spec.has(crate::dialect::Capability::OffsetRegisterAlone)

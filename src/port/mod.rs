@@ -59,6 +59,7 @@ mod blank;
 mod case;
 mod change_tool;
 mod comp_register;
+mod comp_modal;
 mod power_on_motion;
 mod length_register;
 mod decls;
@@ -185,6 +186,7 @@ pub fn port_owned(
     change_tool::run(&mut out, to);
     tool_call::run(&mut out, from, to);
     comp_register::run(&mut out, to);
+    comp_modal::run(&mut out, from, to);
     to_tnc::subprograms::run(&mut out, from, to, &mut diags);
     messages::run(&mut out, to, &mut diags);
     text::run(&mut out, from, to, &mut diags);
