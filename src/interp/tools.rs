@@ -45,7 +45,9 @@ pub fn exec(
             register,
             axes,
         } => length_comp(it, *mode, register.as_ref(), axes, exprs),
-        StmtKind::OffsetRegister { letter, value } => register_alone(it, *letter, value, exprs),
+        StmtKind::OffsetRegister { letter, value } => {
+            register_alone(it, (*letter, value), block, exprs)
+        }
         _ => Err(it.error_at(
             s.span,
             Code::UnsupportedHere,
@@ -329,8 +331,8 @@ fn comp_radius(
 /// Elsewhere it changes nothing here (LinuxCNC refuses it, see the lint).
 fn register_alone(
     it: &mut Interp<'_, '_>,
-    letter: char,
-    value: &Value,
+    (letter, value): (char, &Value),
+    block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
     let role = |r: &str| {
@@ -346,7 +348,13 @@ fn register_alone(
         it.state.comp_register = Some(it.value(value, exprs)?);
         return Ok(());
     }
-    let length = role("length-offset");
+    // `G42 H19`: an H beside G41/G42 is the radius register on controls
+    // set up so (Fanuc 0M posts write it) [?]: not a length change.
+    let beside_comp = block
+        .stmts
+        .iter()
+        .any(|s| matches!(s.kind, StmtKind::RadiusComp { .. }));
+    let length = role("length-offset") && !beside_comp;
     if !length
         || it.state.length_tool.is_none()
         || !it.spec.has(crate::dialect::Capability::OffsetRegisterAlone)

@@ -24,6 +24,11 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
         .collect();
     let mut mode: Option<LengthComp> = None;
     for b in &mut p.blocks {
+        // `G42 H19`: the H of a compensation block is not a length [?].
+        let comp = b
+            .stmts
+            .iter()
+            .any(|s| matches!(s.kind, StmtKind::RadiusComp { .. }));
         for s in &mut b.stmts {
             match &s.kind {
                 StmtKind::LengthComp { mode: m, .. } => {
@@ -32,7 +37,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
                         _ => None,
                     };
                 }
-                StmtKind::OffsetRegister { letter, value } if letters.contains(letter) => {
+                StmtKind::OffsetRegister { letter, value } if letters.contains(letter) && !comp => {
                     if let Some(m) = mode {
                         s.kind = StmtKind::LengthComp {
                             mode: m,
