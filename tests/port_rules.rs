@@ -365,3 +365,12 @@ fn g41_without_d_gets_the_tools_register_where_d_is_modal() {
         port_verified("linuxcnc", to, file);
     }
 }
+
+/// A G95 tapping feed is the tap's pitch (M4x0.7 is F0.02756 in/rev):
+/// rs274 reads numbers as doubles, so LinuxCNC takes it as written
+/// instead of refusing it as more places than it writes (E0603).
+#[test]
+fn a_tapping_pitch_keeps_its_places_where_the_target_reads_doubles() {
+    let (ngc, _) = port_verified("fanuc", "linuxcnc", "tests/programs/fanuc/port_tap_pitch.nc");
+    assert!(ngc.contains("F0.02756"), "{ngc}");
+}

@@ -192,8 +192,8 @@ fn verify_port(
         );
         return false;
     }
-    let opts = s.run.clone();
     let (src_text, src_id, src_spec) = s.source;
+    let opts = same_tool_sizes(s.run, src_spec, s.target);
     let front = verify_text::scan(src_text, src_id, src_spec);
     let fragment = front.fragment;
     let (ea, da) = {
@@ -214,7 +214,7 @@ fn verify_port(
             opts: s.opts,
             diags: Vec::new(),
         };
-        let topts = with_source_tools(&opts, (src_spec, s.target), &ea, diags);
+        let topts = with_source_tools(&opts, s.target, &ea, diags);
         let (e, mut d) = if fragment {
             let p = read_program(out, out_id, s.target).0;
             run_fragment(Rc::new(p), s.target, &topts, &mut loader)
@@ -362,6 +362,23 @@ fn run_fragment(
     (out, diags)
 }
 
+/// Both sides cut with the same physical tools: where one control holds
+/// its own tool data (it would compensate by no size, the table's sizes
+/// being cncc's invention) and the other reads the table, both take the
+/// table's sizes, so radius compensation is compared as it cuts.
+fn same_tool_sizes(
+    run: &crate::interp::Options,
+    from: &DialectSpec,
+    to: &DialectSpec,
+) -> crate::interp::Options {
+    let mut o = run.clone();
+    let holds = crate::dialect::Capability::ControlHoldsTools;
+    if from.has(holds) != to.has(holds) {
+        o.tool_table.invented = false;
+    }
+    o
+}
+
 /// The options of the ported program's run: a target that needs every
 /// tool in its tool table (no capability `control-holds-tools`: LinuxCNC)
 /// gets the tools the source's run changed to that the table lacks, as
@@ -370,19 +387,12 @@ fn run_fragment(
 /// the target machine's table must list it.
 fn with_source_tools(
     opts: &crate::interp::Options,
-    (from, target): (&DialectSpec, &DialectSpec),
+    target: &DialectSpec,
     source: &[crate::toolpath::Event],
     diags: &mut Vec<Diagnostic>,
 ) -> crate::interp::Options {
     let mut o = opts.clone();
-    let holds = crate::dialect::Capability::ControlHoldsTools;
-    if target.has(holds) {
-        // The machine gets the same physical tools: where the source ran
-        // with the table's sizes (it holds no tools of its own), the
-        // target compensates by them too instead of by no size.
-        if !from.has(holds) {
-            o.tool_table.invented = false;
-        }
+    if target.has(crate::dialect::Capability::ControlHoldsTools) {
         return o;
     }
     for e in source {

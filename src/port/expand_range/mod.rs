@@ -218,6 +218,8 @@ fn targets(
                 let ran = ran.get_or_init(|| t.visits.iter().map(|v| v.1).collect());
                 return match dead::definition(p, t, ran, d) {
                     true => Ok(Target::Dead(d)),
+                    // Not reached because the run stopped first.
+                    false if t.stopped.is_some() => Err("the run stops before it reaches it (at a value known only while the machine runs, or an error)".into()),
                     false => Err("it is in a subprogram this program never calls, so there are no moves to write it as".into()),
                 };
             }
