@@ -374,3 +374,12 @@ fn a_tapping_pitch_keeps_its_places_where_the_target_reads_doubles() {
     let (ngc, _) = port_verified("fanuc", "linuxcnc", "tests/programs/fanuc/port_tap_pitch.nc");
     assert!(ngc.contains("F0.02756"), "{ngc}");
 }
+
+/// A cycle before any G98/G99 retracts to the initial level on Fanuc and
+/// to R on LinuxCNC (`cycle-retract-r-plane-at-start`): the port writes
+/// the source's mode before the first cycle.
+#[test]
+fn the_power_on_cycle_retract_level_is_written_where_the_target_differs() {
+    let (ngc, _) = port_verified("fanuc", "linuxcnc", "tests/programs/fanuc/port_cycle_return.nc");
+    assert!(ngc.contains("G98 G81"), "{ngc}");
+}

@@ -59,6 +59,7 @@ mod blank;
 mod case;
 mod change_tool;
 mod comp_register;
+mod cycle_return;
 mod comp_modal;
 mod power_on_motion;
 mod length_register;
@@ -148,6 +149,7 @@ pub fn port_owned(
     funcs::run(&mut out, to);
     length_register::run(&mut out, from, to);
     power_on_motion::run(&mut out, from, to);
+    cycle_return::run(&mut out, from, to);
     blank::run(&mut out, to, &mut diags);
     old_cycles::run(&mut out, to);
     to_tnc::modes::presets_to_codes(&mut out, from, to);
