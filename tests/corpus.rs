@@ -198,7 +198,16 @@ const STOP_ON_OWN_ERROR: &[(&str, &str)] = &[];
 /// has: Plan.h is called by Plan-Beispiel.h after it sets Q1800..Q1840,
 /// and Q parameters are the TNC's, kept between programs, so the Q1840 it
 /// reads first is the caller's.
-const STOP_ON_OUTSIDE_VALUE: &[(&str, &str)] = &[("heidenhain/Plan.h", "`Q1840`")];
+/// The touch-off programs read with FN 18 ID270 where the operator
+/// jogged the axes during a STOP: known only on the machine.
+const STOP_ON_OUTSIDE_VALUE: &[(&str, &str)] = &[
+    ("heidenhain/Plan.h", "`Q1840`"),
+    ("heidenhain/CIRSTUD.h", "`Q32`"),
+    ("heidenhain/DASHCEN.h", "`Q10`"),
+    ("heidenhain/WALL.h", "`Q13`"),
+    ("heidenhain/RECTIFI.h", "`Q11`"),
+    ("heidenhain/PROFILE.h", "`Q11`"),
+];
 
 /// Every accepted Heidenhain program runs (`cncc canon`) to its end, or
 /// to the error it raises itself; none stops on something cncc cannot run.

@@ -295,3 +295,91 @@ fn a_dwell_gets_its_own_block_where_the_target_wants_it() {
     let (out, _) = port_verified("linuxcnc", "linuxcnc", file);
     assert!(out.contains("G4 P0.5 G0 X10 Y5 S1000 M3"), "{out}");
 }
+
+/// A Klartext line is held back until the next block says whether a
+/// `RND`/`CHF` follows: a part written as its moves must not end between
+/// the line and the block its calls come out in (the plunge `L IZ-6` was
+/// lost and its feed went to the next line).
+#[test]
+fn a_held_klartext_line_stays_in_the_part_written_as_moves() {
+    for to in ["fanuc", "haas", "linuxcnc", "siemens840d"] {
+        let (out, _) = port_verified("heidenhain", to, "tests/programs/heidenhain/port_held_line.h");
+        assert!(out.contains("Z-1"), "{to}: the plunge is lost:\n{out}");
+    }
+}
+
+/// `FN 18: SYSREAD .. ID270` right after a `STOP` reads where the
+/// operator jogged the axes (a touch-off program): only the machine
+/// knows it, so the port refuses instead of writing the value the
+/// check-time run assumed (0).
+#[test]
+fn a_position_read_after_a_stop_is_not_written_as_a_number() {
+    for to in ["fanuc", "haas", "linuxcnc", "siemens840d"] {
+        let out = cncc(&[
+            "port",
+            "--from",
+            "heidenhain",
+            "--to",
+            to,
+            "--verify",
+            "tests/programs/heidenhain/port_touch_off.h",
+        ]);
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(1), "{to}: {err}");
+        assert!(
+            err.contains("known only while the machine runs"),
+            "{to}: {err}"
+        );
+        assert!(!stdout(&out).contains("#10=0"), "{to}");
+    }
+}
+
+/// `Z50. H2` while G43 is in force: Fanuc replaces the length by H2's
+/// (capability `offset-register-alone`); the port writes `G43 H2` (or the
+/// target's tool call) where an H needs its G43, and the run agrees.
+#[test]
+fn an_h_alone_in_g43_mode_changes_the_length_and_ports() {
+    let out = cncc(&["canon", "--dialect", "fanuc", "tests/programs/fanuc/port_h_alone.nc"]);
+    let canon = stdout(&out);
+    assert!(canon.contains("USE_TOOL_LENGTH_OFFSET(0.0000 0.0000 30.4800"), "{canon}");
+    let (ngc, _) = port_verified("fanuc", "linuxcnc", "tests/programs/fanuc/port_h_alone.nc");
+    assert!(ngc.contains("G43 H2"), "{ngc}");
+    for to in ["haas", "siemens840d", "heidenhain"] {
+        port_verified("fanuc", to, "tests/programs/fanuc/port_h_alone.nc");
+    }
+}
+
+/// `G41` without D takes the spindle tool's radius on LinuxCNC but the
+/// D last programmed (D0 before any: no radius) on Fanuc and Haas
+/// (capability `comp-register-modal`): the port names `D1` for the tool
+/// selected, and the proof compensates the target by the sizes the
+/// source ran with (the same physical tools), not by none.
+#[test]
+fn g41_without_d_gets_the_tools_register_where_d_is_modal() {
+    let file = "tests/programs/linuxcnc/port_comp_no_d.ngc";
+    for to in ["fanuc", "haas"] {
+        let (out, _) = port_verified("linuxcnc", to, file);
+        assert!(out.contains("G41 D1"), "{to}:\n{out}");
+    }
+    for to in ["heidenhain", "siemens840d"] {
+        port_verified("linuxcnc", to, file);
+    }
+}
+
+/// A G95 tapping feed is the tap's pitch (M4x0.7 is F0.02756 in/rev):
+/// rs274 reads numbers as doubles, so LinuxCNC takes it as written
+/// instead of refusing it as more places than it writes (E0603).
+#[test]
+fn a_tapping_pitch_keeps_its_places_where_the_target_reads_doubles() {
+    let (ngc, _) = port_verified("fanuc", "linuxcnc", "tests/programs/fanuc/port_tap_pitch.nc");
+    assert!(ngc.contains("F0.02756"), "{ngc}");
+}
+
+/// A cycle before any G98/G99 retracts to the initial level on Fanuc and
+/// to R on LinuxCNC (`cycle-retract-r-plane-at-start`): the port writes
+/// the source's mode before the first cycle.
+#[test]
+fn the_power_on_cycle_retract_level_is_written_where_the_target_differs() {
+    let (ngc, _) = port_verified("fanuc", "linuxcnc", "tests/programs/fanuc/port_cycle_return.nc");
+    assert!(ngc.contains("G98 G81"), "{ngc}");
+}

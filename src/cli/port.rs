@@ -259,8 +259,8 @@ fn verify_port(
         );
         return false;
     }
-    let opts = s.run.clone();
     let (src_text, src_id, src_spec) = s.source;
+    let opts = same_tool_sizes(s.run, src_spec, s.target);
     let front = verify_text::scan(src_text, src_id, src_spec);
     let fragment = front.fragment;
     let (ea, da) = {
@@ -281,7 +281,7 @@ fn verify_port(
             opts: s.opts,
             diags: Vec::new(),
         };
-        let topts = with_source_tools(&opts, s.target, &ea, diags);
+        let topts = with_source_tools(&opts, (src_spec, s.target), &ea, diags);
         let (e, mut d) = if fragment {
             let p = read_program(out, out_id, s.target).0;
             run_fragment(Rc::new(p), s.target, &topts, &mut loader)
@@ -440,6 +440,27 @@ fn run_fragment(
     (out, diags)
 }
 
+/// Both sides cut with the same physical tools. A control that holds its
+/// own tool data compensates by no size where the table is cncc's
+/// invention; one that reads the table, by the table's sizes. So where
+/// the source reads the table and the target holds its tools, both take
+/// the table's sizes; where the source holds its tools (its radii are not
+/// known) and the target reads the table, both compensate by none: the
+/// comparison is of the programmed paths, as for the tools
+/// [`with_source_tools`] adds (it clears the target's radii).
+fn same_tool_sizes(
+    run: &crate::interp::Options,
+    from: &DialectSpec,
+    to: &DialectSpec,
+) -> crate::interp::Options {
+    let mut o = run.clone();
+    let holds = crate::dialect::Capability::ControlHoldsTools;
+    if !from.has(holds) && to.has(holds) {
+        o.tool_table.invented = false;
+    }
+    o
+}
+
 /// The options of the ported program's run: a target that needs every
 /// tool in its tool table (no capability `control-holds-tools`: LinuxCNC)
 /// gets the tools the source's run changed to that the table lacks, as
@@ -448,13 +469,18 @@ fn run_fragment(
 /// the target machine's table must list it.
 fn with_source_tools(
     opts: &crate::interp::Options,
-    target: &DialectSpec,
+    (from, target): (&DialectSpec, &DialectSpec),
     source: &[crate::toolpath::Event],
     diags: &mut Vec<Diagnostic>,
 ) -> crate::interp::Options {
     let mut o = opts.clone();
-    if target.has(crate::dialect::Capability::ControlHoldsTools) {
+    let holds = crate::dialect::Capability::ControlHoldsTools;
+    if target.has(holds) {
         return o;
+    }
+    if from.has(holds) && o.tool_table.invented {
+        // The source compensated by no size (see [`same_tool_sizes`]).
+        o.tool_table.tools.iter_mut().for_each(|t| t.diameter = 0.0);
     }
     for e in source {
         let crate::toolpath::Event::ToolChange { tool, span } = e else {

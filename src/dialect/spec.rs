@@ -251,6 +251,16 @@ pub enum Capability {
     /// only when Q (timeout) is given (LinuxCNC); elsewhere M19 always
     /// orients and waits.
     OrientByWords,
+    /// A length register word alone (`Z4. H2`) while G43/G44 is in force
+    /// selects that register: its length is active from this block's
+    /// moves on (Fanuc, Haas [K]: a new H number in G43 mode replaces the
+    /// offset, it is not added). Elsewhere an H needs its G43.
+    OffsetRegisterAlone,
+    /// G41/G42 without a D uses the radius register last programmed, and
+    /// before any, D0: no radius (Fanuc, Haas [K]: D is modal; the D00
+    /// offset is always 0). Elsewhere it takes the radius of the tool in
+    /// the spindle (LinuxCNC; the 840D's active edge, Klartext RL/RR).
+    CompRegisterModal,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -349,6 +359,8 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("operator-messages", Capability::OperatorMessages),
     ("dwell-with-move", Capability::DwellWithMove),
     ("tilted-working-plane", Capability::TiltedWorkingPlane),
+    ("offset-register-alone", Capability::OffsetRegisterAlone),
+    ("comp-register-modal", Capability::CompRegisterModal),
 ];
 
 impl Capability {

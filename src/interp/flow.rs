@@ -1203,12 +1203,14 @@ fn missing_call(span: crate::span::Span, target: &CallTarget) -> Diagnostic {
 fn observe(it: &mut Interp<'_, '_>, prog: usize, pc: usize, depth: usize) {
     if let Some(mut f) = it.observer.take() {
         let modal_call = it.modal_call_active();
+        let held = it.heidenhain.held.is_some() || it.heidenhain.approach.is_some();
         f(
             &super::BlockEvent {
                 prog,
                 pc,
                 depth,
                 modal_call,
+                held,
             },
             &it.state,
             &it.params,

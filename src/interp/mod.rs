@@ -146,6 +146,10 @@ pub struct BlockEvent {
     /// A modal call (840D `MCALL`, TNC `M89`) runs after each positioning
     /// block: the blocks from here on do more than move.
     pub modal_call: bool,
+    /// A move of an earlier block is still held back (a Klartext line
+    /// waiting for a `RND`/`CHF`, an `APPR` waiting for its element): its
+    /// calls come out while a later block runs.
+    pub held: bool,
 }
 
 /// Called before each block with the state in force before it.
@@ -185,6 +189,7 @@ impl<'a, 's> Interp<'a, 's> {
                 held: Vec::new(),
                 holding: false,
                 unread: false,
+                axes_left_by_operator: true,
             },
             diags: Vec::new(),
             span: Span::default(),
@@ -341,11 +346,25 @@ pub struct Output<'a> {
     holding: bool,
     /// The block failed a check rs274 makes while reading it.
     unread: bool,
+    /// No move has gone out since the start or the last program stop: the
+    /// axes stand where the machine was, or where the operator jogged them
+    /// during the stop (a touch-off program reads them with FN 18
+    /// ID270), which only the running machine knows. [?] Coarse: one move
+    /// of any axis counts as knowing them all.
+    axes_left_by_operator: bool,
 }
 
 impl Output<'_> {
     /// One call, tagged with the span of its statement.
     pub fn call(&mut self, call: Canon, span: Span) {
+        match call {
+            Canon::ProgramStop | Canon::OptionalProgramStop => self.axes_left_by_operator = true,
+            Canon::StraightTraverse(_)
+            | Canon::StraightFeed(_)
+            | Canon::StraightProbe(_)
+            | Canon::ArcFeed { .. } => self.axes_left_by_operator = false,
+            _ => {}
+        }
         if self.holding {
             self.held.push((call, span));
         } else {

@@ -86,6 +86,11 @@ pub struct State {
     /// register of G43/G44/G43.2, or the tool in the spindle); None when
     /// no table length is active (G49, G43.1, power-on).
     pub length_tool: Option<i64>,
+    /// The active table length is subtracted (G44), not added (G43).
+    pub length_negative: bool,
+    /// The radius register (D) last programmed (see capability
+    /// `comp-register-modal`).
+    pub comp_register: Option<f64>,
     /// Where the canon layer last put the tool (program frame, mm): the
     /// current position without tool-length shifts since the last move.
     pub canon_pos: [f64; 9],
@@ -146,6 +151,8 @@ impl State {
             sync_pitch: 0.0,
             m61_block: None,
             length_tool: None,
+            length_negative: false,
+            comp_register: None,
             canon_pos: [0.0; 9],
             resync: false,
             prog_cache: std::cell::Cell::new(ProgCache {

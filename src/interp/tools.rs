@@ -45,7 +45,9 @@ pub fn exec(
             register,
             axes,
         } => length_comp(it, *mode, register.as_ref(), axes, exprs),
-        StmtKind::OffsetRegister { .. } => Ok(()),
+        StmtKind::OffsetRegister { letter, value } => {
+            register_alone(it, (*letter, value), block, exprs)
+        }
         _ => Err(it.error_at(
             s.span,
             Code::UnsupportedHere,
@@ -289,6 +291,15 @@ fn comp_radius(
     if dynamic {
         return Ok((d.unwrap_or(0.0) / 2.0, 0));
     }
+    let modal = it.spec.has(crate::dialect::Capability::CompRegisterModal);
+    if d.is_some() {
+        it.state.comp_register = d;
+    }
+    // No D here and none before: D0, no radius.
+    let d = match (d, modal) {
+        (None, true) => Some(it.state.comp_register.unwrap_or(0.0)),
+        _ => d,
+    };
     let t = d
         .map(|v| v.round() as i64)
         .unwrap_or(it.state.tool_in_spindle);
@@ -314,6 +325,50 @@ fn comp_radius(
         }
     };
     Ok((it.state.to_prog(dia * machine_scale(it)) / 2.0, orientation))
+}
+
+/// A length register alone (`Z4. H2`) while G43/G44 is in force: where
+/// the spec says so (`offset-register-alone`, Fanuc and Haas [K]: a new H
+/// number in G43 mode replaces the offset), the new register's length is
+/// active from this block's moves on, as `G43 H2` would make it.
+/// Elsewhere it changes nothing here (LinuxCNC refuses it, see the lint).
+fn register_alone(
+    it: &mut Interp<'_, '_>,
+    (letter, value): (char, &Value),
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
+    let role = |r: &str| {
+        it.spec
+            .addresses
+            .iter()
+            .any(|a| a.letter == letter && a.role == r)
+    };
+    if role("radius-offset") {
+        // D alone: the register a later G41/G42 without D uses [?: one
+        // given while compensation is on changes the radius at once on a
+        // Fanuc; here it waits for the next G41/G42].
+        it.state.comp_register = Some(it.value(value, exprs)?);
+        return Ok(());
+    }
+    // `G42 H19`: an H beside G41/G42 is the radius register on controls
+    // set up so (Fanuc 0M posts write it) [?]: not a length change.
+    let beside_comp = block
+        .stmts
+        .iter()
+        .any(|s| matches!(s.kind, StmtKind::RadiusComp { .. }));
+    let length = role("length-offset") && !beside_comp;
+    if !length
+        || it.state.length_tool.is_none()
+        || !it.spec.has(crate::dialect::Capability::OffsetRegisterAlone)
+    {
+        return Ok(());
+    }
+    let mode = match it.state.length_negative {
+        true => LengthComp::Negative,
+        false => LengthComp::Positive,
+    };
+    length_comp(it, mode, Some(value), &Axes::default(), exprs)
 }
 
 fn length_comp(
@@ -361,6 +416,7 @@ fn length_comp(
             let t = h.unwrap_or(spindle);
             let mut o = table_offset(it, t)?;
             it.state.length_tool = (t != 0).then_some(t);
+            it.state.length_negative = mode == LengthComp::Negative;
             if mode == LengthComp::Negative {
                 o.iter_mut().for_each(|v| *v = -*v);
             }

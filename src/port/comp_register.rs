@@ -5,9 +5,9 @@
 //! of the tool last selected, the usual convention), so the same radius is
 //! used. Any other register stays, and the writer refuses it.
 //!
-//! Klartext sets compensation on a positioning block: a `G40` alone in a
-//! block goes onto the next move (`L X.. Y.. R0`) instead of an empty
-//! `L R0`.
+//! Klartext sets compensation on a positioning block: a `G40` (`G41`,
+//! `G42`) alone in a block goes onto the next move (`L X.. Y.. R0`)
+//! instead of an empty `L R0`.
 
 use crate::dialect::{Capability, DialectSpec};
 use crate::ir::{Program, StmtKind, ToolRef, Value};
@@ -42,25 +42,17 @@ pub fn run(p: &mut Program, to: &DialectSpec) {
     }
 }
 
-fn is_off(k: &StmtKind) -> bool {
-    matches!(
-        k,
-        StmtKind::RadiusComp {
-            side: crate::ir::CompSide::Off,
-            ..
-        }
-    )
-}
-
-/// A block with `G40` and no move gives it to the next block with a move
-/// (and no compensation of its own), before any other compensation.
+/// A block with `G40` (or `G41`/`G42`) and no move gives it to the next
+/// block with a move (and no compensation of its own), before any other
+/// compensation: `L X+2 Y+3 RL`, not an empty `L RL` (which a port back
+/// to LinuxCNC would write as a bare `G1 G41`, a zero-length entry).
 fn off_onto_next_move(p: &mut Program) {
     let n = p.blocks.len();
     for i in 0..n {
         let comp = |k: &StmtKind| matches!(k, StmtKind::RadiusComp { .. });
         let moves = |k: &StmtKind| matches!(k, StmtKind::Motion(_));
         let b = &p.blocks[i];
-        let Some(at) = b.stmts.iter().position(|s| is_off(&s.kind)) else {
+        let Some(at) = b.stmts.iter().position(|s| comp(&s.kind)) else {
             continue;
         };
         if b.stmts.iter().any(|s| moves(&s.kind)) {

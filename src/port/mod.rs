@@ -62,6 +62,10 @@ mod blank;
 mod case;
 mod change_tool;
 mod comp_register;
+mod cycle_return;
+mod comp_modal;
+mod power_on_motion;
+mod length_register;
 mod decls;
 mod dwell_block;
 pub mod expand;
@@ -147,6 +151,9 @@ pub fn port_owned(
         expand::expand_unmappable(&mut out, from, to, &mut diags);
     }
     funcs::run(&mut out, to);
+    length_register::run(&mut out, from, to);
+    power_on_motion::run(&mut out, from, to);
+    cycle_return::run(&mut out, from, to);
     blank::run(&mut out, to, &mut diags);
     old_cycles::run(&mut out, to);
     to_tnc::modes::presets_to_codes(&mut out, from, to);
@@ -185,6 +192,7 @@ pub fn port_owned(
     change_tool::run(&mut out, to);
     tool_call::run(&mut out, from, to);
     comp_register::run(&mut out, to);
+    comp_modal::run(&mut out, from, to);
     to_tnc::subprograms::run(&mut out, from, to, &mut diags);
     messages::run(&mut out, to, &mut diags);
     text::run(&mut out, from, to, &mut diags);

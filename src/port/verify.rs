@@ -190,7 +190,7 @@ pub fn compare_owned(
     if !tools.is_empty() {
         a = a.into_iter().map(|e| renumber(e, tools)).collect();
     }
-    let low_rapid = low_rapids(&a, &b);
+    let low_rapid = low_rapids(&a, &b, tolerance_mm);
     let lengths = if tools.is_empty() {
         length_offsets(&a, &b)
     } else {
@@ -247,7 +247,7 @@ pub fn compare_within(
         ..crate::compare::CompareOptions::default()
     };
     let c = crate::compare::compare(a, b, &opts);
-    verdict(c, low_rapids(a, b))
+    verdict(c, low_rapids(a, b, tolerance_mm))
         // A tool the map renumbers is the same tool under the target's
         // number: its length is in the target's table, not the run's.
         .with_cutting(if tools.is_empty() {
@@ -334,11 +334,14 @@ fn rapids_below(ev: &[Event], top: f64) -> Vec<(P3, &Move)> {
 }
 
 /// The first rapid below the source's highest cutting height that the
-/// two runs do not share.
-fn low_rapids(a: &[Event], b: &[Event]) -> Option<Difference> {
+/// two runs do not share: its ends must be as close as the cutting
+/// moves' points (`tolerance_mm`, half the target's smallest increment
+/// where it writes coarser than 1 µm: a rapid the port rounded to a Fanuc
+/// inch program's 0.0001 in is the same rapid on that machine).
+fn low_rapids(a: &[Event], b: &[Event], tolerance_mm: f64) -> Option<Difference> {
     let top = cutting_height(a)?;
     let (ra, rb) = (rapids_below(a, top), rapids_below(b, top));
-    let near = |p: &P3, q: &P3| crate::toolpath::dist(*p, *q) <= TOLERANCE_MM;
+    let near = |p: &P3, q: &P3| crate::toolpath::dist(*p, *q) <= tolerance_mm;
     let show = |m: Option<&(P3, &Move)>| match m {
         Some((from, m)) => format!("rapid from {} to {}", point(from), point(&m.to)),
         None => "no such rapid".to_string(),
@@ -519,5 +522,22 @@ mod tests {
         let other = "G21 G90 G54 G17\nG0 X10. Y10. Z30.\nG0 Z2.\nG1 Z-3. F100.\nG0 Z2.\nG0 Z-2.5\nG1 Z-6.\nG0 Z2.\nG0 Z-5.5\nG1 Z-9.\nG0 Z2.\nG0 Z-8.5\nG1 Z-10.\nG0 Z2.\nG0 Z30.\nX0 Y0\nM30\n";
         let v = verdict(src, other);
         assert!(v.low_rapid.is_none(), "{v:?}");
+    }
+
+    /// A low rapid the port rounded to the target's increment (0.0001 in:
+    /// 1.27 µm at most) is the same rapid within the target's tolerance;
+    /// one 0.01 mm away is not.
+    #[test]
+    fn a_low_rapid_rounded_to_the_targets_increment_is_the_same() {
+        let src = format!("{PART}G0 Z2.\nG0 X20.0004 Y20.\nG1 Z-8.\nG0 Z5.\nM30\n");
+        let near = format!("{PART}G0 Z2.\nG0 X20.0016 Y20.\nG1 Z-8.\nG0 Z5.\nM30\n");
+        let far = format!("{PART}G0 Z2.\nG0 X20.01 Y20.\nG1 Z-8.\nG0 Z5.\nM30\n");
+        let tools = crate::port::ToolMap::default();
+        let within = |a: &str, b: &str| {
+            compare_within(&run(a, "fanuc"), &run(b, "fanuc"), &tools, 0.00127)
+        };
+        assert!(within(&src, &near).low_rapid.is_none());
+        assert!(within(&src, &far).low_rapid.is_some());
+        assert!(verdict(&src, &near).low_rapid.is_some(), "1 µm by default");
     }
 }

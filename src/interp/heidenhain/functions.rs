@@ -160,6 +160,8 @@ fn system_datum(it: &Interp<'_, '_>, id: u32, nr: u32, idx: Option<i64>) -> Opti
         (60, 5) => it.heidenhain.oversize[1],
         (200, 1) => it.state.comp_radius,
         (200, 2) => it.state.tool_offset[tool_axis as usize],
+        // Where the operator left the axes: known only on the machine.
+        (270, 1) if it.sink.axes_left_by_operator => return None,
         (270, 1) => {
             let i = usize::try_from(idx?).ok().filter(|i| (1..=9).contains(i))?;
             let p = it.state.pos;
@@ -182,6 +184,7 @@ fn unknown_datum(it: &mut Interp<'_, '_>, id: u32, nr: u32, idx: Option<i64>, sp
     };
     let what = match id {
         240 => " (the nominal position in the machine's REF system: it depends on the preset)",
+        270 => " (the position the axes stand at before any move, or after a program stop where the operator may have jogged them)",
         _ => "",
     };
     if !it.once(format!("sysread {at}")) {
@@ -193,7 +196,7 @@ fn unknown_datum(it: &mut Interp<'_, '_>, id: u32, nr: u32, idx: Option<i64>, sp
             format!("FN 18: the system datum {at}{what} is unknown at check time"),
         )
         .primary(span, "read here; the parameter stays unknown")
-        .help("cncc knows ID10 NR1/3, ID20 NR1/3/4/9, ID50 NR1/2, ID60 NR1/4/5, ID200 NR1/2 and ID270 NR1 IDX1..9; the others belong to the machine (see `cncc explain W0517`)"),
+        .help("cncc knows ID10 NR1/3, ID20 NR1/3/4/9, ID50 NR1/2, ID60 NR1/4/5, ID200 NR1/2 and ID270 NR1 IDX1..9 (once the program has moved since its start or last stop); the others belong to the machine (see `cncc explain W0517`)"),
     );
 }
 

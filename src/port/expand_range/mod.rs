@@ -218,6 +218,8 @@ fn targets(
                 let ran = ran.get_or_init(|| t.visits.iter().map(|v| v.1).collect());
                 return match dead::definition(p, t, ran, d) {
                     true => Ok(Target::Dead(d)),
+                    // Not reached because the run stopped first.
+                    false if t.stopped.is_some() => Err("the run stops before it reaches it (at a value known only while the machine runs, or an error)".into()),
                     false => Err("it is in a subprogram this program never calls, so there are no moves to write it as".into()),
                 };
             }
@@ -397,7 +399,7 @@ fn expansion(
         return Err("it leaves a G92/G52 shift other than the one it started in".into());
     }
     let after = t.after(r.last).ok_or("the run ended inside it")?;
-    restore(&mut w, out, after, before, read, like.span);
+    restore(&mut w, out, after, before, read, like.span)?;
     for b in &p.blocks[r.a..=r.b] {
         if ends(b) {
             blocks.push(b.clone());
@@ -449,7 +451,7 @@ fn restore(
     before: &trace::Modes,
     read: &Reads,
     span: Span,
-) {
+) -> Result<(), String> {
     let push = |w: &mut write::Writer<'_>, k| w.out.push(Stmt::new(k, span));
     if after.plane != w.plane {
         push(w, StmtKind::Plane(write::plane_of(after.plane)));
@@ -479,8 +481,27 @@ fn restore(
     changed.sort_by(|a, b| format!("{:?}", a.0).cmp(&format!("{:?}", b.0)));
     for (k, v) in changed {
         let Some(var) = var_of(k) else { continue };
+        if !v.is_finite() {
+            // Unknown at check time (a system datum, a probe): a number
+            // written in its place would be a value the machine never had.
+            return Err(format!(
+                "it leaves {} with a value known only while the machine runs",
+                var_name(k)
+            ));
+        }
         let value = super::number_expr(out, super::decimal(v), span);
         push(w, StmtKind::Assign { var, value });
+    }
+    Ok(())
+}
+
+fn var_name(k: &OuterVar) -> String {
+    match k {
+        OuterVar::Numbered(n) => format!("`#{n}`"),
+        OuterVar::R(n) => format!("`R{n}`"),
+        OuterVar::Q(b, n) => format!("`{b:?}{n}`"),
+        OuterVar::Named(s) => format!("`#<{s}>`"),
+        OuterVar::User(s) => format!("`{s}`"),
     }
 }
 

@@ -25,13 +25,16 @@ pub struct Modes {
     pub comp: CompSide,
     /// A modal cycle call (`MCALL`, `M89`) is in force.
     pub modal_call: bool,
+    /// A move of an earlier block is still held back (see
+    /// [`BlockEvent::held`]): its calls would fall on the wrong side.
+    pub held: bool,
     /// The G92/G52 offset (mm): a part must give back the one it got.
     pub g92: [f64; 9],
     pub vars: HashMap<OuterVar, f64>,
 }
 
 impl Modes {
-    fn of(s: &State, modal_call: bool, vars: HashMap<OuterVar, f64>) -> Modes {
+    fn of(s: &State, modal_call: bool, held: bool, vars: HashMap<OuterVar, f64>) -> Modes {
         Modes {
             absolute: s.absolute,
             arc_absolute: s.arc_absolute,
@@ -40,18 +43,21 @@ impl Modes {
             motion: s.motion,
             comp: s.comp_side,
             modal_call,
+            held,
             g92: if s.g92_applied { s.g92 } else { [0.0; 9] },
             vars,
         }
     }
 
     /// A state a run of plain moves can start or end in: no cutter
-    /// compensation (the recorded moves are already offset) and no modal
-    /// cycle or modal call (the blocks after would no longer drill).
+    /// compensation (the recorded moves are already offset), no modal
+    /// cycle or modal call (the blocks after would no longer drill), and
+    /// no move held back (its calls come out after the boundary).
     pub fn is_plain(&self) -> bool {
         self.comp == CompSide::Off
             && !matches!(self.motion, ModalMotion::Cycle(_))
             && !self.modal_call
+            && !self.held
     }
 }
 
@@ -157,7 +163,7 @@ fn run<'a>(
         let visit = t.visits.len();
         t.visits.push((first, e.pc));
         if e.depth == 0 {
-            let before = Modes::of(s, e.modal_call, params.outer_values());
+            let before = Modes::of(s, e.modal_call, e.held, params.outer_values());
             t.steps.push(Step {
                 pc: e.pc,
                 visit,
@@ -171,7 +177,12 @@ fn run<'a>(
     it.start();
     let result = Walker::new(Rc::new(p.clone()), loader).run(&mut it);
     it.observer = None;
-    let end = Modes::of(&it.state, it.modal_call_active(), it.params.outer_values());
+    let end = Modes::of(
+        &it.state,
+        it.modal_call_active(),
+        it.heidenhain.held.is_some(),
+        it.params.outer_values(),
+    );
     let stopped = matches!(result, Err(Stop::Error(_)) | Err(Stop::Unknown(_)));
     (end, stopped)
 }
