@@ -303,7 +303,11 @@ fn a_dwell_gets_its_own_block_where_the_target_wants_it() {
 #[test]
 fn a_held_klartext_line_stays_in_the_part_written_as_moves() {
     for to in ["fanuc", "haas", "linuxcnc", "siemens840d"] {
-        let (out, _) = port_verified("heidenhain", to, "tests/programs/heidenhain/port_held_line.h");
+        let (out, _) = port_verified(
+            "heidenhain",
+            to,
+            "tests/programs/heidenhain/port_held_line.h",
+        );
         assert!(out.contains("Z-1"), "{to}: the plunge is lost:\n{out}");
     }
 }
@@ -339,9 +343,17 @@ fn a_position_read_after_a_stop_is_not_written_as_a_number() {
 /// target's tool call) where an H needs its G43, and the run agrees.
 #[test]
 fn an_h_alone_in_g43_mode_changes_the_length_and_ports() {
-    let out = cncc(&["canon", "--dialect", "fanuc", "tests/programs/fanuc/port_h_alone.nc"]);
+    let out = cncc(&[
+        "canon",
+        "--dialect",
+        "fanuc",
+        "tests/programs/fanuc/port_h_alone.nc",
+    ]);
     let canon = stdout(&out);
-    assert!(canon.contains("USE_TOOL_LENGTH_OFFSET(0.0000 0.0000 30.4800"), "{canon}");
+    assert!(
+        canon.contains("USE_TOOL_LENGTH_OFFSET(0.0000 0.0000 30.4800"),
+        "{canon}"
+    );
     let (ngc, _) = port_verified("fanuc", "linuxcnc", "tests/programs/fanuc/port_h_alone.nc");
     assert!(ngc.contains("G43 H2"), "{ngc}");
     for to in ["haas", "siemens840d", "heidenhain"] {
@@ -371,7 +383,11 @@ fn g41_without_d_gets_the_tools_register_where_d_is_modal() {
 /// instead of refusing it as more places than it writes (E0603).
 #[test]
 fn a_tapping_pitch_keeps_its_places_where_the_target_reads_doubles() {
-    let (ngc, _) = port_verified("fanuc", "linuxcnc", "tests/programs/fanuc/port_tap_pitch.nc");
+    let (ngc, _) = port_verified(
+        "fanuc",
+        "linuxcnc",
+        "tests/programs/fanuc/port_tap_pitch.nc",
+    );
     assert!(ngc.contains("F0.02756"), "{ngc}");
 }
 
@@ -380,6 +396,10 @@ fn a_tapping_pitch_keeps_its_places_where_the_target_reads_doubles() {
 /// the source's mode before the first cycle.
 #[test]
 fn the_power_on_cycle_retract_level_is_written_where_the_target_differs() {
-    let (ngc, _) = port_verified("fanuc", "linuxcnc", "tests/programs/fanuc/port_cycle_return.nc");
+    let (ngc, _) = port_verified(
+        "fanuc",
+        "linuxcnc",
+        "tests/programs/fanuc/port_cycle_return.nc",
+    );
     assert!(ngc.contains("G98 G81"), "{ngc}");
 }

@@ -19,8 +19,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
     let initial = !from.has(cap);
     for b in &mut p.blocks {
         // `G81 .. G99`: a mode in the block of the first cycle is its own.
-        if b
-            .stmts
+        if b.stmts
             .iter()
             .any(|s| matches!(s.kind, StmtKind::ReturnToInitial(_)))
         {

@@ -31,9 +31,8 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
         for s in &mut b.stmts {
             match &mut s.kind {
                 StmtKind::Motion(m) if m.kind == MotionKind::Implicit => {
-                    let moves = !m.target.is_empty()
-                        || m.polar_radius.is_some()
-                        || m.polar_angle.is_some();
+                    let moves =
+                        !m.target.is_empty() || m.polar_radius.is_some() || m.polar_angle.is_some();
                     if moves {
                         m.kind = kind;
                         return;

@@ -533,9 +533,8 @@ mod tests {
         let near = format!("{PART}G0 Z2.\nG0 X20.0016 Y20.\nG1 Z-8.\nG0 Z5.\nM30\n");
         let far = format!("{PART}G0 Z2.\nG0 X20.01 Y20.\nG1 Z-8.\nG0 Z5.\nM30\n");
         let tools = crate::port::ToolMap::default();
-        let within = |a: &str, b: &str| {
-            compare_within(&run(a, "fanuc"), &run(b, "fanuc"), &tools, 0.00127)
-        };
+        let within =
+            |a: &str, b: &str| compare_within(&run(a, "fanuc"), &run(b, "fanuc"), &tools, 0.00127);
         assert!(within(&src, &near).low_rapid.is_none());
         assert!(within(&src, &far).low_rapid.is_some());
         assert!(verdict(&src, &near).low_rapid.is_some(), "1 µm by default");
