@@ -51,7 +51,7 @@ pub fn write_program_warned(
 /// state the whole of `p` gives it (the streamed port writes a piece of a
 /// program in the context of what precedes it). Klartext lines are
 /// logical blocks without their numbers and without the `BEGIN PGM` /
-/// `END PGM` frame ([`push_klartext_numbered`] numbers them).
+/// `END PGM` frame ([`push_written_line`] numbers them).
 pub fn write_kept_lines(
     p: &Program,
     spec: &DialectSpec,
@@ -77,8 +77,17 @@ pub fn write_framed_lines(
     }
 }
 
-/// Appends a logical Klartext block with its number, as the writer does.
-pub use klartext::push_numbered as push_klartext_numbered;
+/// Appends line `index` of [`write_kept_lines`] to `text` as the target's
+/// writer ends it (and numbers it: Klartext).
+pub fn push_written_line(spec: &DialectSpec, text: &mut String, index: usize, line: &str) {
+    match spec.family {
+        Family::Klartext => klartext::push_numbered(text, index, line),
+        Family::WordAddress | Family::Sinumerik => {
+            text.push_str(line);
+            text.push('\n');
+        }
+    }
+}
 
 /// The word-address or Sinumerik lines of the kept blocks.
 fn word_lines(

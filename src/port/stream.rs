@@ -229,6 +229,8 @@ struct Run {
     pending: Vec<Block>,
     /// The summary of the middle ported so far.
     summary: Vec<Block>,
+    /// The shape of each summary block (made once per block read).
+    shapes: Vec<Vec<u32>>,
     /// The lines its chunks were written as, each ended by [`END`] (none:
     /// no chunk yet).
     lines: Option<String>,
@@ -257,7 +259,11 @@ impl Run {
                 (None, None) => b,
             };
             let s = shape(&b);
-            self.summary.retain(|k| shape(k) != s);
+            if let Some(i) = self.shapes.iter().position(|k| *k == s) {
+                self.shapes.remove(i);
+                self.summary.remove(i);
+            }
+            self.shapes.push(s);
             self.summary.push(b);
         }
     }
@@ -474,7 +480,7 @@ fn assemble(
         + runs.iter().map(|r| r.len() * 9 / 8).sum::<usize>();
     let mut out = Output {
         text: String::with_capacity(size),
-        numbered: to.family == crate::dialect::Family::Klartext,
+        to,
         next: 0,
     };
     let mut runs = runs.into_iter().enumerate();
@@ -493,23 +499,18 @@ fn assemble(
     next.is_none().then_some(out.text)
 }
 
-/// The text being assembled.
-struct Output {
+/// The text being assembled, line by line as the target's writer ends
+/// and numbers them.
+struct Output<'a> {
     text: String,
-    /// Klartext: every block gets its number (`/n` when skipped).
-    numbered: bool,
+    to: &'a DialectSpec,
     next: usize,
 }
 
-impl Output {
+impl Output<'_> {
     fn line(&mut self, l: &str) {
-        if self.numbered {
-            crate::emit::push_klartext_numbered(&mut self.text, self.next, l);
-            self.next += 1;
-        } else {
-            self.text.push_str(l);
-            self.text.push('\n');
-        }
+        crate::emit::push_written_line(self.to, &mut self.text, self.next, l);
+        self.next += 1;
     }
 }
 
