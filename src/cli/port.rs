@@ -14,6 +14,7 @@ use crate::ir::Program;
 use crate::port::stream::{self, Chunking};
 use crate::port::subload::PortingLoader;
 use crate::port::verify::{self, Difference, Verdict};
+use crate::port::verify_lockstep::{self, Side};
 use crate::port::verify_text;
 use crate::port::{port_owned, PortOptions, ToolMap};
 use crate::span::Span;
@@ -262,34 +263,20 @@ fn verify_port(
     let (src_text, src_id, src_spec) = s.source;
     let opts = same_tool_sizes(s.run, src_spec, s.target);
     let front = verify_text::scan(src_text, src_id, src_spec);
-    let fragment = front.fragment;
-    let (ea, da) = {
-        let mut loader = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
-        if fragment {
-            let p = read_program(src_text, src_id, src_spec).0;
-            run_fragment(Rc::new(p), src_spec, &opts, &mut loader)
-        } else {
-            verify_text::events(src_text, src_id, front, src_spec, &opts, &mut loader)
-        }
+    let tolerance = verify::tolerance_for(s.target);
+    let source = Side {
+        text: src_text,
+        id: src_id,
+        scan: front,
+        spec: src_spec,
+        opts: &opts,
     };
-    let (eb, mut db) = {
-        let source = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
-        let mut loader = PortingLoader {
-            source,
-            from: src_spec,
-            to: s.target,
-            opts: s.opts,
-            diags: Vec::new(),
-        };
-        let topts = with_source_tools(&opts, (src_spec, s.target), &ea, diags);
-        let (e, mut d) = if fragment {
-            let p = read_program(out, out_id, s.target).0;
-            run_fragment(Rc::new(p), s.target, &topts, &mut loader)
-        } else {
-            verify_text::events(out, out_id, back, s.target, &topts, &mut loader)
-        };
-        d.extend(loader.diags.into_iter().filter(Diagnostic::is_error));
-        (e, d)
+    let port = (out, out_id, back);
+    let side_by_side =
+        s.material.is_none() && source.streams() && !port.2.fragment && !port.2.walker;
+    let (proof, da, mut db) = match side_by_side {
+        true => side_by_side_proof(&s, source, port, tolerance, diags),
+        false => whole_proof(ctx, &s, source, port, tolerance, diags),
     };
     db.retain(|d| d.is_error());
     let run_errors = |d: &[Diagnostic]| d.iter().filter(|d| d.is_error()).count();
@@ -305,19 +292,7 @@ fn verify_port(
         );
         return false;
     }
-    let tolerance = verify::tolerance_for(s.target);
-    // The material proof needs the runs after the comparison; otherwise
-    // they go as their operations are made.
-    let (v, runs) = match s.material {
-        Some(_) => (
-            verify::compare_within(&ea, &eb, &s.opts.tool_map, tolerance),
-            Some((ea, eb)),
-        ),
-        None => (
-            verify::compare_owned(ea, eb, &s.opts.tool_map, tolerance),
-            None,
-        ),
-    };
+    let (v, runs) = proof;
     report(ctx, &v, tolerance);
     for r in &v.rapids {
         let mut d = Diagnostic::new(Code::VerifyRapids, r.what.clone());
@@ -334,6 +309,111 @@ fn verify_port(
         _ => true,
     };
     v.same() && by_material
+}
+
+/// A proof's verdict, the two runs' events where the material proof
+/// needs them, and each run's diagnostics.
+type Proof = (
+    (
+        Verdict,
+        Option<(Vec<crate::toolpath::Event>, Vec<crate::toolpath::Event>)>,
+    ),
+    Vec<Diagnostic>,
+    Vec<Diagnostic>,
+);
+
+/// Both programs run side by side ([`verify_lockstep`]): the memory of
+/// two streamed runs.
+fn side_by_side_proof(
+    s: &Sides<'_>,
+    source: Side<'_>,
+    (out, out_id, back): (&str, crate::span::FileId, verify_text::Scan),
+    tolerance: f64,
+    diags: &mut Vec<Diagnostic>,
+) -> Proof {
+    let holds = crate::dialect::Capability::ControlHoldsTools;
+    let changes = match s.target.has(holds) {
+        true => Vec::new(),
+        false => verify_lockstep::tool_changes(source.text, source.id, source.spec, source.opts),
+    };
+    let topts = with_source_tools(source.opts, (source.spec, s.target), &changes, diags);
+    let port = Side {
+        text: out,
+        id: out_id,
+        scan: back,
+        spec: s.target,
+        opts: &topts,
+    };
+    let o = verify_lockstep::compare(source, port, &s.opts.tool_map, tolerance);
+    ((o.verdict, None), o.source, o.port)
+}
+
+/// Each program run in turn and its events held: a subprogram ported
+/// alone, a program with control flow (which loads others), or the
+/// material proof (which needs the runs after the comparison).
+fn whole_proof(
+    ctx: &mut Context,
+    s: &Sides<'_>,
+    source: Side<'_>,
+    (out, out_id, back): (&str, crate::span::FileId, verify_text::Scan),
+    tolerance: f64,
+    diags: &mut Vec<Diagnostic>,
+) -> Proof {
+    let (src_text, src_id, src_spec, opts) = (source.text, source.id, source.spec, source.opts);
+    let fragment = source.scan.fragment;
+    let (ea, da) = {
+        let mut loader = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
+        if fragment {
+            let p = read_program(src_text, src_id, src_spec).0;
+            run_fragment(Rc::new(p), src_spec, opts, &mut loader)
+        } else {
+            verify_text::events(src_text, src_id, source.scan, src_spec, opts, &mut loader)
+        }
+    };
+    let (eb, db) = {
+        let source = FsLoader::new(s.dir.to_path_buf(), src_spec.clone(), &mut ctx.files);
+        let mut loader = PortingLoader {
+            source,
+            from: src_spec,
+            to: s.target,
+            opts: s.opts,
+            diags: Vec::new(),
+        };
+        let changes: Vec<(i64, Span)> = ea
+            .iter()
+            .filter_map(|e| match e {
+                crate::toolpath::Event::ToolChange { tool, span } => Some((*tool, *span)),
+                _ => None,
+            })
+            .collect();
+        let topts = with_source_tools(opts, (src_spec, s.target), &changes, diags);
+        let (e, mut d) = if fragment {
+            let p = read_program(out, out_id, s.target).0;
+            run_fragment(Rc::new(p), s.target, &topts, &mut loader)
+        } else {
+            verify_text::events(out, out_id, back, s.target, &topts, &mut loader)
+        };
+        d.extend(loader.diags.into_iter().filter(Diagnostic::is_error));
+        (e, d)
+    };
+    let errors = |d: &[Diagnostic]| d.iter().any(|d| d.is_error());
+    if errors(&da) || errors(&db) {
+        // Not compared: the caller reports the run's errors.
+        return ((Verdict::default(), None), da, db);
+    }
+    // The material proof needs the runs after the comparison; otherwise
+    // they go as they are reduced.
+    let proof = match s.material {
+        Some(_) => (
+            verify::compare_within(&ea, &eb, &s.opts.tool_map, tolerance),
+            Some((ea, eb)),
+        ),
+        None => (
+            verify::compare_owned(ea, eb, &s.opts.tool_map, tolerance),
+            None,
+        ),
+    };
+    (proof, da, db)
 }
 
 fn place(ctx: &Context, sp: Option<Span>) -> String {
@@ -470,7 +550,7 @@ fn same_tool_sizes(
 fn with_source_tools(
     opts: &crate::interp::Options,
     (from, target): (&DialectSpec, &DialectSpec),
-    source: &[crate::toolpath::Event],
+    source: &[(i64, Span)],
     diags: &mut Vec<Diagnostic>,
 ) -> crate::interp::Options {
     let mut o = opts.clone();
@@ -482,10 +562,7 @@ fn with_source_tools(
         // The source compensated by no size (see [`same_tool_sizes`]).
         o.tool_table.tools.iter_mut().for_each(|t| t.diameter = 0.0);
     }
-    for e in source {
-        let crate::toolpath::Event::ToolChange { tool, span } = e else {
-            continue;
-        };
+    for (tool, span) in source {
         if *tool <= 0 || o.tool_table.get(*tool).is_some() {
             continue;
         }

@@ -40,11 +40,13 @@ pub mod align;
 pub mod describe;
 pub mod ops;
 mod technology;
+pub mod window;
 
 #[cfg(test)]
 mod tests;
 
 pub use ops::{Op, OpBuilder, OpKind, Ops};
+pub use window::OpWindow;
 
 /// Rapid differences listed at most.
 pub const MAX_LISTED: usize = align::MAX_DIFFERENCES;
@@ -141,5 +143,11 @@ pub fn compare(a: &[Event], b: &[Event], opts: &CompareOptions) -> Comparison {
 /// Compares two programs' operations (built with [`OpBuilder`] while
 /// streaming, or [`Ops::from_events`]).
 pub fn compare_ops(a: &Ops, b: &Ops, opts: &CompareOptions) -> Comparison {
+    compare_windows(OpWindow::whole(a), OpWindow::whole(b), opts)
+}
+
+/// Compares two runs given as windows ([`window`]): held whole, or read
+/// side by side as they run, holding a few hundred operations each.
+pub fn compare_windows(a: OpWindow<'_>, b: OpWindow<'_>, opts: &CompareOptions) -> Comparison {
     align::Aligner::new(a, b, opts).run()
 }

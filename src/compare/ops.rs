@@ -96,6 +96,9 @@ pub struct OpBuilder {
     rapids_start: usize,
     keep_rapids: bool,
     group: u32,
+    /// The index of `out.rapids[0]` among all the run's rapids (batches
+    /// taken with [`OpBuilder::take_ready`] are gone).
+    rapid_base: usize,
 }
 
 impl OpBuilder {
@@ -108,6 +111,7 @@ impl OpBuilder {
             rapids_start: 0,
             keep_rapids: true,
             group: 0,
+            rapid_base: 0,
         }
     }
 
@@ -152,12 +156,40 @@ impl OpBuilder {
         }
     }
 
+    /// The operations not yet taken (all of them where none were), with
+    /// their rapids.
     pub fn finish(self) -> Ops {
         self.out
     }
 
+    /// How many operations [`OpBuilder::take_ready`] would give.
+    pub fn ready(&self) -> usize {
+        self.out.ops.len().saturating_sub(1)
+    }
+
+    /// Takes the operations that can no longer change (all but the last,
+    /// which a plunge may still deepen or a dwell follow) and the rapids
+    /// that lead to them, for a comparison that streams
+    /// ([`super::window::OpWindow::pulled`]). Indices (an op's `rapids`)
+    /// stay those of the whole run.
+    pub fn take_ready(&mut self) -> Ops {
+        let n = self.ready();
+        let ops: Vec<Op> = self.out.ops.drain(..n).collect();
+        let kept = self
+            .out
+            .ops
+            .first()
+            .map(|o| o.rapids.start as usize)
+            .unwrap_or(self.rapids_start)
+            .min(self.rapids_start);
+        let nr = kept - self.rapid_base;
+        let rapids = self.out.rapids.drain(..nr).collect();
+        self.rapid_base += nr;
+        Ops { ops, rapids }
+    }
+
     fn take_rapids(&mut self) -> Range<u32> {
-        let end = self.out.rapids.len();
+        let end = self.rapid_base + self.out.rapids.len();
         let r = self.rapids_start as u32..end as u32;
         self.rapids_start = end;
         r
@@ -172,7 +204,9 @@ impl OpBuilder {
                 if !still && !(self.open_plunge && vertical) {
                     self.open_plunge = false;
                     // Indices stay within u32: past that, rapids are not kept.
-                    if self.keep_rapids && self.out.rapids.len() < u32::MAX as usize {
+                    if self.keep_rapids
+                        && self.rapid_base + self.out.rapids.len() < u32::MAX as usize
+                    {
                         self.out.rapids.push((m.to, m.span));
                     }
                 }

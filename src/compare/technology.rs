@@ -8,15 +8,16 @@ use super::describe::{self, num};
 use super::ops::OpKind;
 use super::{DiffKind, MAX_LISTED};
 use crate::toolpath::P3;
-use std::ops::Range;
 
 impl Aligner<'_> {
     /// Compares what two matching operations ran with.
     pub(super) fn matched(&mut self, i: usize, j: usize) {
-        let (x, y) = (&self.a.ops[i], &self.b.ops[j]);
         if self.opts.compare_rapids {
             self.rapids(i, j);
         }
+        let (Some(x), Some(y)) = (self.a.get(i), self.b.get(j)) else {
+            return;
+        };
         if !self.opts.compare_feeds || matches!(x.kind, OpKind::Tool(_)) {
             return;
         }
@@ -77,10 +78,10 @@ impl Aligner<'_> {
 
     /// Lists rapids before two matching operations that differ.
     fn rapids(&mut self, i: usize, j: usize) {
-        let (x, y) = (&self.a.ops[i], &self.b.ops[j]);
-        let range = |r: &Range<u32>| r.start as usize..r.end as usize;
-        let ra = &self.a.rapids[range(&x.rapids)];
-        let rb = &self.b.rapids[range(&y.rapids)];
+        let (Some(x), Some(y)) = (self.a.get(i), self.b.get(j)) else {
+            return;
+        };
+        let (ra, rb) = (self.a.rapids(&x.rapids), self.b.rapids(&y.rapids));
         let tol = self.opts.tolerance_mm;
         let same = ra.len() == rb.len() && ra.iter().zip(rb).all(|(p, q)| close(p.0, q.0, tol));
         if same || self.out.rapid_differences.len() >= MAX_LISTED {

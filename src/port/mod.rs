@@ -108,6 +108,8 @@ mod tool_call;
 pub mod toolmap;
 mod tools;
 pub mod verify;
+mod verify_digest;
+pub mod verify_lockstep;
 pub mod verify_text;
 
 use crate::diag::Diagnostic;

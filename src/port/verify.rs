@@ -24,14 +24,15 @@
 //! approach rapid below the cutting height on one side only is therefore
 //! not caught.
 
+use super::verify_digest::{Digest, Tally};
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
 use crate::interp::flow::ProgramLoader;
 use crate::interp::Options;
 use crate::ir::Program;
 use crate::span::Span;
-use crate::toolpath::{Event, Move, Tracker, P3};
-use std::collections::{HashMap, HashSet};
+use crate::toolpath::{Event, Tracker};
+use std::collections::HashSet;
 use std::rc::Rc;
 
 /// Positions and centres must agree within this (mm).
@@ -105,19 +106,31 @@ impl Recorder {
     }
 
     pub fn call(&mut self, call: crate::canon::Canon, span: Span) {
+        let mut out = std::mem::take(&mut self.out);
+        self.call_with(call, span, |e| out.push(e));
+        self.out = out;
+    }
+
+    /// [`Recorder::call`], giving each event to `emit` instead of
+    /// keeping it.
+    pub fn call_with(
+        &mut self,
+        call: crate::canon::Canon,
+        span: Span,
+        mut emit: impl FnMut(Event),
+    ) {
         let mark = self.machine.contains(&span);
-        let out = &mut self.out;
         self.tracker.push(&call, span, |e| {
             if mark && matches!(e, Event::Move(_)) {
-                out.push(Event::Comment {
+                emit(Event::Comment {
                     text: MACHINE_MARK.into(),
                     span,
                 });
             }
-            out.push(e)
+            emit(e)
         });
         if matches!(call, crate::canon::Canon::UseToolLengthOffset(_)) {
-            out.push(Event::Comment {
+            emit(Event::Comment {
                 text: format!("{LENGTH_MARK}{}", self.tracker.length_offset_mm()),
                 span,
             });
@@ -134,7 +147,7 @@ pub const MACHINE_MARK: &str = "\u{0}cncc: machine-referenced move";
 
 /// A comment [`events`] puts where a tool length offset (mm, along Z)
 /// comes into force, for [`length_offsets`].
-const LENGTH_MARK: &str = "\u{0}cncc: tool length offset ";
+pub(crate) const LENGTH_MARK: &str = "\u{0}cncc: tool length offset ";
 
 /// The statements of blocks that move in machine coordinates or to a
 /// reference point.
@@ -179,51 +192,19 @@ pub fn tolerance_for(target: &crate::dialect::DialectSpec) -> f64 {
 }
 
 /// [`compare_within`] on runs the caller no longer needs: each run's
-/// events are dropped as soon as its operations are made, so the proof
-/// never holds both forms of both runs.
+/// events are dropped as soon as they are reduced, so the proof never
+/// holds both forms of both runs.
 pub fn compare_owned(
-    mut a: Vec<Event>,
+    a: Vec<Event>,
     b: Vec<Event>,
     tools: &crate::port::ToolMap,
     tolerance_mm: f64,
 ) -> Verdict {
-    if !tools.is_empty() {
-        a = a.into_iter().map(|e| renumber(e, tools)).collect();
-    }
-    let low_rapid = low_rapids(&a, &b, tolerance_mm);
-    let lengths = if tools.is_empty() {
-        length_offsets(&a, &b)
-    } else {
-        None
-    };
-    let opts = crate::compare::CompareOptions {
-        tolerance_mm,
-        ..crate::compare::CompareOptions::default()
-    };
-    let oa = crate::compare::Ops::from_events(&a, tolerance_mm);
+    let da = digest(&a, Some(tools), tolerance_mm);
     drop(a);
-    let ob = crate::compare::Ops::from_events(&b, tolerance_mm);
+    let db = digest(&b, None, tolerance_mm);
     drop(b);
-    verdict(crate::compare::compare_ops(&oa, &ob, &opts), low_rapid).with_cutting(lengths)
-}
-
-/// The verdict of a comparison and the low-rapid check.
-fn verdict(c: crate::compare::Comparison, low_rapid: Option<Difference>) -> Verdict {
-    let diff = |d: &crate::compare::Difference| Difference {
-        what: d.what.clone(),
-        a: d.a,
-        b: d.b,
-    };
-    Verdict {
-        cutting: if c.same {
-            None
-        } else {
-            c.differences.first().map(diff)
-        },
-        cutting_moves: c.ops_a,
-        rapids: c.rapid_differences.iter().map(diff).collect(),
-        low_rapid,
-    }
+    verdict_of_digests(da, db, tools, tolerance_mm)
 }
 
 /// [`compare`] with the points' tolerance given (mm).
@@ -233,196 +214,72 @@ pub fn compare_within(
     tools: &crate::port::ToolMap,
     tolerance_mm: f64,
 ) -> Verdict {
-    // Renumbered only where the map renumbers: the source's events are
-    // not held twice for nothing (they are most of the proof's memory).
-    let renumbered: Vec<Event>;
-    let a: &[Event] = if tools.is_empty() {
-        a
-    } else {
-        renumbered = a.iter().cloned().map(|e| renumber(e, tools)).collect();
-        &renumbered
-    };
-    let opts = crate::compare::CompareOptions {
+    let da = digest(a, Some(tools), tolerance_mm);
+    let db = digest(b, None, tolerance_mm);
+    verdict_of_digests(da, db, tools, tolerance_mm)
+}
+
+/// A whole run reduced (the source's tools renumbered by the map).
+fn digest(ev: &[Event], tools: Option<&crate::port::ToolMap>, tolerance_mm: f64) -> Digest {
+    let mut d = Digest::new(tolerance_mm);
+    for e in ev {
+        d.push(e, tools);
+    }
+    d
+}
+
+fn verdict_of_digests(
+    a: Digest,
+    b: Digest,
+    tools: &crate::port::ToolMap,
+    tolerance_mm: f64,
+) -> Verdict {
+    let (oa, ob) = (a.ops.finish(), b.ops.finish());
+    let c = crate::compare::compare_ops(&oa, &ob, &compare_options(tolerance_mm));
+    verdict(c, &a.tally, &b.tally, tools, tolerance_mm)
+}
+
+/// What the proof compares operations by.
+pub(crate) fn compare_options(tolerance_mm: f64) -> crate::compare::CompareOptions {
+    crate::compare::CompareOptions {
         tolerance_mm,
         ..crate::compare::CompareOptions::default()
+    }
+}
+
+/// The verdict of a comparison of the operations and of the two runs'
+/// tallies (low rapids; length offsets where the tools are not renumbered:
+/// a tool the map renumbers is the same tool under the target's number,
+/// its length in the target's table, not the run's).
+pub(crate) fn verdict(
+    c: crate::compare::Comparison,
+    a: &Tally,
+    b: &Tally,
+    tools: &crate::port::ToolMap,
+    tolerance_mm: f64,
+) -> Verdict {
+    let diff = |d: &crate::compare::Difference| Difference {
+        what: d.what.clone(),
+        a: d.a,
+        b: d.b,
     };
-    let c = crate::compare::compare(a, b, &opts);
-    verdict(c, low_rapids(a, b, tolerance_mm))
-        // A tool the map renumbers is the same tool under the target's
-        // number: its length is in the target's table, not the run's.
-        .with_cutting(if tools.is_empty() {
-            length_offsets(a, b)
-        } else {
+    let v = Verdict {
+        cutting: if c.same {
             None
-        })
-}
-
-/// The highest Z of any feed move (None: nothing is cut).
-fn cutting_height(ev: &[Event]) -> Option<f64> {
-    ev.iter()
-        .filter_map(|e| match e {
-            Event::Move(m) if m.is_feed() => Some(m.from[2].max(m.to[2])),
-            _ => None,
-        })
-        .reduce(f64::max)
-}
-
-/// The rapids of a run that go below `top` and do not move in a place
-/// already cut deeper (see the module doc), in order.
-fn rapids_below(ev: &[Event], top: f64) -> Vec<(P3, &Move)> {
-    let key = |p: &P3| {
-        let q = |v: f64| (v / TOLERANCE_MM).round() as i64;
-        (q(p[0]), q(p[1]))
-    };
-    // The deepest Z cut so far at each X Y a feed move reached.
-    let mut cut: HashMap<(i64, i64), f64> = HashMap::new();
-    let mut out = Vec::new();
-    // The first move starts where the machine happens to be (the run
-    // assumes zero): only where it goes counts.
-    let mut first = true;
-    // Between a tool change (or the start) and the first feed move: the
-    // approach, where positions rest on what the run cannot know.
-    let mut approach = true;
-    for e in ev {
-        let m = match e {
-            Event::Move(m) => m,
-            Event::ToolChange { .. } => {
-                approach = true;
-                continue;
-            }
-            Event::Comment { text, .. } if text == MACHINE_MARK => {
-                approach = true;
-                continue;
-            }
-            Event::Dwell { .. } | Event::Stop { .. } | Event::Comment { .. } => continue,
-        };
-        // A move to where the tool already is (`G1` alone after `G43`)
-        // goes nowhere: it neither starts the run nor ends an approach.
-        if crate::toolpath::dist(m.from, m.to) <= TOLERANCE_MM {
-            continue;
-        }
-        let from = if std::mem::take(&mut first) {
-            m.to
         } else {
-            m.from
-        };
-        approach &= !m.is_feed();
-        if approach || crate::toolpath::dist(from, m.to) <= TOLERANCE_MM {
-            continue;
-        }
-        if m.is_feed() {
-            for p in [m.from, m.to] {
-                let d = cut.entry(key(&p)).or_insert(f64::INFINITY);
-                *d = d.min(p[2]);
-            }
-            continue;
-        }
-        let low = from[2].min(m.to[2]);
-        if low >= top - TOLERANCE_MM {
-            continue;
-        }
-        let vertical = key(&from) == key(&m.to);
-        let in_air = vertical
-            && cut
-                .get(&key(&from))
-                .is_some_and(|d| *d <= low + TOLERANCE_MM);
-        if !in_air {
-            out.push((from, m));
-        }
-    }
-    out
-}
-
-/// The first rapid below the source's highest cutting height that the
-/// two runs do not share: its ends must be as close as the cutting
-/// moves' points (`tolerance_mm`, half the target's smallest increment
-/// where it writes coarser than 1 µm: a rapid the port rounded to a Fanuc
-/// inch program's 0.0001 in is the same rapid on that machine).
-fn low_rapids(a: &[Event], b: &[Event], tolerance_mm: f64) -> Option<Difference> {
-    let top = cutting_height(a)?;
-    let (ra, rb) = (rapids_below(a, top), rapids_below(b, top));
-    let near = |p: &P3, q: &P3| crate::toolpath::dist(*p, *q) <= tolerance_mm;
-    let show = |m: Option<&(P3, &Move)>| match m {
-        Some((from, m)) => format!("rapid from {} to {}", point(from), point(&m.to)),
-        None => "no such rapid".to_string(),
+            c.differences.first().map(diff)
+        },
+        cutting_moves: c.ops_a,
+        rapids: c.rapid_differences.iter().map(diff).collect(),
+        low_rapid: a.low_rapid(b, tolerance_mm),
     };
-    for i in 0..ra.len().max(rb.len()) {
-        let (x, y) = (ra.get(i), rb.get(i));
-        if let (Some((fx, x)), Some((fy, y))) = (x, y) {
-            if near(fx, fy) && near(&x.to, &y.to) {
-                continue;
-            }
-        }
-        return Some(Difference {
-            what: format!(
-                "a rapid below the highest cutting height Z{}: A: {}; B: {}",
-                num(top),
-                show(x),
-                show(y)
-            ),
-            a: x.map(|(_, m)| m.span),
-            b: y.map(|(_, m)| m.span),
-        });
-    }
-    None
+    v.with_cutting(match tools.is_empty() {
+        true => a.length_offset(b),
+        false => None,
+    })
 }
 
-/// The tool length offsets (mm) each tool cuts with, where one is in
-/// force: a tool cut with another length on each side (`G43 H2` while T1
-/// is in the spindle) cuts at another depth. A side that cuts with no
-/// offset at all (LinuxCNC without `G43`, the control's convention) is
-/// not compared.
-fn length_offsets(a: &[Event], b: &[Event]) -> Option<Difference> {
-    let (la, lb) = (cut_lengths(a), cut_lengths(b));
-    for (tool, (len_a, span_a)) in &la {
-        let Some((len_b, span_b)) = lb.get(tool) else {
-            continue;
-        };
-        if (len_a - len_b).abs() > TOLERANCE_MM {
-            return Some(Difference {
-                what: format!(
-                    "tool length offset: T{tool} cuts with A {}; B {} mm",
-                    num(*len_a),
-                    num(*len_b)
-                ),
-                a: Some(*span_a),
-                b: Some(*span_b),
-            });
-        }
-    }
-    None
-}
-
-/// The first non-zero length offset each tool makes a feed move with,
-/// and that move's statement.
-fn cut_lengths(ev: &[Event]) -> std::collections::BTreeMap<i64, (f64, Span)> {
-    let mut now = 0.0;
-    let mut out = std::collections::BTreeMap::new();
-    for e in ev {
-        match e {
-            Event::Comment { text, .. } => {
-                if let Some(v) = text.strip_prefix(LENGTH_MARK) {
-                    now = v.parse().unwrap_or(0.0);
-                }
-            }
-            Event::Move(m) if m.is_feed() && now != 0.0 => {
-                out.entry(m.tool).or_insert((now, m.span));
-            }
-            _ => {}
-        }
-    }
-    out
-}
-
-fn num(v: f64) -> String {
-    crate::ir::num::short_text(v, 3)
-}
-
-fn point(p: &P3) -> String {
-    format!("X{} Y{} Z{}", num(p[0]), num(p[1]), num(p[2]))
-}
-
-fn renumber(e: Event, tools: &crate::port::ToolMap) -> Event {
+pub(crate) fn renumber(e: Event, tools: &crate::port::ToolMap) -> Event {
     match e {
         Event::Move(mut m) => {
             m.tool = tools.map(m.tool);

@@ -25,6 +25,9 @@ pub struct Scan {
     pub machine: HashSet<Span>,
     /// A subprogram or macro ported alone (see [`crate::interp::fragment`]).
     pub fragment: bool,
+    /// Some block needs the program walker (control flow, a call): the
+    /// run reads the program whole from there, and may load others.
+    pub walker: bool,
 }
 
 impl Scan {
@@ -37,15 +40,21 @@ impl Scan {
 pub fn scan(text: &str, id: FileId, spec: &DialectSpec) -> Scan {
     let mut machine = HashSet::new();
     let mut detector = Detector::default();
+    let mut walker = false;
     let read = crate::driver::check_stream_flagged(text.as_bytes(), id, spec, |b, _, _| {
         add_machine_spans(b, &mut machine);
         detector.block(b);
+        walker |= b
+            .stmts
+            .iter()
+            .any(|s| crate::interp::stream::needs_walker(&s.kind));
     });
     Scan {
         // Reading from memory cannot fail.
         diags: read.map(|r| r.diagnostics).unwrap_or_default(),
         machine,
         fragment: detector.is_fragment(),
+        walker,
     }
 }
 

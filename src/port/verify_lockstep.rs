@@ -1,0 +1,138 @@
+//! `port --verify` with the two programs run side by side: the source
+//! and the port each run on a thread of its own, reduced as they go
+//! ([`super::verify_digest`]), their operations handed over in batches
+//! to the comparison ([`crate::compare::compare_windows`]), which holds
+//! a few hundred of each. The proof's memory is then that of two runs
+//! (each as `canon` streams it), not of their events.
+//!
+//! Only for programs that run as streams to their end: without control
+//! flow or calls (nothing to load), and not a subprogram ported alone.
+
+use super::verify::{self, Recorder, Verdict};
+use super::verify_digest::{Digest, Tally};
+use super::verify_text::Scan;
+use crate::compare::{OpWindow, Ops};
+use crate::diag::Diagnostic;
+use crate::dialect::DialectSpec;
+use crate::interp::flow::NoLoader;
+use crate::interp::Options;
+use crate::span::{FileId, Span};
+use std::sync::mpsc::{sync_channel, SyncSender};
+use std::sync::Arc;
+
+/// Operations handed over at a time.
+const BATCH: usize = 1024;
+/// Batches a run may have waiting before it waits for the comparison.
+const QUEUED: usize = 4;
+
+/// One program to run.
+pub struct Side<'t> {
+    pub text: &'t str,
+    pub id: FileId,
+    pub scan: Scan,
+    pub spec: &'t Arc<DialectSpec>,
+    pub opts: &'t Options,
+}
+
+impl Side<'_> {
+    /// Can it run side by side (see the module doc)?
+    pub fn streams(&self) -> bool {
+        !self.scan.fragment && !self.scan.walker
+    }
+}
+
+/// What comparing side by side gives: the verdict, and each run's
+/// diagnostics (the verdict means nothing where a run stopped).
+pub struct Outcome {
+    pub verdict: Verdict,
+    pub source: Vec<Diagnostic>,
+    pub port: Vec<Diagnostic>,
+}
+
+/// Runs both programs side by side and compares them; the source's
+/// tools are renumbered by `tools`.
+pub fn compare(
+    source: Side<'_>,
+    port: Side<'_>,
+    tools: &super::ToolMap,
+    tolerance_mm: f64,
+) -> Outcome {
+    std::thread::scope(|s| {
+        let (ta, ra) = sync_channel::<Ops>(QUEUED);
+        let (tb, rb) = sync_channel::<Ops>(QUEUED);
+        let ha = s.spawn(move || run(source, Some(tools), tolerance_mm, ta));
+        let hb = s.spawn(move || run(port, None, tolerance_mm, tb));
+        let wa = OpWindow::pulled(Box::new(move || ra.recv().ok()));
+        let wb = OpWindow::pulled(Box::new(move || rb.recv().ok()));
+        let opts = verify::compare_options(tolerance_mm);
+        let c = crate::compare::compare_windows(wa, wb, &opts);
+        let joined = |h: std::thread::ScopedJoinHandle<'_, (Tally, Vec<Diagnostic>)>| {
+            h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))
+        };
+        let (a, da) = joined(ha);
+        let (b, db) = joined(hb);
+        Outcome {
+            verdict: verify::verdict(c, &a, &b, tools, tolerance_mm),
+            source: da,
+            port: db,
+        }
+    })
+}
+
+/// Runs one side, sending its operations as they are made.
+fn run(
+    side: Side<'_>,
+    tools: Option<&super::ToolMap>,
+    tolerance_mm: f64,
+    to: SyncSender<Ops>,
+) -> (Tally, Vec<Diagnostic>) {
+    let Side {
+        text,
+        id,
+        scan,
+        spec,
+        opts,
+    } = side;
+    let mut rec = Recorder::new(scan.machine);
+    let mut digest = Digest::new(tolerance_mm);
+    // The comparison stops listening only when it has all it needs.
+    let mut listening = true;
+    let diags = {
+        let mut sink = |call: crate::canon::Canon, span: Span| {
+            rec.call_with(call, span, |e| digest.push(&e, tools));
+            if digest.ops.ready() >= BATCH {
+                let batch = digest.ops.take_ready();
+                listening = listening && to.send(batch).is_ok();
+            }
+        };
+        crate::interp::file::run_text_loading(text, id, spec, opts, &mut NoLoader, &mut sink)
+    };
+    let Digest { ops, tally } = digest;
+    if listening {
+        // A comparison that has stopped listening needs no more.
+        let _ = to.send(ops.finish());
+    }
+    (tally, diags)
+}
+
+/// The tools a program's run changes to, each with its statement, in
+/// order: the proof gives them to a target that reads its tool table
+/// before the source has run (a run of its own, which holds nothing).
+pub fn tool_changes(
+    text: &str,
+    id: FileId,
+    spec: &Arc<DialectSpec>,
+    opts: &Options,
+) -> Vec<(i64, Span)> {
+    let mut tracker = crate::toolpath::Tracker::new();
+    let mut out = Vec::new();
+    let mut sink = |call: crate::canon::Canon, span: Span| {
+        tracker.push(&call, span, |e| {
+            if let crate::toolpath::Event::ToolChange { tool, span } = e {
+                out.push((tool, span));
+            }
+        });
+    };
+    crate::interp::file::run_text_loading(text, id, spec, opts, &mut NoLoader, &mut sink);
+    out
+}
