@@ -95,6 +95,21 @@ pub fn decode_line_into(line: &[u8], out: &mut String) {
 /// non-ASCII chars and lines that are not UTF-8 gets its UTF-8 lines'
 /// non-ASCII chars written as single bytes.
 pub fn encode(text: &str, enc: SourceEncoding) -> Vec<u8> {
+    encode_cow(text, enc).into_owned()
+}
+
+/// [`encode`], without a copy where the text already is those bytes
+/// (UTF-8 without a BOM, `\n` line ends, no `\r`): a large program's
+/// output is not held twice.
+pub fn encode_cow(text: &str, enc: SourceEncoding) -> std::borrow::Cow<'_, [u8]> {
+    let plain = !enc.bom && !enc.bytes && enc.ending.as_str() == "\n" && !text.contains('\r');
+    if plain {
+        return std::borrow::Cow::Borrowed(text.as_bytes());
+    }
+    std::borrow::Cow::Owned(encode_copy(text, enc))
+}
+
+fn encode_copy(text: &str, enc: SourceEncoding) -> Vec<u8> {
     let mut out = Vec::with_capacity(text.len() + 3);
     if enc.bom {
         out.extend_from_slice(BOM);

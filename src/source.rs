@@ -143,6 +143,14 @@ impl SourceMap {
     }
 
     /// The text of a file held whole (the kept lines of a sparse one).
+    /// Takes a file's text back (its spans then show nothing): a large
+    /// output is read back and reported on without being held twice.
+    pub fn take_text(&mut self, id: FileId) -> String {
+        let f = &mut self.files[id.0 as usize];
+        f.view_starts = line_starts("");
+        std::mem::take(&mut f.view)
+    }
+
     pub fn text(&self, id: FileId) -> &str {
         &self.files[id.0 as usize].view
     }

@@ -120,9 +120,11 @@ impl Context {
         path: &Path,
     ) -> Result<(FileId, String, crate::encoding::SourceEncoding), Failure> {
         let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+        let encoding = crate::encoding::sniff(&bytes);
         let text = crate::driver::decode(&bytes);
+        drop(bytes);
         let id = self.files.add(path.display().to_string(), text.clone());
-        Ok((id, text, crate::encoding::sniff(&bytes)))
+        Ok((id, text, encoding))
     }
 
     pub fn print(&self, diags: &[Diagnostic], format: Format) {

@@ -191,7 +191,7 @@ fn finish(
     target: &Arc<DialectSpec>,
     opts: &PortOptions,
     proof: Option<&crate::cli::port_material::Proof>,
-    out: String,
+    mut out: String,
     expanded: bool,
     mut diags: Vec<Diagnostic>,
     encoding: crate::encoding::SourceEncoding,
@@ -211,19 +211,23 @@ fn finish(
             opts,
             material: proof,
         };
-        let ok = verify_port(ctx, sides, &name, &out, &mut diags);
+        // The output is read back from the source map (its diagnostics
+        // point there), not held twice.
+        let out_id = ctx.files.add(name, std::mem::take(&mut out));
+        let ok = verify_port(ctx, sides, out_id, &mut diags);
         if std::env::var_os("CNCC_DEBUG_PORT").is_some() {
-            eprintln!("{out}");
+            eprintln!("{}", ctx.files.text(out_id));
         }
         ctx.print(&diags, a.format);
         if !ok {
             return Ok(EXIT_INPUT_ERRORS);
         }
+        out = ctx.files.take_text(out_id);
     } else {
         ctx.print(&diags, a.format);
     }
     // Written as the source was: comment bytes, BOM, line ends.
-    let bytes = crate::encoding::encode(&out, encoding);
+    let bytes = crate::encoding::encode_cow(&out, encoding);
     crate::cli::output::emit_output_bytes(a.output, &bytes)?;
     Ok(EXIT_OK)
 }
@@ -246,12 +250,10 @@ struct Sides<'a> {
 fn verify_port(
     ctx: &mut Context,
     s: Sides<'_>,
-    name: &str,
-    out: &str,
+    out_id: crate::span::FileId,
     diags: &mut Vec<Diagnostic>,
 ) -> bool {
-    let out_id = ctx.files.add(name.to_string(), out.to_string());
-    let back = verify_text::scan(out, out_id, s.target);
+    let back = verify_text::scan(ctx.files.text(out_id), out_id, s.target);
     if back.has_errors() {
         diags.extend(back.diags);
         eprintln!(
@@ -271,12 +273,17 @@ fn verify_port(
         spec: src_spec,
         opts: &opts,
     };
-    let port = (out, out_id, back);
-    let side_by_side =
-        s.material.is_none() && source.streams() && !port.2.fragment && !port.2.walker;
+    let side_by_side = s.material.is_none() && source.streams() && !back.fragment && !back.walker;
     let (proof, da, mut db) = match side_by_side {
-        true => side_by_side_proof(&s, source, port, tolerance, diags),
-        false => whole_proof(ctx, &s, source, port, tolerance, diags),
+        true => {
+            let port = (ctx.files.text(out_id), out_id, back);
+            side_by_side_proof(&s, source, port, tolerance, diags)
+        }
+        false => {
+            // The loaders add the files the program calls.
+            let out = ctx.files.text(out_id).to_string();
+            whole_proof(ctx, &s, source, (&out, out_id, back), tolerance, diags)
+        }
     };
     db.retain(|d| d.is_error());
     let run_errors = |d: &[Diagnostic]| d.iter().filter(|d| d.is_error()).count();
