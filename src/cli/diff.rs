@@ -10,6 +10,7 @@
 
 use crate::cli::args::Format;
 use crate::cli::context::{Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
+use crate::cli::diff_side_by_side;
 use crate::cli::stats::{keep_lines_at, load_tool_table, stream_events};
 use crate::compare::{compare_ops, CompareOptions, Comparison, DiffKind, Difference, OpBuilder};
 use crate::interp::Options;
@@ -69,12 +70,21 @@ pub fn run(ctx: &mut Context, mut a: DiffArgs<'_>) -> Result<i32, Failure> {
         true => OpBuilder::new(opts.tolerance_mm),
         false => OpBuilder::without_rapids(opts.tolerance_mm),
     };
-    let mut ba = builder();
-    let (ida, da) = stream_events(ctx, a.a, a.dialect_a, &a.options, true, |e| ba.push(e))?;
-    let mut bb = builder();
-    let (idb, db) = stream_events(ctx, a.b, a.dialect_b, &a.options, true, |e| bb.push(e))?;
-    let (oa, ob) = (ba.finish(), bb.finish());
-    let c = compare_ops(&oa, &ob, &opts);
+    let (ida, idb, c, da, db) = if is_stepnc(a.a) || is_stepnc(a.b) {
+        // A plan is posted first, and held whole.
+        let mut ba = builder();
+        let (ida, da) = stream_events(ctx, a.a, a.dialect_a, &a.options, true, |e| ba.push(e))?;
+        let mut bb = builder();
+        let (idb, db) = stream_events(ctx, a.b, a.dialect_b, &a.options, true, |e| bb.push(e))?;
+        let (oa, ob) = (ba.finish(), bb.finish());
+        (ida, idb, compare_ops(&oa, &ob, &opts), da, db)
+    } else {
+        let pa = program(ctx, a.a, a.dialect_a)?;
+        let pb = program(ctx, a.b, a.dialect_b)?;
+        let (ida, idb) = (pa.id, pb.id);
+        let r = diff_side_by_side::compare(ctx, (pa, pb), &a.options, &opts)?;
+        (ida, idb, r.comparison, r.a, r.b)
+    };
     let spans = |pick: fn(&Difference) -> Option<Span>| -> Vec<Span> {
         c.differences
             .iter()
@@ -97,6 +107,22 @@ pub fn run(ctx: &mut Context, mut a: DiffArgs<'_>) -> Result<i32, Failure> {
     };
     crate::cli::output::emit_output(None, &text)?;
     Ok(if c.same { EXIT_OK } else { EXIT_INPUT_ERRORS })
+}
+
+/// A program file to run side by side: its dialect (detected and said
+/// where not given) and its id, registered sparse as `stream_events` does.
+fn program<'p>(
+    ctx: &mut Context,
+    path: &'p Path,
+    dialect: Option<&str>,
+) -> Result<diff_side_by_side::Program<'p>, Failure> {
+    let head = crate::cli::check::read_head(path)?;
+    let (spec, reason) = ctx.spec_for(dialect, path, &head)?;
+    if let Some(r) = reason {
+        crate::cli::context::report_detection(path, &spec, &r);
+    }
+    let id = ctx.files.add_sparse(path.display().to_string(), Vec::new());
+    Ok(diff_side_by_side::Program { path, id, spec })
 }
 
 /// `file:line: text` of the line a span starts on.

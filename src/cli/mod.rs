@@ -7,6 +7,7 @@ pub mod check;
 pub mod context;
 pub mod diff;
 pub mod diff_material;
+pub mod diff_side_by_side;
 pub mod info;
 pub mod interpolate;
 pub mod ir;
