@@ -18,6 +18,7 @@ pub mod port_material;
 pub mod post;
 pub mod query;
 pub mod raise;
+pub mod rs274_config;
 pub mod simulate;
 pub mod stats;
 pub mod stepnc;
@@ -136,6 +137,7 @@ pub fn run(cli: Cli) -> i32 {
             dialect,
             tool_table,
             format,
+            config,
             run,
         } => canon::run(
             &mut ctx,
@@ -144,6 +146,7 @@ pub fn run(cli: Cli) -> i32 {
                 dialect: dialect.as_deref(),
                 tool_table: tool_table.as_deref(),
                 format: *format,
+                config: config.files(),
                 options: run.options(),
             },
         ),
