@@ -342,3 +342,44 @@ fn an_abort_comment_stops_the_run_with_its_text() {
     assert_eq!(d0[0]["message"], " stop at 20.000000");
     assert!(!out(&o).contains("STRAIGHT_TRAVERSE"));
 }
+
+#[test]
+fn check_reads_the_configuration_too() {
+    let d = folder(&[
+        ("t.ngc", "o<helper> call [4]\nG0 X#<_ini[vars]x>\nM2\n"),
+        (
+            "cfg/subs/helper.ngc",
+            "o<helper> sub\nG0 X#1\no<helper> endsub\nM2\n",
+        ),
+        (
+            "cfg/m.ini",
+            "[RS274NGC]\nSUBROUTINE_PATH = subs\n[VARS]\nX = 3\n",
+        ),
+    ]);
+    let check = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_cncc"))
+            .args([
+                "check",
+                "t.ngc",
+                "--dialect",
+                "linuxcnc",
+                "--format",
+                "json",
+            ])
+            .args(args)
+            .current_dir(d.path())
+            .output()
+            .unwrap()
+    };
+    let codes = |o: &Output| -> Vec<String> {
+        diags(o)
+            .iter()
+            .map(|j| j["code"].as_str().unwrap().to_string())
+            .collect()
+    };
+    // Alone: the sub is not found and the INI value is unknown.
+    assert_eq!(codes(&check(&[])), ["W0591", "W0590"]);
+    let with = check(&["--ini", "cfg/m.ini"]);
+    assert!(with.status.success(), "{}", err(&with));
+    assert!(codes(&with).is_empty(), "{}", err(&with));
+}

@@ -94,6 +94,8 @@ pub enum Command {
         #[command(flatten)]
         lint: LintArgs,
         #[command(flatten)]
+        config: ConfigArgs,
+        #[command(flatten)]
         run: RunArgs,
     },
     /// Print the meta-model of a program as readable text.

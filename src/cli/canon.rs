@@ -68,10 +68,10 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
         diags.extend(d);
         a.options.tool_table = table;
     }
-    let config = match &spec {
-        Some(spec) => rs274_config::load(ctx, spec, a.config, &mut a.options)?,
-        None => Default::default(),
-    };
+    if let Some(spec) = &spec {
+        rs274_config::require(spec, a.config)?;
+    }
+    let config = rs274_config::read(ctx, a.config, &mut a.options)?;
     if config.diags.iter().any(|d| d.is_error()) {
         // rs274 does not start with a parameter file it cannot read.
         ctx.print(&config.diags, a.format);

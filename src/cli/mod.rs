@@ -58,6 +58,7 @@ pub fn run(cli: Cli) -> i32 {
             no_run,
             stock,
             lint,
+            config,
             run,
         } => check::run(
             &mut ctx,
@@ -71,6 +72,7 @@ pub fn run(cli: Cli) -> i32 {
                 stock: stock.as_deref(),
                 lint: (!lint.no_lint).then(|| lint.selection()),
                 options: run.analysis_options(),
+                config: config.files(),
             },
         ),
         Command::Ir {

@@ -56,23 +56,28 @@ pub struct Loaded {
     pub diags: Vec<Diagnostic>,
 }
 
-/// Reads the files into `options.rs274`. A dialect without the
-/// `var-and-ini-files` capability refuses them (a usage error).
-pub fn load(
+/// A dialect without the `var-and-ini-files` capability refuses the
+/// files (a usage error).
+pub fn require(spec: &DialectSpec, files: ConfigFiles<'_>) -> Result<(), Failure> {
+    if files.any() && !spec.has(Capability::VarAndIniFiles) {
+        return Err(Failure(format!(
+            "--ini and --var-file are read for a dialect whose spec has the `var-and-ini-files` capability (a LinuxCNC configuration); `{}` has not",
+            spec.id
+        )));
+    }
+    Ok(())
+}
+
+/// Reads the files into `options.rs274` (see [`require`] for the
+/// dialect).
+pub fn read(
     ctx: &mut Context,
-    spec: &DialectSpec,
     files: ConfigFiles<'_>,
     options: &mut Options,
 ) -> Result<Loaded, Failure> {
     let mut loaded = Loaded::default();
     if !files.any() {
         return Ok(loaded);
-    }
-    if !spec.has(Capability::VarAndIniFiles) {
-        return Err(Failure(format!(
-            "--ini and --var-file are read for a dialect whose spec has the `var-and-ini-files` capability (a LinuxCNC configuration); `{}` has not",
-            spec.id
-        )));
     }
     let mut var_path = files.var_file.map(Path::to_path_buf);
     if let Some(path) = files.ini {
