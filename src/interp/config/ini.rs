@@ -34,12 +34,31 @@ impl Ini {
         let mut ini = Ini::default();
         let mut diags = Vec::new();
         let mut section = String::new();
-        for (line, start) in logical_lines(text) {
+        for (line, start, end) in logical_lines(text) {
             let body = line.trim();
             if body.is_empty() || body.starts_with('#') || body.starts_with(';') {
                 continue;
             }
             let lead = line.len() - line.trim_start().len();
+            let joined = end - start != line.len();
+            if joined {
+                // A line continued with `\`: offsets inside it do not map
+                // back to the file, so its diagnostics point at all of it.
+                let span = Span::new(id, start, end);
+                if let Some(e) = entry(body, &section, span) {
+                    ini.entries.push(e);
+                } else if let Some(rest) = body.strip_prefix('[') {
+                    if let Some(end) = rest.find(']') {
+                        section = rest[..end].to_string();
+                    }
+                } else {
+                    diags.push(bad_line(
+                        span,
+                        "a line that is not `[SECTION]` or `NAME = VALUE`",
+                    ));
+                }
+                continue;
+            }
             let span = Span::new(id, start + lead, start + lead + body.len());
             if let Some(rest) = body.strip_prefix('[') {
                 match rest.find(']') {
@@ -113,9 +132,24 @@ fn bad_line(span: Span, what: &str) -> Diagnostic {
         .help("an INI file holds `[SECTION]` lines, `NAME = VALUE` lines and `#` or `;` comment lines")
 }
 
+/// A `NAME = VALUE` line (not a section line) as an entry spanning `span`.
+fn entry(body: &str, section: &str, span: Span) -> Option<Entry> {
+    if body.starts_with('[') {
+        return None;
+    }
+    let (name, value) = body.split_once('=')?;
+    let name = name.trim();
+    (!name.is_empty()).then(|| Entry {
+        section: section.to_string(),
+        name: name.to_string(),
+        value: value.trim().to_string(),
+        span,
+    })
+}
+
 /// The file's lines with `\` continuations joined, each with the byte
-/// offset of its start.
-fn logical_lines(text: &str) -> Vec<(String, usize)> {
+/// range of its physical lines (line ends left out).
+fn logical_lines(text: &str) -> Vec<(String, usize, usize)> {
     let mut out = Vec::new();
     let mut cur: Option<(String, usize)> = None;
     let mut at = 0;
@@ -130,11 +164,15 @@ fn logical_lines(text: &str) -> Vec<(String, usize)> {
             None => cur = Some((piece.to_string(), at)),
         }
         if !more {
-            out.extend(cur.take());
+            if let Some((s, start)) = cur.take() {
+                out.push((s, start, at + line.len()));
+            }
         }
         at += raw.len();
     }
-    out.extend(cur);
+    if let Some((s, start)) = cur {
+        out.push((s, start, at));
+    }
     out
 }
 
