@@ -126,7 +126,7 @@ pub fn read(
         cfg.disable_fanuc_subs = flag("DISABLE_FANUC_STYLE_SUB", false);
         // FEATURES bit 4 (INI_VARS) is what rs274 does anyway.
         if let Some(e) = ini.get(SECTION, "FEATURES") {
-            if parse_integer(&e.value).map_or(true, |v| v & !4 != 0) {
+            if parse_integer(&e.value).is_none_or(|v| v & !4 != 0) {
                 loaded.diags.push(not_applied(e, "FEATURES"));
             }
         }
