@@ -482,6 +482,8 @@ fn too_large() -> std::io::Error {
 /// (any extension the dialect claims), read with the same dialect.
 pub struct FsLoader<'a> {
     dir: std::path::PathBuf,
+    /// Folders searched after `dir` (LinuxCNC's `SUBROUTINE_PATH`).
+    search: Vec<std::path::PathBuf>,
     spec: std::sync::Arc<DialectSpec>,
     files: &'a mut crate::source::SourceMap,
     /// Diagnostics from reading the loaded files.
@@ -496,10 +498,18 @@ impl<'a> FsLoader<'a> {
     ) -> Self {
         FsLoader {
             dir,
+            search: Vec::new(),
             spec,
             files,
             diags: Vec::new(),
         }
+    }
+
+    /// Also looks for called programs in `dirs`, in order, after the
+    /// program's own folder.
+    pub fn with_search(mut self, dirs: &[std::path::PathBuf]) -> Self {
+        self.search = dirs.to_vec();
+        self
     }
 
     fn candidates(&self, target: &crate::ir::CallTarget) -> Vec<std::path::PathBuf> {
@@ -527,10 +537,12 @@ impl<'a> FsLoader<'a> {
         let mut exts: Vec<String> = self.spec.extensions.clone();
         exts.extend(["ngc", "nc", "NC", "spf", "SPF", "mpf", "MPF"].map(String::from));
         let mut out = Vec::new();
-        for s in &stems {
-            out.push(self.dir.join(s));
-            for e in &exts {
-                out.push(self.dir.join(format!("{s}.{e}")));
+        for dir in std::iter::once(&self.dir).chain(&self.search) {
+            for s in &stems {
+                out.push(dir.join(s));
+                for e in &exts {
+                    out.push(dir.join(format!("{s}.{e}")));
+                }
             }
         }
         out

@@ -94,6 +94,8 @@ pub enum Command {
         #[command(flatten)]
         lint: LintArgs,
         #[command(flatten)]
+        config: ConfigArgs,
+        #[command(flatten)]
         run: RunArgs,
     },
     /// Print the meta-model of a program as readable text.
@@ -182,6 +184,8 @@ pub enum Command {
         tool_table: Option<PathBuf>,
         #[arg(long, value_enum, default_value_t = Format::Human)]
         format: Format,
+        #[command(flatten)]
+        config: ConfigArgs,
         #[command(flatten)]
         run: RunArgs,
     },
@@ -386,6 +390,30 @@ pub enum Command {
     /// Explain a diagnostic code (`E0201`) or name (`two-motion-codes`);
     /// without one, list them all.
     Explain { code: Option<String> },
+}
+
+/// A LinuxCNC configuration (dialects with `var-and-ini-files`; see
+/// docs/linuxcnc-config.md).
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct ConfigArgs {
+    /// A LinuxCNC INI file: its [RS274NGC] settings (SUBROUTINE_PATH,
+    /// PARAMETER_FILE, INI_VARS, ORIENT_OFFSET, DISABLE_G92_PERSISTENCE,
+    /// DISABLE_FANUC_STYLE_SUB), as `rs274 -i`.
+    #[arg(long = "ini", value_name = "FILE.ini")]
+    pub ini: Option<PathBuf>,
+    /// A LinuxCNC parameter file: read before the run and written back
+    /// after it, as `rs274 -v` (instead of the INI's PARAMETER_FILE).
+    #[arg(long = "var-file", value_name = "FILE.var")]
+    pub var_file: Option<PathBuf>,
+}
+
+impl ConfigArgs {
+    pub fn files(&self) -> crate::cli::rs274_config::ConfigFiles<'_> {
+        crate::cli::rs274_config::ConfigFiles {
+            ini: self.ini.as_deref(),
+            var_file: self.var_file.as_deref(),
+        }
+    }
 }
 
 /// How a program is run.

@@ -13,6 +13,7 @@ use crate::canon::write_call;
 use crate::cli::args::Format;
 use crate::cli::check::{keep_lines, read_head};
 use crate::cli::context::{report_detection, Context, Failure, EXIT_INPUT_ERRORS, EXIT_OK};
+use crate::cli::rs274_config::{self, ConfigFiles};
 use crate::cli::stepnc_input::post_and_run;
 use crate::interp::{file::run_file, tooltable::ToolTable, Options};
 use std::io::Write;
@@ -37,6 +38,8 @@ pub struct CanonArgs<'a> {
     pub dialect: Option<&'a str>,
     pub tool_table: Option<&'a Path>,
     pub format: Format,
+    /// `--ini`, `--var-file`: a LinuxCNC configuration.
+    pub config: ConfigFiles<'a>,
     pub options: Options,
 }
 
@@ -44,6 +47,11 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
     let fail = |e: std::io::Error| Failure(format!("{}: {e}", a.file.display()));
     let head = read_head(a.file)?;
     let stepnc = crate::stepnc::is_part21(a.file, &head);
+    if stepnc && a.config.any() {
+        return Err(Failure(
+            "--ini and --var-file apply to a part program, not a STEP-NC plan".into(),
+        ));
+    }
     let spec = if stepnc {
         None
     } else {
@@ -60,6 +68,16 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
         diags.extend(d);
         a.options.tool_table = table;
     }
+    if let Some(spec) = &spec {
+        rs274_config::require(spec, a.config)?;
+    }
+    let config = rs274_config::read(ctx, a.config, &mut a.options)?;
+    if config.diags.iter().any(|d| d.is_error()) {
+        // rs274 does not start with a parameter file it cannot read.
+        ctx.print(&config.diags, a.format);
+        return Ok(EXIT_INPUT_ERRORS);
+    }
+    diags.extend(config.diags.iter().cloned());
     let mut out = std::io::stdout().lock();
     let mut io_error = None;
     // Calls are written into a buffer, handed to stdout in large chunks.
@@ -79,6 +97,7 @@ pub fn run(ctx: &mut Context, mut a: CanonArgs<'_>) -> Result<i32, Failure> {
             let run =
                 run_file(a.file, id, &spec, &a.options, &mut ctx.files, &mut sink).map_err(fail)?;
             diags.extend(run);
+            rs274_config::write_back(&config, &a.options)?;
             flush_to(&mut out, &mut buf, &mut io_error);
             keep_lines(ctx, a.file, id, &diags)?;
         }

@@ -33,6 +33,8 @@ pub struct CheckArgs<'a> {
     /// Lint the run, with these command-line selectors (None: `--no-lint`).
     pub lint: Option<crate::lint::CliSelect>,
     pub options: Options,
+    /// `--ini`, `--var-file`: a LinuxCNC configuration (read, not written).
+    pub config: crate::cli::rs274_config::ConfigFiles<'a>,
 }
 
 pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
@@ -43,6 +45,12 @@ pub fn run(ctx: &mut Context, mut a: CheckArgs<'_>) -> Result<i32, Failure> {
         all.extend(d);
         a.options.tool_table = table;
     }
+    let config = crate::cli::rs274_config::read(ctx, a.config, &mut a.options)?;
+    if config.diags.iter().any(|d| d.is_error()) {
+        ctx.print(&config.diags, a.format);
+        return Ok(EXIT_INPUT_ERRORS);
+    }
+    all.extend(config.diags);
     a.options.missing_calls_warn = true;
     a.options.keep_going = true;
     // A check names invented tool sizes only where they mattered (W0592).
@@ -162,6 +170,7 @@ fn check_file(
     let fail = |e: std::io::Error| Failure(format!("{}: {e}", path.display()));
     let head = read_head(path)?;
     let (spec, reason) = ctx.spec_for(a.dialect, path, &head)?;
+    crate::cli::rs274_config::require(&spec, a.config)?;
     let input = BufReader::with_capacity(1 << 16, File::open(path).map_err(fail)?);
     let id = ctx.files.add_sparse(path.display().to_string(), Vec::new());
     let options = program_tools(&a.options, &head, &spec);
@@ -215,7 +224,8 @@ fn check_file(
             (Some(_), Some(_)) => Vec::new(),
             (Some(program), None) => {
                 let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-                let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
+                let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files)
+                    .with_search(&a.options.rs274.subroutine_path);
                 let mut d = stream.continue_with(&mut it, program.clone(), &mut loader);
                 d.append(&mut loader.diags);
                 d
@@ -377,7 +387,8 @@ fn run_as_fragment(
     fragment: &crate::interp::fragment::Fragment,
 ) -> Vec<Diagnostic> {
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files);
+    let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files)
+        .with_search(&options.rs274.subroutine_path);
     let mut discard = |_: crate::canon::Canon, _: crate::span::Span| {};
     let mut d =
         crate::interp::fragment::run(program, fragment, spec, options, &mut loader, &mut discard);

@@ -19,6 +19,7 @@ pub mod port_material;
 pub mod post;
 pub mod query;
 pub mod raise;
+pub mod rs274_config;
 pub mod simulate;
 pub mod stats;
 pub mod stepnc;
@@ -58,6 +59,7 @@ pub fn run(cli: Cli) -> i32 {
             no_run,
             stock,
             lint,
+            config,
             run,
         } => check::run(
             &mut ctx,
@@ -71,6 +73,7 @@ pub fn run(cli: Cli) -> i32 {
                 stock: stock.as_deref(),
                 lint: (!lint.no_lint).then(|| lint.selection()),
                 options: run.analysis_options(),
+                config: config.files(),
             },
         ),
         Command::Ir {
@@ -137,6 +140,7 @@ pub fn run(cli: Cli) -> i32 {
             dialect,
             tool_table,
             format,
+            config,
             run,
         } => canon::run(
             &mut ctx,
@@ -145,6 +149,7 @@ pub fn run(cli: Cli) -> i32 {
                 dialect: dialect.as_deref(),
                 tool_table: tool_table.as_deref(),
                 format: *format,
+                config: config.files(),
                 options: run.options(),
             },
         ),

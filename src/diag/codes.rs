@@ -326,6 +326,27 @@ codes! {
     ToolSizesInvented = "W0592", "tool-sizes-unknown", Warning,
         "tools whose sizes no tool table gave",
         "No tool table (`--tool-table`) gave these tools' lengths and diameters. Tools 1 to 20 got sizes from cncc's built-in table, which are invented (small inch end mills and drills); other tools, which the control holds in its own offset memory, run with no length and no diameter. Length offsets, radius compensation and anything measured with the tool were checked with those sizes, not the shop's. Give the shop's tool table to check them for real.";
+    BadParameterFile = "E0593", "bad-parameter-file", Error,
+        "a parameter file LinuxCNC's interpreter does not start with",
+        "A LinuxCNC parameter file (`.var`, `--var-file` or `[RS274NGC]PARAMETER_FILE`) gives one parameter a line, `NUMBER VALUE`, the numbers from 1 to 5601 in ascending order, each once. rs274 stops before the program with \"Parameter number out of range\" or \"Parameter file out of order\", so cncc does not run the program either. Correct or sort the line.";
+    ParameterLineSkipped = "W0593", "parameter-line-skipped", Warning,
+        "a parameter file line that is not `NUMBER VALUE`",
+        "rs274 reads a parameter file line only when its first two words are an integer and a number; it skips any other line without a word, and so does cncc. The parameter the line meant to set keeps its value (0 for a persistent one). When rs274 writes the file back at the end of the run the line is gone.";
+    BadIniLine = "W0594", "bad-ini-line", Warning,
+        "an INI file line that is neither a section, a value nor a comment",
+        "A LinuxCNC INI file holds `[SECTION]` lines, `NAME = VALUE` lines, and comment lines starting with `#` or `;`. LinuxCNC skips any other line, and so does cncc. A `\\` at the end of a line continues it on the next one.";
+    BadIniSetting = "W0595", "bad-ini-setting", Warning,
+        "an `[RS274NGC]` setting whose value the interpreter does not take",
+        "The interpreter reads `ORIENT_OFFSET` as a number and `INI_VARS`, `DISABLE_G92_PERSISTENCE` and `DISABLE_FANUC_STYLE_SUB` as integers (0 off, anything else on); `SUBROUTINE_PATH` is a `:`-separated list of existing folders. A value it cannot read leaves the default (for `yes` or `true` too: write 1), a folder that does not exist is left out. The run goes on with the default; correct the value.";
+    IniSettingNotApplied = "W0596", "ini-setting-not-applied", Warning,
+        "an `[RS274NGC]` setting that cncc does not apply",
+        "cncc applies these `[RS274NGC]` settings of a LinuxCNC INI file: SUBROUTINE_PATH, PARAMETER_FILE, INI_VARS, ORIENT_OFFSET, DISABLE_G92_PERSISTENCE and DISABLE_FANUC_STYLE_SUB. Remaps (REMAP), the FEATURES bits other than INI_VARS (4) and their switches (RETAIN_G43, OWORD_NARGS, NO_DOWNCASE_OWORD, OWORD_WARN_ONLY, HAL_PIN_VARS), ON_ABORT_COMMAND, RS274NGC_STARTUP_CODE, USER_M_PATH and the arc tolerances are not applied: the run goes on as if the setting were absent, so its calls may differ from LinuxCNC's where the setting matters.";
+    ProgramAborted = "E0595", "program-aborted", Error,
+        "the program stopped itself with an (ABORT, text) comment",
+        "LinuxCNC's `(ABORT, text)` comment stops the run with its text as the error, parameters substituted as in `(DEBUG, ...)`. The program's own check failed here; the text says why.";
+    SubStyleDisabled = "E0594", "sub-style-disabled", Error,
+        "an M98 call where the configuration disables Fanuc-style subprograms",
+        "The INI file sets `[RS274NGC]DISABLE_FANUC_STYLE_SUB`, so LinuxCNC refuses M98 (and the `O1 ... M99` programs it calls). Call an `o1 sub ... o1 endsub` with `o1 call`, or drop the setting.";
     NamedToolWithoutTable = "W0516", "named-tool-without-table", Warning,
         "a tool called by name with no tool table to find it in",
         "Siemens tool management calls tools by name (`T=\"FACEMILL 63\"`). cncc finds a named tool by the comment of a row of the tool table given with `--tool-table`; without one, only the built-in tools T1..T20 exist. The run goes on with a tool of no length and no diameter under that name, so lengths and radius compensation are not checked for it: give a tool table whose row carries the name as its comment.";

@@ -251,6 +251,10 @@ pub enum Capability {
     /// only when Q (timeout) is given (LinuxCNC); elsewhere M19 always
     /// orients and waits.
     OrientByWords,
+    /// The interpreter takes a parameter file (LinuxCNC `.var`, kept
+    /// between runs) and the `[RS274NGC]` settings of an INI file:
+    /// `--var-file` and `--ini` apply (see `interp::config`).
+    VarAndIniFiles,
     /// A length register word alone (`Z4. H2`) while G43/G44 is in force
     /// selects that register: its length is active from this block's
     /// moves on (Fanuc, Haas [K]: a new H number in G43 mode replaces the
@@ -354,6 +358,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("strict-sub-styles", Capability::StrictSubStyles),
     ("stop-at-closing-percent", Capability::StopAtClosingPercent),
     ("orient-by-words", Capability::OrientByWords),
+    ("var-and-ini-files", Capability::VarAndIniFiles),
     ("change-names-tool", Capability::ChangeNamesTool),
     ("bare-motion-code-moves", Capability::BareMotionCodeMoves),
     ("operator-messages", Capability::OperatorMessages),

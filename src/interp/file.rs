@@ -35,7 +35,8 @@ pub fn run_file(
         crate::cli::context::read_limited(path, crate::cli::context::MAX_INPUT).map(|b| decode(&b))
     };
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let mut loader = FsLoader::new(dir, spec.clone(), files);
+    let mut loader =
+        FsLoader::new(dir, spec.clone(), files).with_search(&opts.rs274.subroutine_path);
     let mut diags = Run { id, spec, opts }.go(input, whole, &mut loader, sink)?;
     diags.append(&mut loader.diags);
     Ok(diags)
@@ -116,6 +117,7 @@ impl Run<'_> {
             }
         };
         diags.extend(run);
+        opts.rs274.keep_final(&it);
         Ok(diags)
     }
 }

@@ -857,6 +857,13 @@ impl<'l> Walker<'l> {
         values: Vec<(u32, Option<f64>)>,
         passes: u64,
     ) -> Result<Next, Stop> {
+        if kind == CallKind::Subprogram && it.opts.rs274.disable_fanuc_subs {
+            return Err(it.read_error(
+                it.span,
+                Code::SubStyleDisabled,
+                "DISABLE_FANUC_STYLE_SUB set in INI file, but found m98",
+            ));
+        }
         let target = target.clone();
         let (to_prog, at) = match self.find(prog, &target, kind) {
             Some(x) => x,
@@ -1150,7 +1157,18 @@ pub fn assign(
             it.check_writable(n, it.span)?;
             it.params.set_numbered(n, v);
         }
-        Var::Named(name) => it.params.set_named(name, v.unwrap_or(0.0)),
+        Var::Named(name) => {
+            // LinuxCNC's predefined parameters (`#<_x>`, `#<_ini[..]..>`)
+            // are read-only: rs274 refuses the block as it reads it.
+            if super::predefined::named(it, name).is_some() {
+                return Err(it.read_error(
+                    it.span,
+                    Code::UnsupportedHere,
+                    format!("Cannot assign to read-only parameter #<{name}>"),
+                ));
+            }
+            it.params.set_named(name, v.unwrap_or(0.0))
+        }
         Var::R(n) => it.params.set_r(*n, v.unwrap_or(0.0)),
         Var::Q(bank, n) => it.params.set_q(*bank, *n, v.unwrap_or(0.0)),
         Var::RIndirect(e) => {

@@ -78,11 +78,11 @@ fn linuxcnc_sub_call_args_locals_and_return_value() {
 fn linuxcnc_do_repeat_elseif_and_eq_tolerance() {
     let p = run(
         "linuxcnc",
-        "%\n#<_a> = 0\no1 do\n#<_a> = [#<_a> + 1]\no1 while [#<_a> LT 3]\no2 repeat [4]\n#<_a> = [#<_a> + 10]\no2 endrepeat\no3 if [#<_a> EQ 0]\n#<_b> = 1\no3 elseif [#<_a> EQ 43.00005]\n#<_b> = 2\no3 else\n#<_b> = 3\no3 endif\n#<_c> = [#3 EQ 0]\n%\n",
+        "%\n#<_ta> = 0\no1 do\n#<_ta> = [#<_ta> + 1]\no1 while [#<_ta> LT 3]\no2 repeat [4]\n#<_ta> = [#<_ta> + 10]\no2 endrepeat\no3 if [#<_ta> EQ 0]\n#<_tb> = 1\no3 elseif [#<_ta> EQ 43.00005]\n#<_tb> = 2\no3 else\n#<_tb> = 3\no3 endif\n#<_tc> = [#3 EQ 0]\n%\n",
     );
-    assert_eq!(g(&p, "_a"), 43.0);
-    assert_eq!(g(&p, "_b"), 2.0, "EQ within 0.0001, as rs274");
-    assert_eq!(g(&p, "_c"), 1.0, "an unset LinuxCNC parameter is 0");
+    assert_eq!(g(&p, "_ta"), 43.0);
+    assert_eq!(g(&p, "_tb"), 2.0, "EQ within 0.0001, as rs274");
+    assert_eq!(g(&p, "_tc"), 1.0, "an unset LinuxCNC parameter is 0");
 }
 
 #[test]

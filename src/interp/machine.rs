@@ -17,12 +17,27 @@ pub fn init_sequence(it: &mut Interp<'_, '_>) {
         .spec
         .has(crate::dialect::Capability::CycleRetractRPlaneAtStart);
     it.emit(Canon::UseLengthUnits(CanonUnits::Mm));
-    it.emit(Canon::SetG5xOffset {
-        index: 1,
-        offset: [0.0; 6],
-    });
-    it.emit(Canon::SetG92Offset([0.0; 6]));
-    it.emit(Canon::SetXyRotation(0.0));
+    // With a parameter file the run starts in the offsets it gives, as
+    // rs274's `init` prints them; otherwise every offset prints 0 (a
+    // `--machine` description places work zero for the checks only).
+    if it.opts.rs274.parameters.is_some() {
+        let s = &it.state;
+        let index = s.g5x_index;
+        let offset = g5x_pose(s, index);
+        let g92 = if s.g92_applied { s.g92 } else { [0.0; 9] };
+        let g92 = pose6(s, &g92);
+        let rotation = s.g5x_rotation[index as usize];
+        it.emit(Canon::SetG5xOffset { index, offset });
+        it.emit(Canon::SetG92Offset(g92));
+        it.emit(Canon::SetXyRotation(rotation));
+    } else {
+        it.emit(Canon::SetG5xOffset {
+            index: 1,
+            offset: [0.0; 6],
+        });
+        it.emit(Canon::SetG92Offset([0.0; 6]));
+        it.emit(Canon::SetXyRotation(0.0));
+    }
     it.emit(Canon::SetFeedReference);
     it.emit(Canon::OnReset);
 }

@@ -9,6 +9,7 @@
 pub mod arcs;
 pub mod aux;
 pub mod comp;
+pub mod config;
 pub mod cycle_io;
 pub mod cycles;
 pub mod eval;
@@ -271,6 +272,8 @@ impl<'a, 's> Interp<'a, 's> {
         if let Some(m) = self.opts.machine.clone() {
             m.apply(self);
         }
+        let opts = self.opts;
+        opts.rs274.apply(self);
         machine::init_sequence(self);
     }
 
@@ -401,5 +404,6 @@ pub fn run(
         Err(Stop::Unknown(d)) => diags.push(d),
         Ok(()) => machine::fell_off_end(&mut it, &mut diags),
     }
+    opts.rs274.keep_final(&it);
     diags
 }

@@ -177,10 +177,23 @@ fn comment(it: &mut Interp<'_, '_>, text: &str, style: CommentStyle) -> Result<(
     } else if let Some(call) = log_call(it, text) {
         it.out(call);
     } else if lower.starts_with("print,") {
+    } else if let Some(rest) = abort_text(it, text) {
+        // `(ABORT, text)`: the run stops with the text, parameters
+        // substituted as in DEBUG (rs274 2.9, its abort-hot-comment test).
+        let msg = substitute(it, rest);
+        return Err(it.error_at(it.span, crate::diag::Code::ProgramAborted, msg));
     } else {
         it.out(Canon::Comment(text.to_string()));
     }
     Ok(())
+}
+
+/// The text after `ABORT,` when the dialect's spec lists ABORT among its
+/// active comments.
+fn abort_text<'t>(it: &Interp<'_, '_>, text: &'t str) -> Option<&'t str> {
+    let (word, _, comma) = it.spec.text.active_word(text)?;
+    (word.word.eq_ignore_ascii_case("abort")).then_some(())?;
+    text.get(comma? + 1..)
 }
 
 /// `(LOGOPEN,f)`, `(LOGAPPEND,f)`, `(LOGCLOSE)`, `(LOG,text)` (parameters
@@ -366,6 +379,8 @@ fn spindle(
             let by_words = it.spec.has(crate::dialect::Capability::OrientByWords);
             if !by_words || given || mode.is_some() {
                 let mode = mode.unwrap_or(0.0) as i64;
+                // LinuxCNC's [RS274NGC]ORIENT_OFFSET (0 without an INI).
+                let angle = angle + it.opts.rs274.orient_offset;
                 it.out(Canon::OrientSpindle { angle, mode });
             }
             if !by_words || wait.is_some() {

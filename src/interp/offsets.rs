@@ -178,6 +178,7 @@ fn coord_shift(
         CoordShift::Suspend => it.state.g92_applied = false,
         CoordShift::Restore => it.state.g92_applied = true,
     }
+    it.state.g92_flag = if it.state.g92_applied { 1.0 } else { 0.0 };
     it.state.reframe(old);
     emit_g92(it);
     Ok(())

@@ -50,6 +50,9 @@ pub struct Options {
     /// with the next block, as `check` does; `canon` stops at the first,
     /// as rs274 does.
     pub keep_going: bool,
+    /// A LinuxCNC configuration's parameter file and `[RS274NGC]`
+    /// settings (`--var-file`, `--ini`).
+    pub rs274: super::config::Rs274Config,
 }
 
 impl Default for Options {
@@ -63,6 +66,7 @@ impl Default for Options {
             machine: None,
             report_tool_sizes: false,
             keep_going: false,
+            rs274: Default::default(),
         }
     }
 }

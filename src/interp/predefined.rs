@@ -1,6 +1,6 @@
 //! LinuxCNC's predefined read-only named parameters (`#<_x>`,
 //! `#<_metric>`, ...) and the numbered system parameters that mirror the
-//! machine state (#5211 G92, #5220/#5221.. work offsets,
+//! machine state (#5210/#5211 G92, #5220/#5221.. work offsets,
 //! #5420.. position), computed from the machine state when read.
 
 use super::host::SpindleDir;
@@ -62,8 +62,22 @@ pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
         // LinuxCNC 2.9 reports `_vmajor` 2.9 and `_vminor` 0 (rs274 2.9.x).
         "_vmajor" => Some(2.9),
         "_vminor" => Some(0.0),
-        _ => modal(it, name),
+        _ => modal(it, name).or_else(|| ini_var(it, name)),
     }
+}
+
+/// `#<_ini[SECTION]NAME>`: a number from the INI file when
+/// `[RS274NGC]INI_VARS` lets the program read it (`--ini`); section and
+/// name are looked up in capitals, as rs274 does. Not a number, or not
+/// there: undefined.
+fn ini_var(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
+    let ini = it.opts.rs274.ini_vars.as_ref()?;
+    let rest = name
+        .get(..5)?
+        .eq_ignore_ascii_case("_ini[")
+        .then(|| &name[5..])?;
+    let (section, key) = rest.split_once(']')?;
+    ini.number(section, key)
 }
 
 /// The modal-state parameters (`#<_motion_mode>`, `#<_ccomp>`, ...) and the
@@ -175,9 +189,11 @@ pub fn numbered(it: &Interp<'_, '_>, n: u32) -> Option<f64> {
         }
     };
     match n {
+        5210 => Some(s.g92_flag),
+        // G92.2 suspends the offset and keeps its values (rs274 2.9).
         5211..=5219 => {
             let i = (n - 5211) as usize;
-            Some(if s.g92_applied { len(i, s.g92[i]) } else { 0.0 })
+            Some(len(i, s.g92[i]))
         }
         5220 => Some(s.g5x_index as f64),
         5221..=5399 => {

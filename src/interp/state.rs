@@ -51,6 +51,9 @@ pub struct State {
     /// G92 offset, mm.
     pub g92: [f64; 9],
     pub g92_applied: bool,
+    /// #5210, LinuxCNC's G92 flag: 1 after G92/G52/G92.3, 0 after
+    /// G92.1/G92.2, or what the parameter file gave.
+    pub g92_flag: f64,
     /// Tool length offset x y z a b c u v w, mm.
     pub tool_offset: [f64; 9],
     /// Tool number in the spindle (0: none) and the one selected.
@@ -129,6 +132,7 @@ impl State {
             g5x_rotation: [0.0; 10],
             g92: [0.0; 9],
             g92_applied: false,
+            g92_flag: 0.0,
             tool_offset: [0.0; 9],
             tool_in_spindle: 0,
             spindle_row: 1,
