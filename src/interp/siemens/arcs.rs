@@ -169,11 +169,16 @@ pub fn arc(
         Some(v) => it.value(v, exprs)?,
         None => 0.0,
     };
-    if !(0.0..=10_000.0).contains(&turns) || turns.fract() != 0.0 {
-        return Err(it.error_at(
-            it.span,
-            Code::BadWordValue,
-            "TURN= must be a whole number of turns from 0",
+    // 840D programming manual: TURN= is the number of additional full
+    // circles, 0 to 999.
+    if !(0.0..=999.0).contains(&turns) || turns.fract() != 0.0 {
+        return Err(Stop::Error(
+            crate::diag::Diagnostic::new(
+                Code::BadWordValue,
+                format!("TURN={turns} is not a whole number of full circles from 0 to 999"),
+            )
+            .primary(it.span, "this helix")
+            .help("TURN= counts the full circles added to the arc; the part of a circle comes from the end point (a half turn is TURN=0 with the end opposite the start)"),
         ));
     }
     check_feed(
