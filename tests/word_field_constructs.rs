@@ -168,3 +168,23 @@ fn a_second_t_without_a_change_or_on_linuxcnc_is_a_repeated_word() {
     ]);
     assert!(stderr(&o).contains("E0205"), "{}", stderr(&o));
 }
+
+/// A `G02` alone sets the motion mode on Fanuc (a bare motion code does
+/// not move there): the mistake is the next block, which moves in G02
+/// with no centre, and that is where it is reported. LinuxCNC refuses
+/// the bare `G2` itself ("R i j k words all missing for arc", rs274 2.9).
+#[test]
+fn an_arc_without_a_centre_is_reported_on_the_block_that_moves() {
+    let file = "tests/programs/fanuc/bare-arc-code.nc";
+    let o = cncc(&["check", "--dialect", "fanuc", file]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    let errs = errors(&err);
+    assert_eq!(errs.len(), 1, "{err}");
+    assert!(errs[0].contains("E0512"), "{err}");
+    assert!(err.contains(":10:1") && !err.contains(":9:"), "{err}");
+    assert!(err.contains("help: give the centre"), "{err}");
+    let o = cncc(&["check", "--dialect", "linuxcnc", file]);
+    let err = stderr(&o);
+    assert!(err.contains(":9:"), "{err}");
+}

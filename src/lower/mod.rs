@@ -164,7 +164,7 @@ impl<'s> Lowering<'s> {
         codes::check_groups(&s.codes, spec, ctx.diags);
         codes::drop_overridden_cancels(&mut s.codes, ctx.diags);
         for cw in &s.codes {
-            checks::check_required(cw, &self.words, ctx.diags);
+            checks::check_required(cw, &self.words, spec, ctx.diags);
         }
         lower_codes(&s.codes, &mut self.words, &mut s.out, &mut ctx);
         finish(s, &mut self.words, &mut ctx);
