@@ -152,3 +152,35 @@ fn turn_is_a_whole_number_of_full_circles() {
         assert_eq!(e.matches("error[").count(), 1, "{e}");
     }
 }
+
+/// `M1=3 S1=1000` (address extension: spindle 1, the master spindle) is
+/// `M3 S1000`, with a computed value too (`M1=DIR` in a PROC); a computed
+/// spindle code runs as the code it turns out to be.
+#[test]
+fn spindle_one_address_extensions_run_as_the_master_spindle() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("spindle.mpf");
+    let text = "G17 G90 G71 T1 D1\nR1=4\nG0 X0 Y0 Z10 M1=3 S1=1000\nG1 Z0 F100\n\
+                M1=R1 S1=R1*100\nG1 X10\nM1=5\nM30\n";
+    std::fs::write(&path, text).unwrap();
+    let p = path.to_str().unwrap();
+    let o = cncc(&["check", "--dialect", "siemens840d", p]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{e}");
+    assert!(!e.contains("warning["), "{e}");
+    let out = stdout(&cncc(&["canon", "--dialect", "siemens840d", p]));
+    let spindle: Vec<&str> = out
+        .lines()
+        .filter(|l| l.contains("SPINDLE_SPEED") || l.contains("START_SPINDLE"))
+        .collect();
+    assert_eq!(
+        spindle,
+        [
+            "SET_SPINDLE_SPEED(0, 1000.0000)",
+            "START_SPINDLE_CLOCKWISE(0)",
+            "SET_SPINDLE_SPEED(0, 400.0000)",
+            "START_SPINDLE_COUNTERCLOCKWISE(0)",
+        ],
+        "{out}"
+    );
+}
