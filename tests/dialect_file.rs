@@ -84,6 +84,57 @@ fn a_dialect_file_for_the_machine_makes_it_check_clean() {
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(!stderr(&o).contains("error["), "{}", stderr(&o));
+    // `run="pass"`: the run goes past the macro and checks what follows.
+    assert!(!stderr(&o).contains("W0511"), "{}", stderr(&o));
+}
+
+const RETURN: &str = "tests/programs/fanuc/builder-g28-g53.nc";
+
+/// `G91 G28 G53 Z0. W0. H0` (a Kuraki boring mill's NX post): two codes
+/// of Fanuc's group 00 in one block, which a stock Fanuc does not take.
+/// The error's help gives the dialect-file line for a machine that does.
+#[test]
+fn two_one_shot_codes_in_a_block_are_an_error_whose_help_names_the_dialect_file() {
+    let o = cncc(&["check", "--dialect", "fanuc", RETURN]);
+    assert_eq!(o.status.code(), Some(1));
+    let err = stderr(&o);
+    assert!(
+        err.contains("E0202") && err.contains("builder-g28-g53.nc:10:9"),
+        "{err}"
+    );
+    assert!(
+        err.contains("--dialect-file") && err.contains("together=\"ref-return.1 machine-coords\""),
+        "{err}"
+    );
+    // The help is for builders' one-shot codes, not for modal groups.
+    let dir = tempfile::tempdir().unwrap();
+    let modal = dir.path().join("modal.nc");
+    std::fs::write(&modal, "O1\nG90 G91 X1.\nM30\n").unwrap();
+    let err = stderr(&cncc(&[
+        "check",
+        "--dialect",
+        "fanuc",
+        modal.to_str().unwrap(),
+    ]));
+    assert!(
+        err.contains("E0202") && !err.contains("--dialect-file"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_dialect_file_pairing_the_codes_makes_the_return_check_clean() {
+    let o = cncc(&[
+        "--dialect-file",
+        "tests/dialects/kuraki-kbt.xml",
+        "check",
+        "--dialect",
+        "kuraki-kbt",
+        RETURN,
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(!err.contains("error[") && !err.contains("W0511"), "{err}");
 }
 
 /// `cncc dialects --spec ID` prints each built-in spec exactly as it is

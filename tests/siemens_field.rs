@@ -119,3 +119,68 @@ fn machine_state_is_read_and_kept_not_guessed() {
     let o = cncc(&["port", "--from", "siemens840d", "--to", "fanuc", P]);
     assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
 }
+
+/// `TURN=` counts the full circles a helix adds to its arc (840D
+/// programming manual: 0 to 999). An NX post writes `TURN=.5` for a half
+/// turn that the end point already gives: not a whole number, so the
+/// control either alarms or rounds it to one more full circle; either way
+/// not the half turn meant. Whole numbers run.
+#[test]
+fn turn_is_a_whole_number_of_full_circles() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |turn: &str| {
+        let path = dir.path().join("helix.mpf");
+        let text = format!(
+            "G17 G90 G71 T1 D1\nG0 X39 Y0 Z0 S1000 M3\n\
+             G2 X-39 Y0 Z-3 I=AC(0) J=AC(0) TURN={turn} F200\nG3 X-36 Y3 CR=3\nM30\n"
+        );
+        std::fs::write(&path, text).unwrap();
+        cncc(&["check", "--dialect", "siemens840d", path.to_str().unwrap()])
+    };
+    for ok in ["0", "2", "999"] {
+        let o = run(ok);
+        assert_eq!(o.status.code(), Some(0), "TURN={ok}: {}", stderr(&o));
+    }
+    for bad in [".5", "1000"] {
+        let o = run(bad);
+        let e = stderr(&o);
+        assert_eq!(o.status.code(), Some(1), "TURN={bad}: {e}");
+        assert!(e.contains("E0511") && e.contains("0 to 999"), "{e}");
+        assert!(e.contains("help: TURN= counts the full circles"), "{e}");
+        // The run goes on from the helix's end point: the arc after it,
+        // which starts there, is not reported.
+        assert_eq!(e.matches("error[").count(), 1, "{e}");
+    }
+}
+
+/// `M1=3 S1=1000` (address extension: spindle 1, the master spindle) is
+/// `M3 S1000`, with a computed value too (`M1=DIR` in a PROC); a computed
+/// spindle code runs as the code it turns out to be.
+#[test]
+fn spindle_one_address_extensions_run_as_the_master_spindle() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("spindle.mpf");
+    let text = "G17 G90 G71 T1 D1\nR1=4\nG0 X0 Y0 Z10 M1=3 S1=1000\nG1 Z0 F100\n\
+                M1=R1 S1=R1*100\nG1 X10\nM1=5\nM30\n";
+    std::fs::write(&path, text).unwrap();
+    let p = path.to_str().unwrap();
+    let o = cncc(&["check", "--dialect", "siemens840d", p]);
+    let e = stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{e}");
+    assert!(!e.contains("warning["), "{e}");
+    let out = stdout(&cncc(&["canon", "--dialect", "siemens840d", p]));
+    let spindle: Vec<&str> = out
+        .lines()
+        .filter(|l| l.contains("SPINDLE_SPEED") || l.contains("START_SPINDLE"))
+        .collect();
+    assert_eq!(
+        spindle,
+        [
+            "SET_SPINDLE_SPEED(0, 1000.0000)",
+            "START_SPINDLE_CLOCKWISE(0)",
+            "SET_SPINDLE_SPEED(0, 400.0000)",
+            "START_SPINDLE_COUNTERCLOCKWISE(0)",
+        ],
+        "{out}"
+    );
+}

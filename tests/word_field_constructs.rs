@@ -112,3 +112,79 @@ fn a_round_trip_keeps_the_high_speed_switches_as_written() {
         assert!(out.contains(line), "{line:?} in\n{out}");
     }
 }
+
+/// `T01 T02 M06` (NX posts for Mazak and other Fanuc-family machines):
+/// M6 loads T1 and T2 is made ready, so a later `M6` alone loads T2.
+#[test]
+fn fanuc_second_t_in_a_change_block_preselects_the_next_tool() {
+    let file = "tests/programs/fanuc/tool-preselect.nc";
+    let o = cncc(&["check", "--dialect", "fanuc", file]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(!err.contains("E0205"), "{err}");
+    let o = cncc(&["canon", "--dialect", "fanuc", file]);
+    let out = stdout(&o);
+    let tools: Vec<&str> = out
+        .lines()
+        .filter(|l| l.starts_with("SELECT_TOOL") || l.starts_with("CHANGE_TOOL"))
+        .collect();
+    assert_eq!(
+        tools,
+        [
+            "SELECT_TOOL(1)",
+            "CHANGE_TOOL(1)",
+            "SELECT_TOOL(2)",
+            "CHANGE_TOOL(2)"
+        ],
+        "{out}"
+    );
+    // Ported to a control that names one T per block: the next tool
+    // gets a block of its own after the change; to Fanuc it stays.
+    let o = cncc(&["port", "--from", "fanuc", "--to", "linuxcnc", file]);
+    assert!(stdout(&o).contains("T1 M6\nT2\n"), "{}", stdout(&o));
+    let o = cncc(&["port", "--from", "fanuc", "--to", "fanuc", file]);
+    assert!(stdout(&o).contains("T1 T2 M6\n"), "{}", stdout(&o));
+}
+
+/// Without a tool change, or where the control names one T per block
+/// (LinuxCNC), a second T is still a repeated word.
+#[test]
+fn a_second_t_without_a_change_or_on_linuxcnc_is_a_repeated_word() {
+    let dir = tempfile::tempdir().unwrap();
+    let alone = dir.path().join("alone.nc");
+    std::fs::write(&alone, "O1\nG21 G90\nT1 T2\nM30\n").unwrap();
+    let o = cncc(&["check", "--dialect", "fanuc", alone.to_str().unwrap()]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("E0205") && err.contains("tool-change block"),
+        "{err}"
+    );
+    let o = cncc(&[
+        "check",
+        "--dialect",
+        "linuxcnc",
+        "tests/programs/fanuc/tool-preselect.nc",
+    ]);
+    assert!(stderr(&o).contains("E0205"), "{}", stderr(&o));
+}
+
+/// A `G02` alone sets the motion mode on Fanuc (a bare motion code does
+/// not move there): the mistake is the next block, which moves in G02
+/// with no centre, and that is where it is reported. LinuxCNC refuses
+/// the bare `G2` itself ("R i j k words all missing for arc", rs274 2.9).
+#[test]
+fn an_arc_without_a_centre_is_reported_on_the_block_that_moves() {
+    let file = "tests/programs/fanuc/bare-arc-code.nc";
+    let o = cncc(&["check", "--dialect", "fanuc", file]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    let errs = errors(&err);
+    assert_eq!(errs.len(), 1, "{err}");
+    assert!(errs[0].contains("E0512"), "{err}");
+    assert!(err.contains(":10:1") && !err.contains(":9:"), "{err}");
+    assert!(err.contains("help: give the centre"), "{err}");
+    let o = cncc(&["check", "--dialect", "linuxcnc", file]);
+    let err = stderr(&o);
+    assert!(err.contains(":9:"), "{err}");
+}

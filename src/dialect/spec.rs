@@ -265,6 +265,13 @@ pub enum Capability {
     /// offset is always 0). Elsewhere it takes the radius of the tool in
     /// the spindle (LinuxCNC; the 840D's active edge, Klartext RL/RR).
     CompRegisterModal,
+    /// A second T word in a tool-change block names the next tool:
+    /// `T1 T2 M6` changes to T1 and makes T2 ready in the magazine
+    /// (Mazak EIA/ISO and other Fanuc-family machines; NX and Mastercam
+    /// posts write it [?: the Fanuc 0i manual shows one T per block; the
+    /// machine builder's magazine logic decides]). Elsewhere a second T
+    /// is a repeated word (E0205).
+    SecondToolPreselects,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -366,6 +373,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("tilted-working-plane", Capability::TiltedWorkingPlane),
     ("offset-register-alone", Capability::OffsetRegisterAlone),
     ("comp-register-modal", Capability::CompRegisterModal),
+    ("second-tool-preselects", Capability::SecondToolPreselects),
 ];
 
 impl Capability {

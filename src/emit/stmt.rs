@@ -70,6 +70,8 @@ pub fn write_stmt(w: &mut Writer<'_>, s: &Stmt, last: bool, words: &mut Vec<Stri
         K::Coolant(c) => w.push_code(words, Meaning::Coolant(*c), span),
         K::ToolSelect(t) => motion::tool_select(w, t, span, words),
         K::ToolChange => w.push_code(words, Meaning::ToolChange, span),
+        // A port gives it a block of its own where the target lacks the form.
+        K::ToolPreselect(t) => motion::tool_select(w, t, span, words),
         K::CuttingEdge(v) if bracket => {
             w.cannot(
                 span,

@@ -64,10 +64,14 @@ pub fn arc(
         ));
     }
     if m.arc.radius.is_none() && !has_centre {
-        return Err(it.error_at(
-            it.span,
-            Code::ArcBadWords,
-            "R i j k words all missing for arc",
+        let code = if dir == ArcDir::Cw { "G2" } else { "G3" };
+        return Err(Stop::Error(
+            crate::diag::Diagnostic::new(
+                Code::ArcBadWords,
+                format!("R i j k words all missing for arc: this block moves on a {code} arc with neither a centre ({ci} {cj}) nor a radius (R)"),
+            )
+            .primary(it.span, format!("{code} arc without a centre"))
+            .help(format!("give the centre with {ci}/{cj} or the radius with R, or program G1 if this move is meant to be straight")),
         ));
     }
     let turns = match &m.arc.turns {

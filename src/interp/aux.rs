@@ -293,8 +293,26 @@ pub fn dynamic(
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
-    let _ = block;
-    exec(it, letter, code, words, exprs)
+    // A computed spindle or coolant code (`M[#1]`, Siemens `M=R1`,
+    // `M1=DIR`) runs as the code it turns out to be.
+    let def = Decimal::parse(&format!("{code}"))
+        .ok()
+        .and_then(|d| it.spec.code(letter, d));
+    match def.map(|d| d.meaning) {
+        Some(Meaning::Spindle(f)) => {
+            use crate::dialect::SpindleFn as F;
+            use crate::ir::SpindleState as S;
+            let st = match f {
+                F::Cw => S::Cw,
+                F::Ccw => S::Ccw,
+                F::Stop => S::Stop,
+                F::Orient => S::Orient(None),
+            };
+            super::modes::spindle(it, &st, block, exprs)
+        }
+        Some(Meaning::Coolant(c)) => super::modes::coolant(it, c),
+        _ => exec(it, letter, code, words, exprs),
+    }
 }
 
 /// `M92`: the block moved in machine coordinates (see

@@ -17,7 +17,7 @@ pub fn phase(kind: &StmtKind) -> u8 {
         SpindleSpeed(_) | SpindleCss { .. } => 4,
         ToolSelect(_) => 5,
         ToolChange | ToolDef { .. } => 6,
-        ToolOversize { .. } => 7,
+        ToolOversize { .. } | ToolPreselect(_) => 7,
         Spindle(_) => 7,
         Coolant(_) => 8,
         Aux { .. } | DynamicCode { .. } => 9,
@@ -182,6 +182,7 @@ fn exec_stmt(
         }
         ToolSelect(_)
         | ToolChange
+        | ToolPreselect(_)
         | RadiusComp { .. }
         | LengthComp { .. }
         | OffsetRegister { .. } => tools::exec(it, s, block, exprs),

@@ -346,7 +346,7 @@ fn speed(it: &mut Interp<'_, '_>, v: &Value, exprs: &Arena<Expr>) -> Result<(), 
     Ok(())
 }
 
-fn spindle(
+pub(super) fn spindle(
     it: &mut Interp<'_, '_>,
     st: &SpindleState,
     block: &Block,
@@ -391,7 +391,7 @@ fn spindle(
     Ok(())
 }
 
-fn coolant(it: &mut Interp<'_, '_>, c: Coolant) -> Result<(), Stop> {
+pub(super) fn coolant(it: &mut Interp<'_, '_>, c: Coolant) -> Result<(), Stop> {
     match c {
         Coolant::Mist => {
             it.state.mist = true;

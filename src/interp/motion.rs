@@ -156,6 +156,19 @@ fn motion_inner(
         k => {
             it.cycles.cancel();
             it.state.motion = ModalMotion::Move(k);
+            // A bare `G2`/`G3` only sets the mode where a bare motion code
+            // does not move (Fanuc, Haas, Siemens): the block that moves
+            // in it is the one that must give the centre.
+            let bare = m.target.is_empty()
+                && m.arc.is_empty()
+                && m.polar_radius.is_none()
+                && m.polar_angle.is_none();
+            if bare
+                && matches!(k, MotionKind::Arc(_))
+                && !it.spec.has(crate::dialect::Capability::BareMotionCodeMoves)
+            {
+                return Ok(());
+            }
             k
         }
     };

@@ -21,14 +21,15 @@ pub fn exec(
 ) -> Result<(), Stop> {
     it.begin_block(block);
     match &s.kind {
-        StmtKind::ToolSelect(ToolRef::Number(v)) => {
+        StmtKind::ToolSelect(ToolRef::Number(v)) | StmtKind::ToolPreselect(ToolRef::Number(v)) => {
             let t = it.value(v, exprs)?.round() as i64;
             row_of(it, t)?;
             it.state.tool_selected = Some(t);
             it.out(Canon::SelectTool(t));
             Ok(())
         }
-        StmtKind::ToolSelect(ToolRef::Name(name)) => {
+        StmtKind::ToolSelect(ToolRef::Name(name))
+        | StmtKind::ToolPreselect(ToolRef::Name(name)) => {
             let t = tool_by_name(it, name)?;
             it.state.tool_selected = Some(t);
             it.out(Canon::SelectTool(t));

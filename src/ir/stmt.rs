@@ -762,6 +762,9 @@ pub enum StmtKind {
     Coolant(Coolant),
     ToolSelect(ToolRef),
     ToolChange,
+    /// The next tool, named after the change in the change block
+    /// (`T1 T2 M6`: T2): selected once the change is made.
+    ToolPreselect(ToolRef),
     /// Siemens `D1`: cutting edge, activating its length and radius.
     CuttingEdge(Value),
     /// G40/G41/G42 D (a tool or register number); `diameter`: LinuxCNC

@@ -51,8 +51,24 @@ fn required<'s>(cw: &CodeWord<'s>) -> Required<'s> {
     Required::Builtin(words)
 }
 
-/// Reports each required word a code lacks (E0206).
-pub(super) fn check_required(cw: &CodeWord<'_>, words: &Words, diags: &mut Vec<Diagnostic>) {
+/// Reports each required word a code lacks (E0206). An arc code with no
+/// word at all only sets the motion mode where a bare motion code does
+/// not move (Fanuc, Haas, Siemens: capability `bare-motion-code-moves`
+/// absent): the block that moves in that mode is the one that must give
+/// the centre, and the run reports it there.
+pub(super) fn check_required(
+    cw: &CodeWord<'_>,
+    words: &Words,
+    spec: &crate::dialect::DialectSpec,
+    diags: &mut Vec<Diagnostic>,
+) {
+    let arc = matches!(
+        cw.meaning,
+        Some(Meaning::Motion(MotionKind::Arc(ArcDir::Cw | ArcDir::Ccw)))
+    );
+    if arc && !words.has_free_axes() && !spec.has(crate::dialect::Capability::BareMotionCodeMoves) {
+        return;
+    }
     let mut missing = |alts: Vec<String>| {
         let list = describe(&alts);
         diags.push(

@@ -136,7 +136,7 @@ fn unknown(letter: char, code: Decimal, span: Span, spec: &DialectSpec) -> Diagn
     if letter == 'G' {
         let help = known_elsewhere(letter, code, spec).unwrap_or_else(|| {
             format!(
-                "check the number; if it is the machine builder's code (a tool-change or probing macro), describe the machine in a dialect file extending `{}`, with `<code letter=\"G\" number=\"{code}\" group=\"non-modal\" meaning=\"aux\" uses=\"...\"/>` for its words, and load it with `--dialect-file`",
+                "check the number; if it is the machine builder's code (a tool-change or probing macro), describe the machine in a dialect file extending `{}`, with `<code letter=\"G\" number=\"{code}\" group=\"non-modal\" meaning=\"aux\" uses=\"...\"/>` for its words (and `run=\"pass\"` if the moves after it are as written), and load it with `--dialect-file`",
                 spec.id
             )
         });
@@ -246,13 +246,22 @@ fn conflict(first: &CodeWord<'_>, later: &CodeWord<'_>) -> Diagnostic {
         .help("a block asks for one motion: split it into two blocks or remove one code");
     }
     let group = first.group().unwrap_or_default();
-    Diagnostic::new(
+    let d = Diagnostic::new(
         Code::ModalGroupConflict,
         format!("`{a}` and `{b}` are both in modal group `{group}`"),
     )
     .primary(later.span, "second code of the group")
-    .secondary(first.span, "first code of the group")
-    .help("codes of one modal group exclude each other: keep one per block")
+    .secondary(first.span, "first code of the group");
+    // Builders' posts pair one-shot codes their machine takes together
+    // (`G91 G28 G53 Z0. W0.`): such a machine is described, not guessed.
+    match (first.meaning, later.meaning) {
+        (Some(m1), Some(m2)) if m1 != m2 && group == "non-modal" => d.help(format!(
+            "codes of one modal group exclude each other: keep one per block; if this machine's builder takes them together, describe the machine in a dialect file extending this dialect, with `<group name=\"{group}\" together=\"{} {}\"/>`, and load it with `--dialect-file`",
+            m1.name(),
+            m2.name()
+        )),
+        _ => d.help("codes of one modal group exclude each other: keep one per block"),
+    }
 }
 
 /// The built-in dialects that define the code, as advice: the program may

@@ -130,7 +130,7 @@ pub(super) fn standalone(words: &mut Words, out: &mut Placement, ctx: &mut Ctx<'
     }
 }
 
-fn tool_ref(w: &WordSyntax, ctx: &mut Ctx<'_>) -> ToolRef {
+pub(super) fn tool_ref(w: &WordSyntax, ctx: &mut Ctx<'_>) -> ToolRef {
     if let Value::Expr(e) = &w.value {
         if let ExprKind::Str(s) = &ctx.exprs[*e].kind {
             return ToolRef::Name(s.clone());

@@ -93,10 +93,12 @@ pub struct Lowering<'s> {
 
 impl<'s> Lowering<'s> {
     pub fn new(spec: &'s DialectSpec) -> Self {
+        let mut words = Words::default();
+        words.second_tool = spec.has(crate::dialect::Capability::SecondToolPreselects);
         Lowering {
             spec,
             sorted: Sorted::default(),
-            words: Words::default(),
+            words,
             repeated: Vec::new(),
             codes: codes::Cache::default(),
             spare_moves: Vec::new(),
@@ -162,16 +164,53 @@ impl<'s> Lowering<'s> {
         codes::check_groups(&s.codes, spec, ctx.diags);
         codes::drop_overridden_cancels(&mut s.codes, ctx.diags);
         for cw in &s.codes {
-            checks::check_required(cw, &self.words, ctx.diags);
+            checks::check_required(cw, &self.words, spec, ctx.diags);
         }
         lower_codes(&s.codes, &mut self.words, &mut s.out, &mut ctx);
         finish(s, &mut self.words, &mut ctx);
+        if let Some(w) = self.words.take_preselect() {
+            preselect(w, s, &self.words, &mut self.repeated, &mut ctx);
+        }
         for w in self.repeated.drain(..) {
             s.out
                 .push((w.span.start, Stmt::new(leftover::keep(&w, &ctx), w.span)));
         }
         s.out.drain_sorted_into(stmts);
     }
+}
+
+/// The second `T` of a block (`T1 T2 M6`): the next tool when the block
+/// changes tools, otherwise a repeated word (E0205), kept.
+fn preselect(
+    w: WordSyntax,
+    s: &mut Sorted<'_>,
+    words: &Words,
+    repeated: &mut Vec<WordSyntax>,
+    ctx: &mut Ctx<'_>,
+) {
+    let change = s
+        .codes
+        .iter()
+        .any(|c| c.meaning == Some(Meaning::ToolChange));
+    if change {
+        let tool = leftover::tool_ref(&w, ctx);
+        s.out.push((
+            w.span.start,
+            Stmt::new(StmtKind::ToolPreselect(tool), w.span),
+        ));
+        return;
+    }
+    let first = words.get('T').map_or(w.span, |f| f.span);
+    ctx.diags.push(
+        crate::diag::Diagnostic::new(
+            crate::diag::Code::RepeatedWord,
+            "`T` is given twice in this block",
+        )
+        .primary(w.span, "repeated here")
+        .secondary(first, "first given here")
+        .help("a second T names the next tool only in the tool-change block (`T1 T2 M6`); keep one T here"),
+    );
+    repeated.push(w);
 }
 
 /// Splits items into statements, code words, dynamic codes and plain words.

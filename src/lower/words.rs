@@ -57,6 +57,17 @@ fn key(b: &[u8]) -> u64 {
         .fold(0u64, |k, (i, &c)| k | (c as u64) << (8 * i))
 }
 
+/// E0205: the address of `w` was already given in the block, at `first`.
+pub(super) fn repeated(w: &WordSyntax, first: Span) -> Diagnostic {
+    Diagnostic::new(
+        Code::RepeatedWord,
+        format!("`{}` is given twice in this block", w.address),
+    )
+    .primary(w.span, "repeated here")
+    .secondary(first, "first given here")
+    .help("keep one of the two words; a block holds each address once")
+}
+
 /// One word and whether a statement has taken it.
 pub(super) struct Entry {
     pub w: WordSyntax,
@@ -76,6 +87,11 @@ pub(super) struct Words {
     free: usize,
     /// The span of the words taken since the last [`Words::begin`].
     taken: Option<Span>,
+    /// Whether a second `T` is kept aside as the next tool rather than
+    /// reported (the spec's `second-tool-preselects`; set per file).
+    pub second_tool: bool,
+    /// The second `T` of the line, when `second_tool` allows one.
+    preselect: Option<WordSyntax>,
 }
 
 impl Words {
@@ -86,6 +102,12 @@ impl Words {
         self.others = false;
         self.free = 0;
         self.taken = None;
+        self.preselect = None;
+    }
+
+    /// The line's second `T` word (`T1 T2 M6`), kept aside by [`Words::push`].
+    pub fn take_preselect(&mut self) -> Option<WordSyntax> {
+        self.preselect.take()
     }
 
     /// Adds a word, reporting a repeated address (the repeat is kept aside
@@ -106,15 +128,11 @@ impl Words {
             None => None,
         };
         if let Some(first) = first {
-            diags.push(
-                Diagnostic::new(
-                    Code::RepeatedWord,
-                    format!("`{}` is given twice in this block", w.address),
-                )
-                .primary(w.span, "repeated here")
-                .secondary(self.list[first].w.span, "first given here")
-                .help("keep one of the two words; a block holds each address once"),
-            );
+            if self.second_tool && w.address == "T" && self.preselect.is_none() {
+                self.preselect = Some(w.clone());
+                return;
+            }
+            diags.push(repeated(w, self.list[first].w.span));
             extra.push(w.clone());
             return;
         }

@@ -44,6 +44,13 @@ pub fn run(p: &mut Program, to: &DialectSpec) {
             (_, Some(own), _) => selected = Some(own.clone()),
             _ => {}
         }
+        // `T1 T2 M6`: the next change loads T2.
+        if let Some(next) = b.stmts.iter().find_map(|s| match &s.kind {
+            StmtKind::ToolPreselect(t) => Some(Stmt::new(StmtKind::ToolSelect(t.clone()), s.span)),
+            _ => None,
+        }) {
+            selected = Some(next);
+        }
         if b.stmts.iter().any(|s| ends_straight_run(&s.kind)) {
             selected = None;
         }
@@ -105,6 +112,7 @@ fn ends_straight_run(k: &StmtKind) -> bool {
         | K::Coolant { .. }
         | K::ToolSelect { .. }
         | K::ToolChange { .. }
+        | K::ToolPreselect { .. }
         | K::CuttingEdge { .. }
         | K::RadiusComp { .. }
         | K::LengthComp { .. }

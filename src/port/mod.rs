@@ -44,6 +44,8 @@
 //!   exactly with the ones it has (`POT(x)` → `x*x`, `FUP` → `INT` + `SGN`).
 //! * [`dwell_block`]: a move that shares a block with a dwell gets a
 //!   block of its own after it where the target wants that.
+//! * [`preselect`]: the next tool of `T1 T2 M6` in a block of its own
+//!   where the target names one tool per block.
 //! * [`messages`]: operator messages as comments where the target shows
 //!   none without stopping.
 //! * [`expand`]: the documented fallback `--expand-cycles`, a cycle written
@@ -91,6 +93,7 @@ pub(crate) mod osubs;
 mod pockets;
 mod poles;
 mod power_on_motion;
+mod preselect;
 mod proc_calls;
 mod proc_file;
 mod program_end;
@@ -191,6 +194,7 @@ pub fn port_owned(
     spf::run(&mut out, from, to);
     groups::run(&mut out, to);
     dwell_block::run(&mut out, to);
+    preselect::run(&mut out, to);
     change_tool::run(&mut out, to);
     tool_call::run(&mut out, from, to);
     comp_register::run(&mut out, to);

@@ -165,16 +165,29 @@ pub fn arc(
     };
     e3[a] = e.0;
     e3[b] = e.1;
-    let turns = match &m.arc.turns {
+    let mut turns = match &m.arc.turns {
         Some(v) => it.value(v, exprs)?,
         None => 0.0,
     };
-    if !(0.0..=10_000.0).contains(&turns) || turns.fract() != 0.0 {
-        return Err(it.error_at(
-            it.span,
+    // 840D programming manual: TURN= is the number of additional full
+    // circles, 0 to 999.
+    if !(0.0..=999.0).contains(&turns) || turns.fract() != 0.0 {
+        let d = crate::diag::Diagnostic::new(
             Code::BadWordValue,
-            "TURN= must be a whole number of turns from 0",
-        ));
+            format!("TURN={turns} is not a whole number of full circles from 0 to 999"),
+        )
+        .primary(it.span, "this helix")
+        .help("TURN= counts the full circles added to the arc; the part of a circle comes from the end point (a half turn is TURN=0 with the end opposite the start)");
+        if !it.opts.keep_going || it.recovered >= super::super::MAX_RECOVERED {
+            return Err(Stop::Error(d));
+        }
+        // The end point is sound: the run goes on from it, so the blocks
+        // after are checked from where the program meant to be.
+        it.recovered += 1;
+        it.diags.push(
+            d.note("the run went on with the arc alone (TURN=0), to the end point the block gives"),
+        );
+        turns = 0.0;
     }
     check_feed(
         it,

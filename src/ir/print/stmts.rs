@@ -80,6 +80,8 @@ impl Printer<'_> {
             K::ToolSelect(ToolRef::Number(v)) => format!("tool-select {}", self.value(v)),
             K::ToolSelect(ToolRef::Name(n)) => format!("tool-select {n:?}"),
             K::ToolChange => "tool-change".into(),
+            K::ToolPreselect(ToolRef::Number(v)) => format!("tool-preselect {}", self.value(v)),
+            K::ToolPreselect(ToolRef::Name(n)) => format!("tool-preselect {n:?}"),
             K::CuttingEdge(v) => format!("cutting-edge {}", self.value(v)),
             K::RadiusComp {
                 side,

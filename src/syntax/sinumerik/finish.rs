@@ -97,6 +97,7 @@ impl Finish<'_> {
                 }
             }
         }
+        let addr = master_spindle(addr, extended);
         Item::Word(WordSyntax {
             address: addr.into(),
             value,
@@ -246,5 +247,16 @@ fn take_call_repeat(items: &mut Vec<Item>) {
             *span = span.to(w.span);
             return;
         }
+    }
+}
+
+/// `M1=3`, `S1=1000`: the M function and speed of spindle 1 (an address
+/// extension), which is the master spindle (840D machine data 20090
+/// SPIND_DEF_MASTER_SPIND, default 1 [?: a machine may set another]):
+/// the same as `M3`, `S1000`. Other spindles' words stay as written.
+fn master_spindle(addr: String, extended: bool) -> String {
+    match addr.as_str() {
+        "M1" | "S1" if extended => addr[..1].to_string(),
+        _ => addr,
     }
 }

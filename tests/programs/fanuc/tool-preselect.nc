@@ -1,0 +1,14 @@
+%
+O1000 (T1 T2 M6: change to T1, make T2 ready)
+G21 G17 G40 G49 G80 G90
+T01 T02 M06
+G43 H01 Z50.
+S1000 M03
+G00 X0. Y0.
+G01 Z-1. F100.
+G00 Z50.
+M06 (loads the T2 made ready above)
+G43 H02 Z50.
+G00 X10. Y10.
+M30
+%
