@@ -255,8 +255,12 @@ fn take_call_repeat(items: &mut Vec<Item>) {
 /// SPIND_DEF_MASTER_SPIND, default 1 [?: a machine may set another]):
 /// the same as `M3`, `S1000`. Other spindles' words stay as written.
 fn master_spindle(addr: String, extended: bool) -> String {
-    match addr.as_str() {
-        "M1" | "S1" if extended => addr[..1].to_string(),
-        _ => addr,
+    let spindle_word = addr.starts_with(['M', 'S']);
+    match extended && spindle_word && addr[1..] == *MASTER_SPINDLE {
+        true => addr[..1].to_string(),
+        false => addr,
     }
 }
+
+/// The master spindle's number (840D MD 20090 default) [?].
+const MASTER_SPINDLE: &str = "1";
