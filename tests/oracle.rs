@@ -69,14 +69,6 @@ const LINUXCNC_DIFFERENCES: &[(&str, &str)] = &[
         "sample/usr/share/linuxcnc/ncfiles/lathe_g70_71_demo.ngc",
         "G70-G72 lathe profile cycles: out of scope (milling)",
     ),
-    (
-        "sample/usr/share/linuxcnc/ncfiles/lathe_g7x_face_boring.ngc",
-        "G70-G72 lathe profile cycles: out of scope (milling)",
-    ),
-    (
-        "sample/usr/share/linuxcnc/ncfiles/lathe_g7x_quadrants.ngc",
-        "G70-G72 lathe profile cycles: out of scope (milling)",
-    ),
 ];
 
 /// OUR gaps: programs cncc does not yet run as rs274 does. Each entry is a
