@@ -68,7 +68,8 @@ impl LatheCycles {
     /// The current point (Z, X) while a contour is read: rs274 2.9 moves
     /// its current position along the contour as it reads it, so that
     /// `#<_x>`, `#<_z>` (#5420, #5422) give the contour's last point (from
-    /// the cycle's start point on), not where the tool is.
+    /// the cycle's start point on), not where the tool is. Under G7
+    /// (diameter mode) X is the contour's radius, as read [?].
     pub fn contour_point(&self) -> Option<Pt> {
         if self.call.is_some() {
             return None;
