@@ -64,18 +64,17 @@ const LINUXCNC_DIFFERENCES: &[(&str, &str)] = &[
         "sample/usr/share/linuxcnc/ncfiles/m6remap.ngc",
         "M69 is a remapped user M code (INI REMAP); cncc rejects unknown M codes in every block",
     ),
-    // Lathe profile cycles: out of scope for a milling compiler.
+    // rs274 2.9 moves its current point along a G7x contour as it reads it
+    // (the tool stays): under cutter compensation the G70 passes then start,
+    // for the compensation, from the contour's end, where the tool is not.
     (
         "sample/usr/share/linuxcnc/ncfiles/lathe_g70_71_demo.ngc",
-        "G70-G72 lathe profile cycles: out of scope (milling)",
-    ),
-    (
-        "sample/usr/share/linuxcnc/ncfiles/lathe_g7x_face_boring.ngc",
-        "G70-G72 lathe profile cycles: out of scope (milling)",
-    ),
-    (
-        "sample/usr/share/linuxcnc/ncfiles/lathe_g7x_quadrants.ngc",
-        "G70-G72 lathe profile cycles: out of scope (milling)",
+        concat!(
+            "G70 under G42.1: rs274's compensation takes the contour's end (15,-38.1) as the ",
+            "start of the first pass move, though the tool is at the start point; it joins ",
+            "the two with an extra traverse (14.85,-38.25) and its passes come out shifted ",
+            "by -0.15 (the nose radius) in X and Z; cncc compensates from where the tool is",
+        ),
     ),
 ];
 

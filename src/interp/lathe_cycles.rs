@@ -49,6 +49,9 @@ pub struct Running {
 pub struct LatheCycles {
     call: Option<u32>,
     pub running: Option<Box<Running>>,
+    /// The contour's point while one of its blocks is read (the contour is
+    /// then out of `running`).
+    pub reading_at: Option<Pt>,
 }
 
 impl LatheCycles {
@@ -60,6 +63,19 @@ impl LatheCycles {
     /// Is a contour being read (its blocks add geometry, they do not run)?
     pub fn reading(&self) -> bool {
         self.running.is_some() && self.call.is_none()
+    }
+
+    /// The current point (Z, X) while a contour is read: rs274 2.9 moves
+    /// its current position along the contour as it reads it, so that
+    /// `#<_x>`, `#<_z>` (#5420, #5422) give the contour's last point (from
+    /// the cycle's start point on), not where the tool is. Under G7
+    /// (diameter mode) X is the contour's radius, as read [?].
+    pub fn contour_point(&self) -> Option<Pt> {
+        if self.call.is_some() {
+            return None;
+        }
+        self.reading_at
+            .or_else(|| self.running.as_ref().map(|r| r.contour.at))
     }
 }
 

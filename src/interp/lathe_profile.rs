@@ -38,9 +38,21 @@ pub fn record(
     block: &Block,
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
+    let r = record_moves(it, c, block, exprs);
+    it.lathe.reading_at = None;
+    r
+}
+
+fn record_moves(
+    it: &mut Interp<'_, '_>,
+    c: &mut Contour,
+    block: &Block,
+    exprs: &Arena<Expr>,
+) -> Result<(), Stop> {
     for s in &block.stmts {
         if let StmtKind::Motion(m) = &s.kind {
             it.span = s.span;
+            it.lathe.reading_at = Some(c.at);
             motion(it, c, m, exprs)?;
         }
     }

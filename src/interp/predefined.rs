@@ -12,6 +12,10 @@ use crate::ir::{ArcDir, CompSide, CycleKind, FeedMode, LengthUnit, MotionKind};
 pub fn named(it: &Interp<'_, '_>, name: &str) -> Option<f64> {
     let s = &it.state;
     let axis = |i: usize| {
+        // Reading a lathe cycle's contour: its point is the position.
+        if let Some(p) = it.lathe.contour_point().filter(|_| i == 0 || i == 2) {
+            return Some(if i == 0 { p.im } else { p.re });
+        }
         let v = s.pos[i];
         Some(if super::state::State::is_linear(i) {
             s.to_prog(v)
