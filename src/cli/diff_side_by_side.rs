@@ -7,6 +7,7 @@
 //! spans of the differences and diagnostics renumbered to them.
 
 use crate::cli::context::{Context, Failure};
+use crate::compare::window::{hand_over, QUEUED};
 use crate::compare::{compare_windows, CompareOptions, Comparison, OpBuilder, OpWindow, Ops};
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
@@ -16,10 +17,6 @@ use crate::span::{FileId, Span};
 use std::path::Path;
 use std::sync::mpsc::{sync_channel, SyncSender};
 use std::sync::Arc;
-
-/// Operations handed over at a time, and batches a run may have waiting.
-const BATCH: usize = 1024;
-const QUEUED: usize = 4;
 
 /// One program: its file, registered id (sparse) and dialect.
 pub struct Program<'p> {
@@ -110,10 +107,7 @@ fn run(
     let diags = {
         let mut sink = |call: crate::canon::Canon, span: Span| {
             tracker.push(&call, span, |e| ops.push(&e));
-            if ops.ready() >= BATCH {
-                let batch = ops.take_ready();
-                listening = listening && to.send(batch).is_ok();
-            }
+            listening = hand_over(&mut ops, &to, listening);
         };
         crate::interp::file::run_file(p.path, p.id, &p.spec, options, &mut files, &mut sink)
             .map_err(|e| Failure(format!("{}: {e}", p.path.display())))?

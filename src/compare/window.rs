@@ -11,6 +11,25 @@ use crate::span::Span;
 use crate::toolpath::P3;
 use std::ops::Range;
 
+/// Operations a run hands over at a time ([`hand_over`]), and the
+/// batches it may have waiting before it waits for the comparison.
+pub const BATCH: usize = 1024;
+pub const QUEUED: usize = 4;
+
+/// Sends `ops`' finished operations once a batch is ready; whether the
+/// comparison still listens (it stops only when it has all it needs).
+pub fn hand_over(
+    ops: &mut super::OpBuilder,
+    to: &std::sync::mpsc::SyncSender<Ops>,
+    listening: bool,
+) -> bool {
+    if ops.ready() < BATCH {
+        return listening;
+    }
+    let batch = ops.take_ready();
+    listening && to.send(batch).is_ok()
+}
+
 /// Gives the next batch of a run's operations; `None` once it has ended.
 pub type Pull<'a> = Box<dyn FnMut() -> Option<Ops> + 'a>;
 

@@ -11,6 +11,7 @@
 use super::verify::{self, Recorder, Verdict};
 use super::verify_digest::{Digest, Tally};
 use super::verify_text::Scan;
+use crate::compare::window::{hand_over, QUEUED};
 use crate::compare::{OpWindow, Ops};
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
@@ -19,11 +20,6 @@ use crate::interp::Options;
 use crate::span::{FileId, Span};
 use std::sync::mpsc::{sync_channel, SyncSender};
 use std::sync::Arc;
-
-/// Operations handed over at a time.
-const BATCH: usize = 1024;
-/// Batches a run may have waiting before it waits for the comparison.
-const QUEUED: usize = 4;
 
 /// One program to run.
 pub struct Side<'t> {
@@ -100,10 +96,7 @@ fn run(
     let diags = {
         let mut sink = |call: crate::canon::Canon, span: Span| {
             rec.call_with(call, span, |e| digest.push(&e, tools));
-            if digest.ops.ready() >= BATCH {
-                let batch = digest.ops.take_ready();
-                listening = listening && to.send(batch).is_ok();
-            }
+            listening = hand_over(&mut digest.ops, &to, listening);
         };
         crate::interp::file::run_text_loading(text, id, spec, opts, &mut NoLoader, &mut sink)
     };
