@@ -8,6 +8,7 @@
 use crate::span::FileId;
 use codespan_reporting::files::{self, Files};
 use std::ops::Range;
+use std::sync::{Arc, OnceLock};
 
 /// One line of a file kept for rendering a streamed file's diagnostics.
 #[derive(Clone, Debug)]
@@ -23,11 +24,47 @@ pub struct KeptLine {
 struct SourceFile {
     name: String,
     /// The text codespan sees: the whole file, or the kept lines joined.
-    view: String,
-    /// Byte offset in `view` of each line start.
-    view_starts: Vec<usize>,
+    view: Text,
+    /// Byte offset in `view` of each line start, found when a diagnostic
+    /// first needs them (a large file without one never pays for them).
+    view_starts: OnceLock<Vec<usize>>,
     /// For a sparse file: (real line index, real start offset) per view line.
     sparse: Option<Vec<(usize, usize)>>,
+}
+
+/// A file's text: owned by the map, or shared with the command that
+/// reads it (a large input is held once, not copied into the map).
+enum Text {
+    Owned(String),
+    Shared(Arc<String>),
+}
+
+impl Text {
+    fn as_str(&self) -> &str {
+        match self {
+            Text::Owned(s) => s,
+            Text::Shared(s) => s.as_str(),
+        }
+    }
+}
+
+impl SourceFile {
+    fn new(name: String, view: Text) -> Self {
+        SourceFile {
+            name,
+            view,
+            view_starts: OnceLock::new(),
+            sparse: None,
+        }
+    }
+
+    fn text(&self) -> &str {
+        self.view.as_str()
+    }
+
+    fn starts(&self) -> &[usize] {
+        self.view_starts.get_or_init(|| line_starts(self.text()))
+    }
 }
 
 /// Every source file of a run, by [`FileId`].
@@ -67,12 +104,7 @@ impl SourceMap {
     /// length stand for `self`'s files (they hold nothing there), new
     /// files get the ids after them; [`SourceMap::absorb`] takes them back.
     pub fn branch(&self) -> SourceMap {
-        let empty = || SourceFile {
-            name: String::new(),
-            view: String::new(),
-            view_starts: vec![0],
-            sparse: None,
-        };
+        let empty = || SourceFile::new(String::new(), Text::Owned(String::new()));
         SourceMap {
             files: (0..self.files.len()).map(|_| empty()).collect(),
         }
@@ -95,14 +127,17 @@ impl SourceMap {
 
     /// Adds a file held whole.
     pub fn add(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
-        let view = text.into();
-        let view_starts = line_starts(&view);
-        self.files.push(SourceFile {
-            name: name.into(),
-            view,
-            view_starts,
-            sparse: None,
-        });
+        self.push(SourceFile::new(name.into(), Text::Owned(text.into())))
+    }
+
+    /// Adds a file held whole whose text the caller keeps too (shared,
+    /// not copied).
+    pub fn add_shared(&mut self, name: impl Into<String>, text: Arc<String>) -> FileId {
+        self.push(SourceFile::new(name.into(), Text::Shared(text)))
+    }
+
+    fn push(&mut self, f: SourceFile) -> FileId {
+        self.files.push(f);
         FileId(self.files.len() as u32 - 1)
     }
 
@@ -118,18 +153,20 @@ impl SourceMap {
         lines.sort_by_key(|l| l.line);
         lines.dedup_by_key(|l| l.line);
         let f = &mut self.files[id.0 as usize];
-        f.view.clear();
-        f.view_starts.clear();
+        let mut view = String::new();
+        let mut starts = Vec::with_capacity(lines.len().max(1));
         let mut map = Vec::with_capacity(lines.len());
         for l in lines {
-            f.view_starts.push(f.view.len());
-            f.view.push_str(&l.text);
-            f.view.push('\n');
+            starts.push(view.len());
+            view.push_str(&l.text);
+            view.push('\n');
             map.push((l.line, l.start));
         }
-        if f.view_starts.is_empty() {
-            f.view_starts.push(0);
+        if starts.is_empty() {
+            starts.push(0);
         }
+        f.view = Text::Owned(view);
+        f.view_starts = OnceLock::from(starts);
         f.sparse = Some(map);
     }
 
@@ -147,31 +184,34 @@ impl SourceMap {
     /// output is read back and reported on without being held twice.
     pub fn take_text(&mut self, id: FileId) -> String {
         let f = &mut self.files[id.0 as usize];
-        f.view_starts = line_starts("");
-        std::mem::take(&mut f.view)
+        f.view_starts = OnceLock::new();
+        match std::mem::replace(&mut f.view, Text::Owned(String::new())) {
+            Text::Owned(s) => s,
+            Text::Shared(s) => Arc::unwrap_or_clone(s),
+        }
     }
 
     pub fn text(&self, id: FileId) -> &str {
-        &self.files[id.0 as usize].view
+        self.files[id.0 as usize].text()
     }
 
     /// Maps a real-file byte offset to an offset in the rendered text.
     pub fn to_view(&self, id: FileId, offset: usize) -> usize {
         let f = &self.files[id.0 as usize];
         match &f.sparse {
-            None => offset.min(f.view.len()),
+            None => offset.min(f.text().len()),
             Some(map) => {
                 let i = map
                     .partition_point(|&(_, start)| start <= offset)
                     .saturating_sub(1);
                 match map.get(i) {
                     Some(&(_, start)) => {
-                        let vs = f.view_starts[i];
+                        let vs = f.starts()[i];
                         let ve = f
-                            .view_starts
+                            .starts()
                             .get(i + 1)
                             .map(|e| e - 1)
-                            .unwrap_or(f.view.len());
+                            .unwrap_or(f.text().len());
                         (vs + offset.saturating_sub(start)).min(ve)
                     }
                     None => 0,
@@ -184,10 +224,10 @@ impl SourceMap {
     pub fn line_col(&self, id: FileId, offset: usize) -> (usize, usize) {
         let f = &self.files[id.0 as usize];
         let v = self.to_view(id, offset);
-        let li = f.view_starts.partition_point(|&s| s <= v).saturating_sub(1);
-        let start = f.view_starts[li];
+        let li = f.starts().partition_point(|&s| s <= v).saturating_sub(1);
+        let start = f.starts()[li];
         let col = f
-            .view
+            .text()
             .get(start..v)
             .map(|s| s.chars().count())
             .unwrap_or(v - start);
@@ -217,13 +257,13 @@ impl<'a> Files<'a> for SourceMap {
     fn source(&'a self, id: usize) -> Result<&'a str, files::Error> {
         self.files
             .get(id)
-            .map(|f| f.view.as_str())
+            .map(|f| f.text())
             .ok_or(files::Error::FileMissing)
     }
 
     fn line_index(&'a self, id: usize, byte_index: usize) -> Result<usize, files::Error> {
         let f = self.files.get(id).ok_or(files::Error::FileMissing)?;
-        Ok(f.view_starts
+        Ok(f.starts()
             .partition_point(|&s| s <= byte_index)
             .saturating_sub(1))
     }
@@ -235,18 +275,15 @@ impl<'a> Files<'a> for SourceMap {
 
     fn line_range(&'a self, id: usize, line_index: usize) -> Result<Range<usize>, files::Error> {
         let f = self.files.get(id).ok_or(files::Error::FileMissing)?;
-        let start = *f
-            .view_starts
-            .get(line_index)
-            .ok_or(files::Error::LineTooLarge {
-                given: line_index,
-                max: f.view_starts.len() - 1,
-            })?;
-        let end = f
-            .view_starts
+        let starts = f.starts();
+        let start = *starts.get(line_index).ok_or(files::Error::LineTooLarge {
+            given: line_index,
+            max: starts.len() - 1,
+        })?;
+        let end = starts
             .get(line_index + 1)
             .copied()
-            .unwrap_or(f.view.len());
+            .unwrap_or(f.text().len());
         Ok(start..end)
     }
 }

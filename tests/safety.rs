@@ -365,6 +365,26 @@ fn a_tool_table_from_dev_zero_is_a_clear_error() {
     );
 }
 
+/// The port reads its input with the same limit as every other command:
+/// an endless file is refused, not read until memory runs out.
+#[test]
+fn a_port_of_dev_zero_is_a_clear_error() {
+    let out = cncc(&[
+        "port",
+        "/dev/zero",
+        "--from",
+        "fanuc",
+        "--to",
+        "siemens840d",
+    ]);
+    ended_normally(&out);
+    assert!(
+        text(&out.stderr).contains("larger than 256 MiB"),
+        "{}",
+        text(&out.stderr)
+    );
+}
+
 fn port(file: &Path, from: &str, to: &str) -> Output {
     cncc(&[
         "port",

@@ -118,12 +118,16 @@ impl Context {
     pub fn add_file_encoded(
         &mut self,
         path: &Path,
-    ) -> Result<(FileId, String, crate::encoding::SourceEncoding), Failure> {
-        let bytes = std::fs::read(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    ) -> Result<(FileId, Arc<String>, crate::encoding::SourceEncoding), Failure> {
+        let bytes = read_limited(path, MAX_INPUT)
+            .map_err(|e| Failure(format!("{}: {e}", path.display())))?;
         let encoding = crate::encoding::sniff(&bytes);
         let text = crate::driver::decode(&bytes);
         drop(bytes);
-        let id = self.files.add(path.display().to_string(), text.clone());
+        let text = Arc::new(text);
+        let id = self
+            .files
+            .add_shared(path.display().to_string(), text.clone());
         Ok((id, text, encoding))
     }
 

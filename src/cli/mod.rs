@@ -11,6 +11,7 @@ pub mod diff_side_by_side;
 pub mod info;
 pub mod interpolate;
 pub mod ir;
+pub mod memory;
 pub mod output;
 pub mod plot;
 pub mod port;

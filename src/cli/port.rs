@@ -214,6 +214,7 @@ fn finish(
         // The output is read back from the source map (its diagnostics
         // point there), not held twice.
         let out_id = ctx.files.add(name, std::mem::take(&mut out));
+        crate::cli::memory::release_freed();
         let ok = verify_port(ctx, sides, out_id, &mut diags);
         if std::env::var_os("CNCC_DEBUG_PORT").is_some() {
             eprintln!("{}", ctx.files.text(out_id));

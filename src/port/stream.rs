@@ -363,6 +363,8 @@ impl<'a> State<'a> {
         let text = format!("{} {}", self.marker, self.runs.len());
         let style = super::comment_style(self.from);
         self.skeleton.blocks.push(placeholder(text, style, at));
+        // Held until the skeleton is written: without the growth slack.
+        lines.shrink_to_fit();
         self.runs.push(lines);
         self.skeleton.blocks.extend(last);
         Some(())
