@@ -269,3 +269,38 @@ fn copied_templates_post_the_same_program() {
     let fanuc = post_fanuc(ex1, "ex1-fanuc-copy.nc");
     assert_eq!(stdout(&o), std::fs::read_to_string(&fanuc).unwrap());
 }
+
+/// Running a STEP-NC plan posts it in memory with the same templates:
+/// the canonical calls of `canon PLAN.stp --dialect makino` are those of
+/// the posted Makino program, and a bad folder is refused there too.
+#[test]
+fn a_plan_runs_with_the_post_folder() {
+    let makino = post_makino(TAPPED, "tapped-makino-run.nc");
+    let o = cncc(&[
+        "--dialect-file",
+        SPEC,
+        "--post-dir",
+        POSTS,
+        "canon",
+        "--dialect",
+        "makino",
+        TAPPED,
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stdout(&o), canon("makino", &makino));
+    let dir = tmp("stray-folder-run");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("pocket_rect.j2"), "G1\n").unwrap();
+    let o = cncc(&[
+        "--dialect-file",
+        SPEC,
+        "--post-dir",
+        dir.to_str().unwrap(),
+        "canon",
+        "--dialect",
+        "makino",
+        TAPPED,
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("E0909"), "{}", stderr(&o));
+}

@@ -387,7 +387,8 @@ pub enum Command {
         format: Format,
     },
     /// List the known dialects and their capabilities; with `--spec ID`,
-    /// print a built-in spec's XML as built in, to start your own from.
+    /// print a built-in spec's XML as built in, to start your own from;
+    /// with `--templates ID -o DIR`, copy a dialect's post templates.
     Dialects {
         /// A built-in dialect (id or alias) whose spec to print.
         #[arg(long, conflicts_with = "templates")]
@@ -398,7 +399,7 @@ pub enum Command {
         #[arg(long, value_name = "ID", requires = "output")]
         templates: Option<String>,
         /// With --templates: the folder to write the templates into.
-        #[arg(short, long, value_name = "DIR")]
+        #[arg(short, long, value_name = "DIR", requires = "templates")]
         output: Option<PathBuf>,
     },
     /// Explain a diagnostic code (`E0201`) or name (`two-motion-codes`);
