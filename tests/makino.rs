@@ -2,7 +2,8 @@
 //! (`tests/dialects/makino.xml`, extending fanuc with `G05 P2` high-speed
 //! mode and `G84.2` rigid tapping), loaded with `--dialect-file`, with no
 //! Rust written for it: check, canon, and port to and from it with
-//! `--verify`.
+//! `--verify`. Posting STEP-NC to it, with its post folder
+//! `tests/posts/makino/`: `tests/post_dir.rs`.
 
 mod common;
 use common::*;

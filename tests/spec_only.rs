@@ -23,38 +23,11 @@
 use std::path::{Path, PathBuf};
 
 /// (file, the text of the reported token, why it stays).
-const ALLOWED: &[(&str, &str, &str)] = &[
-    (
-        "src/post/templates.rs",
-        "\"siemens840d\"",
-        "post templates are compiled in per target id (issue 18 part 1: posts as templates a spec names; not done yet)",
-    ),
-    (
-        "src/post/templates.rs",
-        "\"fanuc\"",
-        "as above: the built-in template sets by target id",
-    ),
-    (
-        "src/post/templates.rs",
-        "\"haas\"",
-        "as above: the built-in template sets by target id",
-    ),
-    (
-        "src/post/templates.rs",
-        "\"linuxcnc\"",
-        "as above: the built-in template sets by target id",
-    ),
-    (
-        "src/post/templates.rs",
-        "\"heidenhain\"",
-        "as above: the built-in template sets by target id",
-    ),
-    (
-        "src/plot/view.rs",
-        "\"iso\"",
-        "the isometric view of `plot --views`, not the dialect alias `iso`",
-    ),
-];
+const ALLOWED: &[(&str, &str, &str)] = &[(
+    "src/plot/view.rs",
+    "\"iso\"",
+    "the isometric view of `plot --views`, not the dialect alias `iso`",
+)];
 
 #[derive(Clone, Debug, PartialEq)]
 enum Tok {

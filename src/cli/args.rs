@@ -16,6 +16,12 @@ pub struct Cli {
     #[arg(long = "dialect-file", global = true, value_name = "SPEC.xml")]
     pub dialect_files: Vec<PathBuf>,
 
+    /// A folder of post templates (NAME.j2) that override the target's
+    /// built-in ones file by file, wherever a program is posted (post,
+    /// port --features, running STEP-NC). See docs/posts.md.
+    #[arg(long = "post-dir", global = true, value_name = "DIR")]
+    pub post_dir: Option<PathBuf>,
+
     /// Colour in diagnostics.
     #[arg(long, global = true, value_enum, default_value_t = ColorChoice::Auto)]
     pub color: ColorChoice,
@@ -381,11 +387,20 @@ pub enum Command {
         format: Format,
     },
     /// List the known dialects and their capabilities; with `--spec ID`,
-    /// print a built-in spec's XML as built in, to start your own from.
+    /// print a built-in spec's XML as built in, to start your own from;
+    /// with `--templates ID -o DIR`, copy a dialect's post templates.
     Dialects {
         /// A built-in dialect (id or alias) whose spec to print.
-        #[arg(long)]
+        #[arg(long, conflicts_with = "templates")]
         spec: Option<String>,
+        /// A dialect (id or alias, built-in or loaded) whose post templates
+        /// to copy into the folder given with -o, to edit and use with
+        /// --post-dir. Files already there are kept.
+        #[arg(long, value_name = "ID", requires = "output")]
+        templates: Option<String>,
+        /// With --templates: the folder to write the templates into.
+        #[arg(short, long, value_name = "DIR", requires = "templates")]
+        output: Option<PathBuf>,
     },
     /// Explain a diagnostic code (`E0201`) or name (`two-motion-codes`);
     /// without one, list them all.

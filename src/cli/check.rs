@@ -115,6 +115,7 @@ fn check_all(ctx: &mut Context, a: &CheckArgs<'_>) -> Vec<Result<Vec<Diagnostic>
                 files: shared.branch(),
                 color,
                 notes: Vec::new(),
+                post_dir: None,
             };
             (check_one(&mut local, path, a), local.files, local.notes)
         })

@@ -22,6 +22,8 @@ pub struct Context {
     /// Notes for stderr that a multi-file command prints in input order,
     /// before the diagnostics (the dialect each file was read as).
     pub notes: Vec<String>,
+    /// The user's post templates (`--post-dir`).
+    pub post_dir: Option<crate::post::PostDir>,
 }
 
 /// A usage or I/O failure: message for stderr, exit 2.
@@ -57,7 +59,17 @@ impl Context {
             files: SourceMap::new(),
             color: cli.color,
             notes: Vec::new(),
+            post_dir: None,
         };
+        if let Some(dir) = &cli.post_dir {
+            match crate::post::PostDir::read(dir) {
+                Ok(d) => ctx.post_dir = Some(d),
+                Err(m) => {
+                    eprintln!("error: cannot read the post templates: {m}");
+                    return Err(EXIT_USAGE);
+                }
+            }
+        }
         for path in &cli.dialect_files {
             let text = match read_text_limited(path, MAX_SIDE_FILE) {
                 Ok(t) => t,

@@ -27,6 +27,43 @@ pub fn dialects(ctx: &Context, spec: Option<&str>) -> Result<i32, Failure> {
     Ok(EXIT_OK)
 }
 
+/// Writes the post templates of dialect `name` (as `--post-dir`, if
+/// given, and the built-in folders make them) into `dir`, keeping any file
+/// already there.
+pub fn copy_templates(ctx: &Context, name: &str, dir: &std::path::Path) -> Result<i32, Failure> {
+    let spec = ctx.spec(name)?;
+    let sources = match crate::post::templates_of(&spec, ctx.post_dir.as_ref()) {
+        Ok(s) => s,
+        Err(diags) => {
+            ctx.print(&diags, crate::cli::args::Format::Human);
+            return Ok(crate::cli::context::EXIT_INPUT_ERRORS);
+        }
+    };
+    std::fs::create_dir_all(dir).map_err(|e| Failure(format!("{}: {e}", dir.display())))?;
+    let (mut written, mut kept) = (0, 0);
+    for s in sources {
+        let path = dir.join(&s.file);
+        if path.exists() {
+            kept += 1;
+            continue;
+        }
+        std::fs::write(&path, s.text.as_bytes())
+            .map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+        written += 1;
+    }
+    eprintln!(
+        "{written} post templates of `{}` written to {}{}",
+        spec.id,
+        dir.display(),
+        if kept > 0 {
+            format!(" ({kept} already there kept)")
+        } else {
+            String::new()
+        }
+    );
+    Ok(EXIT_OK)
+}
+
 pub fn explain(code: Option<&str>) -> Result<i32, Failure> {
     let text = match code {
         None => Code::ALL

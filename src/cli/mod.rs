@@ -366,7 +366,14 @@ pub fn run(cli: Cli) -> i32 {
             },
         ),
         Command::Query { file, path, format } => query::run(&mut ctx, file, path, *format),
-        Command::Dialects { spec } => info::dialects(&ctx, spec.as_deref()),
+        Command::Dialects {
+            spec,
+            templates,
+            output,
+        } => match (templates, output) {
+            (Some(id), Some(dir)) => info::copy_templates(&ctx, id, dir),
+            _ => info::dialects(&ctx, spec.as_deref()),
+        },
         Command::Explain { code } => info::explain(code.as_deref()),
     };
     match result {

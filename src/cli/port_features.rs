@@ -78,7 +78,7 @@ pub fn run(ctx: &mut Context, a: PortArgs<'_>) -> Result<i32, Failure> {
         ctx.print(&diags, a.format);
         return Ok(EXIT_INPUT_ERRORS);
     }
-    let posted = match crate::post::post(&raised.project, &target) {
+    let posted = match crate::post::post_with(&raised.project, &target, ctx.post_dir.as_ref()) {
         Ok(p) => p,
         Err(errs) => {
             diags.extend(errs);

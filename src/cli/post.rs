@@ -31,7 +31,7 @@ pub fn run(
     if profiles_absolute {
         crate::post::validate::profiles_absolute(&mut project);
     }
-    match crate::post::post(&project, &target) {
+    match crate::post::post_with(&project, &target, ctx.post_dir.as_ref()) {
         Ok(mut posted) => {
             locate_diagnostics(&graph, &mut posted.warnings);
             ctx.print(&posted.warnings, format);

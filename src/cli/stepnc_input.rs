@@ -108,7 +108,7 @@ pub fn post_plan(
             })
         }
     };
-    let posted = crate::post::post(&project, &spec);
+    let posted = crate::post::post_with(&project, &spec, ctx.post_dir.as_ref());
     drop(project);
     let (text, mut more) = match posted {
         Ok(p) => (Some(p.text), p.warnings),

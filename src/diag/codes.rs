@@ -175,7 +175,7 @@ codes! {
         "The value has more decimal places than the target writes (its least input increment), or a conversion (such as a dwell from seconds to whole milliseconds) would not be exact. cncc never rounds silently: round the value in the source, or choose a target spec with more places.";
     PostUnsupported = "E0900", "post-unsupported", Error,
         "a STEP-NC feature, operation or executable the post cannot write for this target",
-        "The post-processor has no cycle and no explicit toolpath generator for this combination of feature and operation on the target dialect (or the workplan holds an executable it cannot post). Explicit toolpaths are posted as they are (NIST helices about the tool axis included), except dwells (FEEDSTOP), tool-axis curves and other curves the reader kept raw. Choose another target, or change the feature or operation in the STEP-NC file.";
+        "The post-processor has no cycle and no explicit toolpath generator for this combination of feature and operation on the target dialect (or the workplan holds an executable it cannot post). Explicit toolpaths are posted as they are (NIST helices about the tool axis included), except dwells (FEEDSTOP), tool-axis curves and other curves the reader kept raw. A target whose spec does not declare the template a workingstep needs (`<post-template name=\"drill\"/>`) refuses it the same way, naming the target and the template. Choose another target, declare the template (docs/posts.md), or change the feature or operation in the STEP-NC file.";
     PostBadProject = "E0901", "post-bad-project", Error,
         "a STEP-NC project that lacks what posting needs",
         "Posting needs, for each machining workingstep, its feature, operation and tool, a feed and a spindle speed (or what they can be computed from), and planes in a sensible order. The message names the entity and what is missing or inconsistent.";
@@ -190,7 +190,7 @@ codes! {
         "cncc reads every program it posts with the target's own front end before writing it. This one gave an error, shown in the message: a bug in the post-processor or its templates; please report it.";
     PostNoTarget = "E0905", "post-no-target", Error,
         "a target dialect with no post-processor templates",
-        "`cncc post` writes with the templates in posts/<dialect>/. This dialect has none yet (Heidenhain waits for its front end). Choose siemens840d, fanuc, haas or linuxcnc.";
+        "`cncc post` writes with the templates the target's spec declares (`<post-template name=\"drill\"/>`), read from the folder given with --post-dir or from the built-in folder posts/<id>/ of the spec or of a spec it extends. This dialect's spec declares none (iso6983 is a common base, not a machine). Post to siemens840d, fanuc, haas, linuxcnc or heidenhain, or to a spec that extends one of them.";
     PostTapPitch = "E0906", "post-tap-pitch", Error,
         "a tapping operation whose thread pitch cannot be worked out",
         "ISO 14649 gives a TAPPING operation's thread pitch as its technology's feed over its spindle speed (the two synchronised). This operation has no spindle speed, a zero speed, or a feed that gives no positive pitch. Give the MILLING_TECHNOLOGY a feedrate and a spindle speed whose ratio is the pitch (mm per revolution).";
@@ -200,6 +200,9 @@ codes! {
     PostOutsideStock = "E0908", "post-outside-stock", Error,
         "a STEP-NC feature outside the stock, or without depth",
         "Before posting, cncc checks that every feature lies inside the workpiece's BLOCK (the rawpiece's when there is one), placed through the setup and workpiece setup, and goes down from its top. The message gives the feature's box and the stock's, both in machine coordinates, and the likely cause. A profile whose placement repeats its feature's (ISO 14649-10 places profiles in the feature's frame, so the two add) is the usual one: `cncc post --profiles-absolute` reads such profiles as placed at their feature's origin.";
+    PostTemplateFile = "E0909", "post-template-file", Error,
+        "a declared post template without a file, or a template file the spec does not declare",
+        "Every template a dialect spec declares (`<post-template name=\"tap\"/>`) needs its file `tap.j2`: in the folder given with --post-dir, else in the built-in folder posts/<id>/ of the spec or of the nearest spec it extends. A declared template none of them has is an error at its declaration. So is a file in the --post-dir folder that the spec does not declare (or whose name is no post template), since it would never be used: declare it in a spec that extends the target, rename it, or remove it. `cncc dialects --templates ID` writes a target's templates into a folder to start from.";
     ImplausibleFeed = "W0901", "implausible-feed", Warning,
         "a feed that implies an implausible chip load for the tool",
         "The feed over the spindle speed (and the tool's teeth) gives the chip load per tooth (milling) or the feed per revolution (drilling). A value far above what such a tool takes (more than a tenth of its diameter per revolution for a drill, a tenth of its diameter or 1 mm per tooth for a cutter) is usually a unit mistake in the file (feed in mm/s written as m/s). The post goes on; check the technology.";

@@ -52,6 +52,8 @@ fn describe(out: &mut String, s: &DialectSpec) {
         s.functions.len(),
         s.commands.len()
     );
+    let posts: Vec<String> = s.post_templates.iter().map(|t| t.name.clone()).collect();
+    let _ = writeln!(out, "  post:         {}", list(&posts, ""));
 }
 
 #[cfg(test)]

@@ -29,6 +29,7 @@ const ELEMENTS: &[&str] = &[
     "variables",
     "remove",
     "text",
+    "post-template",
 ];
 
 /// Reads one spec. `resolve_base` finds the (already loaded) spec that
@@ -123,6 +124,7 @@ fn start_spec(
             }
             let mut s = b.clone();
             s.extends = Some(b.id.clone());
+            s.ancestors.insert(0, b.id.clone());
             s.aliases.clear();
             s.extensions.clear();
             s.doc.clear();
@@ -203,6 +205,7 @@ fn read_children(cx: &mut Ctx, root: &Node, spec: &mut DialectSpec) {
 fn read_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen, codes: &mut Codes) {
     match n.name.as_str() {
         "alias" | "extension" | "capability" | "command" => read_name_entry(cx, n, spec, seen),
+        "post-template" => read_post_template(cx, n, spec, seen),
         "address" => {
             if let Some(a) = read_address(cx, n) {
                 seen.check(
@@ -313,6 +316,35 @@ fn read_name_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Se
     }
 }
 
+/// `<post-template name="drill"/>`: a template the target's post has.
+fn read_post_template(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen) {
+    use super::post_templates::{is_post_template, PostTemplateDecl, POST_TEMPLATES};
+    cx.check_attrs(n, &["name", "doc", "confidence"]);
+    let Some(a) = cx.req(n, "name") else { return };
+    let help = format!(
+        "post templates: {}",
+        POST_TEMPLATES
+            .iter()
+            .map(|(n, _)| *n)
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
+    let Some(name) = cx.parse(a, "a post template", &help, |v| {
+        let v = v.trim_end_matches(".j2");
+        is_post_template(v).then(|| v.to_string())
+    }) else {
+        return;
+    };
+    seen.check(
+        cx,
+        format!("post-template {name}"),
+        &format!("post template `{name}`"),
+        n.span,
+    );
+    let decl = PostTemplateDecl { name, span: n.span };
+    upsert(&mut spec.post_templates, decl, |x, y| x.name == y.name);
+}
+
 fn read_numbers(cx: &mut Ctx, n: &Node, r: &mut NumberRules) {
     const ATTRS: &[&str] = &[
         "integer-lengths",
@@ -396,6 +428,7 @@ fn read_remove(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, codes: &mut Codes
         "command",
         "address",
         "group",
+        "post-template",
     ];
     let mut allowed = vec!["letter", "number", "doc"];
     allowed.extend(KINDS);
@@ -408,7 +441,7 @@ fn read_remove(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, codes: &mut Codes
         cx.diags.push(
             Diagnostic::new(Code::SpecMissing, "`<remove>` does not say what to remove")
                 .primary(n.span, "nothing named")
-                .help("write `letter=\"M\" number=\"97\"`, or one of cycle=, function=, capability=, command=, address=, group="),
+                .help("write `letter=\"M\" number=\"97\"`, or one of cycle=, function=, capability=, command=, address=, group=, post-template="),
         );
         return;
     };
@@ -445,6 +478,9 @@ fn remove_named<'n>(
         "address" => spec
             .addresses
             .retain(|x| !x.letter.to_string().eq_ignore_ascii_case(v)),
+        "post-template" => spec
+            .post_templates
+            .retain(|t| t.name != v.trim_end_matches(".j2")),
         _ => spec.groups.retain(|g| g.name != v),
     }
     Some((count(spec) < before, a))
@@ -457,4 +493,5 @@ fn count(s: &DialectSpec) -> usize {
         + s.commands.len()
         + s.addresses.len()
         + s.groups.len()
+        + s.post_templates.len()
 }

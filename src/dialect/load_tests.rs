@@ -246,6 +246,13 @@ fn schema_matches_the_loader_tables() {
         values("func"),
         FUNCS.iter().map(|(n, _)| n.to_string()).collect::<Vec<_>>()
     );
+    assert_eq!(
+        values("postTemplate"),
+        super::POST_TEMPLATES
+            .iter()
+            .map(|(n, _)| n.to_string())
+            .collect::<Vec<_>>()
+    );
 }
 
 /// Codes overridden, removed and defined again: the last definition, an

@@ -612,6 +612,9 @@ pub struct DialectSpec {
     pub name: String,
     pub family: Family,
     pub extends: Option<String>,
+    /// The specs this one extends, nearest first (`haas`: fanuc, iso6983):
+    /// where the post looks for the built-in templates it inherits.
+    pub ancestors: Vec<String>,
     pub aliases: Vec<String>,
     /// File extensions (lower case, no dot) that suggest this dialect.
     pub extensions: Vec<String>,
@@ -628,6 +631,9 @@ pub struct DialectSpec {
     pub capabilities: Capabilities,
     /// What comments and messages may hold (`<text>`).
     pub text: super::text::TextRules,
+    /// The post templates the target can fill (`<post-template>`): what
+    /// `cncc post` can write for it.
+    pub post_templates: Vec<super::post_templates::PostTemplateDecl>,
     /// The letter for canned-cycle repeats (`K` or `L`).
     pub repeat_letter: char,
     /// Block number increment when writing (0: keep the program's numbers).
@@ -766,6 +772,7 @@ impl DialectSpec {
             name,
             family,
             extends: None,
+            ancestors: Vec::new(),
             aliases: Vec::new(),
             extensions: Vec::new(),
             numbers,
@@ -778,6 +785,7 @@ impl DialectSpec {
             variables: Vec::new(),
             capabilities: Capabilities::default(),
             text: Default::default(),
+            post_templates: Vec::new(),
             repeat_letter: 'K',
             doc: String::new(),
             index: CodeIndex::default(),

@@ -3,15 +3,18 @@
 //!
 //! Pipeline: [`plan`] resolves the workplan into workingsteps placed in
 //! workpiece coordinates; each workingstep is written with the templates
-//! in `posts/<dialect>/` ([`render`]), filled with values already
+//! the target's spec declares (`<post-template>`), read from `--post-dir`
+//! or the built-in `posts/<dialect>/` of the spec or one it extends
+//! ([`templates`], [`render`]), filled with values already
 //! formatted by the target's number rules ([`values`]); features the target
 //! has no cycle for become explicit toolpaths ([`paths`]). The finished
 //! text is then read back with the target's own front end: a posted
 //! program that does not read cleanly is an error, never output.
 //!
-//! Which cycle a feature becomes is data: the target's template set says
-//! what it has (`pocket_rect.j2` on the 840D, none on Fanuc: explicit
-//! moves). Tapping: [`tapping`]. Heidenhain: drilling cycles (CYCL DEF
+//! Which cycle a feature becomes is data: the target's spec declares the
+//! templates it has (`pocket_rect` on the 840D, none on Fanuc: explicit
+//! moves); a template the post needs and the spec does not declare is a
+//! refusal naming both (E0900). Tapping: [`tapping`]. Heidenhain: drilling cycles (CYCL DEF
 //! 200/201/202, 203 or 205 for pecking: `pecking.rs`, 206/207 tapping)
 //! called with `L X.. Y.. R0 FMAX M99` or `PATTERN DEF` + `CYCL CALL
 //! PAT`, CYCL DEF 251/252 pockets, 232 faces, 253 slots
@@ -51,7 +54,17 @@ use crate::diag::{Code, Diagnostic};
 use crate::dialect::DialectSpec;
 use crate::stepnc::model::Project;
 use render::Post;
+pub use templates::{PostDir, Source as TemplateSource};
 use values::{Fmt, Vals};
+
+/// The templates `target` posts with (from `dir` or the built-in
+/// folders), for `cncc dialects --templates`.
+pub fn templates_of(
+    target: &DialectSpec,
+    dir: Option<&PostDir>,
+) -> Result<Vec<TemplateSource>, Vec<Diagnostic>> {
+    templates::resolve(target, dir)
+}
 
 /// A reason a project cannot be posted (or a note about what is not
 /// carried), before it becomes a [`Diagnostic`].
@@ -97,7 +110,7 @@ impl PostError {
         PostError {
             code: Code::PostTemplate,
             message: why,
-            help: "a bug in the post templates; please report it".into(),
+            help: "a template from --post-dir: fix it (the values each template gets: docs/posts.md); a built-in one: a bug, please report it".into(),
         }
     }
     pub fn into_diagnostic(self) -> Diagnostic {
@@ -119,19 +132,20 @@ pub fn post_project(project: &Project, target: &DialectSpec) -> Result<String, V
     post(project, target).map(|p| p.text)
 }
 
-/// Posts `project` for `target`, with the warnings.
+/// Posts `project` for `target` with its built-in templates, with the
+/// warnings.
 pub fn post(project: &Project, target: &DialectSpec) -> Result<Posted, Vec<Diagnostic>> {
-    let post = match Post::for_dialect(&target.id) {
-        None => {
-            return Err(vec![Diagnostic::new(
-                Code::PostNoTarget,
-                format!("no post-processor for `{}` yet", target.id),
-            )
-            .help("choose siemens840d, fanuc, haas, linuxcnc or heidenhain")])
-        }
-        Some(Err(e)) => return Err(vec![PostError::template(e).into_diagnostic()]),
-        Some(Ok(p)) => p,
-    };
+    post_with(project, target, None)
+}
+
+/// Posts `project` for `target`, its templates overridden file by file
+/// by those in `dir` (`--post-dir`).
+pub fn post_with(
+    project: &Project,
+    target: &DialectSpec,
+    dir: Option<&PostDir>,
+) -> Result<Posted, Vec<Diagnostic>> {
+    let post = Post::for_spec(target, dir)?;
     let can_tilt = target.has(crate::dialect::Capability::TiltedWorkingPlane);
     let items = plan::plan_for(project, can_tilt).map_err(into_diags)?;
     let found = validate::validate(project, &items, &plan::setup_frame(project));
@@ -149,6 +163,7 @@ pub fn post(project: &Project, target: &DialectSpec) -> Result<Posted, Vec<Diagn
         current_tool: None,
         defined_tools: Vec::new(),
         coolant_on: false,
+        step: String::new(),
     };
     step::write_program(&mut w, project, &items).map_err(into_diags)?;
     if let Some(v) = w.fmt.too_large.get() {
@@ -224,17 +239,49 @@ pub(crate) struct Writer<'a> {
     pub defined_tools: Vec<u32>,
     /// Coolant (flood or mist) was switched on and not off since.
     pub coolant_on: bool,
+    /// The workingstep being written (its id), for a refusal.
+    pub step: String,
 }
 
 impl Writer<'_> {
     /// Renders template `name` (which must exist) into the output.
+    /// A template the target's spec does not declare is a refusal
+    /// naming the target and the template (E0900).
     pub fn emit(&mut self, name: &str, vals: Vals) -> Result<(), PostError> {
+        if !self.post.has(name) {
+            return Err(self.undeclared(name));
+        }
         let text = self.post.render(name, &vals).map_err(PostError::template)?;
         self.out.push_str(&text);
         if !self.out.ends_with('\n') {
             self.out.push('\n');
         }
         Ok(())
+    }
+
+    /// E0900: the target's spec declares no template `name`.
+    fn undeclared(&self, name: &str) -> PostError {
+        let name = name.trim_end_matches(".j2");
+        let what = crate::dialect::POST_TEMPLATES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, d)| *d)
+            .unwrap_or("this");
+        let at = if self.step.is_empty() {
+            String::new()
+        } else {
+            format!("`{}`: ", self.step)
+        };
+        PostError {
+            code: Code::PostUnsupported,
+            message: format!(
+                "{at}{} ({}) cannot post {what}: its spec declares no `{name}` post template",
+                self.target.name, self.target.id
+            ),
+            help: format!(
+                "declare `<post-template name=\"{name}\"/>` in the spec and give `{name}.j2` with --post-dir (docs/posts.md), or post to another target"
+            ),
+        }
     }
 
     /// A comment line in the target's syntax.
@@ -314,9 +361,20 @@ mod tests {
 
     #[test]
     fn a_dialect_without_templates_has_no_post() {
-        let mut spec = (*crate::dialect::builtin("fanuc").unwrap()).clone();
-        spec.id = "mazak".into();
+        let spec = crate::dialect::builtin("iso6983").unwrap();
         let e = post(&fixture::ex1(), &spec).unwrap_err();
         assert_eq!(e[0].code, Code::PostNoTarget);
+    }
+
+    #[test]
+    fn a_template_the_spec_does_not_declare_is_a_refusal_naming_it() {
+        let mut spec = (*crate::dialect::builtin("fanuc").unwrap()).clone();
+        spec.post_templates.retain(|t| t.name != "drill");
+        let e = post(&fixture::ex1(), &spec).unwrap_err();
+        assert_eq!(e[0].code, Code::PostUnsupported, "{e:?}");
+        assert_eq!(
+            e[0].message,
+            "`WS DRILL HOLE1`: Fanuc 0i/18i/30i (Custom Macro B) (fanuc) cannot post the drilling cycle: its spec declares no `drill` post template"
+        );
     }
 }

@@ -1,13 +1,16 @@
-//! Rendering post templates with minijinja. Each target dialect has a set
-//! of templates in `posts/<dialect>/` (compiled into the binary). A
+//! Rendering post templates with minijinja. A target's templates are the
+//! ones its spec declares, read from `--post-dir` or the built-in folders
+//! ([`super::templates`]). A
 //! template is filled with [`Vals`]; a name the template asks for that is
 //! not given is an error (strict undefined), and so is a value the
 //! template does not use, unless the template says so in its first line:
 //! `{#- unused: top, sdis -#}` (a value whose information another value
 //! already carries, such as the Fanuc R plane carrying top + clearance).
 
-use super::templates::template_set;
+use super::templates::{resolve, PostDir, Source};
 use super::values::Vals;
+use crate::diag::{Code, Diagnostic};
+use crate::dialect::DialectSpec;
 use minijinja::value::{Object, Value};
 use minijinja::{Environment, UndefinedBehavior};
 use std::collections::BTreeSet;
@@ -16,45 +19,59 @@ use std::sync::{Arc, Mutex};
 /// The templates of one target.
 pub struct Post {
     env: Environment<'static>,
-    names: Vec<&'static str>,
-    sources: &'static [(&'static str, &'static str)],
-    unused_ok: Vec<(&'static str, Vec<String>)>,
+    sources: Vec<Source>,
+    unused_ok: Vec<(String, Vec<String>)>,
 }
 
 impl Post {
-    /// The template set for `dialect`, or `None` when there is none.
-    pub fn for_dialect(dialect: &str) -> Option<Result<Post, String>> {
-        let set = template_set(dialect)?;
+    /// The templates `spec` declares, from `dir` or the built-in folders;
+    /// a missing or undeclared file, or one that does not compile, is an
+    /// error.
+    pub fn for_spec(spec: &DialectSpec, dir: Option<&PostDir>) -> Result<Post, Vec<Diagnostic>> {
+        let sources = resolve(spec, dir)?;
         let mut env = Environment::new();
         env.set_undefined_behavior(UndefinedBehavior::Strict);
-        let mut names = Vec::new();
         let mut unused_ok = Vec::new();
-        for (name, src) in set {
-            if let Err(e) = env.add_template(name, src) {
-                return Some(Err(format!("post template {dialect}/{name}: {e}")));
+        let mut errors = Vec::new();
+        for s in &sources {
+            if let Err(e) = env.add_template_owned(s.file.clone(), s.text.clone()) {
+                errors.push(
+                    Diagnostic::new(Code::PostTemplate, format!("post template {}: {e}", s.origin))
+                        .help("fix the template (minijinja syntax: https://docs.rs/minijinja/latest/minijinja/syntax/)"),
+                );
             }
-            names.push(*name);
-            unused_ok.push((*name, declared_unused(src)));
+            unused_ok.push((s.file.clone(), declared_unused(&s.text)));
         }
-        Some(Ok(Post {
+        if !errors.is_empty() {
+            return Err(errors);
+        }
+        Ok(Post {
             env,
-            names,
-            sources: set,
+            sources,
             unused_ok,
-        }))
+        })
     }
 
     /// True when the set has a template of that name (`pocket_rect.j2`...).
     pub fn has(&self, name: &str) -> bool {
-        self.names.contains(&name)
+        self.sources.iter().any(|s| s.file == name)
+    }
+
+    /// Where template `name` was read from (for messages).
+    pub fn origin<'a>(&'a self, name: &'a str) -> &'a str {
+        self.sources
+            .iter()
+            .find(|s| s.file == name)
+            .map(|s| s.origin.as_str())
+            .unwrap_or(name)
     }
 
     /// The text of template `name` (empty when there is none).
     pub fn source(&self, name: &str) -> &str {
         self.sources
             .iter()
-            .find(|(n, _)| *n == name)
-            .map(|(_, s)| *s)
+            .find(|s| s.file == name)
+            .map(|s| &*s.text)
             .unwrap_or("")
     }
 
@@ -77,7 +94,7 @@ impl Post {
         });
         let out = tmpl
             .render(Value::from_dyn_object(ctx.clone()))
-            .map_err(|e| format!("post template `{name}`: {e}"))?;
+            .map_err(|e| format!("post template {}: {e}", self.origin(name)))?;
         let used = ctx.used.lock().map(|u| u.clone()).unwrap_or_default();
         let allowed = self
             .unused_ok
@@ -94,7 +111,8 @@ impl Post {
             .collect();
         if !dropped.is_empty() {
             return Err(format!(
-                "post template `{name}` does not use {}",
+                "post template {} does not use {}",
+                self.origin(name),
                 dropped.join(", ")
             ));
         }
@@ -147,7 +165,7 @@ mod tests {
 
     #[test]
     fn every_value_must_be_used_and_every_name_given() {
-        let post = Post::for_dialect("fanuc").unwrap().unwrap();
+        let post = Post::for_spec(&crate::dialect::builtin("fanuc").unwrap(), None).unwrap();
         let v = Vals::new().set("text", "HELLO");
         assert_eq!(post.render("comment.j2", &v).unwrap().trim_end(), "(HELLO)");
         let extra = v.clone().set("stray", "1");

@@ -96,7 +96,10 @@ fn blank(w: &Writer<'_>, project: &Project, v: Vals) -> Vals {
 /// One workingstep, or several that make the same hole at different
 /// places (one cycle, several positions).
 fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Result<(), PostError> {
-    write_step_body(w, project, steps).map_err(|mut e| {
+    w.step = steps[0].ws.id.clone();
+    let r = write_step_body(w, project, steps);
+    w.step.clear();
+    r.map_err(|mut e| {
         // A feature or operation with an empty its_id: name the
         // workingstep instead, so that the message can be located.
         if let Some(rest) = e.message.strip_prefix("``") {
