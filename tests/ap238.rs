@@ -168,3 +168,33 @@ fn each_value_is_read_in_its_own_declared_unit() {
     let (_, tool, _) = first_operation(&mm_tool);
     assert_eq!(tool.body.dimension.diameter, 10.0);
 }
+
+#[test]
+fn a_length_in_a_unit_not_resolved_is_named_not_taken_as_mm() {
+    let Some(shared) = common::shared() else {
+        return;
+    };
+    let text = std::fs::read_to_string(shared.join("stepnc-samples/test_program.stpnc")).unwrap();
+    // The diameter in nanometres, a prefix cncc does not resolve: not
+    // read as 10 mm, and named.
+    let nano = text
+        .replacen(
+            "MEASURE_WITH_UNIT(LENGTH_MEASURE(10.),#58)",
+            "MEASURE_WITH_UNIT(LENGTH_MEASURE(10.),#900)",
+            1,
+        )
+        .replace(
+            "ENDSEC;\nEND-ISO-10303-21;",
+            "#900=(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.NANO.,.METRE.));\nENDSEC;\nEND-ISO-10303-21;",
+        );
+    assert!(nano.contains("#900=("));
+    let (_, tool, diags) = first_operation(&nano);
+    assert_eq!(tool.body.dimension.diameter, 0.0);
+    assert!(
+        diags
+            .iter()
+            .any(|d| d.code == Code::Ap238NotRead
+                && d.message.contains("effective cutting diameter")),
+        "{diags:?}"
+    );
+}

@@ -135,6 +135,10 @@ impl<'f> Reader<'f> {
                     .and_then(|r| self.g.get(r))
                     .and_then(|rep| self.measure_of(rep))
                 else {
+                    self.skip(
+                        format!("tool property `{name}` with no measure in a unit cncc reads"),
+                        rpr.span,
+                    );
                     continue;
                 };
                 match name.as_str() {
@@ -170,18 +174,24 @@ impl<'f> Reader<'f> {
         Some(t)
     }
 
-    /// The first measure item of a representation, as mm (lengths) or
-    /// degrees (angles: the file's unit is taken as degrees [?]).
+    /// The first measure item of a representation, as mm (lengths, each
+    /// by its own declared unit) or degrees (angles: the file's unit is
+    /// taken as degrees [?]); None for a length in a unit cncc cannot
+    /// resolve (never taken as mm unsaid).
     fn measure_of(&self, rep: &Instance) -> Option<f64> {
         for item in refs(rep, 1).into_iter().filter_map(|r| self.g.get(r)) {
             let Some((v, unit)) = self.g.measure(item) else {
                 continue;
             };
-            self.g.get(unit);
-            return Some(match self.g.length_mm(unit, 0) {
-                Some(mm) => v * mm,
-                None => v,
-            });
+            let is_length = self
+                .g
+                .get(unit)
+                .is_some_and(|u| self.g.part(u, "LENGTH_UNIT").is_some());
+            return match self.g.length_mm(unit, 0) {
+                Some(mm) => Some(v * mm),
+                None if is_length => None,
+                None => Some(v),
+            };
         }
         None
     }
