@@ -100,3 +100,101 @@ fn an_aim_file_without_a_project_is_a_model_error() {
     assert!(r.project.is_none());
     assert_eq!(r.diagnostics[0].code, Code::StepncModel);
 }
+
+/// The workingstep's operation of an AP238 text.
+fn first_operation(text: &str) -> (Operation, Tool, Vec<cncc::diag::Diagnostic>) {
+    let mut files = SourceMap::new();
+    let id = files.add("mem.stpnc", text.to_string());
+    let r = stepnc::read_text(files.text(id), id);
+    let p = r.project.expect("the plan reads");
+    let ws = p
+        .main_workplan
+        .elements
+        .iter()
+        .find_map(|e| match e {
+            Executable::Workingstep(w) => Some(w.operation),
+            _ => None,
+        })
+        .unwrap();
+    let op = p.operation(ws).clone();
+    let tool = p.tool(op.tool).clone();
+    (op, tool, r.diagnostics)
+}
+
+#[test]
+fn each_value_is_read_in_its_own_declared_unit() {
+    let Some(shared) = common::shared() else {
+        return;
+    };
+    let text = std::fs::read_to_string(shared.join("stepnc-samples/test_program.stpnc")).unwrap();
+    // As written: everything in inches (#58), the feed in inch/minute
+    // (#104 = #58 over minutes): 2000 in/min, a 10 in tool, 3000 rpm.
+    // Converted faithfully, the numbers are implausible for milling (a
+    // 254 mm end mill at 2394 m/min, 50.8 m/min feed): W0808 says so
+    // and names the millimetre reading, and the declared units are kept.
+    let (op, tool, diags) = first_operation(&text);
+    assert_eq!(op.technology.feed, Some(50_800.0));
+    assert_eq!(tool.body.dimension.diameter, 254.0);
+    let doubt: Vec<&cncc::diag::Diagnostic> = diags
+        .iter()
+        .filter(|d| d.code == Code::Ap238UnitsDoubtful)
+        .collect();
+    assert_eq!(doubt.len(), 1, "{diags:?}");
+    assert!(
+        doubt[0].message.contains("50800 mm/min"),
+        "{}",
+        doubt[0].message
+    );
+    let help = doubt[0].help.as_deref().unwrap_or_default();
+    assert!(help.contains("2000 mm/min with a 10.00 mm tool"), "{help}");
+    // The feed's unit made mm/minute (#105 -> #61, millimetre): the feed
+    // is 2000 mm/min while the points and the tool stay in inches.
+    let mm_feed = text.replace(
+        "#105=DERIVED_UNIT_ELEMENT(#58,1.);",
+        "#105=DERIVED_UNIT_ELEMENT(#61,1.);",
+    );
+    assert_ne!(mm_feed, text);
+    let (op, tool, diags) = first_operation(&mm_feed);
+    assert_eq!(op.technology.feed, Some(2000.0));
+    assert_eq!(tool.body.dimension.diameter, 254.0);
+    assert!(!diags.iter().any(|d| d.code == Code::Ap238UnitsDoubtful));
+    // The diameter given in millimetres (#61) in the inch context: 10 mm.
+    let mm_tool = text.replacen(
+        "MEASURE_WITH_UNIT(LENGTH_MEASURE(10.),#58)",
+        "MEASURE_WITH_UNIT(LENGTH_MEASURE(10.),#61)",
+        1,
+    );
+    assert_ne!(mm_tool, text);
+    let (_, tool, _) = first_operation(&mm_tool);
+    assert_eq!(tool.body.dimension.diameter, 10.0);
+}
+
+#[test]
+fn a_length_in_a_unit_not_resolved_is_named_not_taken_as_mm() {
+    let Some(shared) = common::shared() else {
+        return;
+    };
+    let text = std::fs::read_to_string(shared.join("stepnc-samples/test_program.stpnc")).unwrap();
+    // The diameter in nanometres, a prefix cncc does not resolve: not
+    // read as 10 mm, and named.
+    let nano = text
+        .replacen(
+            "MEASURE_WITH_UNIT(LENGTH_MEASURE(10.),#58)",
+            "MEASURE_WITH_UNIT(LENGTH_MEASURE(10.),#900)",
+            1,
+        )
+        .replace(
+            "ENDSEC;\nEND-ISO-10303-21;",
+            "#900=(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.NANO.,.METRE.));\nENDSEC;\nEND-ISO-10303-21;",
+        );
+    assert!(nano.contains("#900=("));
+    let (_, tool, diags) = first_operation(&nano);
+    assert_eq!(tool.body.dimension.diameter, 0.0);
+    assert!(
+        diags
+            .iter()
+            .any(|d| d.code == Code::Ap238NotRead
+                && d.message.contains("effective cutting diameter")),
+        "{diags:?}"
+    );
+}

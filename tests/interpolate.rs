@@ -45,6 +45,7 @@ fn blu1(accel: f64) -> Settings {
         accel,
         jerk: 0.0,
         rapid_rate: 10_000.0,
+        ..Settings::default()
     }
 }
 
@@ -168,6 +169,7 @@ fn the_time_of_a_move_with_acceleration_phases_is_the_analytic_one() {
             accel: 500.0,
             jerk: 0.0,
             rapid_rate: 10_000.0,
+            ..Settings::default()
         },
         &[mv(MoveKind::Line, [0.0; 3], [100.0, 0.0, 0.0], 3000.0)],
     );

@@ -312,8 +312,8 @@ pub enum Command {
         run: RunArgs,
     },
     /// Set-points for a controller's position loop at a fixed sampling
-    /// period (trapezoidal or jerk-limited feed profile per move, stopping
-    /// at each move's end), or reference pulses per axis and period at the BLU resolution.
+    /// period (trapezoidal or jerk-limited feed profile, planned over a
+    /// look-ahead window of moves), or reference pulses per axis and period at the BLU resolution.
     Interpolate {
         file: PathBuf,
         #[arg(long)]
@@ -336,6 +336,14 @@ pub enum Command {
         /// Rapid traverse rate, mm/min.
         #[arg(long = "rapid-rate", value_name = "MM/MIN", default_value_t = 10000.0)]
         rapid_rate: f64,
+        /// Moves planned ahead of the one running (0: none, every move
+        /// starts and ends at rest).
+        #[arg(long, value_name = "N", default_value_t = 64)]
+        lookahead: usize,
+        /// Corner tolerance δ of the junction deviation model, mm: corners
+        /// are passed at √(a·δ·sin(θ/2)/(1−sin(θ/2))) (0: stop at every corner).
+        #[arg(long = "corner-tolerance", value_name = "MM", default_value_t = 0.01)]
+        corner_tolerance: f64,
         /// csv: t,x,y,z,speed per period; pulses: period,x,y,z pulse counts.
         #[arg(long, value_enum, default_value_t = crate::cli::interpolate::Form::Csv)]
         format: crate::cli::interpolate::Form,

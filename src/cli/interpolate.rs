@@ -67,6 +67,16 @@ fn check_settings(s: &Settings) -> Result<(), Failure> {
             "--jerk must be zero (no limit) or a positive number of mm/s³".into(),
         ));
     }
+    if !(s.corner_tolerance >= 0.0 && s.corner_tolerance.is_finite()) {
+        return Err(Failure(
+            "--corner-tolerance must be zero (stop at corners) or a positive number of mm".into(),
+        ));
+    }
+    if s.lookahead > 100_000 {
+        return Err(Failure(
+            "--lookahead: at most 100000 moves (the window is held in memory)".into(),
+        ));
+    }
     if !(s.rapid_rate > 0.0 && s.rapid_rate.is_finite()) {
         return Err(Failure(
             "--rapid-rate must be a positive number of mm/min".into(),

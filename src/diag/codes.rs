@@ -564,6 +564,9 @@ codes! {
     Ap238NotRead = "W0807", "ap238-not-read", Warning,
         "AP238 (integrated CNC schema) content cncc does not read: named, and left out of the plan",
         "cncc reads AP238 AIM files (FILE_SCHEMA INTEGRATED_CNC_SCHEMA) as far as their explicit toolpaths go: the workplan and its workingsteps, the tools and their body properties, technology (feed, spindle), machine functions (coolant) and cutter-location toolpaths (polylines, composite curves, trimmed lines and circles) with the units the file assigns. Feature geometry, strategies, B-splines and other properties are named in this warning and left out: the plan runs without them.";
+    Ap238UnitsDoubtful = "W0808", "ap238-units-doubtful", Warning,
+        "an AP238 feed and tool whose values, in the units the file declares, are implausible for milling",
+        "cncc converts every AP238 value by the unit the file declares for it (a length by its LENGTH_MEASURE_WITH_UNIT or its representation context, a feed by its DERIVED_UNIT). Read so, this operation's feed or its tool's cutting speed (π·diameter·rpm) is beyond what milling runs (above 20 000 mm/min or 2 000 m/min [?]), while the same numbers read as millimetres would not be: the file may write millimetre values under an inch (or other) unit. cncc keeps the declared units; check the file's units with its author, or re-export it in the units its values are in.";
     KeptRaw = "W0802", "kept-raw", Warning,
         "a value cncc could not read into its model, kept as written",
         "The instance does not have the form ISO 14649 gives it (a mandatory attribute unset, an unexpected entity), so the typed model keeps it as written and carries it to the output unchanged, but it takes no part in checks, differences or posting.";

@@ -2,30 +2,34 @@
 //! a run ([`crate::toolpath::Move`]) become set-points at a fixed sampling
 //! period, along the path (lines, circular and helical arcs) at the
 //! programmed feed, with a trapezoidal acceleration-limited feed profile
-//! per move ([`profile`]), or a jerk-limited one ([`scurve`]); and, on the BLU grid, reference pulses per
-//! axis and period ([`pulses`]).
+//! per move ([`profile`]), or a jerk-limited one ([`scurve`]); and, on the
+//! BLU grid, reference pulses per axis and period ([`pulses`]).
 //!
-//! Every move starts and ends at rest: there is no look-ahead blending of
-//! consecutive moves, so a program of many short moves runs slower than
-//! its feed (the time is exact for this profile, not a machine's). The
-//! clock runs on across moves: period `k` is at `k × period`, and a
+//! Moves are planned together over a window of `lookahead` moves
+//! ([`lookahead`]): a corner is passed at the junction speed its angle
+//! allows (the path itself is not rounded), collinear moves run as one,
+//! and each move ends at a speed from which the moves after it in the
+//! window can still stop. With `lookahead` 0 every move starts and ends at
+//! rest. The clock runs on across moves: period `k` is at `k × period`, and a
 //! period that spans the end of one move samples the next. Dwells pass
 //! time standing still; rapids run at the rapid rate given. The last
 //! set-point is at the first period tick at or after the end of the run,
 //! at the end point, so that pulses sum to the whole displacement.
 //!
-//! Streaming: one move at a time is held; memory does not grow with the
-//! program.
+//! Streaming: the window (at most `lookahead + 1` moves) is held; memory
+//! does not grow with the program.
 
+pub mod lookahead;
 pub mod path;
 pub mod profile;
 pub mod pulses;
 pub mod scurve;
 
 use crate::toolpath::{Event, FeedMode, Move, MoveKind};
+use lookahead::{Planned, Window};
 use nalgebra::Vector3;
 use path::Path;
-use profile::Profile;
+use profile::{Limits, Profile};
 use pulses::Q3;
 
 /// How to interpolate.
@@ -41,6 +45,11 @@ pub struct Settings {
     pub jerk: f64,
     /// Rapid traverse rate, mm/min.
     pub rapid_rate: f64,
+    /// Moves planned ahead of the one run (0: none, every move stops).
+    pub lookahead: usize,
+    /// Corner tolerance δ of the junction deviation model, mm (0: stop at
+    /// every corner).
+    pub corner_tolerance: f64,
 }
 
 impl Default for Settings {
@@ -51,6 +60,8 @@ impl Default for Settings {
             accel: 1000.0,
             jerk: 0.0,
             rapid_rate: 10_000.0,
+            lookahead: 64,
+            corner_tolerance: 0.01,
         }
     }
 }
@@ -95,6 +106,13 @@ pub struct Interpolator<F: FnMut(&Sample)> {
     pub error: Option<NoFeed>,
     /// Moves and samples so far.
     pub moves: u64,
+    /// The moves planned but not yet run.
+    window: Window,
+    /// The speed at `clock` (the exit of the last move run), mm/s.
+    v_now: f64,
+    /// The last move taken's end tangent and feed (for the next
+    /// junction); None after a stop.
+    prev: Option<(Vector3<f64>, f64)>,
 }
 
 impl<F: FnMut(&Sample)> Interpolator<F> {
@@ -108,6 +126,12 @@ impl<F: FnMut(&Sample)> Interpolator<F> {
             last_grid: None,
             error: None,
             moves: 0,
+            window: Window::new(Limits {
+                accel: s.accel,
+                jerk: s.jerk,
+            }),
+            v_now: 0.0,
+            prev: None,
         }
     }
 
@@ -119,17 +143,29 @@ impl<F: FnMut(&Sample)> Interpolator<F> {
         match e {
             Event::Move(m) => self.feed_move(m),
             Event::Dwell { seconds, .. } => {
+                self.flush();
                 if let Some((q, p)) = self.at {
                     self.hold(seconds.max(0.0), q, p);
                 }
             }
-            Event::ToolChange { .. } | Event::Stop { .. } | Event::Comment { .. } => {}
+            Event::ToolChange { .. } | Event::Stop { .. } => self.flush(),
+            Event::Comment { .. } => {}
         }
+    }
+
+    /// Runs every move planned, to rest.
+    fn flush(&mut self) {
+        while !self.window.is_empty() {
+            self.run_next();
+        }
+        self.v_now = 0.0;
+        self.prev = None;
     }
 
     /// Ends the run: the last set-point, at the end point. The total time,
     /// seconds (the end of the last move).
     pub fn finish(mut self) -> f64 {
+        self.flush();
         if let Some((q, p)) = self.at {
             let last_time = self.next as f64 * self.s.period - self.s.period;
             if self.last_grid != Some(q) || last_time < self.clock - 1e-9 {
@@ -163,10 +199,10 @@ impl<F: FnMut(&Sample)> Interpolator<F> {
             MoveKind::Arc(g) => Path::arc(m.from, m.to, g),
             MoveKind::Rapid | MoveKind::Line | MoveKind::Probe => Path::line(m.from, m.to),
         };
-        let qs = pulses::round_point(&path.start(), self.s.blu);
         if self.at.is_none() {
             // The machine stands at the first move's start.
-            self.at = Some((qs, path.start()));
+            let start = path.start();
+            self.at = Some((pulses::round_point(&start, self.s.blu), start));
         }
         let length = path.length();
         if length <= 0.0 {
@@ -175,18 +211,49 @@ impl<F: FnMut(&Sample)> Interpolator<F> {
         let v = match self.speed(m) {
             Ok(v) => v,
             Err(why) => {
+                // The moves before it run, to rest; the run stops here.
+                self.flush();
                 self.error = Some(NoFeed { span: m.span, why });
                 return;
             }
         };
         self.moves += 1;
-        let prof = Profile::new(length, v, self.s.accel, self.s.jerk);
+        let junction = match self.prev {
+            Some((t, feed)) if self.s.lookahead > 0 => lookahead::junction_speed(
+                &t,
+                &path.tangent(0.0),
+                self.s.accel,
+                self.s.corner_tolerance,
+            )
+            .min(feed),
+            _ => 0.0,
+        };
+        self.prev = Some((path.tangent(1.0), v));
+        self.window.push(Planned::new(path, length, v, junction));
+        while self.window.len() > self.s.lookahead {
+            self.run_next();
+        }
+    }
+
+    /// Runs the first move of the window, from the current speed to the
+    /// exit speed the plan allows.
+    fn run_next(&mut self) {
+        let Some((m, v1)) = self.window.pop(self.v_now) else {
+            return;
+        };
+        let lim = Limits {
+            accel: self.s.accel,
+            jerk: self.s.jerk,
+        };
+        let prof = Profile::between(m.length, self.v_now, m.speed, v1, lim);
+        let path = m.path;
+        let qs = pulses::round_point(&path.start(), self.s.blu);
         let qe = pulses::round_point(&path.end(), self.s.blu);
         let end = self.clock + prof.duration();
         while (self.next as f64) * self.s.period <= end {
             let local = self.next as f64 * self.s.period - self.clock;
             let (dist, speed) = prof.at(local);
-            let f = dist / length;
+            let f = dist / m.length;
             let p = path.point(f);
             let q = match path {
                 Path::Line { .. } => pulses::line_point(qs, qe, f),
@@ -195,6 +262,7 @@ impl<F: FnMut(&Sample)> Interpolator<F> {
             self.emit(p, speed * 60.0, q);
         }
         self.clock = end;
+        self.v_now = v1;
         self.at = Some((qe, path.end()));
     }
 

@@ -96,6 +96,37 @@ impl Path {
         }
     }
 
+    /// The unit tangent (direction of travel) at fraction `f`; zero for a
+    /// path of no length.
+    pub fn tangent(&self, f: f64) -> Vector3<f64> {
+        let d = match self {
+            Path::Line { from, to } => to - from,
+            Path::Arc {
+                from,
+                to,
+                geom,
+                a0,
+                sweep,
+                r0,
+                r1,
+            } => {
+                let [u, v, w] = geom.axes;
+                let (a, r) = (a0 + sweep * f, r0 + (r1 - r0) * f);
+                let mut d = Vector3::zeros();
+                d[u] = (r1 - r0) * a.cos() - r * a.sin() * sweep;
+                d[v] = (r1 - r0) * a.sin() + r * a.cos() * sweep;
+                d[w] = to[w] - from[w];
+                d
+            }
+        };
+        let n = d.norm();
+        if n > 0.0 {
+            d / n
+        } else {
+            Vector3::zeros()
+        }
+    }
+
     pub fn start(&self) -> Vector3<f64> {
         match self {
             Path::Line { from, .. } | Path::Arc { from, .. } => *from,
@@ -124,5 +155,11 @@ mod tests {
         let mid = p.point(0.5);
         assert!((mid - Vector3::new(0.0, 10.0, 2.0)).norm() < 1e-9);
         assert!((p.length() - (10.0 * std::f64::consts::PI).hypot(4.0)).abs() < 1e-9);
+        // Counter-clockwise from +X: the tangent starts along +Y (and
+        // climbs), ends along -Y.
+        let (t0, t1) = (p.tangent(0.0), p.tangent(1.0));
+        let k = (10.0 * std::f64::consts::PI).hypot(4.0);
+        assert!((t0 - Vector3::new(0.0, 10.0 * std::f64::consts::PI, 4.0) / k).norm() < 1e-9);
+        assert!((t1 - Vector3::new(0.0, -10.0 * std::f64::consts::PI, 4.0) / k).norm() < 1e-9);
     }
 }

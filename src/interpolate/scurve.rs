@@ -1,43 +1,57 @@
 //! The jerk-limited (S-curve) feed profile of one move: the acceleration
 //! ramps up at the jerk limit `j` to at most `a`, holds, and ramps down
-//! as the speed nears the feed; cruise; the mirror image to rest. A move
-//! too short to reach the feed peaks lower (found by bisection on the
-//! peak speed, whose ramp distance grows with it), and a peak below
-//! `a²/j` never reaches `a` (the acceleration is a triangle). Every move
-//! starts and ends at rest, as with the trapezoid ([`super::profile`]).
+//! as the speed nears the feed; cruise; the mirror image down to the exit
+//! speed. A move too short to reach the feed peaks lower (found by
+//! bisection on the peak speed, whose ramp distances grow with it), and a
+//! speed change below `a²/j` never reaches `a` (the acceleration is a
+//! triangle). A move starts at its entry speed and ends at its exit speed
+//! (both 0 without look-ahead) with zero acceleration at both ends, so
+//! consecutive moves join without a step in acceleration.
 //!
-//! For a ramp from rest to `vp`: with the acceleration reached,
-//! `T = vp/a + a/j`; without, `T = 2·√(vp/j)`; the distance is `vp·T/2`
-//! either way (the speed curve is symmetric about the ramp's middle).
+//! For a ramp from `v0` to `v1` (change `Δ = |v1 − v0|`): with the
+//! acceleration reached, `T = Δ/a + a/j`; without, `T = 2·√(Δ/j)`; the
+//! distance is `(v0 + v1)·T/2` either way (the speed curve is symmetric
+//! about the ramp's middle).
 
 /// A move's speed over time under a jerk and an acceleration limit.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SCurve {
     length: f64,
+    v0: f64,
+    v1: f64,
     /// Peak speed reached, mm/s.
     peak: f64,
     jerk: f64,
-    /// Duration of the jerk phases (each of the four).
-    t_jerk: f64,
-    /// Duration of the constant-acceleration phase of each ramp.
-    t_const: f64,
+    /// Jerk phase and constant-acceleration phase of the ramp up (from
+    /// `v0`) and of the ramp down (to `v1`).
+    up: (f64, f64),
+    down: (f64, f64),
     /// Duration of the cruise phase.
     t_cruise: f64,
 }
 
 impl SCurve {
     /// The profile of a move `length` mm long at `speed` mm/s (> 0), with
-    /// acceleration `accel` mm/s² and jerk `jerk` mm/s³ (both > 0).
+    /// acceleration `accel` mm/s² and jerk `jerk` mm/s³ (both > 0), from
+    /// rest to rest.
     pub fn new(length: f64, speed: f64, accel: f64, jerk: f64) -> Self {
+        Self::between(length, 0.0, speed, 0.0, accel, jerk)
+    }
+
+    /// Entered at `v0` and left at `v1` mm/s (at most `speed`).
+    pub fn between(length: f64, v0: f64, speed: f64, v1: f64, accel: f64, jerk: f64) -> Self {
         let length = length.max(0.0);
-        let ramp = |vp: f64| ramp_distance(vp, accel, jerk);
-        let peak = if 2.0 * ramp(speed) <= length {
+        let (v0, v1) = (v0.clamp(0.0, speed), v1.clamp(0.0, speed));
+        let both =
+            |vp: f64| ramp_distance(v0, vp, accel, jerk) + ramp_distance(vp, v1, accel, jerk);
+        let floor = v0.max(v1);
+        let peak = if both(speed) <= length {
             speed
         } else {
-            let (mut lo, mut hi) = (0.0, speed);
-            for _ in 0..200 {
+            let (mut lo, mut hi) = (floor, speed);
+            for _ in 0..100 {
                 let mid = 0.5 * (lo + hi);
-                if 2.0 * ramp(mid) <= length {
+                if both(mid) <= length {
                     lo = mid;
                 } else {
                     hi = mid;
@@ -45,14 +59,15 @@ impl SCurve {
             }
             lo
         };
-        let (t_jerk, t_const) = ramp_phases(peak, accel, jerk);
-        let cruise = length - 2.0 * ramp(peak);
+        let cruise = length - both(peak);
         SCurve {
             length,
+            v0,
+            v1,
             peak,
             jerk,
-            t_jerk,
-            t_const,
+            up: ramp_phases(peak - v0, accel, jerk),
+            down: ramp_phases(peak - v1, accel, jerk),
             t_cruise: if peak > 0.0 {
                 (cruise / peak).max(0.0)
             } else {
@@ -63,7 +78,7 @@ impl SCurve {
 
     /// The move's duration, seconds.
     pub fn duration(&self) -> f64 {
-        2.0 * self.ramp_time() + self.t_cruise
+        ramp_time(self.up) + self.t_cruise + ramp_time(self.down)
     }
 
     /// The peak speed, mm/s.
@@ -71,63 +86,98 @@ impl SCurve {
         self.peak
     }
 
-    fn ramp_time(&self) -> f64 {
-        2.0 * self.t_jerk + self.t_const
-    }
-
     /// Distance travelled and speed (mm, mm/s) `t` seconds into the move.
     pub fn at(&self, t: f64) -> (f64, f64) {
-        let tr = self.ramp_time();
+        let tu = ramp_time(self.up);
         let end = self.duration();
         if t <= 0.0 {
-            (0.0, 0.0)
-        } else if t < tr {
-            self.ramp(t)
-        } else if t <= tr + self.t_cruise {
-            (self.ramp(tr).0 + self.peak * (t - tr), self.peak)
+            (0.0, self.v0)
+        } else if t < tu {
+            self.ramp(self.v0, self.up, t)
+        } else if t <= tu + self.t_cruise {
+            (
+                self.ramp(self.v0, self.up, tu).0 + self.peak * (t - tu),
+                self.peak,
+            )
         } else if t < end {
-            let (s, v) = self.ramp(end - t);
+            let (s, v) = self.ramp(self.v1, self.down, end - t);
             (self.length - s, v)
         } else {
-            (self.length, 0.0)
+            (self.length, self.v1)
         }
     }
 
-    /// Distance and speed `t` seconds into the ramp from rest.
-    fn ramp(&self, t: f64) -> (f64, f64) {
-        let (j, t1, t2) = (self.jerk, self.t_jerk, self.t_const);
+    /// Distance and speed `t` seconds into a ramp up from `v0` with the
+    /// phases `(t1, t2)` (the ramp down, run backwards from its end, is
+    /// such a ramp from the exit speed).
+    fn ramp(&self, v0: f64, (t1, t2): (f64, f64), t: f64) -> (f64, f64) {
+        let j = self.jerk;
+        let t = t.min(2.0 * t1 + t2);
         let a = j * t1;
         // End of the first jerk phase, then of the constant acceleration.
-        let (s1, v1) = (j * t1.powi(3) / 6.0, 0.5 * j * t1 * t1);
-        let (s2, v2) = (s1 + v1 * t2 + 0.5 * a * t2 * t2, v1 + a * t2);
-        if t < t1 {
+        let (s1, w1) = (j * t1.powi(3) / 6.0, 0.5 * j * t1 * t1);
+        let (s2, w2) = (s1 + w1 * t2 + 0.5 * a * t2 * t2, w1 + a * t2);
+        let (s, w) = if t < t1 {
             (j * t.powi(3) / 6.0, 0.5 * j * t * t)
         } else if t < t1 + t2 {
             let u = t - t1;
-            (s1 + v1 * u + 0.5 * a * u * u, v1 + a * u)
+            (s1 + w1 * u + 0.5 * a * u * u, w1 + a * u)
         } else {
             let u = (t - t1 - t2).min(t1);
             (
-                s2 + v2 * u + 0.5 * a * u * u - j * u.powi(3) / 6.0,
-                v2 + a * u - 0.5 * j * u * u,
+                s2 + w2 * u + 0.5 * a * u * u - j * u.powi(3) / 6.0,
+                w2 + a * u - 0.5 * j * u * u,
             )
-        }
+        };
+        (s + v0 * t, w + v0)
     }
 }
 
-/// The jerk phase and constant-acceleration phase of a ramp to `vp`.
-fn ramp_phases(vp: f64, accel: f64, jerk: f64) -> (f64, f64) {
-    if vp * jerk >= accel * accel {
-        (accel / jerk, vp / accel - accel / jerk)
+fn ramp_time((t1, t2): (f64, f64)) -> f64 {
+    2.0 * t1 + t2
+}
+
+/// The jerk phase and constant-acceleration phase of a ramp changing the
+/// speed by `dv` (≥ 0).
+fn ramp_phases(dv: f64, accel: f64, jerk: f64) -> (f64, f64) {
+    let dv = dv.max(0.0);
+    if dv * jerk >= accel * accel {
+        (accel / jerk, dv / accel - accel / jerk)
     } else {
-        ((vp / jerk).sqrt(), 0.0)
+        ((dv / jerk).sqrt(), 0.0)
     }
 }
 
-/// The distance of a ramp from rest to `vp`.
-fn ramp_distance(vp: f64, accel: f64, jerk: f64) -> f64 {
-    let (t1, t2) = ramp_phases(vp, accel, jerk);
-    vp * (2.0 * t1 + t2) / 2.0
+/// The distance of a ramp between the speeds `va` and `vb` (either way).
+fn ramp_distance(va: f64, vb: f64, accel: f64, jerk: f64) -> f64 {
+    0.5 * (va + vb) * ramp_time(ramp_phases((vb - va).abs(), accel, jerk))
+}
+
+/// The highest speed reachable from `v0` over `length` mm (the inverse of
+/// [`ramp_distance`] in its upper speed), mm/s.
+pub fn reach(v0: f64, length: f64, accel: f64, jerk: f64) -> f64 {
+    let length = length.max(0.0);
+    let knee = accel * accel / jerk;
+    if accel.is_finite() && ramp_distance(v0, v0 + knee, accel, jerk) <= length {
+        // (2 v0 + Δ)(Δ/a + a/j) = 2L: Δ² + Δ(2 v0 + a²/j) + 2 v0 a²/j − 2aL = 0.
+        let b = 2.0 * v0 + knee;
+        let c = 2.0 * v0 * knee - 2.0 * accel * length;
+        v0 + 0.5 * (-b + (b * b - 4.0 * c).max(0.0).sqrt())
+    } else {
+        // (2 v0 + s²)·s = L√j with s = √Δ: Newton from above (the cubic
+        // is convex and increasing for s > 0).
+        let k = length * jerk.sqrt();
+        let mut s = k.cbrt();
+        for _ in 0..60 {
+            let f = s * s * s + 2.0 * v0 * s - k;
+            let next = s - f / (3.0 * s * s + 2.0 * v0);
+            if !(next < s) || next <= 0.0 {
+                break;
+            }
+            s = next;
+        }
+        v0 + s * s
+    }
 }
 
 #[cfg(test)]
@@ -179,5 +229,22 @@ mod tests {
             }
             assert!((last_s - len).abs() < 1e-9, "{len}: ends at {last_s}");
         }
+    }
+
+    #[test]
+    fn reach_inverts_the_ramp_distance() {
+        let (a, j) = (300.0, 2000.0);
+        for v0 in [0.0, 3.0, 40.0] {
+            for len in [0.001, 0.3, 5.0, 80.0] {
+                let v = reach(v0, len, a, j);
+                let d = ramp_distance(v0, v, a, j);
+                assert!((d - len).abs() < 1e-9 * len.max(1.0), "{v0} {len}: {d}");
+            }
+        }
+        // Entered at 10, left at 20 mm/s: continuous at both ends.
+        let p = SCurve::between(3.0, 10.0, 40.0, 20.0, a, j);
+        assert_eq!(p.at(0.0).1, 10.0);
+        assert!((p.at(p.duration() - 1e-9).1 - 20.0).abs() < 1e-6);
+        assert!((p.at(p.duration()).0 - 3.0).abs() < 1e-12);
     }
 }

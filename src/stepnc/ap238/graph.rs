@@ -154,13 +154,16 @@ impl<'f> Graph<'f> {
     }
 
     /// A rate unit (`DERIVED_UNIT` of a length or a revolution over a
-    /// time) as the factor to per minute of mm (or revolutions).
-    pub fn per_minute(&self, unit: u64) -> Option<f64> {
+    /// time) as the factor to per minute of mm (or revolutions), and the
+    /// part of it its length unit gives (mm per unit of that length; 1
+    /// for revolutions).
+    pub fn per_minute(&self, unit: u64) -> Option<(f64, f64)> {
         let u = self.get(unit)?;
         let Value::List(elements) = &self.part(u, "DERIVED_UNIT")?.first()?.value else {
             return None;
         };
         let mut factor = 1.0;
+        let mut length = 1.0;
         for e in elements {
             let e = self.get(reference_of(e)?)?;
             let (base, exp) = (reference_of(e.params.first()?)?, number(e.params.get(1)?)?);
@@ -168,13 +171,14 @@ impl<'f> Graph<'f> {
             let f = if self.part(b, "CONTEXT_DEPENDENT_UNIT").is_some() {
                 1.0
             } else if let Some(mm) = self.length_mm(base, 0) {
+                length *= mm.powf(exp);
                 mm
             } else {
                 self.time_min(base, 0)?
             };
             factor *= f.powf(exp);
         }
-        Some(factor)
+        Some((factor, length))
     }
 
     /// The length unit (mm per unit) of a representation context; mm when

@@ -28,9 +28,13 @@
 //!   `POLYLINE`, `COMPOSITE_CURVE` or `TRIMMED_CURVE` of a `LINE` or
 //!   `CIRCLE`, in the length unit its representation context assigns.
 //!
-//! Units are those the file assigns (an inch context scales points and
-//! tool sizes by 25.4; feeds in any length over any time unit become
-//! mm/min). Spindle speeds follow ISO 14649's sign (positive =
+//! Units are those the file assigns, each value by its own declared unit
+//! (a tool size by its measure's unit, a point by its context's, a feed
+//! by its derived unit's length and time: any length over any time unit
+//! becomes mm/min); a length in a unit cncc cannot resolve is named
+//! (W0807), never taken as mm. Where the declared units make a feed or a
+//! cutting speed implausible and millimetres would not, `W0808
+//! ap238-units-doubtful` says so [?] (see `plausible`). Spindle speeds follow ISO 14649's sign (positive =
 //! counter-clockwise, M4) as the ARM reader does [?: STEP Tools files may
 //! mean positive as the usual clockwise cut]. What is not read (feature
 //! geometry, operation strategies, B-spline curves, other properties and

@@ -10,10 +10,18 @@ impl<'f> Reader<'f> {
     pub(super) fn operation(&mut self, op: &'f Instance) -> Option<OperationId> {
         let id = string(op, 0);
         let tool = self.tool_of(op)?;
-        let technology = self
+        let (technology, feed_unit) = self
             .related(op, "MACHINING_TECHNOLOGY_RELATIONSHIP")
             .map(|t| self.technology(t))
             .unwrap_or_default();
+        if let Some((unit_mm, span)) = feed_unit {
+            let tool = &self.p.tools[tool.0 as usize];
+            let (d, name) = (tool.body.dimension.diameter, tool.id.clone());
+            let doubt = super::plausible::doubt(&technology, d, unit_mm);
+            if let Some(d) = doubt {
+                self.diags.push(d.diagnostic(&name, span));
+            }
+        }
         let machine_functions = self
             .related(op, "MACHINING_FUNCTIONS_RELATIONSHIP")
             .map(|m| self.functions(m))
@@ -127,6 +135,10 @@ impl<'f> Reader<'f> {
                     .and_then(|r| self.g.get(r))
                     .and_then(|rep| self.measure_of(rep))
                 else {
+                    self.skip(
+                        format!("tool property `{name}` with no measure in a unit cncc reads"),
+                        rpr.span,
+                    );
                     continue;
                 };
                 match name.as_str() {
@@ -162,50 +174,64 @@ impl<'f> Reader<'f> {
         Some(t)
     }
 
-    /// The first measure item of a representation, as mm (lengths) or
-    /// degrees (angles: the file's unit is taken as degrees [?]).
+    /// The first measure item of a representation, as mm (lengths, each
+    /// by its own declared unit) or degrees (angles: the file's unit is
+    /// taken as degrees [?]); None for a length in a unit cncc cannot
+    /// resolve (never taken as mm unsaid).
     fn measure_of(&self, rep: &Instance) -> Option<f64> {
         for item in refs(rep, 1).into_iter().filter_map(|r| self.g.get(r)) {
             let Some((v, unit)) = self.g.measure(item) else {
                 continue;
             };
-            self.g.get(unit);
-            return Some(match self.g.length_mm(unit, 0) {
-                Some(mm) => v * mm,
-                None => v,
-            });
+            let is_length = self
+                .g
+                .get(unit)
+                .is_some_and(|u| self.g.part(u, "LENGTH_UNIT").is_some());
+            return match self.g.length_mm(unit, 0) {
+                Some(mm) => Some(v * mm),
+                None if is_length => None,
+                None => Some(v),
+            };
         }
         None
     }
 
-    /// A rate measure of a representation, per minute (mm or rev).
-    fn rate_of(&self, rep: &Instance) -> Option<f64> {
+    /// A rate measure of a representation, per minute (mm or rev), with
+    /// its length unit (mm per unit) and where the item is.
+    fn rate_of(&self, rep: &Instance) -> Option<(f64, f64, crate::span::Span)> {
         for item in refs(rep, 1).into_iter().filter_map(|r| self.g.get(r)) {
             let Some((v, unit)) = self.g.measure(item) else {
                 continue;
             };
             self.g.get(unit);
-            return Some(v * self.g.per_minute(unit)?);
+            let (factor, length) = self.g.per_minute(unit)?;
+            return Some((v * factor, length, item.span));
         }
         None
     }
 
-    fn technology(&mut self, t: &'f Instance) -> Technology {
+    /// The technology, and the feed's length unit (mm per unit) with the
+    /// feed item's place.
+    fn technology(&mut self, t: &'f Instance) -> (Technology, Option<(f64, crate::span::Span)>) {
         let mut tech = Technology {
             feed_at_tcp: true,
             ..Technology::default()
         };
+        let mut feed_unit = None;
         for (name, prop, rep) in self.properties(t.id) {
             self.use_property(prop, rep);
             let value = rep.and_then(|r| self.rate_of(r));
             match (name.as_str(), value) {
-                ("feedrate", Some(v)) => tech.feed = Some(v),
+                ("feedrate", Some((v, unit, span))) => {
+                    tech.feed = Some(v);
+                    feed_unit = Some((unit, span));
+                }
                 // ISO 14649's sign: positive = counter-clockwise (M4).
-                ("spindle", Some(v)) => tech.spindle = Some(-v),
+                ("spindle", Some((v, _, _))) => tech.spindle = Some(-v),
                 _ => self.skip(format!("technology property `{name}`"), prop.span),
             }
         }
-        tech
+        (tech, feed_unit)
     }
 
     fn functions(&mut self, m: &'f Instance) -> MachineFunctions {
@@ -239,7 +265,7 @@ impl<'f> Reader<'f> {
         }
         let technology = self
             .related(tp, "MACHINING_TECHNOLOGY_RELATIONSHIP")
-            .map(|t| self.technology(t));
+            .map(|t| self.technology(t).0);
         let mut curve = None;
         for (name, prop, rep) in self.properties(tp.id) {
             if name != "basic curve" {

@@ -456,3 +456,5 @@ fn toolpath_bottom(op: &Operation) -> Option<f64> {
 
 #[path = "operation.rs"]
 mod operation;
+#[path = "plausible.rs"]
+mod plausible;
