@@ -451,7 +451,19 @@ fn cut(
             r3(p.form.0)
         ))?;
     }
-    let _ = spindle_cw(s)?;
+    if matches!(
+        c.strategy,
+        Some(Strategy::ContourParallel {
+            cutmode: Some(_),
+            ..
+        }) | Some(Strategy::Unidirectional {
+            cutmode: Some(_),
+            ..
+        })
+    ) && spindle_cw(s).is_ok()
+    {
+        w.not_carried("the strategy's cut mode: the passes run zigzag along the travel, climb and conventional in turn")?;
+    }
     super::milling::explicit_moves(w, s, frame, |sink| {
         moves(&p.passes, along, closed, s.clear, s.top + s.sdis, sink)
     })
@@ -519,7 +531,7 @@ fn moves(
     let mut v_at = along.0;
     let mut cur: Option<(f64, f64, (f64, f64))> = None; // (u, z, bounds)
     for g in &groups {
-        for (i, p) in g.iter().enumerate() {
+        for p in g.iter() {
             match cur {
                 None => {
                     sink.rapid([v_at, p.u], clear);
@@ -543,12 +555,7 @@ fn moves(
             let to = if v_at == along.0 { along.1 } else { along.0 };
             sink.line([to, p.u], p.z);
             v_at = to;
-            let bd = if i + 1 < g.len() {
-                bounds(g)
-            } else {
-                bounds(g)
-            };
-            cur = Some((p.u, p.z, bd));
+            cur = Some((p.u, p.z, bounds(g)));
         }
         let (a, b) = bounds(g);
         let Some((u, z, _)) = cur else { continue };
