@@ -24,6 +24,9 @@ fn plans() -> Vec<PathBuf> {
         common::root().join("tests/programs/stepnc/ap238_slot.stpnc"),
         common::root().join("tests/stepnc/milled_holes.stp"),
         common::root().join("tests/stepnc/general_pockets.stp"),
+        common::root().join("tests/stepnc/v_slot.stp"),
+        common::root().join("tests/stepnc/sloped_u.stp"),
+        common::root().join("tests/stepnc/step.stp"),
     ];
     if let Some(shared) = common::shared() {
         let s = shared.join("stepnc-samples");
@@ -36,6 +39,9 @@ fn plans() -> Vec<PathBuf> {
             "field/sanssouci__STEP-NC_pocket1_File.p21",
             "field/sanssouci__Hole",
             "field/sanssouci__testePrecedencias.p21",
+            "field/sanssouci__RanhuraPerfilVee.p21",
+            "field/sanssouci__RanhuraPerfilUQuadrado.p21",
+            "field/sanssouci__oneHoleOneSlotOneStepOnePoket.p21",
         ] {
             v.push(s.join(name));
         }

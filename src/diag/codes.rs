@@ -215,6 +215,9 @@ codes! {
     PostNotCarried = "W0900", "post-not-carried", Warning,
         "a STEP-NC value the target's cycle or toolpath cannot carry",
         "The posted program cannot express this value (a drilling strategy's reduced feeds, a spindle stop at the bottom of a reaming pass...). It is named in a comment in the program at the workingstep it belongs to, so nothing is dropped silently; check whether the machining still meets the plan.";
+    AngleRadians = "W0905", "angle-in-radians", Warning,
+        "a STEP-NC plane angle read as radians",
+        "ISO 14649 gives plane angles (a V profile's angles, a U profile's wall angles, a tool's tip angle) in degrees, but some generators write radians. An angle that is not a whole number of degrees but is one once read as radians (1.5707963267948966 is 90°) is read as radians; the warning names the feature and the attribute. Write the angle in degrees to silence it.";
     SecplaneBelowRetract = "W0904", "secplane-below-retract", Warning,
         "a workingstep's security plane below its operation's retract plane",
         "ISO 14649-10 gives a workingstep's security plane and its operation's retract_plane both in the feature's frame: the tool approaches from the retract plane at cutting feed and may rapid only above it, and the security plane is where rapids are safe. Here the security plane lies below the retract plane, so the file contradicts itself. The post does not refuse it: it makes its rapids at the retract plane (the higher of the two, the safe choice) and goes on. Raise the security plane or lower the retract_plane in the STEP-NC file.";

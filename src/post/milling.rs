@@ -12,7 +12,7 @@ use crate::stepnc::model::*;
 
 /// The workingstep `steps[0]` (several only for alike slots, which are
 /// written together).
-pub fn write(w: &mut Writer<'_>, steps: &[&Step<'_>]) -> Result<(), PostError> {
+pub fn write(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Result<(), PostError> {
     let s = steps[0];
     let (finish, milling, ap, ae, allow_side, allow_bottom) = match &s.op.kind {
         OperationKind::BottomAndSideMilling {
@@ -127,6 +127,14 @@ pub fn write(w: &mut Writer<'_>, steps: &[&Step<'_>]) -> Result<(), PostError> {
         } if matches!(s.op.kind, OperationKind::BottomAndSideMilling { .. }) => {
             super::hole_mill::write(w, s, &cut, diameter.nominal, bottom)
         }
+        FeatureKind::Slot { .. } if super::prismatic::is_profiled_slot(&s.feature.kind) => {
+            for st in steps {
+                let ctx = context(project, st);
+                super::prismatic::write_slot(w, st, &cut, &ctx)?;
+            }
+            Ok(())
+        }
+        FeatureKind::Step { .. } => super::prismatic::write_step(w, s, &cut, &context(project, s)),
         FeatureKind::Slot { .. } => {
             if w.post.has("slot.j2") && super::slot_cycle::write(w, s, &cut)? {
                 return Ok(());
@@ -141,6 +149,20 @@ pub fn write(w: &mut Writer<'_>, steps: &[&Step<'_>]) -> Result<(), PostError> {
                 super::names::feature_kind(&s.feature.kind)
             ),
         )),
+    }
+}
+
+/// The tolerance, stock and later cuts of a prismatic feature's step.
+fn context(project: &Project, s: &Step<'_>) -> super::prismatic::Context {
+    let base = super::plan::setup_frame(project);
+    super::prismatic::Context {
+        tol: super::step::tolerance(project, s).unwrap_or(super::prismatic::DEFAULT_TOL),
+        stock: s
+            .tilt
+            .is_none()
+            .then(|| super::validate::stock(project, s.feature.workpiece, &base))
+            .flatten(),
+        later: s.later,
     }
 }
 

@@ -20,6 +20,7 @@
 //! PAT`, CYCL DEF 251/252 pockets, 232 faces, 253 slots
 //! (`slot_cycle.rs`), CYCL DEF 32 tolerance, TOOL DEF and BLK FORM.
 
+mod angles;
 mod chipload;
 mod explicit;
 mod faces;
@@ -29,6 +30,7 @@ pub mod frame;
 mod group;
 mod hole_mill;
 mod holes;
+mod kept;
 mod milling;
 mod names;
 pub mod paths;
@@ -37,6 +39,7 @@ pub mod plan;
 mod pocket_g12;
 mod pocket_general;
 mod pockets;
+mod prismatic;
 mod raw_curves;
 pub mod render;
 mod slot_circle;

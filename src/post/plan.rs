@@ -67,6 +67,9 @@ pub struct Step<'p> {
     /// The security plane below the retract plane (W0904: `clear` is
     /// raised to the retract plane), reported by the validator.
     pub plane_warning: Option<Diagnostic>,
+    /// A later workingstep cuts the same feature (this one need not
+    /// finish it).
+    pub later: bool,
 }
 
 /// Anything else in the workplan, in order.
@@ -107,14 +110,30 @@ pub fn plan_for(project: &Project, can_tilt: bool) -> Result<Vec<Item<'_>>, Vec<
     walk(
         project,
         &project.main_workplan,
+        "/project/main_workplan",
         &mut ctx,
         &mut out,
         &mut errors,
     );
+    mark_later(&mut out);
     if errors.is_empty() {
         Ok(out)
     } else {
         Err(errors)
+    }
+}
+
+/// Marks each workingstep whose feature a later workingstep cuts too.
+fn mark_later(items: &mut [Item<'_>]) {
+    for i in 0..items.len() {
+        let Item::Step(s) = &items[i] else { continue };
+        let f = s.feature as *const Feature;
+        let later = items[i + 1..]
+            .iter()
+            .any(|it| matches!(it, Item::Step(t) if std::ptr::eq(t.feature, f)));
+        if let Item::Step(s) = &mut items[i] {
+            s.later = later;
+        }
     }
 }
 
@@ -145,12 +164,14 @@ struct Walk<'a> {
 fn walk<'p>(
     project: &'p Project,
     wp: &'p Workplan,
+    path: &str,
     ctx: &mut Walk<'_>,
     out: &mut Vec<Item<'p>>,
     errors: &mut Vec<PostError>,
 ) {
     let base = ctx.base;
-    for e in &wp.elements {
+    for (k, e) in wp.elements.iter().enumerate() {
+        let here = format!("{path}/its_elements[{k}]");
         match e {
             Executable::Workingstep(ws) => {
                 *ctx.count += 1;
@@ -159,7 +180,7 @@ fn walk<'p>(
                     Err(e) => errors.push(e),
                 }
             }
-            Executable::Workplan(inner) => walk(project, inner, ctx, out, errors),
+            Executable::Workplan(inner) => walk(project, inner, &here, ctx, out, errors),
             Executable::ProgramStop { .. } => out.push(Item::Stop { optional: false }),
             Executable::OptionalStop { .. } => out.push(Item::Stop { optional: true }),
             Executable::DisplayMessage { text, .. } => out.push(Item::Message(text)),
@@ -174,7 +195,7 @@ fn walk<'p>(
                 // that every posted workingstep already starts with.
                 None => {}
             },
-            Executable::Other(raw) => errors.push(other_executable(raw)),
+            Executable::Other(raw) => errors.push(other_executable(raw, &here)),
         }
     }
 }
@@ -182,7 +203,10 @@ fn walk<'p>(
 /// E0900 for an executable kept as written: named by its its_id, with
 /// why (a workingstep kept raw when read: the W0802 warning gives the
 /// attribute).
-fn other_executable(raw: &Raw) -> PostError {
+fn other_executable(raw: &Raw, path: &str) -> PostError {
+    if raw.entity.eq_ignore_ascii_case("MACHINING_WORKINGSTEP") {
+        return super::kept::refusal(raw, path);
+    }
     let id = match raw.params.first() {
         Some(RawValue::String(s)) if !s.is_empty() => s.clone(),
         _ => raw.entity.clone(),
@@ -268,6 +292,7 @@ fn resolve<'p>(
         sdis,
         roughed_by,
         plane_warning,
+        later: false,
     })
 }
 

@@ -102,6 +102,49 @@ pub fn parts<'p>(s: &Step<'p>) -> Result<Parts<'p>, PostError> {
             ))
         }
     };
+    let frame = line_frame(s, placement, distance.nominal, direction)?;
+    Ok(Parts {
+        geom: SlotGeom {
+            frame,
+            travel: distance.nominal,
+            width,
+        },
+        ends: end_conditions,
+        fillets,
+    })
+}
+
+/// A straight slot's frame (origin at the middle of its course of
+/// travel, x along it, y to its left) and its length, whatever its
+/// cross-section.
+pub fn slot_frame(s: &Step<'_>) -> Result<(Frame, f64), PostError> {
+    let FeatureKind::Slot {
+        course_of_travel:
+            TravelPath::Linear {
+                placement,
+                distance,
+                direction,
+            },
+        ..
+    } = &s.feature.kind
+    else {
+        return Err(PostError::unsupported(
+            &s.feature.id,
+            "a slot whose course of travel is not a straight path from its origin",
+        ));
+    };
+    Ok((
+        line_frame(s, placement, distance.nominal, direction)?,
+        distance.nominal,
+    ))
+}
+
+fn line_frame(
+    s: &Step<'_>,
+    placement: &Option<Axis2Placement>,
+    distance: f64,
+    direction: &Direction,
+) -> Result<Frame, PostError> {
     let u = direction.ratios;
     let n = (u[0] * u[0] + u[1] * u[1]).sqrt();
     if n < 1e-9 || u[2].abs() > 1e-9 {
@@ -112,11 +155,7 @@ pub fn parts<'p>(s: &Step<'p>) -> Result<Parts<'p>, PostError> {
     }
     let (ux, uy) = (u[0] / n, u[1] / n);
     let local = Frame {
-        origin: [
-            ux * distance.nominal / 2.0,
-            uy * distance.nominal / 2.0,
-            0.0,
-        ],
+        origin: [ux * distance / 2.0, uy * distance / 2.0, 0.0],
         x: [ux, uy, 0.0],
         y: [-uy, ux, 0.0],
         z: [0.0, 0.0, 1.0],
@@ -125,15 +164,7 @@ pub fn parts<'p>(s: &Step<'p>) -> Result<Parts<'p>, PostError> {
         Some(p) => s.frame.then(&Frame::from_placement(p)),
         None => s.frame,
     };
-    Ok(Parts {
-        geom: SlotGeom {
-            frame: path.then(&local),
-            travel: distance.nominal,
-            width,
-        },
-        ends: end_conditions,
-        fillets,
-    })
+    Ok(path.then(&local))
 }
 
 /// Slots that the grouping found alike (same size, depth and operation):

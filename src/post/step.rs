@@ -232,14 +232,15 @@ fn write_step_body(
         return untilt(w, s);
     }
     match &s.feature.kind {
-        FeatureKind::RoundHole { .. } if super::plan::is_milling(s.op) => milling::write(w, steps)?,
+        FeatureKind::RoundHole { .. } if super::plan::is_milling(s.op) => {
+            milling::write(w, project, steps)?
+        }
         FeatureKind::RoundHole { .. } => holes::write(w, steps)?,
         FeatureKind::ClosedPocket { .. } | FeatureKind::PlanarFace { .. } => {
-            milling::write(w, steps)?
+            milling::write(w, project, steps)?
         }
-        FeatureKind::Slot { .. } => milling::write(w, steps)?,
+        FeatureKind::Slot { .. } | FeatureKind::Step { .. } => milling::write(w, project, steps)?,
         FeatureKind::OpenPocket { .. }
-        | FeatureKind::Step { .. }
         | FeatureKind::GeneralOutsideProfile { .. }
         | FeatureKind::ToolpathFeature
         | FeatureKind::Other(_) => {
@@ -346,7 +347,7 @@ pub fn feed(s: &Step<'_>) -> Result<f64, PostError> {
 /// The contour tolerance: the tightest limit of the feature's toleranced
 /// sizes, never coarser than the workpiece's global tolerance (which
 /// holds where the feature says nothing).
-fn tolerance(project: &Project, s: &Step<'_>) -> Option<f64> {
+pub(super) fn tolerance(project: &Project, s: &Step<'_>) -> Option<f64> {
     let mut sizes: Vec<&Toleranced> = Vec::new();
     match &s.feature.kind {
         FeatureKind::RoundHole { diameter, .. } => sizes.push(diameter),
@@ -364,6 +365,30 @@ fn tolerance(project: &Project, s: &Step<'_>) -> Option<f64> {
             course_of_travel: TravelPath::Linear { distance, .. },
             ..
         } => sizes.push(distance),
+        FeatureKind::Slot { swept_shape, .. } => match swept_shape {
+            OpenProfile::SquareU {
+                width,
+                first_radius,
+                second_radius,
+                ..
+            } => {
+                sizes.push(width);
+                sizes.extend(first_radius.iter().chain(second_radius.iter()));
+            }
+            OpenProfile::RoundedU { width, .. } => sizes.push(width),
+            OpenProfile::Vee { radius, .. } => sizes.push(radius),
+            _ => {}
+        },
+        FeatureKind::Step {
+            open_boundary: TravelPath::Linear { distance, .. },
+            wall_boundary,
+            ..
+        } => {
+            sizes.push(distance);
+            if let Some(OpenProfile::Vee { radius, .. }) = wall_boundary {
+                sizes.push(radius);
+            }
+        }
         _ => {}
     }
     let tightest = sizes

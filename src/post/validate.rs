@@ -105,7 +105,7 @@ pub fn stock(project: &Project, wp: WorkpieceId, base: &Frame) -> Option<Aabb> {
 /// The feature's volume as a box in machine coordinates, `None` for
 /// kinds whose extent cncc does not compute (faces, steps, open pockets).
 pub fn feature_box(s: &Step<'_>) -> Option<Aabb> {
-    let (outline, placement) = outline(&s.feature.kind)?;
+    let (outline, placement) = outline(&s.feature.kind, s.top - s.bottom)?;
     let frame = match placement {
         Some(p) => s.frame.then(&Frame::from_placement(p)),
         None => s.frame,
@@ -125,7 +125,7 @@ type Outline<'a> = (Vec<[f64; 2]>, &'a Option<Axis2Placement>);
 
 /// Points bounding the feature in its profile's plane, and the profile's
 /// placement (in the feature's frame).
-fn outline(kind: &FeatureKind) -> Option<Outline<'_>> {
+fn outline(kind: &FeatureKind, depth: f64) -> Option<Outline<'_>> {
     const NONE: &Option<Axis2Placement> = &None;
     match kind {
         FeatureKind::RoundHole { diameter, .. } => Some((square(diameter.nominal / 2.0), NONE)),
@@ -152,7 +152,9 @@ fn outline(kind: &FeatureKind) -> Option<Outline<'_>> {
             swept_shape,
             ..
         } => {
-            let half = slot_half_width(swept_shape)?;
+            // A V or sloped-wall profile is widest at the top.
+            let half = super::prismatic::top_half_width(swept_shape, depth)
+                .or_else(|| slot_half_width(swept_shape))?;
             let d = Vector3::from(direction.ratios).try_normalize(1e-12)?;
             let end = d * distance.nominal;
             let n = Vector3::new(-d.y, d.x, 0.0) * half;
@@ -275,6 +277,7 @@ pub fn validate(project: &Project, items: &[Item<'_>], base: &Frame) -> Findings
                 | FeatureKind::ClosedPocket { .. }
                 | FeatureKind::OpenPocket { .. }
                 | FeatureKind::Slot { .. }
+                | FeatureKind::Step { .. }
         );
         if s.bottom >= s.top - 1e-9 && sinks {
             out.errors.push(PostError::outside(

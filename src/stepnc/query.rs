@@ -253,12 +253,54 @@ pub fn locate_its_id(file: &P21File, its_id: &str) -> Option<crate::span::Span> 
         .map(|(_, s)| s)
 }
 
-/// Gives each diagnostic without a place the `#id` line of the entity its
-/// message names first (between backquotes).
+/// The place a query path (`/project/main_workplan/its_elements[1]/
+/// its_operation/its_technology`) leads to: the last parameter's (a `$`
+/// too), or the instance's `#id` for a path of one step. The first
+/// element where a step matches several.
+pub fn locate_path(file: &P21File, path: &str) -> Option<crate::span::Span> {
+    let steps = parse_path(path).ok()?;
+    let (first, rest) = steps.split_first()?;
+    let mut inst: &Instance = match start(file, first).ok()?.first()? {
+        Node::Inst(i) => i,
+        n => deref(file, n)?,
+    };
+    let mut span = inst.span;
+    for (k, step) in rest.iter().enumerate() {
+        let def = schema::entity(&inst.entity)?;
+        let mut p: &super::part21::Param = inst.params.get(def.attr_index(&step.name)?)?;
+        for ix in &step.indexes {
+            let Value::List(items) = &p.value else {
+                return None;
+            };
+            p = match ix {
+                Index::At(i) => items.get(*i)?,
+                Index::All => items.first()?,
+            };
+        }
+        span = p.span;
+        if k + 1 < rest.len() {
+            let Value::Ref(id) = p.value else { return None };
+            inst = file.get(id)?;
+        }
+    }
+    Some(span)
+}
+
+/// Gives each diagnostic without a place the place of the query path
+/// its message names between backquotes (`/project/...`), else the
+/// `#id` line of the entity its message names first (by its_id).
 pub fn locate_diagnostics(file: &P21File, diags: &mut [crate::diag::Diagnostic]) {
     for d in diags.iter_mut().filter(|d| d.labels.is_empty()) {
-        let mut parts = d.message.split('`');
-        let (Some(_), Some(name)) = (parts.next(), parts.next()) else {
+        let quoted: Vec<&str> = d.message.split('`').skip(1).step_by(2).collect();
+        if let Some(span) = quoted
+            .iter()
+            .filter(|q| q.starts_with('/'))
+            .find_map(|q| locate_path(file, q))
+        {
+            *d = d.clone().primary(span, "here");
+            continue;
+        }
+        let Some(name) = quoted.first() else {
             continue;
         };
         if let Some(span) = locate_its_id(file, name) {

@@ -9,6 +9,7 @@ pub mod face;
 pub mod helix;
 pub mod pocket;
 pub mod polygon;
+pub mod section;
 
 use super::frame::Frame;
 
