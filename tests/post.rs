@@ -764,3 +764,47 @@ fn ex1e_posts_to_every_dialect_and_all_cut_the_same() {
     );
     runs_in_rs274(&out("linuxcnc"));
 }
+
+/// `post --summary` says what each workingstep became: the 840D's pocket
+/// cycle where Fanuc has none and writes the moves (issue 15, point 5);
+/// with `-o` the program is written too, and it is the one `post` writes.
+#[test]
+fn summary_lists_what_each_workingstep_was_posted_as() {
+    let Some(shared) = common::shared() else {
+        return;
+    };
+    let file = shared.join("stepnc-samples/ex1.stp");
+    if !file.exists() {
+        eprintln!("note: ex1.stp is absent; skipping");
+        return;
+    }
+    let f = file.to_str().unwrap();
+    let summary = |id: &str, extra: &[&str]| {
+        let mut args = vec!["post", f, "--to", id, "--summary"];
+        args.extend(extra);
+        let o = common::cncc(&args);
+        assert_eq!(o.status.code(), Some(0), "{id}: {}", common::stderr(&o));
+        common::stdout(&o)
+    };
+    let siemens = summary("siemens840d", &[]);
+    let pocket = siemens
+        .lines()
+        .find(|l| l.contains("ROUGH POCKET1"))
+        .unwrap();
+    assert!(pocket.ends_with("-> cycle `pocket_rect`"), "{siemens}");
+    assert!(
+        siemens.contains("WS(2) WS DRILL HOLE1: round_hole"),
+        "{siemens}"
+    );
+    assert_eq!(
+        siemens.lines().count(),
+        6,
+        "a title and five workingsteps: {siemens}"
+    );
+    let out = save("summary_fanuc.nc", "");
+    let fanuc = summary("fanuc", &["-o", out.to_str().unwrap()]);
+    let pocket = fanuc.lines().find(|l| l.contains("ROUGH POCKET1")).unwrap();
+    assert!(pocket.contains("-> explicit toolpath, "), "{fanuc}");
+    assert!(fanuc.contains("-> cycle `drill`"), "{fanuc}");
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), posted("fanuc").text);
+}

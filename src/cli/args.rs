@@ -178,6 +178,10 @@ pub enum Command {
         /// feature's origin, instead of adding the two as ISO 14649-10 says.
         #[arg(long = "profiles-absolute")]
         profiles_absolute: bool,
+        /// List what each workingstep was posted as (the target's cycle,
+        /// explicit moves) on stdout; the program goes to `-o` only.
+        #[arg(long)]
+        summary: bool,
     },
     /// Run a program and print its canonical machining calls, one per line,
     /// as LinuxCNC's rs274 prints them.

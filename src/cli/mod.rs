@@ -128,13 +128,17 @@ pub fn run(cli: Cli) -> i32 {
             output,
             format,
             profiles_absolute,
+            summary,
         } => post::run(
             &mut ctx,
             file,
             to,
             output.as_deref(),
             *format,
-            *profiles_absolute,
+            post::Options {
+                profiles_absolute: *profiles_absolute,
+                summary: *summary,
+            },
         ),
         Command::Canon {
             file,

@@ -11,13 +11,21 @@ use crate::stepnc::part21::P21File;
 use crate::stepnc::query::locate_diagnostics;
 use std::path::Path;
 
+/// What `post` is asked besides the file and target.
+pub struct Options {
+    /// `--profiles-absolute`.
+    pub profiles_absolute: bool,
+    /// `--summary`: list what each workingstep became.
+    pub summary: bool,
+}
+
 pub fn run(
     ctx: &mut Context,
     file: &Path,
     to: &str,
     output: Option<&Path>,
     format: Format,
-    profiles_absolute: bool,
+    opts: Options,
 ) -> Result<i32, Failure> {
     let target = ctx.spec(to)?;
     let (id, text) = ctx.add_file(file)?;
@@ -28,13 +36,19 @@ pub fn run(
             return Ok(EXIT_INPUT_ERRORS);
         }
     };
-    if profiles_absolute {
+    if opts.profiles_absolute {
         crate::post::validate::profiles_absolute(&mut project);
     }
     match crate::post::post_with(&project, &target, ctx.post_dir.as_ref()) {
         Ok(mut posted) => {
             locate_diagnostics(&graph, &mut posted.warnings);
             ctx.print(&posted.warnings, format);
+            if opts.summary {
+                print_summary(&posted.summary, &target.name);
+                if output.is_none() {
+                    return Ok(EXIT_OK);
+                }
+            }
             crate::cli::output::emit_output(output, &posted.text)
                 .map_err(|e| Failure(format!("cannot write the program: {e}")))?;
             Ok(EXIT_OK)
@@ -44,6 +58,14 @@ pub fn run(
             ctx.print(&diags, format);
             Ok(EXIT_INPUT_ERRORS)
         }
+    }
+}
+
+/// `--summary`: a line per workingstep.
+fn print_summary(steps: &[crate::post::summary::PostedStep], target: &str) {
+    println!("posted for {target}:");
+    for s in steps {
+        println!("  {}", s.line());
     }
 }
 

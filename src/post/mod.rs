@@ -47,6 +47,7 @@ mod slot_cycle;
 mod slot_cycles;
 mod slots;
 mod step;
+pub mod summary;
 mod tapping;
 mod templates;
 pub mod toolpaths;
@@ -127,6 +128,8 @@ impl PostError {
 pub struct Posted {
     pub text: String,
     pub warnings: Vec<Diagnostic>,
+    /// What each workingstep was posted as.
+    pub summary: Vec<summary::PostedStep>,
 }
 
 /// Posts `project` for `target` (the contract `cncc port --features`
@@ -167,6 +170,7 @@ pub fn post_with(
         defined_tools: Vec::new(),
         coolant_on: false,
         step: String::new(),
+        summary: Vec::new(),
     };
     step::write_program(&mut w, project, &items).map_err(into_diags)?;
     if let Some(v) = w.fmt.too_large.get() {
@@ -185,6 +189,7 @@ pub fn post_with(
     Ok(Posted {
         text: w.out,
         warnings: w.warnings,
+        summary: w.summary,
     })
 }
 
@@ -244,6 +249,8 @@ pub(crate) struct Writer<'a> {
     pub coolant_on: bool,
     /// The workingstep being written (its id), for a refusal.
     pub step: String,
+    /// What each workingstep was posted as (`--summary`).
+    pub summary: Vec<summary::PostedStep>,
 }
 
 impl Writer<'_> {
@@ -255,6 +262,9 @@ impl Writer<'_> {
             return Err(self.undeclared(name));
         }
         let text = self.post.render(name, &vals).map_err(PostError::template)?;
+        if let Some(s) = self.summary.last_mut().filter(|s| s.open) {
+            s.rendered(name);
+        }
         self.out.push_str(&text);
         if !self.out.ends_with('\n') {
             self.out.push('\n');

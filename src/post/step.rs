@@ -97,7 +97,11 @@ fn blank(w: &Writer<'_>, project: &Project, v: Vals) -> Vals {
 /// places (one cycle, several positions).
 fn write_step(w: &mut Writer<'_>, project: &Project, steps: &[&Step<'_>]) -> Result<(), PostError> {
     w.step = steps[0].ws.id.clone();
+    w.summary.push(super::summary::PostedStep::new(steps));
     let r = write_step_body(w, project, steps);
+    if let Some(s) = w.summary.last_mut() {
+        s.open = false;
+    }
     w.step.clear();
     r.map_err(|mut e| {
         // A feature or operation with an empty its_id: name the
