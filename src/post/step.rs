@@ -337,14 +337,27 @@ pub fn spindle_rpm(s: &Step<'_>) -> Result<f64, PostError> {
 }
 
 /// Feed mm/min: the technology's feed, or feed per tooth x teeth x rpm.
+/// A feed of 0 is no feed (a tool that does not advance cuts nothing, and
+/// LinuxCNC refuses `G1 ... F0`): the feed per tooth must give one.
 pub fn feed(s: &Step<'_>) -> Result<f64, PostError> {
     let t = &s.op.technology;
-    if let Some(f) = t.feed {
+    if let Some(f) = t.feed.filter(|f| *f > 0.0) {
         return Ok(f);
     }
-    match (t.feed_per_tooth, s.tool.body.number_of_teeth) {
-        (Some(fz), Some(z)) => Ok(fz * z as f64 * spindle_rpm(s)?.abs()),
-        _ => Err(PostError::broken(&s.op.id, "its technology gives no feed")),
+    let per_tooth = t.feed_per_tooth.filter(|fz| *fz > 0.0);
+    match (per_tooth, s.tool.body.number_of_teeth) {
+        (Some(fz), Some(z)) if z > 0 => Ok(fz * z as f64 * spindle_rpm(s)?.abs()),
+        _ => Err(PostError::broken(&s.op.id, &no_feed(t.feed))),
+    }
+}
+
+/// Why a technology gives no feed.
+fn no_feed(feed: Option<f64>) -> String {
+    match feed {
+        Some(f) => format!(
+            "its technology's feedrate is {f}, and no feed per tooth (with the tool's number of teeth) gives another"
+        ),
+        None => "its technology gives no feed".into(),
     }
 }
 

@@ -89,7 +89,9 @@ pub fn moves(
         let speed = if rapid {
             None
         } else {
-            let f = base.technology.as_ref().and_then(|t| t.feed).or(feed);
+            // A toolpath's own feed of 0 is no feed: the operation's holds.
+            let own = base.technology.as_ref().and_then(|t| t.feed);
+            let f = own.filter(|f| *f > 0.0).or(feed).filter(|f| *f > 0.0);
             let ratio = match &base.speed {
                 Some(ToolpathSpeed::Ratio(r)) => *r,
                 _ => 1.0,
