@@ -184,7 +184,13 @@ pub fn write_step(
             "a step whose open boundary is not a straight path",
         ));
     };
-    let frame = line_frame(s, placement, direction)?;
+    let frame = super::slots::line_frame(
+        s,
+        placement,
+        direction,
+        0.0,
+        "a path that leaves the feature's plane",
+    )?;
     let len = distance.nominal;
     let Some(stock) = ctx.stock else {
         return Err(PostError::broken(
@@ -283,34 +289,6 @@ fn exit_distance(b: &Aabb, p: [f64; 3], dir: [f64; 3]) -> f64 {
     } else {
         0.0
     }
-}
-
-/// The frame of a straight path: origin at its start, x along it, y to
-/// its left, z up.
-fn line_frame(
-    s: &Step<'_>,
-    placement: &Option<Axis2Placement>,
-    direction: &Direction,
-) -> Result<Frame, PostError> {
-    let u = direction.ratios;
-    let n = (u[0] * u[0] + u[1] * u[1]).sqrt();
-    if n < 1e-9 || u[2].abs() > 1e-9 {
-        return Err(PostError::unsupported(
-            &s.feature.id,
-            "a path that leaves the feature's plane",
-        ));
-    }
-    let (ux, uy) = (u[0] / n, u[1] / n);
-    let path = match placement {
-        Some(p) => s.frame.then(&Frame::from_placement(p)),
-        None => s.frame,
-    };
-    Ok(path.then(&Frame {
-        origin: [0.0, 0.0, 0.0],
-        x: [ux, uy, 0.0],
-        y: [-uy, ux, 0.0],
-        z: [0.0, 0.0, 1.0],
-    }))
 }
 
 /// The tool as the section sees it.

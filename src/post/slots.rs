@@ -102,7 +102,7 @@ pub fn parts<'p>(s: &Step<'p>) -> Result<Parts<'p>, PostError> {
             ))
         }
     };
-    let frame = line_frame(s, placement, distance.nominal, direction)?;
+    let frame = line_frame(s, placement, direction, distance.nominal / 2.0, LEAVES)?;
     Ok(Parts {
         geom: SlotGeom {
             frame,
@@ -134,28 +134,32 @@ pub fn slot_frame(s: &Step<'_>) -> Result<(Frame, f64), PostError> {
         ));
     };
     Ok((
-        line_frame(s, placement, distance.nominal, direction)?,
+        line_frame(s, placement, direction, distance.nominal / 2.0, LEAVES)?,
         distance.nominal,
     ))
 }
 
-fn line_frame(
+const LEAVES: &str = "a slot whose course of travel leaves the feature's plane";
+
+/// The frame of a straight path in the feature's plane: x along
+/// `direction`, y to its left, z up, origin `along` mm from the
+/// placement's origin on x; `what` is the refusal when the path leaves
+/// the plane.
+pub(super) fn line_frame(
     s: &Step<'_>,
     placement: &Option<Axis2Placement>,
-    distance: f64,
     direction: &Direction,
+    along: f64,
+    what: &str,
 ) -> Result<Frame, PostError> {
     let u = direction.ratios;
     let n = (u[0] * u[0] + u[1] * u[1]).sqrt();
     if n < 1e-9 || u[2].abs() > 1e-9 {
-        return Err(PostError::unsupported(
-            &s.feature.id,
-            "a slot whose course of travel leaves the feature's plane",
-        ));
+        return Err(PostError::unsupported(&s.feature.id, what));
     }
     let (ux, uy) = (u[0] / n, u[1] / n);
     let local = Frame {
-        origin: [ux * distance / 2.0, uy * distance / 2.0, 0.0],
+        origin: [ux * along, uy * along, 0.0],
         x: [ux, uy, 0.0],
         y: [-uy, ux, 0.0],
         z: [0.0, 0.0, 1.0],
