@@ -53,6 +53,16 @@ fn runs_in_rs274(path: &Path) {
     }
 }
 
+/// ISO 14649's Example 1 from ../shared (None, with a note, without it).
+fn ex1_stp() -> Option<PathBuf> {
+    let file = common::shared()?.join("stepnc-samples/ex1.stp");
+    if !file.exists() {
+        eprintln!("note: ex1.stp is absent; skipping");
+        return None;
+    }
+    Some(file)
+}
+
 fn check_clean(path: &Path, dialect: &str) -> String {
     let o = common::cncc(&["check", "--dialect", dialect, path.to_str().unwrap()]);
     let err = common::stderr(&o);
@@ -172,14 +182,9 @@ fn a_missing_file_is_a_usage_error() {
 
 #[test]
 fn ex1_stp_posts_like_the_fixture() {
-    let Some(shared) = common::shared() else {
+    let Some(file) = ex1_stp() else {
         return;
     };
-    let file = shared.join("stepnc-samples/ex1.stp");
-    if !file.exists() {
-        eprintln!("note: ex1.stp is absent; skipping");
-        return;
-    }
     for id in ["siemens840d", "fanuc", "haas", "linuxcnc"] {
         let o = common::cncc(&["post", file.to_str().unwrap(), "--to", id]);
         assert_eq!(o.status.code(), Some(0), "{id}: {}", common::stderr(&o));
@@ -770,14 +775,9 @@ fn ex1e_posts_to_every_dialect_and_all_cut_the_same() {
 /// with `-o` the program is written too, and it is the one `post` writes.
 #[test]
 fn summary_lists_what_each_workingstep_was_posted_as() {
-    let Some(shared) = common::shared() else {
+    let Some(file) = ex1_stp() else {
         return;
     };
-    let file = shared.join("stepnc-samples/ex1.stp");
-    if !file.exists() {
-        eprintln!("note: ex1.stp is absent; skipping");
-        return;
-    }
     let f = file.to_str().unwrap();
     let summary = |id: &str, extra: &[&str]| {
         let mut args = vec!["post", f, "--to", id, "--summary"];
