@@ -101,6 +101,9 @@ if [[ -f cam48mb.ngc ]]; then
     run "cam 24MB port linuxcnc>siemens" "$cncc" port --to siemens840d cam24mb.ngc
     run "cam 48MB port linuxcnc>heid" "$cncc" port --to heidenhain cam48mb.ngc
     run "cam 24MB port --verify" "$cncc" port --to siemens840d --verify cam24mb.ngc
+    run "flow 48MB check" "$cncc" check flow48mb.ngc
+    run "flow 48MB port linuxcnc>siemens" "$cncc" port --to siemens840d flow48mb.ngc
+    run "flow 48MB port --verify" "$cncc" port --to siemens840d --verify flow48mb.ngc
 fi
 printf '\ninputs: %s\n' "$(du -sh --apparent-size "$dir" | cut -f1)"
 exit $flagged

@@ -133,6 +133,15 @@ def cam(folder):
         out = os.path.join(folder, name)
         subprocess.run([sys.executable, gen, "--lines", str(lines), "-o", out],
                        check=True, stdout=subprocess.DEVNULL)
+    # The 48 MB program with a loop near its top: control flow sends the
+    # whole program to the walker (its plain moves held as text), not the
+    # stream.
+    with open(os.path.join(folder, "cam48mb.ngc")) as src, \
+            open(os.path.join(folder, "flow48mb.ngc"), "w") as out:
+        for i, line in enumerate(src):
+            if i == 4:
+                out.write("#1=0\no100 while [#1 LT 2]\n#1=[#1+1]\no100 endwhile\n")
+            out.write(line)
 
 
 def main():

@@ -264,7 +264,7 @@ pub fn read_blocks(
 /// Reads `text` line by line into `exprs`, handing each block to
 /// `on_block`; the reader's closing diagnostics and the CR-only note
 /// come last.
-fn read_each(
+pub(crate) fn read_each(
     text: &str,
     file: FileId,
     spec: &DialectSpec,

@@ -212,26 +212,34 @@ fn check_file(
     .map_err(fail)?;
     let mut diags = result.diagnostics;
     if a.run && !diags.iter().any(Diagnostic::is_error) {
+        // A main program is walked with its plain moves held as text
+        // (every block was marked as it was read); a file that may be a
+        // subprogram is read whole, to find where it starts.
         let program = match stream.handover {
-            None => None,
-            Some(_) => Some(read_whole(path, id, &spec)?),
+            Some(_) if top_level.is_fragment() => Some(read_whole(path, id, &spec)?),
+            _ => None,
         };
         for b in program.iter().flat_map(|p| &p.blocks) {
             mark_machine_frame(&mut machine.borrow_mut(), b, &spec);
         }
         let fragment = program.as_deref().and_then(crate::interp::fragment::detect);
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files)
+            .with_search(&a.options.rs274.subroutine_path);
         let mut run = match (&program, &fragment) {
-            (None, _) => stream.finish(&mut it),
+            (None, _) if stream.handover.is_none() => stream.finish(&mut it),
+            (None, _) => {
+                let (main, lazy, _) =
+                    crate::interp::lazy::read_program_lazy(read_text(path)?, id, &spec);
+                stream.continue_with(&mut it, std::rc::Rc::new(main), Some(lazy), &mut loader)
+            }
             (Some(_), Some(_)) => Vec::new(),
             (Some(program), None) => {
-                let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-                let mut loader = FsLoader::new(dir, spec.clone(), &mut ctx.files)
-                    .with_search(&a.options.rs274.subroutine_path);
-                let mut d = stream.continue_with(&mut it, program.clone(), &mut loader);
-                d.append(&mut loader.diags);
-                d
+                stream.continue_with(&mut it, program.clone(), None, &mut loader)
             }
         };
+        run.append(&mut loader.diags);
+        drop(loader);
         drop(it);
         if let Some(mut s) = sim.take() {
             // A tilt the run does not make (W0518) moves the tool where
@@ -430,11 +438,15 @@ pub(crate) fn read_whole(
     id: crate::span::FileId,
     spec: &DialectSpec,
 ) -> Result<std::rc::Rc<crate::ir::Program>, Failure> {
+    let text = read_text(path)?;
+    Ok(std::rc::Rc::new(read_program(&text, id, spec).0))
+}
+
+/// The file's text, decoded, within the input limit.
+fn read_text(path: &Path) -> Result<String, Failure> {
     let bytes = crate::cli::context::read_limited(path, crate::cli::context::MAX_INPUT)
         .map_err(|e| Failure(format!("{}: {e}", path.display())))?;
-    let text = crate::driver::decode(&bytes);
-    drop(bytes);
-    Ok(std::rc::Rc::new(read_program(&text, id, spec).0))
+    Ok(crate::driver::decode(&bytes))
 }
 
 /// The first 64 KiB of a file, for dialect detection.

@@ -274,13 +274,23 @@ fn verify_port(
         spec: src_spec,
         opts: &opts,
     };
-    let side_by_side = s.material.is_none() && source.streams() && !back.fragment && !back.walker;
-    let (proof, da, mut db) = match side_by_side {
-        true => {
-            let port = (ctx.files.text(out_id), out_id, back);
-            side_by_side_proof(&s, source, port, tolerance, diags)
+    let side_by_side = s.material.is_none() && source.streams() && !back.fragment;
+    let walker = source.scan.walker || back.walker;
+    let mut proved = None;
+    if side_by_side {
+        let port = (ctx.files.text(out_id), out_id, back.clone());
+        let mut notes = Vec::new();
+        let (proof, called_out) =
+            side_by_side_proof(&s, source.clone(), port, tolerance, &mut notes);
+        // A program that calls another file is proved with it loaded.
+        if !(walker && called_out) {
+            diags.append(&mut notes);
+            proved = Some(proof);
         }
-        false => {
+    }
+    let (proof, da, mut db) = match proved {
+        Some(p) => p,
+        None => {
             // The loaders add the files the program calls.
             let out = ctx.files.text(out_id).to_string();
             whole_proof(ctx, &s, source, (&out, out_id, back), tolerance, diags)
@@ -338,7 +348,7 @@ fn side_by_side_proof(
     (out, out_id, back): (&str, crate::span::FileId, verify_text::Scan),
     tolerance: f64,
     diags: &mut Vec<Diagnostic>,
-) -> Proof {
+) -> (Proof, bool) {
     let holds = crate::dialect::Capability::ControlHoldsTools;
     let changes = match s.target.has(holds) {
         true => Vec::new(),
@@ -353,7 +363,7 @@ fn side_by_side_proof(
         opts: &topts,
     };
     let o = verify_lockstep::compare(source, port, &s.opts.tool_map, tolerance);
-    ((o.verdict, None), o.source, o.port)
+    (((o.verdict, None), o.source, o.port), o.called_out)
 }
 
 /// Each program run in turn and its events held: a subprogram ported

@@ -6,12 +6,14 @@
 //! [`run_text`] runs a program held in memory the same way (a STEP-NC
 //! plan posted for running, see `crate::cli::stepnc_input`).
 
+use super::lazy::read_program_lazy;
 use super::{flow::ProgramLoader, stream::StreamRun, Interp, Options, Sink};
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
-use crate::driver::{check_stream_flagged, decode, read_program, FsLoader};
+use crate::driver::{check_stream_flagged, decode, FsLoader};
 use crate::source::SourceMap;
 use crate::span::FileId;
+use std::borrow::Cow;
 use std::fs::File;
 use std::io::{BufRead, BufReader};
 use std::path::Path;
@@ -32,7 +34,8 @@ pub fn run_file(
 ) -> std::io::Result<Vec<Diagnostic>> {
     let input = BufReader::with_capacity(1 << 16, File::open(path)?);
     let whole = || {
-        crate::cli::context::read_limited(path, crate::cli::context::MAX_INPUT).map(|b| decode(&b))
+        crate::cli::context::read_limited(path, crate::cli::context::MAX_INPUT)
+            .map(|b| Cow::Owned(decode(&b)))
     };
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let mut loader =
@@ -71,7 +74,7 @@ pub fn run_text_loading(
 ) -> Vec<Diagnostic> {
     let run = Run { id, spec, opts };
     // Reading from memory cannot fail.
-    run.go(text.as_bytes(), || Ok(text.to_string()), loader, sink)
+    run.go(text.as_bytes(), || Ok(Cow::Borrowed(text)), loader, sink)
         .unwrap_or_default()
 }
 
@@ -85,10 +88,10 @@ struct Run<'r> {
 impl Run<'_> {
     /// Streams `input`; `whole` gives the whole text when the walker takes
     /// over (control flow), which loads called programs with `loader`.
-    fn go(
+    fn go<'t>(
         self,
         input: impl BufRead,
-        whole: impl FnOnce() -> std::io::Result<String>,
+        whole: impl FnOnce() -> std::io::Result<Cow<'t, str>>,
         loader: &mut dyn ProgramLoader,
         sink: &mut Sink<'_>,
     ) -> std::io::Result<Vec<Diagnostic>> {
@@ -110,10 +113,8 @@ impl Run<'_> {
             _ if read_errors => stream.abandon(&mut it),
             None => stream.finish(&mut it),
             Some(_) => {
-                let text = whole()?;
-                let program = std::rc::Rc::new(read_program(&text, id, spec).0);
-                drop(text);
-                stream.continue_with(&mut it, program, loader)
+                let (program, lazy, _) = read_program_lazy(whole()?, id, spec);
+                stream.continue_with(&mut it, std::rc::Rc::new(program), Some(lazy), loader)
             }
         };
         diags.extend(run);

@@ -73,6 +73,8 @@ pub struct Walker<'l> {
     /// Sub definitions rs274 has recorded (passed in sequence or found by
     /// a call), by program and block: see [`super::sub_styles`].
     known_defs: std::collections::HashSet<(usize, usize)>,
+    /// The main program's plain moves held as text (see [`super::lazy`]).
+    lazy: Option<super::lazy::LazyBlocks<'l>>,
 }
 
 /// What a block asks the walker to do next.
@@ -108,7 +110,38 @@ impl<'l> Walker<'l> {
             start: 0,
             called: false,
             known_defs: Default::default(),
+            lazy: None,
         }
+    }
+
+    /// Walks a main program read by [`super::lazy::read_program_lazy`].
+    pub fn with_lazy(mut self, lazy: super::lazy::LazyBlocks<'l>) -> Self {
+        self.lazy = Some(lazy);
+        self
+    }
+
+    /// The main program's first block with statements (a stub has them).
+    fn first_content_block(&self) -> usize {
+        let stub = |i: usize| self.lazy.as_ref().is_some_and(|l| l.is_stub(i));
+        self.progs[0]
+            .program
+            .blocks
+            .iter()
+            .enumerate()
+            .position(|(i, b)| !b.stmts.is_empty() || stub(i))
+            .unwrap_or(0)
+    }
+
+    /// Block `pc` of the main program read again from its text, where it
+    /// is a stub.
+    fn reread(
+        &mut self,
+        prog: usize,
+        pc: usize,
+        stub: &crate::ir::Block,
+    ) -> Option<crate::ir::Block> {
+        let lazy = self.lazy.as_mut().filter(|l| prog == 0 && l.is_stub(pc))?;
+        lazy.reread(stub)
     }
 
     /// Runs the file as a subprogram checked alone (see `called`).
@@ -148,13 +181,15 @@ impl<'l> Walker<'l> {
         let mut entered = false;
         loop {
             let program = self.progs[prog].program.clone();
-            let Some(block) = program.blocks.get(pc) else {
+            let Some(stored) = program.blocks.get(pc) else {
                 if self.frames.is_empty() || prog == 0 {
                     return Ok(());
                 }
                 (prog, pc) = self.pop_frame(it);
                 continue;
             };
+            let reread = self.reread(prog, pc, stored);
+            let block = reread.as_ref().unwrap_or(stored);
             self.count_block(it, block.span)?;
             if block.skip.is_some() && it.opts.block_delete {
                 pc += 1;
@@ -166,7 +201,7 @@ impl<'l> Walker<'l> {
             }
             observe(it, prog, pc, self.frames.len());
             it.hold();
-            let next = self.block(it, prog, pc, entered);
+            let next = self.block(it, prog, pc, block, entered);
             let next = match it.settle_block(next, block, &program.exprs, self.frames.len()) {
                 Err(stop) => {
                     it.recover(stop)?;
@@ -253,10 +288,10 @@ impl<'l> Walker<'l> {
         it: &mut Interp<'_, '_>,
         prog: usize,
         pc: usize,
+        block: &crate::ir::Block,
         entered: bool,
     ) -> Result<Next, Stop> {
         let program = self.progs[prog].program.clone();
-        let block = &program.blocks[pc];
         let exprs = &program.exprs;
         // A sub definition met in sequence is skipped, not run.
         if let Some(s) = block
@@ -683,7 +718,7 @@ impl<'l> Walker<'l> {
             } => Some(self.call(it, prog, pc, *kind, target, args, repeat.as_ref(), exprs)?),
             SectionRepeat { .. } => Some(self.section_repeat(it, prog, pc, s, exprs)?),
             Tape => {
-                if pc == first_content_block(&self.progs[prog].program) && prog == 0 {
+                if prog == 0 && pc == self.first_content_block() {
                     self.started_with_percent = true;
                     None
                 } else if self.started_with_percent && prog == 0 {
@@ -1093,13 +1128,6 @@ fn pick(list: &[usize], pc: usize, dir: JumpDir) -> Option<usize> {
         JumpDir::Backward => back,
         JumpDir::Either | JumpDir::EitherNoAlarm => fwd.or_else(|| list.first().copied()),
     }
-}
-
-fn first_content_block(p: &Program) -> usize {
-    p.blocks
-        .iter()
-        .position(|b| !b.stmts.is_empty())
-        .unwrap_or(0)
 }
 
 /// Fanuc G65 argument specification I: letter → local variable number.

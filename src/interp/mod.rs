@@ -25,6 +25,7 @@ pub mod host;
 pub mod index;
 pub mod lathe_cycles;
 pub mod lathe_profile;
+pub mod lazy;
 pub mod machine;
 pub mod machine_desc;
 pub mod modal_save;

@@ -111,14 +111,18 @@ impl StreamRun {
 
     /// Goes on with the walker over the whole program from the hand-over
     /// block; returns every diagnostic of the run.
-    pub fn continue_with(
+    pub fn continue_with<'l>(
         &mut self,
         it: &mut Interp<'_, '_>,
         program: std::rc::Rc<Program>,
-        loader: &mut dyn ProgramLoader,
+        lazy: Option<super::lazy::LazyBlocks<'l>>,
+        loader: &'l mut dyn ProgramLoader,
     ) -> Vec<Diagnostic> {
         let at = self.handover.unwrap_or(0);
         let mut walker = Walker::new(program, loader);
+        if let Some(lazy) = lazy {
+            walker = walker.with_lazy(lazy);
+        }
         walker.resume(at, self.percent_start, self.blocks);
         let result = walker.run(it);
         let mut diags = it.take_diags();

@@ -10,6 +10,7 @@ pub mod arena;
 pub mod depth;
 pub mod expr;
 pub mod num;
+pub mod plain;
 pub mod print;
 pub mod program;
 pub mod stmt;

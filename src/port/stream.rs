@@ -29,7 +29,7 @@
 
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
-use crate::ir::{Block, CommentStyle, Motion, MotionKind, Program, Stmt, StmtKind, Value};
+use crate::ir::{Block, CommentStyle, MotionKind, Program, Stmt, StmtKind};
 use crate::span::{FileId, Span};
 use std::collections::HashSet;
 
@@ -85,13 +85,7 @@ pub fn port_text(
             return None;
         }
         read_diags.truncate(crate::diag::MAX_KEPT);
-        if b.stmts
-            .iter()
-            .any(|s| crate::interp::stream::needs_walker(&s.kind))
-        {
-            return None;
-        }
-        if is_plain(&b) && st.skeleton.exprs.len() == before {
+        if crate::ir::plain::is_plain(&b) && st.skeleton.exprs.len() == before {
             st.plain(b)?;
         } else {
             st.other(b)?;
@@ -118,45 +112,6 @@ fn marker_for(text: &str) -> Option<String> {
     (0..8u32)
         .map(|i| format!("CNCC STREAMED RUN {i:X}"))
         .find(|m| !text.contains(m.as_str()))
-}
-
-/// A block that only moves: literal coordinates, no label, no flow.
-fn is_plain(b: &Block) -> bool {
-    b.label.is_none()
-        && !b.stmts.is_empty()
-        && b.stmts.iter().all(|s| match &s.kind {
-            StmtKind::Motion(m) => plain_motion(m),
-            StmtKind::Feed(v) => literal(v),
-            StmtKind::Comment { .. } => true,
-            _ => false,
-        })
-}
-
-fn plain_motion(m: &Motion) -> bool {
-    let kind = matches!(
-        m.kind,
-        MotionKind::Implicit | MotionKind::Rapid | MotionKind::Linear | MotionKind::Arc(_)
-    );
-    let coord = |c: &Option<crate::ir::Coord>| {
-        c.as_ref()
-            .is_none_or(|c| c.dim.is_none() && literal(&c.value))
-    };
-    let t = &m.target;
-    let axes = [&t.x, &t.y, &t.z, &t.a, &t.b, &t.c, &t.u, &t.v, &t.w];
-    let a = &m.arc;
-    kind && axes.into_iter().all(coord)
-        && [&a.i, &a.j, &a.k].into_iter().all(coord)
-        && a.radius.as_ref().is_none_or(literal)
-        && a.angle.is_none()
-        && a.turns.is_none()
-        && a.mid.is_none()
-        && m.polar_radius.is_none()
-        && m.polar_angle.is_none()
-        && m.corner.is_none()
-}
-
-fn literal(v: &Value) -> bool {
-    matches!(v, Value::Number(_))
 }
 
 /// What distinguishes moves for the summary: the motion code, the words

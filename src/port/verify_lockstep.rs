@@ -5,8 +5,10 @@
 //! a few hundred of each. The proof's memory is then that of two runs
 //! (each as `canon` streams it), not of their events.
 //!
-//! Only for programs that run as streams to their end: without control
-//! flow or calls (nothing to load), and not a subprogram ported alone.
+//! Not for a subprogram ported alone. A program with control flow runs
+//! here too (the walker holds its plain moves as text), as long as it
+//! loads no other file: a run that asks for one is said in the
+//! [`Outcome`], and the caller proves the port with the files loaded.
 
 use super::verify::{self, Recorder, Verdict};
 use super::verify_digest::{Digest, Tally};
@@ -15,13 +17,14 @@ use crate::compare::window::{hand_over, QUEUED};
 use crate::compare::{OpWindow, Ops};
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
-use crate::interp::flow::NoLoader;
+use crate::interp::flow::{NoLoader, ProgramLoader};
 use crate::interp::Options;
 use crate::span::{FileId, Span};
 use std::sync::mpsc::{sync_channel, SyncSender};
 use std::sync::Arc;
 
 /// One program to run.
+#[derive(Clone)]
 pub struct Side<'t> {
     pub text: &'t str,
     pub id: FileId,
@@ -33,7 +36,7 @@ pub struct Side<'t> {
 impl Side<'_> {
     /// Can it run side by side (see the module doc)?
     pub fn streams(&self) -> bool {
-        !self.scan.fragment && !self.scan.walker
+        !self.scan.fragment
     }
 }
 
@@ -43,6 +46,22 @@ pub struct Outcome {
     pub verdict: Verdict,
     pub source: Vec<Diagnostic>,
     pub port: Vec<Diagnostic>,
+    /// A run asked for another program (not loaded here): the verdict
+    /// means nothing.
+    pub called_out: bool,
+}
+
+/// Loads nothing, and remembers being asked.
+#[derive(Default)]
+struct Refusing {
+    asked: bool,
+}
+
+impl ProgramLoader for Refusing {
+    fn load(&mut self, _: &crate::ir::CallTarget) -> Option<std::rc::Rc<crate::ir::Program>> {
+        self.asked = true;
+        None
+    }
 }
 
 /// Runs both programs side by side and compares them; the source's
@@ -62,18 +81,23 @@ pub fn compare(
         let wb = OpWindow::pulled(Box::new(move || rb.recv().ok()));
         let opts = verify::compare_options(tolerance_mm);
         let c = crate::compare::compare_windows(wa, wb, &opts);
-        let joined = |h: std::thread::ScopedJoinHandle<'_, (Tally, Vec<Diagnostic>)>| {
+        let joined = |h: std::thread::ScopedJoinHandle<'_, Ran>| {
             h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))
         };
-        let (a, da) = joined(ha);
-        let (b, db) = joined(hb);
+        let (a, da, asked_a) = joined(ha);
+        let (b, db, asked_b) = joined(hb);
         Outcome {
             verdict: verify::verdict(c, &a, &b, tools, tolerance_mm),
             source: da,
             port: db,
+            called_out: asked_a || asked_b,
         }
     })
 }
+
+/// What one side's run gives: its tally, its diagnostics, and whether
+/// it asked for another program.
+type Ran = (Tally, Vec<Diagnostic>, bool);
 
 /// Runs one side, sending its operations as they are made.
 fn run(
@@ -81,7 +105,7 @@ fn run(
     tools: Option<&super::ToolMap>,
     tolerance_mm: f64,
     to: SyncSender<Ops>,
-) -> (Tally, Vec<Diagnostic>) {
+) -> Ran {
     let Side {
         text,
         id,
@@ -93,19 +117,20 @@ fn run(
     let mut digest = Digest::new(tolerance_mm);
     // The comparison stops listening only when it has all it needs.
     let mut listening = true;
+    let mut loader = Refusing::default();
     let diags = {
         let mut sink = |call: crate::canon::Canon, span: Span| {
             rec.call_with(call, span, |e| digest.push(&e, tools));
             listening = hand_over(&mut digest.ops, &to, listening);
         };
-        crate::interp::file::run_text_loading(text, id, spec, opts, &mut NoLoader, &mut sink)
+        crate::interp::file::run_text_loading(text, id, spec, opts, &mut loader, &mut sink)
     };
     let Digest { ops, tally } = digest;
     if listening {
         // A comparison that has stopped listening needs no more.
         let _ = to.send(ops.finish());
     }
-    (tally, diags)
+    (tally, diags, loader.asked)
 }
 
 /// The tools a program's run changes to, each with its statement, in

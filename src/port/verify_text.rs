@@ -18,6 +18,7 @@ use std::collections::HashSet;
 use std::sync::Arc;
 
 /// What one reading of a program's text tells the proof.
+#[derive(Clone)]
 pub struct Scan {
     /// The reader's diagnostics.
     pub diags: Vec<Diagnostic>,
