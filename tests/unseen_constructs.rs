@@ -182,9 +182,10 @@ fn fanuc_macro_word_abbreviations() {
 
 /// Centre and radius words in a block without a motion code are an arc's
 /// only when the modal motion is an arc: in G0/G1 mode the block is no
-/// arc and gets no "arc given both a radius and a centre" (E0207); in G2
-/// mode the run reports the mixed format (E0512) on that block. An
-/// explicit G2 with both still gets E0207 when it is read.
+/// arc and gets no "arc given both a radius and a centre" (E0207) but a
+/// warning that the words are not used (W0597); in G2 mode the run
+/// reports the mixed format (E0512) on that block. An explicit G2 with
+/// both still gets E0207 when it is read.
 #[test]
 fn arc_words_only_make_an_arc_in_arc_mode() {
     let (code, e) = check("fanuc", "tests/programs/fanuc/arc_words_outside_arc.nc");
