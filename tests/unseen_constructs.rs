@@ -154,3 +154,48 @@ fn heidenhain_m92_moves_run_in_machine_coordinates() {
     let o = cncc(&["port", "--from", "heidenhain", "--to", "heidenhain", f]);
     assert!(stdout(&o).contains("2 L Z+0 R0 FMAX M92"), "{}", stdout(&o));
 }
+
+/// Fanuc custom macro words by their first two letters (`WH[..]DO1`,
+/// `GO`, `EN1`), as 0i-MD shop macros are written: read as the full words,
+/// the loop runs three passes, and they are written back in full. Haas
+/// removes the capability, so there `WH` stays an unknown keyword.
+#[test]
+fn fanuc_macro_word_abbreviations() {
+    let f = "tests/programs/fanuc/macro_abbreviations.nc";
+    let (code, e) = check("fanuc", f);
+    assert_eq!(code, Some(0), "{e}");
+    assert_eq!(e, "", "{e}");
+    let out = stdout(&cncc(&["canon", "--dialect", "fanuc", f]));
+    assert_eq!(out.matches("STRAIGHT_FEED").count(), 9, "{out}");
+    assert!(out.contains("-3.0000, 0.0000"), "{out}");
+    let o = cncc(&["port", "--from", "fanuc", "--to", "fanuc", f]);
+    let back = stdout(&o);
+    assert!(
+        back.contains("WHILE [#1 GT #2] DO1") && back.contains("END1"),
+        "{back}"
+    );
+    assert!(back.contains("GOTO 90") && !back.contains("WH["), "{back}");
+    let (code, e) = check("haas", f);
+    assert_eq!(code, Some(1), "{e}");
+    assert!(e.contains("E0104") && e.contains("`WH`"), "{e}");
+}
+
+/// Centre and radius words in a block without a motion code are an arc's
+/// only when the modal motion is an arc: in G0/G1 mode the block is no
+/// arc and gets no "arc given both a radius and a centre" (E0207) but a
+/// warning that the words are not used (W0597); in G2 mode the run
+/// reports the mixed format (E0512) on that block. An explicit G2 with
+/// both still gets E0207 when it is read.
+#[test]
+fn arc_words_only_make_an_arc_in_arc_mode() {
+    let (code, e) = check("fanuc", "tests/programs/fanuc/arc_words_outside_arc.nc");
+    assert_eq!(code, Some(1), "{e}");
+    assert!(!e.contains("E0207"), "{e}");
+    assert_eq!(e.matches("error[").count(), 1, "{e}");
+    assert!(
+        e.contains("E0512") && e.contains("arc_words_outside_arc.nc:10:"),
+        "{e}"
+    );
+    let (_, e) = check("fanuc", "tests/programs/fanuc/mistakes.nc");
+    assert!(e.contains("E0207") && e.contains("mistakes.nc:13:"), "{e}");
+}

@@ -272,6 +272,12 @@ pub enum Capability {
     /// machine builder's magazine logic decides]). Elsewhere a second T
     /// is a repeated word (E0205).
     SecondToolPreselects,
+    /// A Macro B word may be written by its first two letters (`WH[..]DO1`
+    /// for `WHILE`, `GO` for `GOTO`, `EN1` for `END1`): the control expands
+    /// the abbreviation when the program is entered (Fanuc custom macro
+    /// "abbreviations of macro words" [?: table as recalled from the 0i
+    /// operator's manual; seen in 0i-MD shop programs]).
+    MacroWordAbbreviations,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -374,6 +380,10 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("offset-register-alone", Capability::OffsetRegisterAlone),
     ("comp-register-modal", Capability::CompRegisterModal),
     ("second-tool-preselects", Capability::SecondToolPreselects),
+    (
+        "macro-word-abbreviations",
+        Capability::MacroWordAbbreviations,
+    ),
 ];
 
 impl Capability {

@@ -11,7 +11,7 @@ use super::state::ModalMotion;
 use super::target::{target, written, Frame};
 use super::{arcs, aux, Interp, Stop};
 use crate::canon::{Canon, Pose};
-use crate::diag::Code;
+use crate::diag::{Code, Diagnostic};
 use crate::dialect::Capability;
 use crate::ir::{
     Arena, Axes, Block, CannedCycle, CoordShift, CycleKind, DwellUnit, Expr, FeedMode, Motion,
@@ -172,6 +172,14 @@ fn motion_inner(
             k
         }
     };
+    if m.kind == MotionKind::Implicit
+        && matches!(kind, MotionKind::Rapid | MotionKind::Linear)
+        && !it.spec.has(crate::dialect::Capability::StrictWords)
+    {
+        if let Some(d) = arc_words_without_arc(it.span, m) {
+            it.diags.push(d);
+        }
+    }
     it.comp_block(block.span);
     let sinumerik = it.spec.has(crate::dialect::Capability::FrameArcs);
     match kind {
@@ -200,6 +208,35 @@ fn motion_inner(
             "this motion is not run by the interpreter yet",
         )),
     }
+}
+
+/// W0597: a block without a motion code moves straight in G0/G1 mode, so
+/// its centre or radius words belong to no arc (a lost G2/G3, or words
+/// meant as M98 arguments). Dialects with `strict-words` refuse them when
+/// the block is read instead.
+fn arc_words_without_arc(span: crate::span::Span, m: &Motion) -> Option<Diagnostic> {
+    let a = &m.arc;
+    let words: Vec<&str> = [
+        (a.i.is_some(), "I"),
+        (a.j.is_some(), "J"),
+        (a.k.is_some(), "K"),
+        (a.radius.is_some(), "R"),
+    ]
+    .iter()
+    .filter(|(on, _)| *on)
+    .map(|(_, w)| *w)
+    .collect();
+    if words.is_empty() {
+        return None;
+    }
+    Some(
+        Diagnostic::new(
+            Code::ArcWordsWithoutArc,
+            format!("{} in a block that moves straight: not used", words.join(" ")),
+        )
+        .primary(span, "no G2/G3 is in force here")
+        .help("write the arc's G2/G3 if this move is meant to be an arc, or remove the words (M98 passes no arguments; G65 does)"),
+    )
 }
 
 /// Is the modal G code a spindle-synchronised motion (`Some(rigid)`)?

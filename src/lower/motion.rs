@@ -45,7 +45,12 @@ pub(super) fn motion(
         return m;
     }
     if takes_arc_words(kind) {
-        check_arc_format(words, ctx.diags);
+        // A move without a motion code is an arc only if the modal motion
+        // is one, which the run knows (it reports the mixed format there):
+        // in G0/G1 mode the same words are no arc (E0207 would be wrong).
+        if kind != MotionKind::Implicit {
+            check_arc_format(words, ctx.diags);
+        }
         m.arc.i = words.coord("I");
         m.arc.j = words.coord("J");
         m.arc.k = words.coord("K");

@@ -166,7 +166,28 @@ const KEYWORDS: &[(&str, Kw)] = &[
     ("CONTINUE", Kw::Continue),
 ];
 
+/// Macro B words by their first two letters, for dialects with
+/// `macro-word-abbreviations` (Fanuc: `WH[#1LT10]DO1`). Only two-letter
+/// forms that are no full keyword of their own; `DO`, `IF`, `EQ`.. are.
+const ABBREVIATIONS: &[(&str, Kw)] = &[
+    ("WH", Kw::While),
+    ("GO", Kw::Goto),
+    ("EN", Kw::End),
+    ("TH", Kw::Then),
+    ("AN", Kw::And),
+    ("XO", Kw::Xor),
+];
+
 impl Kw {
+    /// The keyword `word` (any case) abbreviates, if it is a Macro B
+    /// two-letter abbreviation.
+    pub fn abbreviated(word: &str) -> Option<Kw> {
+        ABBREVIATIONS
+            .iter()
+            .find(|(k, _)| k.eq_ignore_ascii_case(word))
+            .map(|(_, kw)| *kw)
+    }
+
     /// The keyword spelled `word` (any case), if it is one.
     pub fn lookup(word: &str) -> Option<Kw> {
         KEYWORDS
