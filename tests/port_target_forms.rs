@@ -172,3 +172,21 @@ fn the_register_of_the_tool_in_the_spindle_is_klartext_rl() {
     let err = port(&other, "heidenhain", &dir.path().join("other.h")).unwrap_err();
     assert!(err.contains("E0601"), "{err}");
 }
+
+#[test]
+fn a_drilling_cycle_with_computed_planes_keeps_them_as_expressions() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "dpr.mpf",
+        "N10 G90 G71 G17 G94\nN20 R1=2 R2=5\nN30 T1 D1 M6\nN40 S1000 M3 F100\n\
+         N50 G0 X0 Y0 Z50\nN60 MCALL CYCLE81(R1+20,R1,2,,R2+1)\nN70 X10 Y10\nN80 X20\n\
+         N90 MCALL\nN100 G0 Z50\nN110 M30\n",
+    );
+    let out = dir.path().join("dpr.nc");
+    let text = port(&src, "fanuc", &out).unwrap();
+    // R = RFP + SDIS, Z = RFP - ABS(DPR), computed by the target.
+    assert!(text.contains("Z[#1-ABS[#2+1]] R[#1+2.]"), "{text}");
+    let back = dir.path().join("dpr-back.mpf");
+    port(out.to_str().unwrap(), "siemens840d", &back).unwrap();
+}

@@ -64,15 +64,15 @@ impl Pass<'_> {
         let r = if sdis == 0.0 {
             rfp.clone()
         } else {
-            match rfp.number() {
-                Some(d) => Value::Number(decimal(d.to_f64() + sdis)),
-                None => {
-                    self.refuse(
+            match &rfp {
+                Value::Number(d) => Value::Number(decimal(d.to_f64() + sdis)),
+                // R = RFP + SDIS, an expression the target computes.
+                Value::Expr(e) => {
+                    let n = crate::port::number_expr(p, decimal(sdis), span);
+                    Value::Expr(p.exprs.alloc(crate::ir::Expr {
+                        kind: ExprKind::Binary(crate::ir::BinaryOp::Add, *e, n),
                         span,
-                        format!("{}: RFP is an expression and SDIS is not 0", c.name),
-                        "R = RFP + SDIS cannot be computed",
-                    );
-                    return None;
+                    }))
                 }
             }
         };
