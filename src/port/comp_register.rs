@@ -46,22 +46,20 @@ pub fn run(p: &mut Program, to: &DialectSpec) {
         // does: the tool last selected.
         let tool = if changes { spindle } else { selected };
         for s in &mut b.stmts {
-            match &mut s.kind {
-                StmtKind::RadiusComp {
-                    register,
-                    diameter: false,
-                    ..
-                } => {
-                    let own = match register {
-                        Some(Value::Number(d)) => Some(d.to_f64()) == tool,
-                        Some(Value::Expr(_)) => false,
-                        None => true,
-                    };
-                    if own {
-                        *register = None;
-                    }
+            if let StmtKind::RadiusComp {
+                register,
+                diameter: false,
+                ..
+            } = &mut s.kind
+            {
+                let own = match register {
+                    Some(Value::Number(d)) => Some(d.to_f64()) == tool,
+                    Some(Value::Expr(_)) => false,
+                    None => true,
+                };
+                if own {
+                    *register = None;
                 }
-                _ => {}
             }
         }
     }

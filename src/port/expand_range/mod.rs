@@ -64,10 +64,7 @@ pub fn legalize<T>(
                 .collect());
         }
         let trace = trace::record(&cur, from, opts, loader);
-        let (next, done) = match plan_and_apply(&cur, source, &trace, (from, to), &errors) {
-            Ok(x) => x,
-            Err(refused) => return Err(refused),
-        };
+        let (next, done) = plan_and_apply(&cur, source, &trace, (from, to), &errors)?;
         notes.extend(done);
         cur = next;
         match attempt(&cur) {
