@@ -349,9 +349,7 @@ fn mark_machine_frame(
     b: &crate::ir::Block,
     spec: &DialectSpec,
 ) {
-    let machine = b.stmts.iter().any(|s| {
-        matches!(s.kind, crate::ir::StmtKind::MachineCoords) || spec.is_machine_datum(&s.kind)
-    });
+    let machine = b.stmts.iter().any(|s| spec.in_machine_coords(&s.kind));
     if machine {
         spans.extend(b.stmts.iter().map(|s| s.span));
     }

@@ -281,7 +281,11 @@ fn add_variables(spec: &mut DialectSpec, v: VarRange, seen: &Seen) {
 
 /// `<alias name=/>`, `<extension name=/>`, `<capability name=/>`, `<command name=/>`.
 fn read_name_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen) {
-    cx.check_attrs(n, &["name", "doc", "confidence"]);
+    if n.name == "command" {
+        cx.check_attrs(n, &["name", "doc", "confidence", "meaning", "run"]);
+    } else {
+        cx.check_attrs(n, &["name", "doc", "confidence"]);
+    }
     let Some(a) = cx.req(n, "name") else { return };
     let v = a.value.trim().to_string();
     seen.check(
@@ -312,6 +316,30 @@ fn read_name_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Se
             if !spec.is_command(&v) {
                 spec.commands.push(v.to_ascii_uppercase());
             }
+            read_command_attrs(cx, n, spec, &v);
+        }
+    }
+}
+
+/// A command's `meaning="machine-coords"` and `run="pass"`.
+fn read_command_attrs(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, v: &str) {
+    let name = v.to_ascii_uppercase();
+    if let Some(a) = n.attr("meaning") {
+        let help = "a meaning of the code tables, such as `machine-coords`";
+        if let Some(m) = cx.parse(a, "a meaning", help, crate::dialect::Meaning::parse) {
+            spec.command_meanings.retain(|(c, _)| *c != name);
+            spec.command_meanings.push((name.clone(), m));
+        }
+    }
+    if let Some(a) = n.attr("run") {
+        if cx
+            .parse(a, "`pass`", "the only run a command takes is `pass`", |s| {
+                (s == "pass").then_some(())
+            })
+            .is_some()
+            && !spec.command_passes(&name)
+        {
+            spec.passing_commands.push(name);
         }
     }
 }
@@ -474,7 +502,12 @@ fn remove_named<'n>(
         "cycle" => spec.cycles.retain(|c| !c.name.eq_ignore_ascii_case(v)),
         "function" => spec.functions.retain(|f| !f.name.eq_ignore_ascii_case(v)),
         "capability" => spec.capabilities.retain(|c| c.name() != v),
-        "command" => spec.commands.retain(|c| !c.eq_ignore_ascii_case(v)),
+        "command" => {
+            spec.commands.retain(|c| !c.eq_ignore_ascii_case(v));
+            spec.command_meanings
+                .retain(|(c, _)| !c.eq_ignore_ascii_case(v));
+            spec.passing_commands.retain(|c| !c.eq_ignore_ascii_case(v));
+        }
         "address" => spec
             .addresses
             .retain(|x| !x.letter.to_string().eq_ignore_ascii_case(v)),

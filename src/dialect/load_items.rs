@@ -229,6 +229,7 @@ pub const CYCLE_KINDS: &[&str] = &[
     "tolerance",
     "swivel",
     "datum-preset",
+    "datum-shift",
     "blank",
     "structure",
     "other",

@@ -190,6 +190,11 @@ pub enum Capability {
     /// move that needs a feed rate: rs274's "Cannot do G1 with zero feed
     /// rate"); elsewhere it only sets the motion mode.
     BareMotionCodeMoves,
+    /// A block in machine coordinates moves at the motion mode in force,
+    /// so it may feed (LinuxCNC `G53 G1`, Siemens `G1 SUPA`, Heidenhain
+    /// `L .. F.. M91`); elsewhere it moves at rapid (Fanuc `G53` [?]) and
+    /// a port writes only rapid machine-coordinate blocks there.
+    MachineCoordsFeed,
     /// The program can show the operator a message without stopping
     /// (Siemens `MSG("..")`, LinuxCNC `(MSG,..)`); elsewhere a port
     /// writes a message as a comment (W0610).
@@ -374,6 +379,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
     ("var-and-ini-files", Capability::VarAndIniFiles),
     ("change-names-tool", Capability::ChangeNamesTool),
     ("bare-motion-code-moves", Capability::BareMotionCodeMoves),
+    ("machine-coords-feed", Capability::MachineCoordsFeed),
     ("operator-messages", Capability::OperatorMessages),
     ("dwell-with-move", Capability::DwellWithMove),
     ("tilted-working-plane", Capability::TiltedWorkingPlane),
@@ -524,6 +530,20 @@ impl DialectSpec {
         matches!(k, crate::ir::StmtKind::Aux { letter, code, .. }
             if self.code(*letter, *code).is_some_and(|c| c.run == AuxRun::MachineDatum))
     }
+
+    /// Does statement `k` put its block's positions in machine
+    /// coordinates: `G53`, a machine-datum code (M92), or a command the
+    /// spec gives that meaning (Siemens `SUPA`)?
+    pub fn in_machine_coords(&self, k: &crate::ir::StmtKind) -> bool {
+        use crate::ir::StmtKind as K;
+        match k {
+            K::MachineCoords => true,
+            K::Command { name, args: None } => {
+                self.command_meaning(name) == Some(Meaning::MachineCoords)
+            }
+            _ => self.is_machine_datum(k),
+        }
+    }
 }
 
 /// The kind of value a cycle parameter takes.
@@ -635,8 +655,14 @@ pub struct DialectSpec {
     pub codes: Vec<CodeDef>,
     pub cycles: Vec<CycleSig>,
     pub functions: Vec<FunctionDef>,
-    /// Keyword commands with no neutral meaning (Siemens `SOFT`, `FFWON`).
+    /// Keyword commands (Siemens `SOFT`, `FFWON`), kept by name.
     pub commands: Vec<String>,
+    /// The neutral function a command has where the spec names one
+    /// (`<command name="SUPA" meaning="machine-coords"/>`).
+    pub command_meanings: Vec<(String, Meaning)>,
+    /// Commands nothing the canonical run computes depends on
+    /// (`run="pass"`: `FNORM`, `SOFT`).
+    pub passing_commands: Vec<String>,
     pub variables: Vec<VarRange>,
     pub capabilities: Capabilities,
     /// What comments and messages may hold (`<text>`).
@@ -792,6 +818,8 @@ impl DialectSpec {
             cycles: Vec::new(),
             functions: Vec::new(),
             commands: Vec::new(),
+            command_meanings: Vec::new(),
+            passing_commands: Vec::new(),
             variables: Vec::new(),
             capabilities: Capabilities::default(),
             text: Default::default(),
@@ -860,6 +888,21 @@ impl DialectSpec {
 
     pub fn is_command(&self, name: &str) -> bool {
         self.commands.iter().any(|c| c.eq_ignore_ascii_case(name))
+    }
+
+    /// The neutral function of command `name`, where the spec gives one.
+    pub fn command_meaning(&self, name: &str) -> Option<Meaning> {
+        self.command_meanings
+            .iter()
+            .find(|(c, _)| c.eq_ignore_ascii_case(name))
+            .map(|x| x.1)
+    }
+
+    /// Does nothing the canonical run computes depend on command `name`?
+    pub fn command_passes(&self, name: &str) -> bool {
+        self.passing_commands
+            .iter()
+            .any(|c| c.eq_ignore_ascii_case(name))
     }
 
     pub fn address(&self, letter: char) -> Option<&AddressDef> {

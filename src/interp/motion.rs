@@ -255,9 +255,7 @@ fn straight(
     exprs: &Arena<Expr>,
 ) -> Result<(), Stop> {
     let axes = &m.target;
-    let machine = has(block, |k| {
-        matches!(k, StmtKind::MachineCoords) || it.spec.is_machine_datum(k)
-    });
+    let machine = has(block, |k| it.spec.in_machine_coords(k));
     let mut to = target(
         it,
         axes,

@@ -2,8 +2,9 @@
 //! the tool in the spindle and names no register (capability
 //! `comp-without-register`: Klartext `RL`/`RR`):
 //! the register goes where it is the tool's own (`D` equal to the number
-//! of the tool last selected, the usual convention), so the same radius is
-//! used. Any other register stays, and the writer refuses it.
+//! of the tool in the spindle, the usual convention; a tool selected after
+//! the change only made ready), so the same radius is used. Any other
+//! register stays, and the writer refuses it.
 //!
 //! Klartext sets compensation on a positioning block: a `G40` (`G41`,
 //! `G42`) alone in a block goes onto the next move (`L X.. Y.. R0`)
@@ -17,26 +18,48 @@ pub fn run(p: &mut Program, to: &DialectSpec) {
         return;
     }
     off_onto_next_move(p);
-    let mut tool: Option<f64> = None;
+    let changes = p
+        .blocks
+        .iter()
+        .flat_map(|b| &b.stmts)
+        .any(|s| matches!(s.kind, StmtKind::ToolChange));
+    // The tool last selected, and the one the last change loaded.
+    let mut selected: Option<f64> = None;
+    let mut spindle: Option<f64> = None;
     for b in &mut p.blocks {
+        for s in &b.stmts {
+            if let StmtKind::ToolSelect(t) = &s.kind {
+                selected = match t {
+                    ToolRef::Number(Value::Number(n)) => Some(n.to_f64()),
+                    _ => None,
+                };
+            }
+        }
+        if b.stmts
+            .iter()
+            .any(|s| matches!(s.kind, StmtKind::ToolChange))
+        {
+            spindle = selected;
+        }
+        // A program that changes tools: the tool in the spindle (a `T14`
+        // after `T4 M6` only makes the next one ready); one that never
+        // does: the tool last selected.
+        let tool = if changes { spindle } else { selected };
         for s in &mut b.stmts {
-            match &mut s.kind {
-                StmtKind::ToolSelect(ToolRef::Number(Value::Number(n))) => tool = Some(n.to_f64()),
-                StmtKind::RadiusComp {
-                    register,
-                    diameter: false,
-                    ..
-                } => {
-                    let own = match register {
-                        Some(Value::Number(d)) => Some(d.to_f64()) == tool,
-                        Some(Value::Expr(_)) => false,
-                        None => true,
-                    };
-                    if own {
-                        *register = None;
-                    }
+            if let StmtKind::RadiusComp {
+                register,
+                diameter: false,
+                ..
+            } = &mut s.kind
+            {
+                let own = match register {
+                    Some(Value::Number(d)) => Some(d.to_f64()) == tool,
+                    Some(Value::Expr(_)) => false,
+                    None => true,
+                };
+                if own {
+                    *register = None;
                 }
-                _ => {}
             }
         }
     }

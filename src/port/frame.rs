@@ -11,14 +11,17 @@
 //!   as a comment (the number comes from the file, as the source's did).
 //! * `END PGM` marks the end of the program text: outside Klartext the end
 //!   of the file does that, so it goes (the program's M30/M2 stays).
-//! * `BEGIN PGM .. MM` sets millimetres with feeds in mm/min; a target
-//!   whose millimetre code does not exist in that form gets the plain
-//!   millimetre code (G21 sets feeds in mm/min too).
+//!
+//! Units with their feeds (`BEGIN PGM .. MM`, Siemens `G700`/`G710`: the
+//! feeds in the same unit) become, for any source, the plain units code
+//! of a target that has no such form: its units code sets the feed unit
+//! too (Fanuc, LinuxCNC `G20`/`G21` [K]).
 
 use crate::dialect::{Capability, DialectSpec, Family, Meaning};
 use crate::ir::{CommentStyle, Program, StmtKind};
 
 pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
+    plain_units(p, to);
     if to.family == Family::Klartext || from.family != Family::Klartext {
         return;
     }
@@ -55,18 +58,6 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
                         text: name.clone(),
                         style: CommentStyle::Paren,
                     };
-                }
-                StmtKind::Units {
-                    unit,
-                    with_feeds: with_feeds @ true,
-                } if to
-                    .code_for(Meaning::Units {
-                        unit: *unit,
-                        with_feeds: true,
-                    })
-                    .is_none() =>
-                {
-                    *with_feeds = false;
                 }
                 _ => {}
             }
@@ -128,5 +119,24 @@ fn length_offsets(p: &mut Program, to: &DialectSpec) {
                 span,
             ),
         );
+    }
+}
+
+/// `G700` as `G20` where the target has no units-with-feeds code.
+fn plain_units(p: &mut Program, to: &DialectSpec) {
+    for s in p.blocks.iter_mut().flat_map(|b| b.stmts.iter_mut()) {
+        if let StmtKind::Units {
+            unit,
+            with_feeds: with_feeds @ true,
+        } = &mut s.kind
+        {
+            let form = Meaning::Units {
+                unit: *unit,
+                with_feeds: true,
+            };
+            if to.code_for(form).is_none() {
+                *with_feeds = false;
+            }
+        }
     }
 }

@@ -79,7 +79,7 @@ pub fn events(
     opts: &Options,
     loader: &mut dyn ProgramLoader,
 ) -> (Vec<Event>, Vec<Diagnostic>) {
-    let mut rec = Recorder::new(machine_spans(&p));
+    let mut rec = Recorder::new(machine_spans(&p, spec));
     let diags = {
         let mut sink = |call: crate::canon::Canon, span: Span| rec.call(call, span);
         crate::interp::run(p, spec, opts, loader, &mut sink)
@@ -151,22 +151,26 @@ pub(crate) const LENGTH_MARK: &str = "\u{0}cncc: tool length offset ";
 
 /// The statements of blocks that move in machine coordinates or to a
 /// reference point.
-fn machine_spans(p: &Program) -> HashSet<Span> {
+fn machine_spans(p: &Program, spec: &DialectSpec) -> HashSet<Span> {
     let mut spans = HashSet::new();
     for b in &p.blocks {
-        add_machine_spans(b, &mut spans);
+        add_machine_spans(b, spec, &mut spans);
     }
     spans
 }
 
 /// Adds the statements of `b` when it moves in machine coordinates or to
 /// a reference point.
-pub(crate) fn add_machine_spans(b: &crate::ir::Block, spans: &mut HashSet<Span>) {
+pub(crate) fn add_machine_spans(
+    b: &crate::ir::Block,
+    spec: &DialectSpec,
+    spans: &mut HashSet<Span>,
+) {
     use crate::ir::StmtKind;
     let machine = b
         .stmts
         .iter()
-        .any(|s| matches!(s.kind, StmtKind::MachineCoords | StmtKind::RefReturn { .. }));
+        .any(|s| matches!(s.kind, StmtKind::RefReturn { .. }) || spec.in_machine_coords(&s.kind));
     if machine {
         spans.extend(b.stmts.iter().map(|s| s.span));
     }

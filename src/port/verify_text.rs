@@ -43,7 +43,7 @@ pub fn scan(text: &str, id: FileId, spec: &DialectSpec) -> Scan {
     let mut detector = Detector::default();
     let mut walker = false;
     let read = crate::driver::check_stream_flagged(text.as_bytes(), id, spec, |b, _, _| {
-        add_machine_spans(b, &mut machine);
+        add_machine_spans(b, spec, &mut machine);
         detector.block(b);
         walker |= b
             .stmts

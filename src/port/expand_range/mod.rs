@@ -64,10 +64,7 @@ pub fn legalize<T>(
                 .collect());
         }
         let trace = trace::record(&cur, from, opts, loader);
-        let (next, done) = match plan_and_apply(&cur, source, &trace, to, &errors) {
-            Ok(x) => x,
-            Err(refused) => return Err(refused),
-        };
+        let (next, done) = plan_and_apply(&cur, source, &trace, (from, to), &errors)?;
         notes.extend(done);
         cur = next;
         match attempt(&cur) {
@@ -84,7 +81,7 @@ fn plan_and_apply(
     p: &Program,
     source: &str,
     t: &Trace,
-    to: &DialectSpec,
+    (from, to): (&DialectSpec, &DialectSpec),
     errors: &[Diagnostic],
 ) -> Result<(Program, Vec<Diagnostic>), Vec<Diagnostic>> {
     let st = Structure::of(p);
@@ -128,6 +125,20 @@ fn plan_and_apply(
             .collect()
     };
     let ranges = merge(t, &st, ranges).map_err(all_refused)?;
+    // Moves are written in work coordinates: a block that moves in
+    // machine coordinates (G53, SUPA) would lose where it goes.
+    let machine = |r: &Range| {
+        p.blocks[r.a..=r.b]
+            .iter()
+            .flat_map(|b| &b.stmts)
+            .any(|s| from.in_machine_coords(&s.kind))
+    };
+    if ranges.iter().any(machine) {
+        return Err(all_refused(
+            "it moves in machine coordinates, which moves written in work coordinates cannot carry"
+                .into(),
+        ));
+    }
     let parts = Parts {
         ranges: &ranges,
         defs: &definitions,

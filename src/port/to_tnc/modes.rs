@@ -13,18 +13,30 @@
 //!   `tolerance` cycle: `CYCL DEF 32.0 TOLERANCE` and `32.1 T0.05`, or
 //!   `32.1` alone (the machine's default tolerance) without one. Other
 //!   words of the mode (LinuxCNC's `Q` naive-CAM tolerance) have no
-//!   counterpart: W0610. Exact stop has no cycle: it stays refused.
+//!   counterpart: W0610. Exact stop has no cycle: it stays refused;
+//! * a local shift (`G52 X Y Z`, relative to the work offset as the TNC's
+//!   datum shift is to the preset) that gives all three axes becomes the
+//!   old-style `datum-shift` cycle: `CYCL DEF 7.0 DATUM SHIFT`, `7.1 X..`,
+//!   `7.2 Y..`, `7.3 Z..` (the inverse of `port::old_cycles`). Only in a
+//!   program without a rotation, mirror or scaling, whose order against
+//!   the shift the two controls may apply differently; a shift of fewer
+//!   axes leaves the others to the shift before, which the cycle does
+//!   not say: it stays refused (E0601).
 
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{CycleSig, DialectSpec, Meaning};
 use crate::ir::{
-    CycleDef, CycleLine, CycleWord, PathMode, Program, QParam, Stmt, StmtKind, Value, Word,
+    Axes, CoordShift, CycleDef, CycleLine, CycleWord, PathMode, Program, QParam, Stmt, StmtKind,
+    Value, Word,
 };
 use crate::span::Span;
 
 pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
     let preset = cycle(to, "datum-preset").filter(|c| !c.params.is_empty());
     let tolerance = cycle(to, "tolerance").filter(|c| c.name.parse::<u32>().is_ok());
+    let shift = cycle(to, "datum-shift")
+        .filter(|c| c.name.parse::<u32>().is_ok())
+        .filter(|_| !has_transform(p));
     let other_offsets =
         p.blocks.iter().flat_map(|b| &b.stmts).any(
             |s| matches!(s.kind, StmtKind::WorkOffset { index, extended: None } if index != 1),
@@ -47,6 +59,15 @@ pub fn run(p: &mut Program, to: &DialectSpec, diags: &mut Vec<Diagnostic>) {
                     Some(c) => out.extend(tolerance_lines(c, words, s.span, diags)),
                     None => out.push(s),
                 },
+                StmtKind::CoordShift {
+                    kind: CoordShift::Local,
+                    axes,
+                } if lacks(to, Meaning::CoordShift(CoordShift::Local)) => {
+                    match shift.and_then(|c| shift_lines(c, axes, s.span)) {
+                        Some(lines) => out.extend(lines),
+                        None => out.push(s),
+                    }
+                }
                 _ => out.push(s),
             }
         }
@@ -169,4 +190,51 @@ pub fn presets_to_codes(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
             }
         }
     }
+}
+
+/// Does the program rotate, mirror or scale its coordinates anywhere?
+fn has_transform(p: &Program) -> bool {
+    p.blocks
+        .iter()
+        .flat_map(|b| &b.stmts)
+        .any(|s| matches!(s.kind, StmtKind::Transform(_)))
+}
+
+/// `G52 X10 Y0 Z-5` as the datum-shift cycle's lines (absolute values).
+fn shift_lines(c: &CycleSig, axes: &Axes, span: Span) -> Option<Vec<Stmt>> {
+    let cycle = c.name.parse().ok()?;
+    let given = [("X", &axes.x), ("Y", &axes.y), ("Z", &axes.z)];
+    let others = [&axes.a, &axes.b, &axes.c, &axes.u, &axes.v, &axes.w];
+    if others.iter().any(|a| a.is_some()) {
+        return None;
+    }
+    let line = |sub: u32, words: Vec<CycleWord>| {
+        Stmt::new(
+            StmtKind::CycleLine(Box::new(CycleLine { cycle, sub, words })),
+            span,
+        )
+    };
+    let mut out = vec![line(
+        0,
+        vec![CycleWord {
+            name: title(c),
+            value: None,
+            span,
+        }],
+    )];
+    for (sub, (name, coord)) in (1..).zip(given) {
+        let coord = coord.as_ref()?;
+        if coord.dim.is_some() {
+            return None;
+        }
+        out.push(line(
+            sub,
+            vec![CycleWord {
+                name: name.into(),
+                value: Some(coord.value.clone()),
+                span: coord.span,
+            }],
+        ));
+    }
+    Some(out)
 }

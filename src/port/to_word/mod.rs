@@ -67,7 +67,7 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
 }
 
 impl Pass<'_> {
-    fn block(&mut self, p: &Program, mut b: Block, out: &mut Vec<Block>) {
+    fn block(&mut self, p: &mut Program, mut b: Block, out: &mut Vec<Block>) {
         let mut before = Vec::new();
         let mut cur = Vec::new();
         let mut after = Vec::new();

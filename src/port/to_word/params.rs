@@ -11,16 +11,26 @@ use crate::port::decimal;
 use crate::span::Span;
 
 impl Pass<'_> {
-    pub(super) fn map_call(&mut self, p: &Program, c: &CycleCall, span: Span) -> Option<Pending> {
+    pub(super) fn map_call(
+        &mut self,
+        p: &mut Program,
+        c: &CycleCall,
+        span: Span,
+    ) -> Option<Pending> {
         let sig = self.from.cycle(&c.name)?.clone();
-        let arg = |name: &str| -> Option<Value> {
-            let i = sig.param_index(name)?;
-            let e = c.args.get(i)?.value?;
-            Some(match &p.exprs[e].kind {
-                ExprKind::Number(d) => Value::Number(*d),
-                _ => Value::Expr(e),
+        // The arguments as values (read once: the depth formula below
+        // adds to the program's expressions).
+        let values: Vec<Option<Value>> = c
+            .args
+            .iter()
+            .map(|a| {
+                a.value.map(|e| match &p.exprs[e].kind {
+                    ExprKind::Number(d) => Value::Number(*d),
+                    _ => Value::Expr(e),
+                })
             })
-        };
+            .collect();
+        let arg = |name: &str| -> Option<Value> { values.get(sig.param_index(name)?)?.clone() };
         let num = |name: &str| arg(name).and_then(|v| v.number()).map(|d| d.to_f64());
         let given = |name: &str| num(name).is_some_and(|v| v != 0.0);
         let (Some(rtp), Some(rfp)) = (arg("RTP"), arg("RFP")) else {
@@ -31,11 +41,17 @@ impl Pass<'_> {
             );
             return None;
         };
-        // SDIS or DPR given as an expression: R = RFP + SDIS and the
-        // depth cannot be written as numbers (taking them as 0 put the
-        // R plane on the surface).
+        // SDIS given as an expression: R = RFP + SDIS cannot be written
+        // as numbers (taking it as 0 put the R plane on the surface). A
+        // DPR expression without a DP: the depth is RFP - ABS(DPR), an
+        // expression the target computes [?: a DPR that is 0 at run time
+        // leaves the 840D at DP = 0, the formula at RFP].
+        let dpr_formula = arg("DPR")
+            .filter(|v| v.number().is_none())
+            .filter(|_| arg("DP").is_none());
         for name in ["SDIS", "DPR"] {
-            if arg(name).is_some_and(|v| v.number().is_none()) {
+            let formula = name == "DPR" && dpr_formula.is_some();
+            if arg(name).is_some_and(|v| v.number().is_none()) && !formula {
                 self.refuse(
                     span,
                     format!("{}: {name} is an expression", c.name),
@@ -48,19 +64,32 @@ impl Pass<'_> {
         let r = if sdis == 0.0 {
             rfp.clone()
         } else {
-            match rfp.number() {
-                Some(d) => Value::Number(decimal(d.to_f64() + sdis)),
-                None => {
-                    self.refuse(
+            match &rfp {
+                Value::Number(d) => Value::Number(decimal(d.to_f64() + sdis)),
+                // R = RFP + SDIS, an expression the target computes.
+                Value::Expr(e) => {
+                    let n = crate::port::number_expr(p, decimal(sdis), span);
+                    Value::Expr(p.exprs.alloc(crate::ir::Expr {
+                        kind: ExprKind::Binary(crate::ir::BinaryOp::Add, *e, n),
                         span,
-                        format!("{}: RFP is an expression and SDIS is not 0", c.name),
-                        "R = RFP + SDIS cannot be computed",
-                    );
-                    return None;
+                    }))
                 }
             }
         };
-        let bottom = if given("DPR") {
+        let bottom = if let Some(Value::Expr(dpr)) = dpr_formula {
+            let rfp = match rfp.clone() {
+                Value::Number(d) => crate::port::number_expr(p, d, span),
+                Value::Expr(e) => e,
+            };
+            let abs = p.exprs.alloc(crate::ir::Expr {
+                kind: ExprKind::Call(crate::ir::Func::Abs, vec![dpr]),
+                span,
+            });
+            Value::Expr(p.exprs.alloc(crate::ir::Expr {
+                kind: ExprKind::Binary(crate::ir::BinaryOp::Sub, rfp, abs),
+                span,
+            }))
+        } else if given("DPR") {
             match rfp.number() {
                 Some(d) => Value::Number(decimal(d.to_f64() - num("DPR").unwrap_or(0.0).abs())),
                 None => {
