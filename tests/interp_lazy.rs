@@ -2,7 +2,8 @@
 //! (`src/interp/lazy.rs`): on every test program and every real program
 //! of `../shared` (skipped with a note when it is absent), each block of
 //! the lazily read program is the block the whole reading gives, a stub
-//! once it is read again from its text; and the stubs are most of a CAM
+//! once it is read again from its text (and when the walker reaches it
+//! again, from the blocks kept read); and the stubs are most of a CAM
 //! program, or the memory they save is not there.
 
 mod common;
@@ -44,7 +45,14 @@ fn compare(dialect: &str, path: &Path, diffs: &mut Vec<String>) -> (usize, usize
                 if !l.stmts.is_empty() {
                     diffs.push(format!("{name}: block {i} is a stub with statements"));
                 }
-                lazy.reread(l)
+                // Read again, then again (kept read from the second time).
+                let first = lazy.reread(l);
+                for _ in 0..3 {
+                    if lazy.fetch(i, l).as_deref() != first.as_ref() {
+                        diffs.push(format!("{name}: block {i} fetched is not the block read"));
+                    }
+                }
+                first
             }
             false => Some(l.clone()),
         };

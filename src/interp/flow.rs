@@ -139,9 +139,9 @@ impl<'l> Walker<'l> {
         prog: usize,
         pc: usize,
         stub: &crate::ir::Block,
-    ) -> Option<crate::ir::Block> {
+    ) -> Option<std::rc::Rc<crate::ir::Block>> {
         let lazy = self.lazy.as_mut().filter(|l| prog == 0 && l.is_stub(pc))?;
-        lazy.reread(stub)
+        lazy.fetch(pc, stub)
     }
 
     /// Runs the file as a subprogram checked alone (see `called`).
@@ -189,7 +189,7 @@ impl<'l> Walker<'l> {
                 continue;
             };
             let reread = self.reread(prog, pc, stored);
-            let block = reread.as_ref().unwrap_or(stored);
+            let block = reread.as_deref().unwrap_or(stored);
             self.count_block(it, block.span)?;
             if block.skip.is_some() && it.opts.block_delete {
                 pc += 1;

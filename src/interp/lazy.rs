@@ -10,6 +10,10 @@
 //! A block becomes a stub only when reading its text again, with the
 //! reader that later reads it, gives the same block: a line whose reading
 //! depends on the lines before it is held whole.
+//!
+//! A stub the walker reaches a second time (a loop, a called section) is
+//! kept read, up to [`CACHED`] blocks, so a loop of moves is read once
+//! more, not on every pass.
 
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
@@ -17,12 +21,21 @@ use crate::driver::Reader;
 use crate::ir::{Arena, Block, Expr, Program};
 use crate::span::FileId;
 use std::borrow::Cow;
+use std::collections::HashMap;
+use std::rc::Rc;
+
+/// At most this many stubs are kept read (a kilobyte or so each).
+pub const CACHED: usize = 16_384;
 
 /// The text behind a program's stubs, and the reader that reads them.
 pub struct LazyBlocks<'s> {
     text: Cow<'s, str>,
     /// One bit per block: set for a stub.
     stubs: Vec<u64>,
+    /// One bit per block: set once the walker has read the stub again.
+    seen: Vec<u64>,
+    /// Stubs read again more than once, kept read.
+    cache: HashMap<usize, Rc<Block>>,
     reader: Reader<'s>,
     /// Plain moves make no expressions; the reader wants somewhere to
     /// put them all the same.
@@ -34,6 +47,8 @@ impl<'s> LazyBlocks<'s> {
         LazyBlocks {
             text,
             stubs: Vec::new(),
+            seen: Vec::new(),
+            cache: HashMap::new(),
             reader: Reader::new(spec, file),
             scratch: Arena::new(),
         }
@@ -41,16 +56,26 @@ impl<'s> LazyBlocks<'s> {
 
     /// Is block `i` a stub (its statements are in the text)?
     pub fn is_stub(&self, i: usize) -> bool {
-        self.stubs
-            .get(i / 64)
-            .is_some_and(|w| w & (1 << (i % 64)) != 0)
+        bit(&self.stubs, i)
     }
 
     fn mark(&mut self, i: usize) {
-        if self.stubs.len() <= i / 64 {
-            self.stubs.resize(i / 64 + 1, 0);
+        set_bit(&mut self.stubs, i);
+    }
+
+    /// Stub `i` as the walker runs it: read again, or kept read when it
+    /// is reached again (see the module doc).
+    pub fn fetch(&mut self, i: usize, stub: &Block) -> Option<Rc<Block>> {
+        if let Some(b) = self.cache.get(&i) {
+            return Some(b.clone());
         }
-        self.stubs[i / 64] |= 1 << (i % 64);
+        let b = Rc::new(self.reread(stub)?);
+        if !bit(&self.seen, i) {
+            set_bit(&mut self.seen, i);
+        } else if self.cache.len() < CACHED {
+            self.cache.insert(i, b.clone());
+        }
+        Some(b)
     }
 
     /// The block `stub` stands for, read again from its text.
@@ -72,6 +97,17 @@ impl<'s> LazyBlocks<'s> {
             ..b
         }
     }
+}
+
+fn bit(bits: &[u64], i: usize) -> bool {
+    bits.get(i / 64).is_some_and(|w| w & (1 << (i % 64)) != 0)
+}
+
+fn set_bit(bits: &mut Vec<u64>, i: usize) {
+    if bits.len() <= i / 64 {
+        bits.resize(i / 64 + 1, 0);
+    }
+    bits[i / 64] |= 1 << (i % 64);
 }
 
 /// The block whose span in `text` is `stub`'s, read again by `reader`.
