@@ -222,3 +222,44 @@ fn judge(diffs: &[String], streamed: (usize, usize), least: (usize, usize)) {
         streamed.1
     );
 }
+
+/// A run of moves `n` blocks long.
+fn moves(n: usize) -> String {
+    (0..n)
+        .map(|i| format!("G1 X{}. Y{}.\n", i % 50, i % 7))
+        .collect()
+}
+
+/// Streams `text` (read as `from`) to the 840D in chunks of two blocks.
+fn stream_of(from: &str, text: &str) -> Option<cncc::port::stream::StreamedPort> {
+    let spec = builtin(from).unwrap();
+    let target = builtin("siemens840d").unwrap();
+    let mut files = SourceMap::new();
+    let id = files.add("t", text.to_string());
+    port_text(
+        text,
+        id,
+        &spec,
+        &target,
+        &PortOptions::default(),
+        Chunking { chunk: 2 },
+    )
+}
+
+#[test]
+fn a_program_with_a_loop_streams_and_one_that_jumps_to_a_number_goes_whole() {
+    // Jumps to an o-word land on its labelled block, never in a run.
+    let looped = format!(
+        "%\nG21 G90 G17 F500\n#1=0\no100 while [#1 LT 2]\n#1=[#1+1]\no100 endwhile\n{}M2\n%\n",
+        moves(40)
+    );
+    let s = stream_of("linuxcnc", &looped).expect("a program with a loop streams");
+    assert!(s.chunked > 30, "only {} blocks chunked", s.chunked);
+    // `GOTO 10` may land on a numbered move inside a run: ported whole.
+    let jumps = format!(
+        "%\nO1\nG21 G90 G17 F500\n#1=0\n{}N10 G1 X1. Y1.\n{}#1=#1+1\nIF [#1 LT 2] GOTO 10\nM30\n%\n",
+        moves(20),
+        moves(20)
+    );
+    assert!(stream_of("fanuc", &jumps).is_none());
+}

@@ -1,6 +1,7 @@
 //! Running a program file as a stream: each block runs as it is read; a
 //! program with control flow is read whole from its first such block and
-//! the walker goes on from there (see [`super::stream`]). Memory stays
+//! the walker goes on from there (see [`super::stream`]), its plain moves
+//! held as text ([`super::lazy`]). Memory stays
 //! flat on large CAM files. `cncc canon` and everything that reads the
 //! canonical stream (toolpaths, plots, STEP-NC raising) run files this way.
 //! [`run_text`] runs a program held in memory the same way (a STEP-NC

@@ -132,9 +132,9 @@ impl<'l> Walker<'l> {
             .unwrap_or(0)
     }
 
-    /// Block `pc` of the main program read again from its text, where it
-    /// is a stub.
-    fn reread(
+    /// Block `pc` of the main program as the walker runs it, where it is
+    /// a stub (see [`super::lazy`]).
+    fn stub_block(
         &mut self,
         prog: usize,
         pc: usize,
@@ -188,8 +188,8 @@ impl<'l> Walker<'l> {
                 (prog, pc) = self.pop_frame(it);
                 continue;
             };
-            let reread = self.reread(prog, pc, stored);
-            let block = reread.as_deref().unwrap_or(stored);
+            let unstubbed = self.stub_block(prog, pc, stored);
+            let block = unstubbed.as_deref().unwrap_or(stored);
             self.count_block(it, block.span)?;
             if block.skip.is_some() && it.opts.block_delete {
                 pc += 1;

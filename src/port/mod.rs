@@ -192,7 +192,7 @@ pub fn port_owned(
     flow_jumps::run(&mut out, to);
     arcs::run(&mut out, from, to);
     ref_return::run(&mut out, from, to, &mut diags);
-    per_value_dims::run(&mut out, to);
+    per_value_dims::run(&mut out, from, to);
     osubs::run(&mut out, from, to, &mut diags);
     forms::run(&mut out, from, to, opts, &mut diags);
     spf::run(&mut out, from, to);

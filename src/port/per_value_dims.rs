@@ -7,37 +7,32 @@
 //! for the writer to name (E0601) and the moves fallback to write.
 
 use crate::dialect::{DialectSpec, Family};
-use crate::ir::{Block, Coord, DimMode, MotionKind, Program, Stmt, StmtKind};
+use crate::ir::{Block, Coord, DimMode, MotionKind, Program, Stmt, StmtKind, AXIS_LETTERS};
+use crate::port::levels::Modal;
 
-pub fn run(p: &mut Program, to: &DialectSpec) {
+pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec) {
     if to.family != Family::WordAddress || !has_dims(p) {
         return;
     }
-    let mut absolute = true;
+    // The distance mode in force, followed as the other passes follow it.
+    let mut modal = Modal::new(from);
     let blocks = std::mem::take(&mut p.blocks);
     p.blocks.reserve(blocks.len());
     for mut b in blocks {
         let dim = block_dim(&b);
-        for s in &b.stmts {
-            if let StmtKind::Distance(d) = s.kind {
-                absolute = d == DimMode::Absolute;
-            }
-        }
+        let distance = |s: &&Stmt| matches!(s.kind, StmtKind::Distance(_));
+        b.stmts.iter().filter(distance).for_each(|s| modal.see(s));
+        let absolute = modal.absolute;
         let Some(dim) = dim else {
             p.blocks.push(b);
             continue;
         };
         for s in &mut b.stmts {
             if let StmtKind::Motion(m) = &mut s.kind {
-                let t = &mut m.target;
-                for c in [
-                    &mut t.x, &mut t.y, &mut t.z, &mut t.a, &mut t.b, &mut t.c, &mut t.u, &mut t.v,
-                    &mut t.w,
-                ]
-                .into_iter()
-                .flatten()
-                {
-                    c.dim = None;
+                for axis in AXIS_LETTERS {
+                    if let Some(Some(c)) = m.target.slot_mut(axis) {
+                        c.dim = None;
+                    }
                 }
             }
         }

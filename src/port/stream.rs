@@ -1,10 +1,14 @@
 //! The port of a large program without holding it (issue 13's "flat
-//! memory"): a program with no control flow is read once, block by
-//! block. Blocks that only move (literal coordinates, a literal feed, a
+//! memory"): a program is read once, block by block. Blocks that only move (literal coordinates, a literal feed, a
 //! comment) come in runs; the middle of a long run is ported in chunks
 //! while it is read, and only the rest of the program (the *skeleton*:
-//! set-ups, tool changes, cycles, each run's first and last block and a
-//! short summary of its middle) is held and ported whole.
+//! set-ups, tool changes, cycles, control flow, each run's first and
+//! last block and a short summary of its middle) is held and ported
+//! whole. Since session 13 programs with control flow stream too: jumps
+//! to labels land on labelled blocks, which are never in a run, so a loop
+//! or a call repeats whole runs; a program that goes to a block by its
+//! sequence number (`GOTO 10`, `M97 P10`, `M99 P10`) goes whole, since
+//! that block may stand in a run already ported.
 //!
 //! Every piece is ported by the same passes and written by the same
 //! writer as the whole program would be, in the context of what precedes
@@ -21,15 +25,15 @@
 //! are dropped from what is written.
 //!
 //! Anything unusual sends the program down the whole path instead: a
-//! block with control flow, a placeholder the passes changed, an error in
+//! placeholder the passes changed, an error in
 //! any piece (the whole port reports it, and legalizes), or a skeleton so
 //! large that porting it before every chunk would cost more than the
-//! program. `tests/port_stream.rs` ports every test program both ways,
-//! in chunks of two blocks, and requires the same text.
+//! program. `tests/port_stream.rs` ports every test and real program
+//! both ways, in chunks of two blocks, and requires the same text.
 
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
-use crate::ir::{Block, CommentStyle, MotionKind, Program, Stmt, StmtKind};
+use crate::ir::{Block, CallKind, CommentStyle, JumpTarget, MotionKind, Program, Stmt, StmtKind};
 use crate::span::{FileId, Span};
 use std::collections::HashSet;
 
@@ -85,6 +89,9 @@ pub fn port_text(
             return None;
         }
         read_diags.truncate(crate::diag::MAX_KEPT);
+        if b.stmts.iter().any(|s| to_sequence_number(&s.kind)) {
+            return None;
+        }
         if crate::ir::plain::is_plain(&b) && st.skeleton.exprs.len() == before {
             st.plain(b)?;
         } else {
@@ -104,6 +111,25 @@ pub fn port_text(
         port,
         chunked,
     })
+}
+
+/// Does the statement go to a block by its sequence number (`GOTO 10`,
+/// Haas `M97 P10`, `M99 P10`)? Such a block may stand in a run, where a
+/// chunk already ported did not see the jump: the program goes whole.
+fn to_sequence_number(k: &StmtKind) -> bool {
+    match k {
+        StmtKind::Goto {
+            target: JumpTarget::Sequence(_),
+            ..
+        } => true,
+        StmtKind::Call {
+            kind: CallKind::Local,
+            ..
+        } => true,
+        StmtKind::SubReturn { to } => to.is_some(),
+        StmtKind::IfThen { then, .. } => to_sequence_number(&then.kind),
+        _ => false,
+    }
 }
 
 /// A comment text the program does not contain, marking where a run's

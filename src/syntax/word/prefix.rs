@@ -37,11 +37,11 @@ pub fn split(
                 feed.push((l, Tok::O, r))
             }
             Tok::Bad | Tok::Colon => diags.push(bad_char(input.text.get(l..r).unwrap_or("?"), sp)),
+            _ if join_blanked(input, feed, l, t, r) => {}
             Tok::Name if input.spec.has(Capability::MacroWordAbbreviations) => {
                 let kw = input.text.get(l..r).and_then(Kw::abbreviated);
                 feed.push((l, kw.map_or(t, Tok::Kw), r))
             }
-            _ if join_blanked(input, feed, l, t, r) => {}
             _ => feed.push((l, t, r)),
         }
     }
