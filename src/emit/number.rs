@@ -30,6 +30,19 @@ pub fn format_number(
     rules: &NumberRules,
     units: Option<LengthUnit>,
 ) -> Result<String, String> {
+    let mut s = String::with_capacity(16);
+    format_number_into(&mut s, d, kind, rules, units)?;
+    Ok(s)
+}
+
+/// [`format_number`] appended to `out` (left as it was on `Err`).
+pub fn format_number_into(
+    out: &mut String,
+    d: Decimal,
+    kind: NumKind,
+    rules: &NumberRules,
+    units: Option<LengthUnit>,
+) -> Result<(), String> {
     let n = d.normalized();
     let (places, point) = match kind {
         NumKind::Length => (Some(length_places(rules, units)), rules.point_on_lengths),
@@ -49,7 +62,8 @@ pub fn format_number(
             });
         }
     }
-    Ok(n.format(0, point))
+    n.format_into(out, 0, point);
+    Ok(())
 }
 
 fn length_places(rules: &NumberRules, units: Option<LengthUnit>) -> u8 {

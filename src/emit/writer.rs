@@ -2,7 +2,7 @@
 //! diagnostics so far and the units in force (which decide how many decimal
 //! places a length may have), with helpers for the words every family writes.
 
-use super::number::{format_number, NumKind};
+use super::number::{format_number, format_number_into, NumKind};
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{DialectSpec, Meaning};
 use crate::ir::{Axes, Coord, DimMode, ExprId, ExprKind, LengthUnit, Program, Value, Word};
@@ -100,12 +100,26 @@ impl<'a> Writer<'a> {
     }
 
     pub fn num(&mut self, d: crate::ir::Decimal, kind: NumKind, span: Span) -> Option<String> {
-        match format_number(d, kind, &self.spec.numbers, self.units) {
-            Ok(s) => Some(s),
+        let mut s = String::with_capacity(16);
+        self.num_into(&mut s, d, kind, span)?;
+        Some(s)
+    }
+
+    /// [`Writer::num`] appended to `out`.
+    pub fn num_into(
+        &mut self,
+        out: &mut String,
+        d: crate::ir::Decimal,
+        kind: NumKind,
+        span: Span,
+    ) -> Option<()> {
+        match format_number_into(out, d, kind, &self.spec.numbers, self.units) {
+            Ok(()) => Some(()),
             Err(why) => {
                 if kind == NumKind::Feed {
                     if let Some(s) = self.rounded_feed(d, span) {
-                        return Some(s);
+                        out.push_str(&s);
+                        return Some(());
                     }
                 }
                 self.inexact(span, why);
@@ -185,16 +199,14 @@ impl<'a> Writer<'a> {
     pub fn word(&mut self, addr: &str, v: &Value, kind: NumKind, span: Span) -> Option<String> {
         let long = addr.chars().count() > 1;
         match (v, self.style) {
-            (Value::Number(d), Style::Bracket) => {
-                Some(format!("{addr}{}", self.num(*d, kind, span)?))
-            }
-            (Value::Number(d), Style::Sinumerik) => {
-                let n = self.num(*d, kind, span)?;
-                Some(if long {
-                    format!("{addr}={n}")
-                } else {
-                    format!("{addr}{n}")
-                })
+            (Value::Number(d), style) => {
+                let mut s = String::with_capacity(addr.len() + 16);
+                s.push_str(addr);
+                if long && style == Style::Sinumerik {
+                    s.push('=');
+                }
+                self.num_into(&mut s, *d, kind, span)?;
+                Some(s)
             }
             (Value::Expr(id), Style::Bracket) => {
                 let e = self.expr(*id)?;
@@ -248,7 +260,8 @@ impl<'a> Writer<'a> {
     /// The axis words X Y Z A B C U V W that are given.
     pub fn push_axes(&mut self, words: &mut Vec<String>, axes: &Axes) {
         for (letter, c) in axes.iter() {
-            if let Some(w) = self.coord(&letter.to_string(), c, NumKind::Length) {
+            let mut buf = [0; 4];
+            if let Some(w) = self.coord(letter.encode_utf8(&mut buf), c, NumKind::Length) {
                 words.push(w);
             }
         }

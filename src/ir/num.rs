@@ -158,23 +158,36 @@ impl Decimal {
     /// Digits as `[-]int[.frac]` with at least `min_places` and no trailing
     /// zeros beyond them; `force_point` writes `10.` for a whole number.
     pub fn format(self, min_places: u8, force_point: bool) -> String {
-        let n = self.normalized();
-        let scale = n.scale.max(min_places);
-        let m = n.mantissa.unsigned_abs() as u128 * 10u128.pow((scale - n.scale) as u32);
-        let p = 10u128.pow(scale as u32);
-        let (int, frac) = (m / p, m % p);
-        let mut s = String::new();
-        if n.mantissa < 0 {
-            s.push('-');
-        }
-        s.push_str(&int.to_string());
-        if scale > 0 {
-            s.push('.');
-            s.push_str(&format!("{:0width$}", frac, width = scale as usize));
-        } else if force_point {
-            s.push('.');
-        }
+        let mut s = String::with_capacity(24);
+        self.format_into(&mut s, min_places, force_point);
         s
+    }
+
+    /// [`Decimal::format`] appended to `out`, digit by digit (no
+    /// division wider than the mantissa, no allocation of its own).
+    pub fn format_into(self, out: &mut String, min_places: u8, force_point: bool) {
+        let n = self.normalized();
+        let mut buf = itoa::Buffer::new();
+        let digits = buf.format(n.mantissa.unsigned_abs());
+        let (len, scale) = (digits.len(), n.scale as usize);
+        let places = scale.max(min_places as usize);
+        if n.mantissa < 0 {
+            out.push('-');
+        }
+        let zeros = |out: &mut String, k: usize| out.extend(std::iter::repeat_n('0', k));
+        if len > scale {
+            out.push_str(&digits[..len - scale]);
+        } else {
+            out.push('0');
+        }
+        if places > 0 {
+            out.push('.');
+            zeros(out, scale.saturating_sub(len));
+            out.push_str(&digits[len.saturating_sub(scale)..]);
+            zeros(out, places - scale);
+        } else if force_point {
+            out.push('.');
+        }
     }
 }
 
@@ -259,6 +272,34 @@ mod tests {
         assert_eq!(Decimal::parse("-0.50").unwrap().to_string(), "-0.50");
         assert_eq!(Decimal::parse("10.").unwrap().to_string(), "10.");
         assert_eq!(Decimal::from_f64(1.23456, 4).to_string(), "1.2346");
+    }
+
+    /// The digit-by-digit writer against the arithmetic it replaced
+    /// (integer and fraction by a u128 division), over mantissas at the
+    /// edges of an i64 and every scale up to [`MAX_SCALE`].
+    #[test]
+    fn formats_as_the_division_did() {
+        let by_division = |d: Decimal, min: u8, point: bool| {
+            let n = d.normalized();
+            let scale = n.scale.max(min);
+            let m = n.mantissa.unsigned_abs() as u128 * 10u128.pow((scale - n.scale) as u32);
+            let p = 10u128.pow(scale as u32);
+            let sign = if n.mantissa < 0 { "-" } else { "" };
+            match (scale, point) {
+                (0, true) => format!("{sign}{}.", m / p),
+                (0, false) => format!("{sign}{}", m / p),
+                _ => format!("{sign}{}.{:0w$}", m / p, m % p, w = scale as usize),
+            }
+        };
+        let mantissas = [0, 1, -1, 7, 10, -120, 123456, -9_999_999, i64::MAX, i64::MIN + 1, i64::MIN];
+        for &mantissa in &mantissas {
+            for scale in 0..=MAX_SCALE {
+                for (min, point) in [(0, false), (0, true), (3, false), (4, true)] {
+                    let d = Decimal { mantissa, scale, point: false };
+                    assert_eq!(d.format(min, point), by_division(d, min, point), "{mantissa} {scale}");
+                }
+            }
+        }
     }
 }
 

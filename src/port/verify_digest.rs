@@ -170,16 +170,22 @@ struct LowRapids {
 /// stricter for it.
 #[derive(Default)]
 struct CutPlaces {
-    kept: HashMap<(i64, i64), f64>,
-    recent: HashMap<(i64, i64), f64>,
-    older: HashMap<(i64, i64), f64>,
+    kept: Places,
+    recent: Places,
+    older: Places,
 }
+
+/// The deepest Z at each X Y on the tolerance grid, hashed with foldhash
+/// (several times faster than SipHash on two integers; seeded per run, so
+/// a program cannot be written to collide; the maps are only looked up,
+/// never listed, so the seed changes no output).
+type Places = HashMap<(i64, i64), f64, foldhash::fast::RandomState>;
 
 /// How many ends of feed moves inside a contour [`CutPlaces`] holds.
 const RECENT: usize = 1 << 16;
 
 impl CutPlaces {
-    fn lower(map: &mut HashMap<(i64, i64), f64>, p: &P3) {
+    fn lower(map: &mut Places, p: &P3) {
         let d = map.entry(key(p)).or_insert(f64::INFINITY);
         *d = d.min(p[2]);
     }
