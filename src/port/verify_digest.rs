@@ -198,7 +198,11 @@ impl CutPlaces {
     /// Any other end of a feed move.
     fn pass(&mut self, p: &P3) {
         if self.recent.len() >= RECENT {
-            self.older = std::mem::take(&mut self.recent);
+            // The full map becomes the older one and the older one's
+            // table is emptied and reused: no table grows again from
+            // nothing, no memory is given back and faulted in again.
+            std::mem::swap(&mut self.older, &mut self.recent);
+            self.recent.clear();
         }
         Self::lower(&mut self.recent, p);
     }
@@ -268,8 +272,12 @@ impl LowRapids {
 
     fn feed(&mut self, m: &Move) {
         let vertical = key(&m.from) == key(&m.to);
+        // A contour's moves start where the one before ended, which is
+        // recorded already (kept, or passed as now).
+        let recorded = self.feed_end == Some(m.from);
         match vertical || std::mem::take(&mut self.after_rapid) {
             true => self.cut.keep(&m.from),
+            false if recorded => {}
             false => self.cut.pass(&m.from),
         }
         match vertical {
