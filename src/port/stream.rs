@@ -305,7 +305,10 @@ impl<'a> State<'a> {
         }
         self.run.pending.push(b);
         if self.run.pending.len() > self.chunking.chunk {
-            let rest = self.run.pending.split_off(self.chunking.chunk);
+            // The block after the chunk starts the next one, in a vector
+            // that will not grow again.
+            let mut rest = Vec::with_capacity(self.chunking.chunk + 1);
+            rest.extend(self.run.pending.drain(self.chunking.chunk..));
             let chunk = std::mem::replace(&mut self.run.pending, rest);
             self.port_chunk(chunk)?;
         }
