@@ -199,3 +199,57 @@ fn arc_words_only_make_an_arc_in_arc_mode() {
     let (_, e) = check("fanuc", "tests/programs/fanuc/mistakes.nc");
     assert!(e.contains("E0207") && e.contains("mistakes.nc:13:"), "{e}");
 }
+
+/// Siemens CYCLE832 takes its machining type by name (`_ROUGH`,
+/// `_FINISH`, `_OFF`: names CYCLE832/CUST_832.SPF define on every
+/// control, Operate commissioning manual): they are the spec's
+/// `<constant>`s, not undefined variables (E0504), and the run sets the
+/// tolerance they go with.
+#[test]
+fn siemens_cycle832_machining_types_by_name() {
+    let f = "tests/programs/siemens840d/cycle832_types.mpf";
+    let (code, e) = check("siemens840d", f);
+    assert_eq!(code, Some(0), "{e}");
+    assert!(!e.contains("E0504"), "{e}");
+    let o = cncc(&["canon", "--dialect", "siemens840d", f]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("SET_NAIVECAM_TOLERANCE(0.1000)"),
+        "{}",
+        stdout(&o)
+    );
+    // A name the program does not define and the control does not either
+    // is still an error.
+    let dir = tempfile::tempdir().unwrap();
+    let bad = dir.path().join("rough.mpf");
+    std::fs::write(&bad, "G0 X0 Y0 Z5\nCYCLE832(0.01,_ROUGHLY,1)\nM30\n").unwrap();
+    let (code, e) = check("siemens840d", bad.to_str().unwrap());
+    assert_eq!(code, Some(1), "{e}");
+    assert!(e.contains("E0504") && e.contains("_ROUGHLY"), "{e}");
+}
+
+/// Klartext `F AUTO` (iTNC 530 output) is `FAUTO`, as `F MAX` is `FMAX`:
+/// the feed of the last TOOL CALL. cncc keeps it (W0005), not an error.
+#[test]
+fn heidenhain_f_auto_with_a_space() {
+    let (code, e) = check("heidenhain", "tests/programs/heidenhain/f_auto.h");
+    assert_eq!(code, Some(0), "{e}");
+    assert_eq!(e.matches("`FAUTO` is kept as text").count(), 2, "{e}");
+    assert!(!e.contains("E0122"), "{e}");
+}
+
+/// `G0 G90 G0 X0.` (a Fadal shop program): on Fanuc and Haas a code of a
+/// group written again replaces the first, so the same code twice counts
+/// once (W0598); rs274 refuses two codes of one group (E0201).
+#[test]
+fn the_same_code_twice_in_a_block() {
+    let f = "tests/programs/fanuc/repeated_code.nc";
+    for d in ["fanuc", "haas"] {
+        let (code, e) = check(d, f);
+        assert_eq!(code, Some(0), "{d}: {e}");
+        assert_eq!(e.matches("W0598").count(), 2, "{d}: {e}");
+    }
+    let (code, e) = check("linuxcnc", f);
+    assert_eq!(code, Some(1), "{e}");
+    assert!(e.contains("E0201"), "{e}");
+}

@@ -347,6 +347,9 @@ codes! {
     IniSettingNotApplied = "W0596", "ini-setting-not-applied", Warning,
         "an `[RS274NGC]` setting that cncc does not apply",
         "cncc applies these `[RS274NGC]` settings of a LinuxCNC INI file: SUBROUTINE_PATH, PARAMETER_FILE, INI_VARS, ORIENT_OFFSET, DISABLE_G92_PERSISTENCE and DISABLE_FANUC_STYLE_SUB. Remaps (REMAP), the FEATURES bits other than INI_VARS (4) and their switches (RETAIN_G43, OWORD_NARGS, NO_DOWNCASE_OWORD, OWORD_WARN_ONLY, HAL_PIN_VARS), ON_ABORT_COMMAND, RS274NGC_STARTUP_CODE, USER_M_PATH and the arc tolerances are not applied: the run goes on as if the setting were absent, so its calls may differ from LinuxCNC's where the setting matters.";
+    RepeatedCode = "W0598", "repeated-code", Warning,
+        "the same code written twice in one block",
+        "The block gives one G or M code twice (`G0 G90 G0 X0`). On this control a code of a group written again replaces the first, so the block reads as if the code were written once, and it runs so. Remove the second one: a control that refuses two codes of one group (LinuxCNC) stops on it.\n\nBad:\n    G0 G90 G0 X0 Y0\n\nGood:\n    G0 G90 X0 Y0";
     ArcWordsWithoutArc = "W0597", "arc-words-without-arc", Warning,
         "centre or radius words in a block that moves straight",
         "The block has no motion code of its own and the modal motion is G0 or G1, so it moves in a straight line: its centre (I J K) or radius (R) words belong to no arc and are not used. Usually a G2/G3 was lost, or the words were meant for something else (arguments written after an M98 subprogram call, which passes none; G65 passes them). The run goes on with the straight move; write the arc's G2/G3, or remove the words.\n\nBad:\n    G1 X10. Y0. F100.\n    X0. Y10. I-10. J0.\n\nGood:\n    G1 X10. Y0. F100.\n    G3 X0. Y10. I-10. J0.";

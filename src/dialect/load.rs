@@ -30,6 +30,7 @@ const ELEMENTS: &[&str] = &[
     "remove",
     "text",
     "post-template",
+    "constant",
 ];
 
 /// Reads one spec. `resolve_base` finds the (already loaded) spec that
@@ -206,6 +207,7 @@ fn read_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen, c
     match n.name.as_str() {
         "alias" | "extension" | "capability" | "command" => read_name_entry(cx, n, spec, seen),
         "post-template" => read_post_template(cx, n, spec, seen),
+        "constant" => read_constant(cx, n, spec, seen),
         "address" => {
             if let Some(a) = read_address(cx, n) {
                 seen.check(
@@ -319,6 +321,29 @@ fn read_name_entry(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Se
             read_command_attrs(cx, n, spec, &v);
         }
     }
+}
+
+/// `<constant name= value=/>`: a name the control defines for every
+/// program (Siemens `_ROUGH` for CYCLE832's machining type), read as its
+/// number.
+fn read_constant(cx: &mut Ctx, n: &Node, spec: &mut DialectSpec, seen: &mut Seen) {
+    cx.check_attrs(n, &["name", "value", "doc", "confidence"]);
+    let (Some(name), Some(value)) = (cx.req(n, "name"), cx.req(n, "value")) else {
+        return;
+    };
+    let name = name.value.trim().to_ascii_uppercase();
+    let help = "a decimal number, such as `3` or `0.5`";
+    let Some(v) = cx.parse(value, "a number", help, |s| Decimal::parse(s).ok()) else {
+        return;
+    };
+    seen.check(
+        cx,
+        format!("constant {name}"),
+        &format!("constant `{name}`"),
+        n.span,
+    );
+    spec.constants.retain(|(k, _)| *k != name);
+    spec.constants.push((name, v));
 }
 
 /// A command's `meaning="machine-coords"` and `run="pass"`.

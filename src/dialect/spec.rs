@@ -283,6 +283,12 @@ pub enum Capability {
     /// "abbreviations of macro words" [?: table as recalled from the 0i
     /// operator's manual; seen in 0i-MD shop programs]).
     MacroWordAbbreviations,
+    /// The same code written twice in one block counts once
+    /// (`G0 G90 G0 X0`): the control keeps the last code of a group
+    /// (Fanuc, Haas [?: the Fanuc operator's manuals' G code notes, as
+    /// recalled; not seen in a stored page]), elsewhere it is two codes of
+    /// one group (LinuxCNC rs274: "Two G codes used from same modal group").
+    RepeatedCodeOnce,
 }
 
 pub const CAPABILITIES: &[(&str, Capability)] = &[
@@ -390,6 +396,7 @@ pub const CAPABILITIES: &[(&str, Capability)] = &[
         "macro-word-abbreviations",
         Capability::MacroWordAbbreviations,
     ),
+    ("repeated-code-once", Capability::RepeatedCodeOnce),
 ];
 
 impl Capability {
@@ -660,6 +667,9 @@ pub struct DialectSpec {
     /// The neutral function a command has where the spec names one
     /// (`<command name="SUPA" meaning="machine-coords"/>`).
     pub command_meanings: Vec<(String, Meaning)>,
+    /// Names every program can read, with their values (`<constant>`:
+    /// Siemens `_ROUGH` = 3), upper case.
+    pub constants: Vec<(String, Decimal)>,
     /// Commands nothing the canonical run computes depends on
     /// (`run="pass"`: `FNORM`, `SOFT`).
     pub passing_commands: Vec<String>,
@@ -819,6 +829,7 @@ impl DialectSpec {
             functions: Vec::new(),
             commands: Vec::new(),
             command_meanings: Vec::new(),
+            constants: Vec::new(),
             passing_commands: Vec::new(),
             variables: Vec::new(),
             capabilities: Capabilities::default(),
@@ -893,6 +904,14 @@ impl DialectSpec {
     /// The neutral function of command `name`, where the spec gives one.
     pub fn command_meaning(&self, name: &str) -> Option<Meaning> {
         self.command_meanings
+            .iter()
+            .find(|(c, _)| c.eq_ignore_ascii_case(name))
+            .map(|x| x.1)
+    }
+
+    /// The value of the control's constant `name` (`<constant>`), if any.
+    pub fn constant(&self, name: &str) -> Option<Decimal> {
+        self.constants
             .iter()
             .find(|(c, _)| c.eq_ignore_ascii_case(name))
             .map(|x| x.1)

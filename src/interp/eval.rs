@@ -267,6 +267,9 @@ impl Interp<'_, '_> {
             }
             Var::User(name, _) => match self.params.user(name) {
                 Some(v) => Some(v),
+                None if self.spec.constant(name).is_some() => {
+                    self.spec.constant(name).map(|d| d.to_f64())
+                }
                 None if self.from_outside => return Err(self.from_outside_at(span, name)),
                 None => {
                     return Err(self.error_at(

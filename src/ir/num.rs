@@ -291,12 +291,32 @@ mod tests {
                 _ => format!("{sign}{}.{:0w$}", m / p, m % p, w = scale as usize),
             }
         };
-        let mantissas = [0, 1, -1, 7, 10, -120, 123456, -9_999_999, i64::MAX, i64::MIN + 1, i64::MIN];
+        let mantissas = [
+            0,
+            1,
+            -1,
+            7,
+            10,
+            -120,
+            123456,
+            -9_999_999,
+            i64::MAX,
+            i64::MIN + 1,
+            i64::MIN,
+        ];
         for &mantissa in &mantissas {
             for scale in 0..=MAX_SCALE {
                 for (min, point) in [(0, false), (0, true), (3, false), (4, true)] {
-                    let d = Decimal { mantissa, scale, point: false };
-                    assert_eq!(d.format(min, point), by_division(d, min, point), "{mantissa} {scale}");
+                    let d = Decimal {
+                        mantissa,
+                        scale,
+                        point: false,
+                    };
+                    assert_eq!(
+                        d.format(min, point),
+                        by_division(d, min, point),
+                        "{mantissa} {scale}"
+                    );
                 }
             }
         }

@@ -161,6 +161,38 @@ fn unknown(letter: char, code: Decimal, span: Span, spec: &DialectSpec) -> Diagn
     }
 }
 
+/// Drops a code written again in its block where the control counts it
+/// once ([`Capability::RepeatedCodeOnce`]), with a W0598 note.
+pub(super) fn drop_repeats(
+    codes: &mut Vec<CodeWord<'_>>,
+    spec: &DialectSpec,
+    diags: &mut Vec<Diagnostic>,
+) {
+    if !spec.has(Capability::RepeatedCodeOnce) {
+        return;
+    }
+    let mut i = 0;
+    while i < codes.len() {
+        let again = |c: &CodeWord<'_>| {
+            c.letter != '\0' && c.letter == codes[i].letter && c.code == codes[i].code
+        };
+        let Some(first) = codes[..i].iter().find(|c| again(c)) else {
+            i += 1;
+            continue;
+        };
+        diags.push(
+            Diagnostic::new(
+                Code::RepeatedCode,
+                format!("`{}` is written twice in this block", first.name()),
+            )
+            .primary(codes[i].span, "written again")
+            .secondary(first.span, "first written here")
+            .help("remove the second one: the control counts it once, but a control that refuses two codes of one group stops on it"),
+        );
+        codes.remove(i);
+    }
+}
+
 /// Reports two motion codes, or two codes of one modal group, in a block.
 pub(super) fn check_groups(
     codes: &[CodeWord<'_>],

@@ -161,6 +161,7 @@ impl<'s> Lowering<'s> {
             self.words.push(w, ctx.diags, &mut self.repeated);
         }
         s.plain.clear();
+        codes::drop_repeats(&mut s.codes, spec, ctx.diags);
         codes::check_groups(&s.codes, spec, ctx.diags);
         codes::drop_overridden_cancels(&mut s.codes, ctx.diags);
         for cw in &s.codes {

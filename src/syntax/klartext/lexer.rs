@@ -6,7 +6,7 @@
 //! and `IF`/`GOTO`/`LBL` inside `FN`) become keywords; `Q12`, `QL3`, `QR5`
 //! written together become one parameter token, and a parameter glued to
 //! an address (`RQ1832`, `FQ1820`) is split from it. `F MAX` written
-//! with a space is the one word `FMAX`.
+//! with a space is the one word `FMAX` (and `F AUTO` `FAUTO`).
 
 use super::token::{Kw, Tok};
 use crate::ir::{Decimal, QBank};
@@ -165,12 +165,13 @@ pub fn classify(toks: Vec<Spanned3>) -> Vec<Spanned3> {
             Tok::Name(n) => keyword_at(&out, &n).map(Tok::Kw).unwrap_or(Tok::Name(n)),
             t => t,
         };
-        // `F MAX` (with a space, as hyperMILL writes it) is `FMAX`.
+        // `F MAX` (with a space, as hyperMILL writes it) is `FMAX`, and
+        // `F AUTO` (iTNC 530 output) is `FAUTO`.
         if let (Tok::Name(n), Some((_, Tok::Name(m), e2))) = (&t, it.peek()) {
-            if n == "F" && m == "MAX" {
-                let e2 = *e2;
+            if n == "F" && (m == "MAX" || m == "AUTO") {
+                let (e2, joined) = (*e2, format!("F{m}"));
                 it.next();
-                out.push((s, Tok::Name("FMAX".into()), e2));
+                out.push((s, Tok::Name(joined), e2));
                 continue;
             }
         }

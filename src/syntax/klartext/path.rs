@@ -10,7 +10,7 @@
 
 use super::build::{Ctx, Signed, WordNode};
 use super::token::Kw;
-use crate::diag::Code;
+use crate::diag::{Code, Diagnostic};
 use crate::ir::{
     ApproachKind, ArcDir, Axes, CompSide, Coord, CornerKind, CycleRunKind, DimMode, ExprKind,
     Motion, MotionKind, SpindleState, StmtKind, Value,
@@ -161,14 +161,17 @@ fn word(ctx: &mut Ctx<'_>, w: &WordNode, n: &str, s: &mut Said, radius_ok: bool)
         ("R0", _) => s.items.push(ctx.stmt(comp(CompSide::Off), l, r)),
         ("F", Some(v)) => s.items.push(ctx.stmt(StmtKind::Feed(v), l, r)),
         ("FMAX", None) => s.rapid = true,
-        ("FAUTO", None) => s.items.push(ctx.stmt(
-            StmtKind::Raw {
-                dialect: ctx.spec.id.clone(),
-                text: "FAUTO".into(),
-            },
-            l,
-            r,
-        )),
+        ("FAUTO", None) => {
+            fauto_kept(ctx, l, r);
+            s.items.push(ctx.stmt(
+                StmtKind::Raw {
+                    dialect: ctx.spec.id.clone(),
+                    text: "FAUTO".into(),
+                },
+                l,
+                r,
+            ));
+        }
         ("M", Some(v)) => match v.number().and_then(|d| d.as_int()) {
             Some(99) => s
                 .items
@@ -351,4 +354,14 @@ pub fn chamfer(
     };
     out.insert(0, ctx.stmt(kind, l, r));
     out
+}
+
+/// W0005 for `FAUTO` (`F AUTO`): the feed of the last TOOL CALL, which
+/// cncc does not run yet; the run keeps the feed in force.
+fn fauto_kept(ctx: &mut Ctx<'_>, l: usize, r: usize) {
+    ctx.diags.push(
+        Diagnostic::new(Code::KeptAsText, "`FAUTO` is kept as text")
+            .primary(ctx.span(l, r), "the TOOL CALL's feed: not run, the feed in force is used")
+            .help("FAUTO moves at the feed of the last TOOL CALL; cncc keeps it for Heidenhain but runs the block at the feed in force, so the run's times and the proof of a port may differ: write the TOOL CALL's F value instead"),
+    );
 }
