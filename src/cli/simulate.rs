@@ -87,7 +87,7 @@ fn finish_survey(
     ctx: &mut Context,
     path: &Path,
     dialect: Option<&str>,
-    id: crate::source::FileId,
+    id: crate::span::FileId,
     mut diags: Vec<Diagnostic>,
     tools: BTreeSet<i64>,
     feed_box: Option<[P3; 2]>,

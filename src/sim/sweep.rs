@@ -278,6 +278,7 @@ impl Segment {
 
     /// The lowest point of the tool's surface over `p`, if the tool
     /// comes within `reach` of it.
+    #[inline]
     fn surface(&self, c: &Cutter, reach: f64, p: Vector2<f64>) -> Option<f64> {
         let w = p - self.a.xy();
         let r2 = reach * reach;
@@ -328,6 +329,7 @@ impl Segment {
     /// else the ball at the nearer end when `p` is under it. None leaves
     /// it to the general path (the line passes further than `r`, or `p`
     /// is beyond the end ball).
+    #[inline]
     fn ball_surface(&self, r: f64, w: Vector2<f64>) -> Option<f64> {
         let k = w.dot(&self.d2);
         let l3 = self.l2 + self.dz * self.dz;
