@@ -10,7 +10,8 @@
 #   SECTIONS="check canon memory"   which parts to run; "simulate" (not run
 #                      by default, minutes): issue 19's material benchmark,
 #                      the LinuxCNC program at LINES lines cut on a 0.1 mm
-#                      grid over a 200 x 200 mm stock, one run
+#                      grid over a 200 x 200 mm stock, one run (--stock and
+#                      --resolution given: simulate runs the program once)
 #   MEM_LIMIT_MB=4096  address-space limit of each memory run (ulimit -v);
 #                      a command that needs more dies and is flagged OVER
 #   TIMEOUT=300        seconds before a memory run is killed (TIMEOUT)

@@ -55,29 +55,49 @@ pub(crate) fn survey(
     dialect: Option<&str>,
     options: &Options,
 ) -> Result<Survey, Failure> {
-    let head = crate::cli::check::read_head(path)?;
     let mut tools = BTreeSet::new();
     let mut feed_box: Option<[P3; 2]> = None;
-    let (id, mut diags) = stream_events(ctx, path, dialect, options, true, |e| {
-        let Event::Move(m) = e else { return };
-        if !m.is_feed() {
-            return;
-        }
-        tools.insert(m.tool);
-        for p in [m.from, m.to] {
-            let b = feed_box.get_or_insert([p, p]);
-            for k in 0..3 {
-                b[0][k] = b[0][k].min(p[k]);
-                b[1][k] = b[1][k].max(p[k]);
-            }
-        }
+    let (id, diags) = stream_events(ctx, path, dialect, options, true, |e| {
+        note_feed(&mut tools, &mut feed_box, e)
     })?;
+    let s = finish_survey(ctx, path, dialect, id, diags, tools, feed_box)?;
+    keep_lines_at(ctx, path, id, &s.diags, &[])?;
+    Ok(s)
+}
+
+/// Notes the tool and the ends of a feed move.
+fn note_feed(tools: &mut BTreeSet<i64>, feed_box: &mut Option<[P3; 2]>, e: &Event) {
+    let Event::Move(m) = e else { return };
+    if !m.is_feed() {
+        return;
+    }
+    tools.insert(m.tool);
+    for p in [m.from, m.to] {
+        let b = feed_box.get_or_insert([p, p]);
+        for k in 0..3 {
+            b[0][k] = b[0][k].min(p[k]);
+            b[1][k] = b[1][k].max(p[k]);
+        }
+    }
+}
+
+/// A survey from what a pass over file `id` gathered, with the
+/// program's own blank read.
+fn finish_survey(
+    ctx: &mut Context,
+    path: &Path,
+    dialect: Option<&str>,
+    id: crate::span::FileId,
+    mut diags: Vec<Diagnostic>,
+    tools: BTreeSet<i64>,
+    feed_box: Option<[P3; 2]>,
+) -> Result<Survey, Failure> {
+    let head = crate::cli::check::read_head(path)?;
     let (spec, _) = ctx.spec_for(dialect, path, &head)?;
     let file =
         std::fs::File::open(path).map_err(|e| Failure(format!("{}: {e}", path.display())))?;
     let (blank, d) = Stock::from_program(file, id, &spec);
     diags.extend(d);
-    keep_lines_at(ctx, path, id, &diags, &[])?;
     Ok(Survey {
         diags,
         tools,
@@ -85,6 +105,28 @@ pub(crate) fn survey(
         blank,
         head,
     })
+}
+
+/// One pass that both surveys and cuts, when the grid is known before
+/// the run (`--stock` and `--resolution` given): the survey's
+/// diagnostics come after the cut, so a program with errors is cut for
+/// nothing, but a good one is run once instead of twice.
+fn survey_and_cut(
+    ctx: &mut Context,
+    path: &Path,
+    dialect: Option<&str>,
+    options: &Options,
+    mut sim: Simulation,
+) -> Result<(Survey, Simulation), Failure> {
+    let mut tools = BTreeSet::new();
+    let mut feed_box: Option<[P3; 2]> = None;
+    let (id, diags) = stream_events(ctx, path, dialect, options, true, |e| {
+        note_feed(&mut tools, &mut feed_box, e);
+        sim.push(e);
+    })?;
+    let s = finish_survey(ctx, path, dialect, id, diags, tools, feed_box)?;
+    keep_lines_at(ctx, path, id, &s.diags, &kept_spans(&sim))?;
+    Ok((s, sim))
 }
 
 /// The second pass: the program cuts `field`; the spans of rapid hits
@@ -97,12 +139,17 @@ pub(crate) fn cut(
     mut sim: Simulation,
 ) -> Result<Simulation, Failure> {
     let (id, _) = stream_events(ctx, path, dialect, options, false, |e| sim.push(e))?;
+    keep_lines_at(ctx, path, id, &[], &kept_spans(&sim))?;
+    Ok(sim)
+}
+
+/// The spans a simulation's report shows.
+fn kept_spans(sim: &Simulation) -> Vec<crate::span::Span> {
     let mut spans: Vec<_> = sim.rapid_hits.iter().map(|h| h.span).collect();
     spans.extend(sim.plunges.iter().map(|p| p.span));
     spans.extend(sim.probe_stopped.map(|(s, _)| s));
     spans.extend(sim.watch.and_then(|w| w.last).map(|(s, _)| s));
-    keep_lines_at(ctx, path, id, &[], &spans)?;
-    Ok(sim)
+    spans
 }
 
 /// The stock to cut and where it came from.
@@ -156,22 +203,53 @@ pub fn run(ctx: &mut Context, mut a: SimulateArgs<'_>) -> Result<i32, Failure> {
     let head = crate::cli::check::read_head(a.file)?;
     let (spec, _) = ctx.spec_for(a.dialect, a.file, &head)?;
     a.options = crate::cli::check::program_tools(&a.options, &head, &spec);
-    let survey = survey(ctx, a.file, a.dialect, &a.options)?;
+    let (survey, sim, from, table) = match (a.stock, a.resolution) {
+        (Some(given), Some(cell)) => {
+            // The grid is known: one pass surveys and cuts.
+            let stock = given.parse::<Stock>().map_err(Failure)?;
+            let table = crate::sim::tool_defs::with_tool_defs(
+                &a.options.tool_table,
+                &head,
+                &spec,
+                machine_mm(&a.options),
+            );
+            let cutters = Cutters::from_table(&table, &head, machine_mm(&a.options), false);
+            let field = HeightField::new(&stock, cell).map_err(Failure)?;
+            let mut sim = Simulation::new(field, cutters);
+            sim.check_rapids = true;
+            let (survey, sim) = survey_and_cut(ctx, a.file, a.dialect, &a.options, sim)?;
+            (survey, sim, StockFrom::Option, table)
+        }
+        _ => {
+            let survey = survey(ctx, a.file, a.dialect, &a.options)?;
+            if survey.diags.iter().any(Diagnostic::is_error) {
+                diags.extend(survey.diags);
+                ctx.print(&diags, a.format);
+                return Ok(EXIT_INPUT_ERRORS);
+            }
+            let mm = machine_mm(&a.options);
+            let table = crate::sim::tool_defs::with_tool_defs(
+                &a.options.tool_table,
+                &survey.head,
+                &spec,
+                mm,
+            );
+            let cutters = Cutters::from_table(&table, &survey.head, mm, false);
+            let (stock, from) = stock_for(a.stock, &survey, &cutters)?;
+            let cell = cell_for(a.resolution, &stock, &survey.tools, &cutters);
+            let field = HeightField::new(&stock, cell).map_err(Failure)?;
+            let mut sim = Simulation::new(field, cutters);
+            sim.check_rapids = true;
+            let sim = cut(ctx, a.file, a.dialect, &a.options, sim)?;
+            (survey, sim, from, table)
+        }
+    };
     diags.extend(survey.diags.iter().cloned());
     if diags.iter().any(Diagnostic::is_error) {
         ctx.print(&diags, a.format);
         return Ok(EXIT_INPUT_ERRORS);
     }
-    let mm = machine_mm(&a.options);
-    let table =
-        &crate::sim::tool_defs::with_tool_defs(&a.options.tool_table, &survey.head, &spec, mm);
-    let cutters = Cutters::from_table(table, &survey.head, machine_mm(&a.options), false);
-    let (stock, from) = stock_for(a.stock, &survey, &cutters)?;
-    let cell = cell_for(a.resolution, &stock, &survey.tools, &cutters);
-    let field = HeightField::new(&stock, cell).map_err(Failure)?;
-    let mut sim = Simulation::new(field, cutters);
-    sim.check_rapids = true;
-    let sim = cut(ctx, a.file, a.dialect, &a.options, sim)?;
+    let table = &table;
     diags.extend(safety_diagnostics(&sim, from));
     ctx.print(&diags, a.format);
     let invented = table.invented

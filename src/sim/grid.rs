@@ -5,11 +5,15 @@
 //! uncut field holds exactly the stock's volume.
 //!
 //! A height field holds what a 3-axis tool pointing down can cut: no
-//! undercuts. Memory is 4 bytes a cell, whatever the program's length.
+//! undercuts. Memory is 4 bytes a cell (and 4 bytes per tile of
+//! [`TILE`] x [`TILE`] cells for [`HeightField::peaks`]), whatever the
+//! program's length.
 
 use crate::toolpath::{Stock, P3};
 use std::ops::Range;
 
+/// Cells along each side of a tile (see [`HeightField::peaks`]).
+pub const TILE: usize = 8;
 /// Most cells a field may have (100 MB).
 pub const MAX_CELLS: usize = 25_000_000;
 /// Cells across the longest side of the stock at most / at least, when
@@ -20,7 +24,7 @@ const LEAST_ACROSS: f64 = 200.0;
 /// the tools.
 const PER_DIAMETER: f64 = 100.0;
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct HeightField {
     /// The stock's lowest corner.
     pub origin: P3,
@@ -33,6 +37,31 @@ pub struct HeightField {
     pub bottom: f64,
     /// Heights, row by row (`j * nx + i`).
     pub z: Vec<f32>,
+    /// For each tile of [`TILE`] x [`TILE`] cells (row by row, `tj *
+    /// tiles_x + ti`), a height no cell of it stands above: the sweep
+    /// passes over a tile whose material the tool cannot reach. Lowering
+    /// a cell keeps it true; whoever raises a cell must raise its tile's
+    /// peak too.
+    pub peaks: Vec<f32>,
+    /// Tiles across (X).
+    pub tiles_x: usize,
+}
+
+/// Two fields are equal when they cover the same cells with the same
+/// heights (the tiles' peaks are bounds, not part of the part).
+impl PartialEq for HeightField {
+    fn eq(&self, o: &HeightField) -> bool {
+        (
+            self.origin,
+            self.nx,
+            self.ny,
+            self.dx,
+            self.dy,
+            self.top,
+            self.bottom,
+        ) == (o.origin, o.nx, o.ny, o.dx, o.dy, o.top, o.bottom)
+            && self.z == o.z
+    }
 }
 
 impl HeightField {
@@ -50,7 +79,10 @@ impl HeightField {
             ));
         }
         let (nx, ny) = (nx as usize, ny as usize);
+        let tiles_x = nx.div_ceil(TILE);
         Ok(HeightField {
+            peaks: vec![stock.top() as f32; tiles_x * ny.div_ceil(TILE)],
+            tiles_x,
             origin: stock.corner,
             nx,
             ny,
@@ -73,6 +105,17 @@ impl HeightField {
             .filter(|d| *d > 0.0)
             .map_or(coarsest, |d| d / PER_DIAMETER);
         wanted.clamp(finest, coarsest.max(finest))
+    }
+
+    /// Sets the peak of tile (`ti`, `tj`) to its highest cell.
+    pub fn refresh_peak(&mut self, ti: usize, tj: usize) {
+        let cols = ti * TILE..((ti + 1) * TILE).min(self.nx);
+        let mut peak = f32::NEG_INFINITY;
+        for j in tj * TILE..((tj + 1) * TILE).min(self.ny) {
+            let row = &self.z[j * self.nx + cols.start..j * self.nx + cols.end];
+            peak = row.iter().fold(peak, |m, h| m.max(*h));
+        }
+        self.peaks[tj * self.tiles_x + ti] = peak;
     }
 
     pub fn cell_area(&self) -> f64 {

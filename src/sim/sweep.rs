@@ -15,12 +15,9 @@
 //! [`super::Simulation`]).
 
 use super::cutter::{Cutter, Shape};
-use super::grid::HeightField;
+use super::grid::{HeightField, TILE};
 use nalgebra::{Vector2, Vector3};
 
-/// Longest piece a segment is swept in (in tool radii), so that the box
-/// of cells visited stays close to the tool's path.
-const PIECE_RADII: f64 = 2.0;
 /// Bisection steps for a ramp with a shaped tool.
 const STEPS: usize = 48;
 
@@ -84,41 +81,129 @@ impl Sweep<'_> {
         self.visit_indexed(field, |_, h, s| f(h, s))
     }
 
-    /// Calls `f(index, height, surface)` for every cell in reach whose
-    /// height is above the tool's lowest tip.
+    /// Calls `f(index, height, surface)` for every cell in reach that the
+    /// tool's surface may go below (see the module doc: whole tiles and
+    /// cells the bound rules out are passed over; `f` decides).
     fn visit_indexed(&self, field: &mut HeightField, mut f: impl FnMut(usize, &mut f32, f64)) {
-        let len = (self.b.xy() - self.a.xy()).norm();
-        let piece = (PIECE_RADII * self.reach).max(8.0 * field.dx.max(field.dy));
-        let n = ((len / piece).ceil() as usize).clamp(1, 1 << 20);
-        for k in 0..n {
-            let a = self.a + (self.b - self.a) * (k as f64 / n as f64);
-            let b = self.a + (self.b - self.a) * ((k + 1) as f64 / n as f64);
-            self.visit_piece(field, a, b, &mut f);
+        let r = self.reach;
+        let (a, b) = (self.a, self.b);
+        let rows = field.rows(a.y.min(b.y) - r, a.y.max(b.y) + r);
+        if rows.is_empty() || field.columns(a.x.min(b.x) - r, a.x.max(b.x) + r).is_empty() {
+            return;
+        }
+        let seg = Segment::new(a, b);
+        let bound = Bound::new(self.cutter, a.z.min(b.z));
+        // Half the diagonal of a tile's cell centres.
+        let half = (TILE - 1) as f64 / 2.0;
+        let tile_half = (half * field.dx).hypot(half * field.dy);
+        let mut spans = [(0, 0); TILE];
+        for tj in rows.start / TILE..rows.end.div_ceil(TILE) {
+            let j0 = tj * TILE;
+            let (mut lo, mut hi) = (usize::MAX, 0);
+            for (k, span) in spans.iter_mut().enumerate() {
+                let j = j0 + k;
+                *span = (0, 0);
+                if !rows.contains(&j) {
+                    continue;
+                }
+                let y = field.origin[1] + (j as f64 + 0.5) * field.dy;
+                if let Some((x0, x1)) = seg.row(y, r) {
+                    let c = field.columns(x0, x1);
+                    if c.start < c.end {
+                        *span = (c.start, c.end);
+                        lo = lo.min(c.start);
+                        hi = hi.max(c.end);
+                    }
+                }
+            }
+            if lo >= hi {
+                continue;
+            }
+            for ti in lo / TILE..hi.div_ceil(TILE) {
+                let peak = field.peaks[tj * field.tiles_x + ti] as f64;
+                if peak <= bound.zmin {
+                    continue;
+                }
+                let (cx, cy) = field.centre(ti * TILE, j0);
+                let centre = Vector2::new(cx + half * field.dx, cy + half * field.dy);
+                let e = seg.distance2(centre).sqrt() - tile_half;
+                if e > r + SLACK || (e > 0.0 && !bound.may_reach(peak, e * e)) {
+                    continue;
+                }
+                let cols = ti * TILE..(ti + 1) * TILE;
+                let mut lowered = false;
+                for (k, span) in spans.iter().enumerate() {
+                    let j = j0 + k;
+                    let y = field.origin[1] + (j as f64 + 0.5) * field.dy;
+                    for i in span.0.max(cols.start)..span.1.min(cols.end) {
+                        let idx = j * field.nx + i;
+                        let h = field.z[idx];
+                        if h as f64 <= bound.zmin {
+                            continue;
+                        }
+                        let p = Vector2::new(field.origin[0] + (i as f64 + 0.5) * field.dx, y);
+                        let e2 = seg.distance2(p);
+                        if e2 > r * r || !bound.may_reach(h as f64, e2) {
+                            continue;
+                        }
+                        if let Some(s) = seg.surface(self.cutter, r, p) {
+                            f(idx, &mut field.z[idx], s);
+                            lowered |= field.z[idx] < h;
+                        }
+                    }
+                }
+                if lowered {
+                    field.refresh_peak(ti, tj);
+                }
+            }
+        }
+    }
+}
+
+/// How far (mm) beyond the reach a row's span and a tile's distance are
+/// taken, so that rounding never leaves out a cell the exact test takes.
+const SLACK: f64 = 1e-9;
+
+/// The lower bound of a move's swept surface: over a point at distance
+/// `e` from the path (in XY) the tool's surface is no lower than
+/// `zmin + profile(e)`, `zmin` the lowest tip (the profile rises).
+struct Bound {
+    zmin: f64,
+    radius: f64,
+    shape: Shape,
+}
+
+impl Bound {
+    fn new(c: &Cutter, zmin: f64) -> Bound {
+        Bound {
+            zmin,
+            radius: c.radius,
+            shape: c.shape,
         }
     }
 
-    fn visit_piece(
-        &self,
-        field: &mut HeightField,
-        a: Vector3<f64>,
-        b: Vector3<f64>,
-        f: &mut impl FnMut(usize, &mut f32, f64),
-    ) {
-        let r = self.reach;
-        let cols = field.columns(a.x.min(b.x) - r, a.x.max(b.x) + r);
-        let rows = field.rows(a.y.min(b.y) - r, a.y.max(b.y) + r);
-        let tip = a.z.min(b.z);
-        let seg = Segment::new(a, b);
-        for j in rows {
-            for i in cols.clone() {
-                let idx = j * field.nx + i;
-                if field.z[idx] as f64 <= tip {
-                    continue;
+    /// May the tool's surface at distance `sqrt(e2)` from the path go
+    /// below material standing at `h`? False when `zmin + profile(e) >=
+    /// h`, decided without a root for a ball: `profile(e) >= g` is `e >=`
+    /// the profile's inverse at `g` (the profile clamps at the radius).
+    fn may_reach(&self, h: f64, e2: f64) -> bool {
+        let g = h - self.zmin;
+        if g <= 0.0 {
+            return false;
+        }
+        let r = self.radius;
+        match self.shape {
+            Shape::Flat => true,
+            Shape::Ball => g > r || e2 < g * (2.0 * r - g),
+            Shape::Bull { corner: c } => {
+                g > c || {
+                    let rho = (r - c) + (g * (2.0 * c - g)).max(0.0).sqrt();
+                    e2 < rho * rho
                 }
-                let (x, y) = field.centre(i, j);
-                if let Some(s) = seg.surface(self.cutter, r, Vector2::new(x, y)) {
-                    f(idx, &mut field.z[idx], s);
-                }
+            }
+            Shape::Cone { angle } => {
+                let rho = g * (angle.to_radians() / 2.0).tan();
+                rho > r || e2 < rho * rho
             }
         }
     }
@@ -130,21 +215,70 @@ struct Segment {
     d2: Vector2<f64>,
     l2: f64,
     dz: f64,
+    /// `1 / l2` (0 for a move along Z) and `1 / (l2 + dz²)`.
+    inv_l2: f64,
+    inv_l3: f64,
 }
 
 impl Segment {
     fn new(a: Vector3<f64>, b: Vector3<f64>) -> Segment {
         let d2 = b.xy() - a.xy();
+        let l2 = d2.norm_squared();
+        let dz = b.z - a.z;
+        let l3 = l2 + dz * dz;
         Segment {
             a,
             d2,
-            l2: d2.norm_squared(),
-            dz: b.z - a.z,
+            l2,
+            dz,
+            inv_l2: if l2 < 1e-18 { 0.0 } else { 1.0 / l2 },
+            inv_l3: if l3 < 1e-18 { 0.0 } else { 1.0 / l3 },
         }
+    }
+
+    /// The squared distance in XY from `p` to the segment.
+    fn distance2(&self, p: Vector2<f64>) -> f64 {
+        let w = p - self.a.xy();
+        let t = (w.dot(&self.d2) * self.inv_l2).clamp(0.0, 1.0);
+        (w - self.d2 * t).norm_squared()
+    }
+
+    /// The X range (widened by [`SLACK`]) of the points of row `y` within
+    /// `r` of the segment: the hull of the two end discs' chords and the
+    /// band between them. None when the row passes further away.
+    fn row(&self, y: f64, r: f64) -> Option<(f64, f64)> {
+        let (a, b) = (self.a.xy(), self.a.xy() + self.d2);
+        let mut span: Option<(f64, f64)> = None;
+        let mut add = |lo: f64, hi: f64| {
+            if lo <= hi {
+                let s = span.get_or_insert((lo, hi));
+                *s = (s.0.min(lo), s.1.max(hi));
+            }
+        };
+        for c in [a, b] {
+            let dy = y - c.y;
+            if dy.abs() <= r {
+                let w = (r * r - dy * dy).max(0.0).sqrt();
+                add(c.x - w, c.x + w);
+            }
+        }
+        if self.l2 >= 1e-18 {
+            let len = self.l2.sqrt();
+            let u = self.d2 / len;
+            let n = Vector2::new(-u.y, u.x);
+            // Across the path within r, along it within the segment.
+            let across = slab(n.x, n.y * (y - a.y) - n.x * a.x, -r, r);
+            let along = slab(u.x, u.y * (y - a.y) - u.x * a.x, 0.0, len);
+            if let (Some(p), Some(q)) = (across, along) {
+                add(p.0.max(q.0), p.1.min(q.1));
+            }
+        }
+        span.map(|(lo, hi)| (lo - SLACK, hi + SLACK))
     }
 
     /// The lowest point of the tool's surface over `p`, if the tool
     /// comes within `reach` of it.
+    #[inline]
     fn surface(&self, c: &Cutter, reach: f64, p: Vector2<f64>) -> Option<f64> {
         let w = p - self.a.xy();
         let r2 = reach * reach;
@@ -161,6 +295,11 @@ impl Segment {
             let t = t0.clamp(0.0, 1.0);
             let rho2 = (w - self.d2 * t).norm_squared();
             return (rho2 <= r2).then(|| self.a.z + c.profile(rho2.sqrt()));
+        }
+        if matches!(c.shape, Shape::Ball) && reach >= c.radius {
+            if let Some(z) = self.ball_surface(c.radius, w) {
+                return Some(z);
+            }
         }
         let half = ((r2 - e2) / self.l2).sqrt();
         let (lo, hi) = ((t0 - half).max(0.0), (t0 + half).min(1.0));
@@ -181,6 +320,39 @@ impl Segment {
         };
         let rho = (e2 + self.l2 * (t - t0).powi(2)).sqrt();
         Some(self.a.z + t * self.dz + c.profile(rho))
+    }
+
+    /// A ball of radius `r` (reaching at least `r`) over `p` (`w` = p -
+    /// a, in XY), in closed form: the lowest point of the cylinder round
+    /// the line of the ball's centre (see [`Segment::ball_lowest`], the
+    /// root taken in its stable form) when its foot lies on the segment,
+    /// else the ball at the nearer end when `p` is under it. None leaves
+    /// it to the general path (the line passes further than `r`, or `p`
+    /// is beyond the end ball).
+    #[inline]
+    fn ball_surface(&self, r: f64, w: Vector2<f64>) -> Option<f64> {
+        let k = w.dot(&self.d2);
+        let l3 = self.l2 + self.dz * self.dz;
+        let c = l3 * w.norm_squared() - k * k - r * r * l3;
+        let b = k * self.dz;
+        let disc = b * b - self.l2 * c;
+        if !(disc >= 0.0 && disc.is_finite()) {
+            return None;
+        }
+        let root = disc.sqrt();
+        // s = (b - root) / l2, without the cancellation when b > 0.
+        let s = if b > 0.0 {
+            c / (b + root)
+        } else {
+            (b - root) * self.inv_l2
+        };
+        let t = (k + s * self.dz) * self.inv_l3;
+        if (0.0..=1.0).contains(&t) {
+            return Some(self.a.z + r + s);
+        }
+        let end = t.clamp(0.0, 1.0);
+        let q2 = (w - self.d2 * end).norm_squared();
+        (q2 <= r * r).then(|| self.a.z + end * self.dz + r - (r * r - q2).sqrt())
     }
 
     /// For a ball of radius `r`, where along the whole line the ball's
@@ -230,6 +402,16 @@ impl Segment {
         }
         0.5 * (l + h)
     }
+}
+
+/// The `x` with `lo <= k x + off <= hi` (all of them when `k` is 0 and
+/// `off` is in range: an unbounded interval).
+fn slab(k: f64, off: f64, lo: f64, hi: f64) -> Option<(f64, f64)> {
+    if k.abs() < 1e-12 {
+        return (lo - SLACK <= off && off <= hi + SLACK).then_some((f64::MIN, f64::MAX));
+    }
+    let (p, q) = ((lo - off) / k, (hi - off) / k);
+    Some((p.min(q), p.max(q)))
 }
 
 #[cfg(test)]
@@ -333,6 +515,128 @@ mod tests {
                 assert!(
                     (closed - bisected).abs() < 1e-7,
                     "{a:?} {b:?} {p:?}: {closed} {bisected}"
+                );
+            }
+        }
+    }
+
+    /// Every cell by the exact surface, no tile, row or bound skipped.
+    fn brute_force(c: &Cutter, a: Vector3<f64>, b: Vector3<f64>, reach: f64, f: &mut HeightField) {
+        let seg = Segment::new(a, b);
+        for j in 0..f.ny {
+            for i in 0..f.nx {
+                let (x, y) = f.centre(i, j);
+                if let Some(s) = seg.surface(c, reach, Vector2::new(x, y)) {
+                    let h = &mut f.z[j * f.nx + i];
+                    let s = s.max(f.bottom);
+                    if s < *h as f64 {
+                        *h = s as f32;
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn skipping_tiles_rows_and_bounded_cells_cuts_what_every_cell_cuts() {
+        let s: Stock = "12x9x10-1-1-10".parse().unwrap();
+        let cutters = [
+            Cutter::flat(1.5),
+            Cutter {
+                radius: 1.2,
+                shape: Shape::Ball,
+            },
+            Cutter {
+                radius: 2.0,
+                shape: Shape::Bull { corner: 0.5 },
+            },
+            Cutter {
+                radius: 1.0,
+                shape: Shape::Cone { angle: 118.0 },
+            },
+            Cutter::flat(0.0),
+        ];
+        // A walk of short and long moves, ramps, plunges and climbs, so
+        // that later moves cross cells and tiles earlier ones cut.
+        let mut seed = 7u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut fast = HeightField::new(&s, 0.1).unwrap();
+        let mut slow = fast.clone();
+        let mut p = Vector3::new(2.0, 2.0, -1.0);
+        for k in 0..300 {
+            let c = &cutters[k / 60];
+            let q = if k % 7 == 3 {
+                Vector3::new(p.x, p.y, -4.0 * next())
+            } else {
+                let len = if k % 5 == 0 { 6.0 } else { 0.4 };
+                Vector3::new(
+                    (p.x + len * (next() - 0.5)).clamp(-2.0, 12.0),
+                    (p.y + len * (next() - 0.5)).clamp(-2.0, 9.0),
+                    (p.z + 0.6 * (next() - 0.55)).clamp(-6.0, 0.5),
+                )
+            };
+            let reach = c.radius.max(0.0707);
+            Sweep {
+                cutter: c,
+                a: p,
+                b: q,
+                reach,
+            }
+            .cut(&mut fast);
+            brute_force(c, p, q, reach, &mut slow);
+            p = q;
+        }
+        assert!(fast.removed() > 10.0, "{}", fast.removed());
+        let worst = fast
+            .z
+            .iter()
+            .zip(&slow.z)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0f32, f32::max);
+        assert_eq!(worst, 0.0);
+        // Each tile's peak still bounds its cells.
+        for (k, h) in fast.z.iter().enumerate() {
+            let (i, j) = (k % fast.nx, k / fast.nx);
+            assert!(*h <= fast.peaks[(j / TILE) * fast.tiles_x + i / TILE]);
+        }
+    }
+
+    #[test]
+    fn the_ball_fast_path_agrees_with_the_bisection() {
+        let ball = Cutter {
+            radius: 3.0,
+            shape: Shape::Ball,
+        };
+        let moves = [
+            ([0.0, 0.0, 0.0], [10.0, 4.0, -5.0]),
+            ([0.0, 0.0, -2.0], [1.0, -0.5, 3.0]),
+            ([5.0, 5.0, 0.0], [5.5, 5.0, -20.0]),
+            ([5.0, 5.0, 0.0], [5.0 + 1e-7, 5.0, -20.0]),
+            ([0.0, 0.0, 0.0], [0.3, 0.1, -0.01]),
+        ];
+        for (a, b) in moves {
+            let seg = Segment::new(Vector3::from(a), Vector3::from(b));
+            for k in 0..400 {
+                let p = Vector2::new(-4.0 + 0.037 * k as f64, -3.0 + 0.029 * k as f64);
+                let w = p - seg.a.xy();
+                let t0 = w.dot(&seg.d2) / seg.l2;
+                let e2 = (w - seg.d2 * t0).norm_squared();
+                let Some(fast) = seg.ball_surface(3.0, w) else {
+                    continue;
+                };
+                let half = ((9.0 - e2) / seg.l2).sqrt();
+                let (lo, hi) = ((t0 - half).max(0.0), (t0 + half).min(1.0));
+                let t = seg.lowest(&ball, e2, t0, lo, hi);
+                let rho = (e2 + seg.l2 * (t - t0).powi(2)).sqrt();
+                let bisected = seg.a.z + t * seg.dz + ball.profile(rho);
+                assert!(
+                    (fast - bisected).abs() < 1e-7,
+                    "{a:?} {b:?} {p:?}: {fast} {bisected}"
                 );
             }
         }
