@@ -28,8 +28,8 @@ fn port(src: &Path, from: &str, to: &str, out: &Path) -> String {
 #[test]
 fn arcs_in_zx_and_yz_go_to_the_tnc_and_back() {
     for (plane, arc) in [
-        ("G18", "G2 X20. Z-5. I5. K0."),
-        ("G19", "G3 Y20. Z-5. J5. K0."),
+        ("G18", "G2 X20. Z-5. I5. K2."),
+        ("G19", "G3 Y20. Z-5. J5. K2."),
     ] {
         let text = format!(
             "%\nO1000\nG21 G90 G17 G54\nT1 M6\nS1000 M3\nG0 X10. Y10. Z5.\nG1 Z-5. F100.\n{plane}\n{arc}\nG17\nG0 Z5.\nM30\n%\n"
