@@ -265,6 +265,9 @@ fn verify_port(
     }
     let (src_text, src_id, src_spec) = s.source;
     let opts = same_tool_sizes(s.run, src_spec, s.target);
+    // The tools a CAM header lists join the table, as `check` runs it.
+    let head = crate::cli::port_material::head_of(src_text);
+    let opts = crate::cli::check::program_tools(&opts, head, src_spec);
     let front = verify_text::scan(src_text, src_id, src_spec);
     let tolerance = verify::tolerance_for(s.target);
     let source = Side {
@@ -577,8 +580,14 @@ fn with_source_tools(
         return o;
     }
     if from.has(holds) && o.tool_table.invented {
-        // The source compensated by no size (see [`same_tool_sizes`]).
-        o.tool_table.tools.iter_mut().for_each(|t| t.diameter = 0.0);
+        // The source compensated by no size (see [`same_tool_sizes`]),
+        // but by the sizes its header comments give.
+        let given = &o.tool_table.from_program;
+        o.tool_table
+            .tools
+            .iter_mut()
+            .filter(|t| !given.contains(&t.number))
+            .for_each(|t| t.diameter = 0.0);
     }
     for (tool, span) in source {
         if *tool <= 0 || o.tool_table.get(*tool).is_some() {

@@ -170,7 +170,7 @@ impl Proof {
 }
 
 /// The program's first lines (where CAM tool lists stand).
-fn head_of(text: &str) -> &str {
+pub(crate) fn head_of(text: &str) -> &str {
     let mut end = text.len().min(1 << 16);
     while !text.is_char_boundary(end) {
         end -= 1;

@@ -330,6 +330,7 @@ pub struct CodeCommon {
     pub preferred: bool,
     pub run: crate::dialect::spec::AuxRun,
     pub shift: Option<crate::dialect::spec::ShiftDir>,
+    pub first_index: Option<u32>,
     pub doc: String,
 }
 
@@ -344,6 +345,7 @@ pub const CODE_ATTRS: &[&str] = &[
     "preferred",
     "run",
     "shift",
+    "first-index",
     "doc",
     "confidence",
 ];
@@ -417,7 +419,19 @@ pub fn read_code_common(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<C
             .map(Some),
         None => Some(None),
     };
+    let first_index = match n.attr("first-index") {
+        Some(a) => cx
+            .parse(
+                a,
+                "a work offset number",
+                "`first-index` of `work-offset.extended` is the work offset P1 selects, as in `7`",
+                |s| s.parse::<u32>().ok().filter(|n| *n > 0),
+            )
+            .map(Some),
+        None => Some(None),
+    };
     Some(CodeCommon {
+        first_index: first_index?,
         group: group?,
         meaning: meaning?,
         requires: requires?,
@@ -465,6 +479,7 @@ pub fn read_code(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Option<CodeDef>
         preferred: c.preferred,
         run: c.run,
         shift: c.shift,
+        first_index: c.first_index,
         doc: c.doc,
         span: n.span,
     })
@@ -513,6 +528,7 @@ pub fn read_code_range(cx: &mut Ctx, n: &Node, groups: &[GroupDef]) -> Vec<CodeD
             preferred: c.preferred,
             run: c.run,
             shift: c.shift,
+            first_index: c.first_index,
             doc: c.doc.clone(),
             span: n.span,
         })

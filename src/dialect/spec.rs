@@ -466,6 +466,9 @@ pub struct CodeDef {
     /// away from the wall at the oriented stop (Fanuc parameter 5101
     /// RD1/RD2, Haas setting 27). None: LinuxCNC's back boring (I J K).
     pub shift: Option<ShiftDir>,
+    /// For `work-offset.extended` (G54.1 P, G154 P): the work offset P1
+    /// selects (7: after G54..G59), the next P the next one.
+    pub first_index: Option<u32>,
     pub doc: String,
     /// Where it is defined in the spec file.
     pub span: Span,

@@ -27,6 +27,13 @@ pub fn exec(
             Ok(())
         }
         StmtKind::WorkOffset {
+            index,
+            extended: None,
+        } if (10..=99).contains(index) => {
+            numbered_offset(it, *index);
+            Ok(())
+        }
+        StmtKind::WorkOffset {
             extended: Some(p), ..
         } => {
             let p = it.value(p, exprs)?;
@@ -113,6 +120,23 @@ fn extended_offset(it: &mut Interp<'_, '_>, p: f64) -> Result<(), Stop> {
     emit_g92(it);
     it.out(Canon::SetXyRotation(0.0));
     Ok(())
+}
+
+/// Siemens G510..G599: a settable work offset past the nine slots
+/// LinuxCNC numbers. Its values are the machine's (`$P_UIFR[n]`, set by
+/// the operator), not known to the run: it runs as zero in the spare slot
+/// 0, as an extended offset runs with parameters never written, and is
+/// printed as `SET_G5X_OFFSET(n, ...)`.
+fn numbered_offset(it: &mut Interp<'_, '_>, index: u32) {
+    let old = it.state.placement();
+    it.state.g5x[0] = [0.0; 9];
+    it.state.g5x_rotation[0] = 0.0;
+    it.state.g5x_index = 0;
+    it.state.reframe(old);
+    let offset = g5x_pose(&it.state, 0);
+    it.out(Canon::SetG5xOffset { index, offset });
+    emit_g92(it);
+    it.out(Canon::SetXyRotation(0.0));
 }
 
 fn emit_g5x(it: &mut Interp<'_, '_>, index: u32) {

@@ -3,7 +3,10 @@
 //!
 //! - Fusion 360 / HSMWorks / Inventor CAM: `(T1 D=10. CR=0. - ZMIN=-5. - FLAT END MILL)`
 //!   (`TAPER=118DEG`, `TAPER=90DEG` may follow CR);
-//! - Mastercam: `(TOOL - 1 DIA. OFF. - 1 LEN. - 1 DIA. - 6.)`.
+//! - Mastercam: `(TOOL - 1 DIA. OFF. - 1 LEN. - 1 DIA. - 6.)`;
+//! - a tool named with no size, `(T1001 - FACEMILL 63)`, as `cncc port`
+//!   lists a tool called by name for a target whose tool table must hold
+//!   every tool: it joins a table that lacks it, with no size.
 //!
 //! Sizes are in the program's units where the comment stands. A tool
 //! table given with `--tool-table` wins for the tools it lists.
@@ -102,6 +105,26 @@ pub fn merge_header(table: &mut ToolTable, head: &str, machine: LengthUnit, spec
         table.tools.push(t);
         table.from_program.insert(h.number);
     }
+    for (number, name) in head.lines().flat_map(comments).filter_map(named) {
+        if number > 0 && table.get(number).is_none() {
+            table.tools.push(Tool::blank(number, name));
+            table.from_program.insert(number);
+        }
+    }
+}
+
+/// `T1001 - FACEMILL 63`: a tool named with no size.
+pub fn named(text: &str) -> Option<(i64, String)> {
+    let rest = text.trim().strip_prefix(['T', 't'])?;
+    let digits = rest.find(|c: char| !c.is_ascii_digit())?;
+    let number = rest[..digits].parse().ok()?;
+    let name = rest[digits..].strip_prefix(" - ")?.trim();
+    (!name.is_empty()).then(|| (number, name.to_string()))
+}
+
+/// The tool-list line [`named`] reads, for tool `number` called `name`.
+pub fn named_line(number: i64, name: &str) -> String {
+    format!("T{number} - {}", name.trim())
 }
 
 /// The comments of one line: `( ... )` parts and what follows `;`.
@@ -212,6 +235,27 @@ mod tests {
         let mut real = ToolTable::parse("T1 P1 D3.0 Z10 ;mine\n", crate::span::FileId(0)).0;
         merge_header(&mut real, head, LengthUnit::Mm, &fanuc());
         assert_eq!(real.get(1).unwrap().diameter, 3.0, "the shop's table wins");
+    }
+
+    #[test]
+    fn a_tool_named_with_no_size_joins_a_table_that_lacks_it() {
+        let head = "(T1001 - FACEMILL 63)\n(T2 - DRILL)\n(T1 D=0.5 CR=0. - ZMIN=-1. - END MILL)\n";
+        assert_eq!(
+            named(&named_line(1001, " FACEMILL 63")),
+            Some((1001, "FACEMILL 63".into()))
+        );
+        let mut t = ToolTable::builtin();
+        let before = t.get(2).unwrap().clone();
+        merge_header(&mut t, head, LengthUnit::Mm, &fanuc());
+        let new = t.get(1001).unwrap();
+        assert_eq!((new.diameter, new.comment.as_str()), (0.0, "FACEMILL 63"));
+        assert!(t.from_program.contains(&1001));
+        assert_eq!(t.get(2), Some(&before), "a listed tool keeps its row");
+        assert_eq!(
+            named("T1 D=0.5 CR=0. - ZMIN=-1. - END MILL").map(|n| n.0),
+            None
+        );
+        assert_eq!(named("T5 -"), None);
     }
 
     #[test]

@@ -33,6 +33,7 @@ pub fn def(
         preferred: false,
         run: Default::default(),
         shift: None,
+        first_index: None,
         doc: String::new(),
         span: Span::default(),
     }

@@ -116,6 +116,7 @@ pub mod verify;
 mod verify_digest;
 pub mod verify_lockstep;
 pub mod verify_text;
+mod work_offsets;
 
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
@@ -169,6 +170,7 @@ pub fn port_owned(
     program_end::run(&mut out, to);
     frame::run(&mut out, from, to);
     program_name::run(&mut out, to);
+    work_offsets::run(&mut out, from, to);
     named_tools::run(&mut out, to, &opts.tool_names, &mut diags);
     machine_functions::run(&mut out, from, to, &mut diags);
     commands::run(&mut out, from, to, &mut diags);

@@ -6,10 +6,15 @@
 //! without a table, names are numbered from 1001 up in the order they are
 //! first written, as the interpreter numbers them (W0516). Each numbering
 //! is reported (W0610): the machine's tool must sit at that number.
+//! For a target whose tool table must list every tool (capability
+//! `control-holds-tools` absent), the numbers no table gave are listed
+//! at the program's head, `(T1001 - DRILL)`, the tool list
+//! [`crate::interp::tool_header`] reads: the program says which tool
+//! each number is, and reads back with them.
 
 use crate::diag::{Code, Diagnostic};
 use crate::dialect::{Capability, DialectSpec};
-use crate::ir::{Decimal, Program, StmtKind, ToolRef, Value};
+use crate::ir::{Block, CommentStyle, Decimal, Program, Stmt, StmtKind, ToolRef, Value};
 use crate::span::Span;
 
 /// First number given to a named tool the tool table does not list.
@@ -25,6 +30,7 @@ pub fn run(
         return;
     }
     let mut given: Vec<(String, i64)> = Vec::new();
+    let mut unlisted: Vec<(String, i64, Span)> = Vec::new();
     let mut next = FIRST_UNLISTED;
     for s in p.blocks.iter_mut().flat_map(|b| b.stmts.iter_mut()) {
         let StmtKind::ToolSelect(ToolRef::Name(name)) = &s.kind else {
@@ -35,6 +41,7 @@ pub fn run(
             Some((_, n)) => *n,
             None => {
                 let n = listed(table, &key).unwrap_or_else(|| {
+                    unlisted.push((name.clone(), next, s.span));
                     next += 1;
                     next - 1
                 });
@@ -45,6 +52,46 @@ pub fn run(
         };
         s.kind = StmtKind::ToolSelect(ToolRef::Number(Value::Number(Decimal::from_int(number))));
     }
+    if !to.has(Capability::ControlHoldsTools) {
+        tool_list(p, &unlisted);
+    }
+}
+
+/// The numbered tools listed after the program's start.
+fn tool_list(p: &mut Program, tools: &[(String, i64, Span)]) {
+    let Some((_, _, span)) = tools.first() else {
+        return;
+    };
+    let stmts = tools
+        .iter()
+        .map(|(name, n, span)| {
+            let text = crate::interp::tool_header::named_line(*n, name);
+            Stmt::new(
+                StmtKind::Comment {
+                    text,
+                    style: CommentStyle::Paren,
+                },
+                *span,
+            )
+        })
+        .collect();
+    let start = p
+        .blocks
+        .iter()
+        .take_while(|b| {
+            b.stmts
+                .iter()
+                .any(|s| matches!(s.kind, StmtKind::Tape | StmtKind::ProgramStart { .. }))
+        })
+        .count();
+    let block = Block {
+        span: *span,
+        skip: None,
+        number: None,
+        label: None,
+        stmts,
+    };
+    p.blocks.insert(start, block);
 }
 
 fn listed(table: &[(String, i64)], key: &str) -> Option<i64> {
@@ -112,6 +159,26 @@ mod tests {
         let mut p = program(&["MILL"]);
         run(&mut p, &fanuc, &[("mill".into(), 7)], &mut Vec::new());
         assert_eq!(numbers(&p), ["7"]);
+    }
+
+    #[test]
+    fn a_target_that_needs_every_tool_in_its_table_gets_the_list() {
+        let lcnc = crate::dialect::builtin("linuxcnc").unwrap();
+        let mut p = program(&["DRILL", "MILL", "drill"]);
+        run(&mut p, &lcnc, &[("mill".into(), 7)], &mut Vec::new());
+        let StmtKind::Comment { text, .. } = &p.blocks[0].stmts[0].kind else {
+            panic!("no tool list: {:?}", p.blocks[0]);
+        };
+        assert_eq!(text, "T1001 - DRILL");
+        assert_eq!(p.blocks[0].stmts.len(), 1, "a listed name needs no line");
+        let fanuc = crate::dialect::builtin("fanuc").unwrap();
+        let mut p = program(&["DRILL"]);
+        run(&mut p, &fanuc, &[], &mut Vec::new());
+        assert_eq!(
+            p.blocks.len(),
+            1,
+            "a control that holds its tools needs no list"
+        );
     }
 
     #[test]

@@ -25,6 +25,7 @@ fn code(spec: &str, meaning: &str) -> CodeDef {
         preferred: false,
         run: Default::default(),
         shift: None,
+        first_index: None,
         doc: String::new(),
         span: Span::default(),
     }
