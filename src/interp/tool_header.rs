@@ -108,7 +108,7 @@ pub fn merge_header(table: &mut ToolTable, head: &str, machine: LengthUnit, spec
     for (number, name) in head.lines().flat_map(comments).filter_map(named) {
         if number > 0 && table.get(number).is_none() {
             table.tools.push(Tool::blank(number, name));
-            table.from_program.insert(number);
+            table.named_only.insert(number);
         }
     }
 }
@@ -249,7 +249,7 @@ mod tests {
         merge_header(&mut t, head, LengthUnit::Mm, &fanuc());
         let new = t.get(1001).unwrap();
         assert_eq!((new.diameter, new.comment.as_str()), (0.0, "FACEMILL 63"));
-        assert!(t.from_program.contains(&1001));
+        assert!(t.named_only.contains(&1001) && !t.from_program.contains(&1001));
         assert_eq!(t.get(2), Some(&before), "a listed tool keeps its row");
         assert_eq!(
             named("T1 D=0.5 CR=0. - ZMIN=-1. - END MILL").map(|n| n.0),

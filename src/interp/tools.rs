@@ -77,9 +77,14 @@ pub fn known_tool(it: &mut Interp<'_, '_>, t: i64) -> Result<(), Stop> {
         it.tool_table.tools.push(tool);
     }
     let given = it.tool_table.from_program.contains(&t);
-    if !given && (!listed || it.tool_table.invented) {
+    // A tool the program names with no size ran with none, whatever the
+    // table: the machine's own table must hold it.
+    let named_only = it.tool_table.named_only.contains(&t);
+    if named_only || (!given && (!listed || it.tool_table.invented)) {
         let span = it.span;
-        it.tools_without_data.entry(t).or_insert((span, listed));
+        it.tools_without_data
+            .entry(t)
+            .or_insert((span, listed && !named_only));
     }
     Ok(())
 }

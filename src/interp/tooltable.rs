@@ -43,6 +43,9 @@ pub struct ToolTable {
     /// Tools whose sizes the program itself gives (a CAM tool-list
     /// comment, TOOL DEF, $TC_DP): not invented.
     pub from_program: std::collections::BTreeSet<i64>,
+    /// Tools the program lists by name only (`(T1001 - FACEMILL 63)`):
+    /// in the table so the run goes on, with no size (W0592 says so).
+    pub named_only: std::collections::BTreeSet<i64>,
 }
 
 /// The table used when none is given: tools 1 to 20, flat end mills and
