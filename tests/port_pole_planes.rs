@@ -8,21 +8,7 @@ use common::*;
 use std::path::Path;
 
 fn port(src: &Path, from: &str, to: &str, out: &Path) -> String {
-    let o = cncc(&[
-        "port",
-        src.to_str().unwrap(),
-        "--from",
-        from,
-        "--to",
-        to,
-        "--verify",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(0), "{from} -> {to}: {err}");
-    assert!(err.contains("verify: OK"), "{err}");
-    std::fs::read_to_string(out).unwrap()
+    port_verified(src, Some(from), to, out).unwrap_or_else(|e| panic!("{from} -> {to}: {e}"))
 }
 
 #[test]

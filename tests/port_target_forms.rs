@@ -17,23 +17,7 @@ fn write(dir: &Path, name: &str, text: &str) -> String {
 
 /// Ports `src` to `to` with `--verify`: the written text, or the stderr.
 fn port(src: &str, to: &str, out: &Path) -> Result<String, String> {
-    let o = cncc(&[
-        "port",
-        src,
-        "--to",
-        to,
-        "--verify",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    let err = stderr(&o);
-    match o.status.code() {
-        Some(0) => {
-            assert!(err.contains("verify: OK"), "{err}");
-            Ok(std::fs::read_to_string(out).unwrap())
-        }
-        _ => Err(err),
-    }
+    port_verified(Path::new(src), None, to, out)
 }
 
 const SUPA: &str = "N10 G90 G71 G17 G94 FNORM\n\

@@ -16,21 +16,8 @@ fn write(dir: &Path, name: &str, text: &str) -> String {
 
 /// Ports `src` (read as `from`) to `to` with `--verify`: the written text.
 fn port(src: &str, from: &str, to: &str, out: &Path) -> String {
-    let o = cncc(&[
-        "port",
-        src,
-        "--from",
-        from,
-        "--to",
-        to,
-        "--verify",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(0), "{from} -> {to}: {err}");
-    assert!(err.contains("verify: OK"), "{err}");
-    std::fs::read_to_string(out).unwrap()
+    port_verified(Path::new(src), Some(from), to, out)
+        .unwrap_or_else(|e| panic!("{from} -> {to}: {e}"))
 }
 
 const FUSION: &str = "%\nO1000\n\

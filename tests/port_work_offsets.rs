@@ -8,25 +8,7 @@ use common::*;
 use std::path::Path;
 
 fn port(src: &Path, from: &str, to: &str, out: &Path) -> Result<String, String> {
-    let o = cncc(&[
-        "port",
-        src.to_str().unwrap(),
-        "--from",
-        from,
-        "--to",
-        to,
-        "--verify",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    let err = stderr(&o);
-    match o.status.code() {
-        Some(0) => {
-            assert!(err.contains("verify: OK"), "{err}");
-            Ok(std::fs::read_to_string(out).unwrap())
-        }
-        _ => Err(err),
-    }
+    port_verified(src, Some(from), to, out)
 }
 
 const G515: &str = "G17 G90 G515\nG0 X10 Y10 Z5\nG1 Z-1 F100\nX20\nG0 Z5\nM30\n";

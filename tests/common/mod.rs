@@ -52,6 +52,31 @@ pub fn cncc(args: &[&str]) -> Output {
         .expect("run cncc")
 }
 
+/// `cncc port SRC [--from FROM] --to TO --verify -o OUT`: the written
+/// text when the port is verified (exit 0 and `verify: OK`), else the
+/// stderr of the refusal.
+pub fn port_verified(
+    src: &Path,
+    from: Option<&str>,
+    to: &str,
+    out: &Path,
+) -> Result<String, String> {
+    let mut args = vec!["port", src.to_str().unwrap()];
+    if let Some(f) = from {
+        args.extend(["--from", f]);
+    }
+    args.extend(["--to", to, "--verify", "-o", out.to_str().unwrap()]);
+    let o = cncc(&args);
+    let err = stderr(&o);
+    match o.status.code() {
+        Some(0) => {
+            assert!(err.contains("verify: OK"), "{err}");
+            Ok(std::fs::read_to_string(out).unwrap())
+        }
+        _ => Err(err),
+    }
+}
+
 pub fn stdout(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
