@@ -174,3 +174,42 @@ fn a_drilling_cycle_with_computed_planes_keeps_them_as_expressions() {
     let back = dir.path().join("dpr-back.mpf");
     port(out.to_str().unwrap(), "siemens840d", &back).unwrap();
 }
+
+/// LinuxCNC `G64 P0.01` (blending within 0.01 mm): Fanuc's and the 840D's
+/// G64 take no word, and the 840D's `P` is a subprogram pass count, so the
+/// tolerance is left out with W0610, never written after their G64; the
+/// TNC gets it as its tolerance cycle, LinuxCNC keeps it.
+#[test]
+fn a_path_tolerance_goes_only_where_the_code_takes_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "blend.ngc",
+        "G21 G90 G17\nG64 P0.01\nG0 X0 Y0 Z5\nG1 Z-1 F100\nX10\nM2\n",
+    );
+    for (to, name) in [("fanuc", "b.nc"), ("siemens840d", "b.mpf")] {
+        let out = dir.path().join(name);
+        let o = cncc(&[
+            "port",
+            &src,
+            "--to",
+            to,
+            "--verify",
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(0), "{to}: {err}");
+        assert!(
+            err.contains("W0610") && err.contains("`P` of the path mode"),
+            "{to}: {err}"
+        );
+        let text = std::fs::read_to_string(&out).unwrap();
+        assert!(text.lines().any(|l| l.trim() == "G64"), "{to}: {text}");
+        assert!(!text.contains("P0.01"), "{to}: {text}");
+    }
+    let text = port(&src, "heidenhain", &dir.path().join("b.h")).unwrap();
+    assert!(text.contains("CYCL DEF 32.1 T+0.01"), "{text}");
+    let text = port(&src, "linuxcnc", &dir.path().join("b.ngc")).unwrap();
+    assert!(text.contains("G64 P0.01"), "{text}");
+}

@@ -91,6 +91,7 @@ mod named_tools;
 mod old_cycles;
 mod oriented_boring;
 pub(crate) mod osubs;
+mod path_words;
 mod per_value_dims;
 mod pockets;
 mod poles;
@@ -183,6 +184,7 @@ pub fn port_owned(
     oriented_boring::run(&out, from, to, &mut diags);
     to_tnc::run(&mut out, from, to, &mut diags);
     to_tnc::modes::run(&mut out, to, &mut diags);
+    path_words::run(&mut out, to, &mut diags);
     to_tnc::variables_and_flow(&mut out, to, &mut diags);
     from_tnc_flow::run(&mut out, from, to, &mut diags);
     proc_file::run(&mut out, to, &mut diags);
