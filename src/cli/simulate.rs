@@ -143,6 +143,26 @@ pub(crate) fn cut(
     Ok(sim)
 }
 
+/// The tool table with the program's own tool definitions, and its cutters.
+fn tools_of(
+    options: &Options,
+    head: &str,
+    spec: &crate::dialect::DialectSpec,
+) -> (crate::interp::tooltable::ToolTable, Cutters) {
+    let mm = machine_mm(options);
+    let table = crate::sim::tool_defs::with_tool_defs(&options.tool_table, head, spec, mm);
+    let cutters = Cutters::from_table(&table, head, mm, false);
+    (table, cutters)
+}
+
+/// A simulation of `stock` on cells of `cell`, checking rapids.
+fn simulation(stock: &Stock, cell: f64, cutters: Cutters) -> Result<Simulation, Failure> {
+    let field = HeightField::new(stock, cell).map_err(Failure)?;
+    let mut sim = Simulation::new(field, cutters);
+    sim.check_rapids = true;
+    Ok(sim)
+}
+
 /// The spans a simulation's report shows.
 fn kept_spans(sim: &Simulation) -> Vec<crate::span::Span> {
     let mut spans: Vec<_> = sim.rapid_hits.iter().map(|h| h.span).collect();
@@ -207,16 +227,8 @@ pub fn run(ctx: &mut Context, mut a: SimulateArgs<'_>) -> Result<i32, Failure> {
         (Some(given), Some(cell)) => {
             // The grid is known: one pass surveys and cuts.
             let stock = given.parse::<Stock>().map_err(Failure)?;
-            let table = crate::sim::tool_defs::with_tool_defs(
-                &a.options.tool_table,
-                &head,
-                &spec,
-                machine_mm(&a.options),
-            );
-            let cutters = Cutters::from_table(&table, &head, machine_mm(&a.options), false);
-            let field = HeightField::new(&stock, cell).map_err(Failure)?;
-            let mut sim = Simulation::new(field, cutters);
-            sim.check_rapids = true;
+            let (table, cutters) = tools_of(&a.options, &head, &spec);
+            let sim = simulation(&stock, cell, cutters)?;
             let (survey, sim) = survey_and_cut(ctx, a.file, a.dialect, &a.options, sim)?;
             (survey, sim, StockFrom::Option, table)
         }
@@ -227,19 +239,10 @@ pub fn run(ctx: &mut Context, mut a: SimulateArgs<'_>) -> Result<i32, Failure> {
                 ctx.print(&diags, a.format);
                 return Ok(EXIT_INPUT_ERRORS);
             }
-            let mm = machine_mm(&a.options);
-            let table = crate::sim::tool_defs::with_tool_defs(
-                &a.options.tool_table,
-                &survey.head,
-                &spec,
-                mm,
-            );
-            let cutters = Cutters::from_table(&table, &survey.head, mm, false);
+            let (table, cutters) = tools_of(&a.options, &survey.head, &spec);
             let (stock, from) = stock_for(a.stock, &survey, &cutters)?;
             let cell = cell_for(a.resolution, &stock, &survey.tools, &cutters);
-            let field = HeightField::new(&stock, cell).map_err(Failure)?;
-            let mut sim = Simulation::new(field, cutters);
-            sim.check_rapids = true;
+            let sim = simulation(&stock, cell, cutters)?;
             let sim = cut(ctx, a.file, a.dialect, &a.options, sim)?;
             (survey, sim, from, table)
         }

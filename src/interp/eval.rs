@@ -265,11 +265,8 @@ impl Interp<'_, '_> {
                 self.known_r(n, span)?;
                 Some(self.params.r(n))
             }
-            Var::User(name, _) => match self.params.user(name) {
+            Var::User(name, _) => match self.params.user(name).or_else(|| self.constant(name)) {
                 Some(v) => Some(v),
-                None if self.spec.constant(name).is_some() => {
-                    self.spec.constant(name).map(|d| d.to_f64())
-                }
                 None if self.from_outside => return Err(self.from_outside_at(span, name)),
                 None => {
                     return Err(self.error_at(
@@ -326,6 +323,11 @@ impl Interp<'_, '_> {
     }
 
     /// `#<name>`, with LinuxCNC's predefined read-only ones.
+    /// A name the control defines for every program (`<constant>`).
+    fn constant(&self, name: &str) -> Option<f64> {
+        self.spec.constant(name).map(|d| d.to_f64())
+    }
+
     pub fn read_named(&self, name: &str) -> Option<f64> {
         self.params
             .named(name)
