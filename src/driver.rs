@@ -285,6 +285,10 @@ pub(crate) fn read_each(
         if let Some(b) = reader.line(line, offset, exprs, &mut diags) {
             on_block(b, exprs);
         }
+        // As a streamed reading keeps them.
+        if diags.len() > crate::diag::MAX_KEPT {
+            diags.truncate(crate::diag::MAX_KEPT);
+        }
     }
     diags.extend(reader.finish());
     diags.extend(cr_note(file, first_cr));
@@ -320,6 +324,21 @@ pub fn check_stream_flagged(
     spec: &DialectSpec,
     mut on_block: impl FnMut(&Block, &Arena<Expr>, bool),
 ) -> std::io::Result<StreamResult> {
+    check_stream_while(input, file, spec, |b, e, bad| {
+        on_block(b, e, bad);
+        true
+    })
+}
+
+/// [`check_stream_flagged`] until `on_block` says `false`: the lines after
+/// that block are not read (the caller reads them otherwise), and the
+/// result has the diagnostics of the lines read.
+pub fn check_stream_while(
+    input: impl BufRead,
+    file: FileId,
+    spec: &DialectSpec,
+    mut on_block: impl FnMut(&Block, &Arena<Expr>, bool) -> bool,
+) -> std::io::Result<StreamResult> {
     let mut reader = Reader::new(spec, file);
     let mut exprs = Arena::new();
     let mut diags = Vec::new();
@@ -333,9 +352,10 @@ pub fn check_stream_flagged(
         let line = strip_ending(text);
         let off = u32::try_from(offset).map_err(|_| too_large())?;
         let before = diags.len();
+        let mut more = true;
         if reader.line_into(line, off, &mut exprs, &mut diags, &mut block) {
             let bad = diags[before..].iter().any(|d| d.is_error());
-            on_block(&block, &exprs, bad);
+            more = on_block(&block, &exprs, bad);
         }
         if diags.len() > crate::diag::MAX_KEPT {
             diags.truncate(crate::diag::MAX_KEPT);
@@ -343,7 +363,7 @@ pub fn check_stream_flagged(
         exprs.clear();
         offset += text.len() as u64;
         line_no += 1;
-        Ok(true)
+        Ok(more)
     })?;
     diags.extend(reader.finish());
     diags.extend(cr_note(file, first_cr));

@@ -90,10 +90,12 @@ pub fn run(ctx: &mut Context, mut a: PortArgs<'_>) -> Result<i32, Failure> {
     let streamed = (text.len() >= STREAM_FROM_BYTES)
         .then(|| stream::port_text(&text, id, &spec, &target, &opts, Chunking::default()))
         .flatten();
+    let mut scan = None;
     let (out, expanded) = match streamed {
         Some(s) => {
             diags.extend(s.read);
             diags.extend(s.port);
+            scan = Some(s.scan);
             (s.text, false)
         }
         None => match whole(ctx, &a, (&text, id, &spec), &target, &opts, &mut diags) {
@@ -104,7 +106,7 @@ pub fn run(ctx: &mut Context, mut a: PortArgs<'_>) -> Result<i32, Failure> {
     finish(
         ctx,
         &a,
-        (&text, id, &spec),
+        (&text, id, &spec, scan),
         &target,
         &opts,
         proof.as_ref(),
@@ -187,7 +189,12 @@ fn whole(
 fn finish(
     ctx: &mut Context,
     a: &PortArgs<'_>,
-    source: (&str, crate::span::FileId, &Arc<DialectSpec>),
+    source: (
+        &str,
+        crate::span::FileId,
+        &Arc<DialectSpec>,
+        Option<verify_text::Scan>,
+    ),
     target: &Arc<DialectSpec>,
     opts: &PortOptions,
     proof: Option<&crate::cli::port_material::Proof>,
@@ -196,7 +203,7 @@ fn finish(
     mut diags: Vec<Diagnostic>,
     encoding: crate::encoding::SourceEncoding,
 ) -> Result<i32, Failure> {
-    let (text, id, spec) = source;
+    let (text, id, spec, scan) = source;
     if a.verify || expanded {
         let name = match a.output {
             Some(p) => p.display().to_string(),
@@ -207,6 +214,7 @@ fn finish(
             dir: &dir,
             run: &a.options,
             source: (text, id, spec),
+            source_scan: scan,
             target,
             opts,
             material: proof,
@@ -239,6 +247,8 @@ struct Sides<'a> {
     run: &'a crate::interp::Options,
     /// The source's text, its file and dialect.
     source: (&'a str, crate::span::FileId, &'a Arc<DialectSpec>),
+    /// The source's scan where the port made it while reading.
+    source_scan: Option<verify_text::Scan>,
     target: &'a Arc<DialectSpec>,
     opts: &'a PortOptions,
     /// `--material`: the parts are compared too.
@@ -250,7 +260,7 @@ struct Sides<'a> {
 /// are held; a subprogram ported alone runs whole, as `check` runs it.
 fn verify_port(
     ctx: &mut Context,
-    s: Sides<'_>,
+    mut s: Sides<'_>,
     out_id: crate::span::FileId,
     diags: &mut Vec<Diagnostic>,
 ) -> bool {
@@ -268,7 +278,10 @@ fn verify_port(
     // The tools a CAM header lists join the table, as `check` runs it.
     let head = crate::cli::port_material::head_of(src_text);
     let opts = crate::cli::check::program_tools(&opts, head, src_spec);
-    let front = verify_text::scan(src_text, src_id, src_spec);
+    let front = match s.source_scan.take() {
+        Some(scan) => scan,
+        None => verify_text::scan(src_text, src_id, src_spec),
+    };
     let tolerance = verify::tolerance_for(s.target);
     let source = Side {
         text: src_text,

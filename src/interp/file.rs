@@ -11,7 +11,7 @@ use super::lazy::read_program_lazy;
 use super::{flow::ProgramLoader, stream::StreamRun, Interp, Options, Sink};
 use crate::diag::Diagnostic;
 use crate::dialect::DialectSpec;
-use crate::driver::{check_stream_flagged, decode, FsLoader};
+use crate::driver::{check_stream_while, decode, FsLoader};
 use crate::source::SourceMap;
 use crate::span::FileId;
 use std::borrow::Cow;
@@ -102,19 +102,27 @@ impl Run<'_> {
         it.start();
         let mut stream = StreamRun::default();
         let mut stopped = false;
-        let read = check_stream_flagged(input, id, spec, |b, e, bad| {
+        // Reading stops at the hand-over: the walker's reading of the
+        // whole text gives the diagnostics of every line.
+        let read = check_stream_while(input, id, spec, |b, e, bad| {
             stopped |= bad;
             if !stopped {
                 stream.block(&mut it, b, e);
             }
+            stream.handover.is_none()
         })?;
         let mut diags = read.diagnostics;
+        let mut whole_read = None;
+        if stream.handover.is_some() {
+            let (program, lazy, read) = read_program_lazy(whole()?, id, spec);
+            diags = read;
+            whole_read = Some((program, lazy));
+        }
         let read_errors = diags.iter().any(|d| d.is_error());
-        let run = match stream.handover {
+        let run = match whole_read {
             _ if read_errors => stream.abandon(&mut it),
             None => stream.finish(&mut it),
-            Some(_) => {
-                let (program, lazy, _) = read_program_lazy(whole()?, id, spec);
+            Some((program, lazy)) => {
                 stream.continue_with(&mut it, std::rc::Rc::new(program), Some(lazy), loader)
             }
         };

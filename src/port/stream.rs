@@ -64,6 +64,9 @@ pub struct StreamedPort {
     pub port: Vec<Diagnostic>,
     /// How many blocks were ported in chunks (not held in the skeleton).
     pub chunked: usize,
+    /// What `port --verify` learns from reading the source, learnt from
+    /// this reading of it (not a second one).
+    pub scan: super::verify_text::Scan,
 }
 
 /// Ports `text` (registered as `file`, read as `from`) to `to` as a
@@ -80,6 +83,7 @@ pub fn port_text(
     let mut st = State::new(file, from, to, opts, chunking, marker);
     let mut reader = crate::driver::Reader::new(from, file);
     let mut read_diags = Vec::new();
+    let mut scanning = super::verify_text::Scanning::default();
     for (line, offset) in crate::driver::lines(text) {
         let before = st.skeleton.exprs.len();
         let Some(b) = reader.line(line, offset, &mut st.skeleton.exprs, &mut read_diags) else {
@@ -89,6 +93,7 @@ pub fn port_text(
             return None;
         }
         read_diags.truncate(crate::diag::MAX_KEPT);
+        scanning.block(&b, from);
         if b.stmts.iter().any(|s| to_sequence_number(&s.kind)) {
             return None;
         }
@@ -107,6 +112,7 @@ pub fn port_text(
     let (text, port) = st.finish()?;
     Some(StreamedPort {
         text,
+        scan: scanning.finish(read_diags.clone()),
         read: read_diags,
         port,
         chunked,
@@ -140,45 +146,48 @@ fn marker_for(text: &str) -> Option<String> {
         .find(|m| !text.contains(m.as_str()))
 }
 
-/// What distinguishes moves for the summary: the motion code, the words
-/// named, a feed, a comment.
-fn shape(b: &Block) -> Vec<u32> {
-    b.stmts
-        .iter()
-        .map(|s| match &s.kind {
-            StmtKind::Motion(m) => {
-                let t = &m.target;
-                let axes = [&t.x, &t.y, &t.z, &t.a, &t.b, &t.c, &t.u, &t.v, &t.w];
-                let mut bits = 0u32;
-                for (i, c) in axes.into_iter().enumerate() {
-                    bits |= (c.is_some() as u32) << i;
-                }
-                let a = &m.arc;
-                for (i, c) in [
-                    a.i.is_some(),
-                    a.j.is_some(),
-                    a.k.is_some(),
-                    a.radius.is_some(),
-                ]
-                .into_iter()
-                .enumerate()
-                {
-                    bits |= (c as u32) << (9 + i);
-                }
-                let kind = match m.kind {
-                    MotionKind::Implicit => 1,
-                    MotionKind::Rapid => 2,
-                    MotionKind::Linear => 3,
-                    MotionKind::Arc(d) => 4 + d as u32,
-                    _ => 15,
-                };
-                bits | kind << 13 | 1 << 20
+/// What distinguishes moves for the summary: the motion code (an
+/// implicit move's taken as `implicit`, where given), the words named, a
+/// feed, a comment; written into `out`.
+fn shape_into(b: &Block, implicit: Option<&MotionKind>, out: &mut Vec<u32>) {
+    out.clear();
+    out.extend(b.stmts.iter().map(|s| match &s.kind {
+        StmtKind::Motion(m) => {
+            let t = &m.target;
+            let axes = [&t.x, &t.y, &t.z, &t.a, &t.b, &t.c, &t.u, &t.v, &t.w];
+            let mut bits = 0u32;
+            for (i, c) in axes.into_iter().enumerate() {
+                bits |= (c.is_some() as u32) << i;
             }
-            StmtKind::Feed(_) => 1 << 21,
-            StmtKind::Comment { .. } => 1 << 22,
-            _ => 1 << 23,
-        })
-        .collect()
+            let a = &m.arc;
+            for (i, c) in [
+                a.i.is_some(),
+                a.j.is_some(),
+                a.k.is_some(),
+                a.radius.is_some(),
+            ]
+            .into_iter()
+            .enumerate()
+            {
+                bits |= (c as u32) << (9 + i);
+            }
+            let kind = match (&m.kind, implicit) {
+                (MotionKind::Implicit, Some(k)) => k,
+                (k, _) => k,
+            };
+            let kind = match kind {
+                MotionKind::Implicit => 1,
+                MotionKind::Rapid => 2,
+                MotionKind::Linear => 3,
+                MotionKind::Arc(d) => 4 + *d as u32,
+                _ => 15,
+            };
+            bits | kind << 13 | 1 << 20
+        }
+        StmtKind::Feed(_) => 1 << 21,
+        StmtKind::Comment { .. } => 1 << 22,
+        _ => 1 << 23,
+    }));
 }
 
 /// The motion code a block writes (None: implicit, or no move).
@@ -223,23 +232,48 @@ struct Run {
 }
 
 impl Run {
-    /// Adds `blocks` (the next ones of the run) to the summary: the last
-    /// block of each shape, in their order. An implicit move after a
-    /// motion code of the run is kept with that code, so that a later
-    /// block of the code's shape moving past it cannot change its
-    /// meaning; one before any code of the run keeps its place before
-    /// all of them.
-    fn summarize(&mut self, blocks: impl IntoIterator<Item = Block>) {
-        for b in blocks {
-            let b = match (explicit_kind(&b), &self.kind) {
+    /// What `blocks` (the next ones of the run) add to the summary: the
+    /// last block of each shape, in their order, cloned (the blocks
+    /// themselves go to the port). An implicit move after a motion code
+    /// of the run is kept with that code, so that a later block of the
+    /// code's shape moving past it cannot change its meaning; one before
+    /// any code of the run keeps its place before all of them.
+    fn additions(&mut self, blocks: &[Block]) -> Vec<(Vec<u32>, Block)> {
+        // (shape, index in `blocks`, the code an implicit move takes)
+        let mut last: Vec<(Vec<u32>, usize, Option<MotionKind>)> = Vec::new();
+        let mut buf = Vec::new();
+        for (i, b) in blocks.iter().enumerate() {
+            let implicit = match (explicit_kind(b), &self.kind) {
                 (Some(k), _) => {
                     self.kind = Some(k);
-                    b
+                    None
                 }
-                (None, Some(k)) => with_kind(b, k),
-                (None, None) => b,
+                (None, Some(k)) => Some(k.clone()),
+                (None, None) => None,
             };
-            let s = shape(&b);
+            shape_into(b, implicit.as_ref(), &mut buf);
+            let shape = match last.iter().position(|(s, ..)| *s == buf) {
+                Some(j) => last.remove(j).0,
+                None => buf.clone(),
+            };
+            last.push((shape, i, implicit));
+        }
+        last.into_iter()
+            .map(|(shape, i, implicit)| {
+                let b = blocks[i].clone();
+                let b = match &implicit {
+                    Some(k) => with_kind(b, k),
+                    None => b,
+                };
+                (shape, b)
+            })
+            .collect()
+    }
+
+    /// Puts what [`Run::additions`] found into the summary: each replaces
+    /// the block of its shape there and goes last.
+    fn merge(&mut self, additions: Vec<(Vec<u32>, Block)>) {
+        for (s, b) in additions {
             if let Some(i) = self.shapes.iter().position(|k| *k == s) {
                 self.shapes.remove(i);
                 self.summary.remove(i);
@@ -334,8 +368,9 @@ impl<'a> State<'a> {
         if !run.pending.is_empty() {
             let chunk = std::mem::take(&mut run.pending);
             let suffix = last.clone();
-            push_lines(&mut lines, self.chunk_lines(&chunk, &run.summary, suffix)?);
-            run.summarize(chunk);
+            let added = run.additions(&chunk);
+            push_lines(&mut lines, self.chunk_lines(chunk, &run.summary, suffix)?);
+            run.merge(added);
         }
         for s in &run.summary {
             self.summarized.insert(s.span);
@@ -358,11 +393,12 @@ impl<'a> State<'a> {
     /// next pending one.
     fn port_chunk(&mut self, chunk: Vec<Block>) -> Option<()> {
         let suffix = self.run.pending.first().cloned();
+        let added = self.run.additions(&chunk);
         let summary = std::mem::take(&mut self.run.summary);
-        let lines = self.chunk_lines(&chunk, &summary, suffix);
+        let lines = self.chunk_lines(chunk, &summary, suffix);
         self.run.summary = summary;
         push_lines(self.run.lines.get_or_insert_with(String::new), lines?);
-        self.run.summarize(chunk);
+        self.run.merge(added);
         Some(())
     }
 
@@ -370,7 +406,7 @@ impl<'a> State<'a> {
     /// skeleton and the run's summary, with `suffix` after it.
     fn chunk_lines(
         &mut self,
-        chunk: &[Block],
+        chunk: Vec<Block>,
         summary: &[Block],
         suffix: Option<Block>,
     ) -> Option<Vec<String>> {
@@ -388,7 +424,7 @@ impl<'a> State<'a> {
             .reserve(self.skeleton.blocks.len() + summary.len() + chunk.len() + 1);
         p.blocks.extend(self.skeleton.blocks.iter().cloned());
         p.blocks.extend(summary.iter().cloned());
-        p.blocks.extend(chunk.iter().cloned());
+        p.blocks.extend(chunk);
         p.blocks.extend(suffix);
         let inside = |sp: Span| sp.start >= first.start && sp.end <= last.end;
         let (ported, diags) = super::port_owned(p, self.from, self.to, self.opts);

@@ -39,23 +39,42 @@ impl Scan {
 
 /// Reads `text` (registered as `id`) block by block, keeping no block.
 pub fn scan(text: &str, id: FileId, spec: &DialectSpec) -> Scan {
-    let mut machine = HashSet::new();
-    let mut detector = Detector::default();
-    let mut walker = false;
+    let mut seen = Scanning::default();
     let read = crate::driver::check_stream_flagged(text.as_bytes(), id, spec, |b, _, _| {
-        add_machine_spans(b, spec, &mut machine);
-        detector.block(b);
-        walker |= b
+        seen.block(b, spec)
+    });
+    // Reading from memory cannot fail.
+    seen.finish(read.map(|r| r.diagnostics).unwrap_or_default())
+}
+
+/// A [`Scan`] being made from the blocks of one reading, by whoever reads
+/// them (the streamed port reads its source once for both).
+#[derive(Default)]
+pub struct Scanning {
+    machine: HashSet<Span>,
+    detector: Detector,
+    walker: bool,
+}
+
+impl Scanning {
+    /// The next block read.
+    pub fn block(&mut self, b: &crate::ir::Block, spec: &DialectSpec) {
+        add_machine_spans(b, spec, &mut self.machine);
+        self.detector.block(b);
+        self.walker |= b
             .stmts
             .iter()
             .any(|s| crate::interp::stream::needs_walker(&s.kind));
-    });
-    Scan {
-        // Reading from memory cannot fail.
-        diags: read.map(|r| r.diagnostics).unwrap_or_default(),
-        machine,
-        fragment: detector.is_fragment(),
-        walker,
+    }
+
+    /// The scan, with the reader's diagnostics.
+    pub fn finish(self, diags: Vec<Diagnostic>) -> Scan {
+        Scan {
+            diags,
+            machine: self.machine,
+            fragment: self.detector.is_fragment(),
+            walker: self.walker,
+        }
     }
 }
 
