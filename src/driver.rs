@@ -110,7 +110,7 @@ impl<'s> Reader<'s> {
         block.span = syntax.span;
         block.skip = syntax.skip;
         block.number = syntax.number;
-        block.label = syntax.label;
+        block.label = syntax.label.map(Box::new);
         self.structure.block(self.index, block, exprs);
         self.index += 1;
         if block

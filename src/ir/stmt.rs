@@ -19,8 +19,9 @@ pub struct Block {
     pub skip: Option<Spanned<u8>>,
     /// Sequence number `N10`.
     pub number: Option<Spanned<u32>>,
-    /// Siemens `LABEL:` (or Heidenhain `LBL`).
-    pub label: Option<Spanned<String>>,
+    /// Siemens `LABEL:` (or Heidenhain `LBL`). Boxed: few blocks have
+    /// one, and a program with control flow holds every block.
+    pub label: Option<Box<Spanned<String>>>,
     pub stmts: Vec<Stmt>,
 }
 

@@ -73,7 +73,7 @@ pub fn lower_line(
         span: line.span,
         skip: line.skip,
         number: line.number,
-        label: line.label,
+        label: line.label.map(Box::new),
         stmts,
     }
 }

@@ -348,7 +348,7 @@ impl Lowering {
 
     fn label(&mut self, like: &Block, name: String, span: Span) {
         let mut b = super::follow_block(like, Vec::new());
-        b.label = Some(Spanned { node: name, span });
+        b.label = Some(Box::new(Spanned { node: name, span }));
         self.out.push(b);
     }
 

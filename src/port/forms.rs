@@ -156,9 +156,11 @@ fn sequence_jumps_to_labels(p: &mut Program) {
         let span = target.span;
         let label = target
             .label
-            .get_or_insert_with(|| Spanned {
-                node: format!("SEQ{n}"),
-                span,
+            .get_or_insert_with(|| {
+                Box::new(Spanned {
+                    node: format!("SEQ{n}"),
+                    span,
+                })
             })
             .node
             .clone();

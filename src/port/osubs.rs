@@ -157,7 +157,7 @@ fn refusal(span: Span, what: &str) -> Diagnostic {
 pub(super) struct SubStmt<'a> {
     pub stmt: &'a mut Stmt,
     /// The block's label (a label subprogram's name goes there).
-    pub label: &'a mut Option<crate::span::Spanned<String>>,
+    pub label: &'a mut Option<Box<crate::span::Spanned<String>>>,
     pub block: Span,
 }
 
@@ -347,10 +347,10 @@ fn inline(p: &mut Program, diags: &mut Vec<Diagnostic>) {
         let s = x.stmt;
         match &s.kind {
             StmtKind::SubStart { name, .. } => {
-                *x.label = Some(crate::span::Spanned {
+                *x.label = Some(Box::new(crate::span::Spanned {
                     node: name.clone(),
                     span: s.span,
-                });
+                }));
             }
             StmtKind::SubEnd { value, .. } => {
                 if value.is_some() {

@@ -42,7 +42,7 @@ fn run(spec: &DialectSpec, lines: Vec<L>) -> (Vec<Code>, String) {
             span,
             skip: None,
             number: number.map(|n| Spanned::new(n, span)),
-            label: lab.map(|s| Spanned::new(s.to_string(), span)),
+            label: lab.map(|s| Box::new(Spanned::new(s.to_string(), span))),
             stmts: kinds.into_iter().map(|k| Stmt::new(k, span)).collect(),
         };
         checker.block(i, &block, &exprs);

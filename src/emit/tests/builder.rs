@@ -101,7 +101,7 @@ impl Builder {
     pub fn labelled(&mut self, label: &str, kinds: Vec<StmtKind>) -> usize {
         let i = self.line(kinds);
         let span = self.span();
-        self.p.blocks[i].label = Some(Spanned::new(label.to_string(), span));
+        self.p.blocks[i].label = Some(Box::new(Spanned::new(label.to_string(), span)));
         i
     }
 

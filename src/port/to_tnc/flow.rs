@@ -134,7 +134,7 @@ impl Flow<'_> {
             span,
             skip: None,
             number: None,
-            label: Some(Spanned { node: name, span }),
+            label: Some(Box::new(Spanned { node: name, span })),
             stmts: Vec::new(),
         });
     }

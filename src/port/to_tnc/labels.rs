@@ -137,10 +137,10 @@ pub(super) fn sequence_jumps(p: &mut Program, labels: &mut Labels, diags: &mut V
             Some(l) => l.node.clone(),
             None => {
                 let l = labels.claim(n);
-                target.label = Some(Spanned {
+                target.label = Some(Box::new(Spanned {
                     node: l.clone(),
                     span: bspan,
-                });
+                }));
                 l
             }
         };

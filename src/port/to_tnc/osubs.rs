@@ -27,10 +27,10 @@ pub fn move_subs(p: &mut Program, diags: &mut Vec<Diagnostic>) {
         match &s.kind {
             StmtKind::SubStart { name, .. } => {
                 first = Some(x.block);
-                *x.label = Some(crate::span::Spanned {
+                *x.label = Some(Box::new(crate::span::Spanned {
                     node: name.clone(),
                     span: s.span,
-                });
+                }));
             }
             StmtKind::SubEnd { value: None, .. } => {
                 ranges.push((first.take().unwrap_or(x.block), x.block));

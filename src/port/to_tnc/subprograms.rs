@@ -78,10 +78,10 @@ pub fn run(p: &mut Program, from: &DialectSpec, to: &DialectSpec, diags: &mut Ve
                     used.push(m);
                     flush(&mut out, &mut b, &mut cur);
                     let mut lb = crate::port::follow_block(&b, vec![call]);
-                    lb.label = Some(Spanned {
+                    lb.label = Some(Box::new(Spanned {
                         node: m.to_string(),
                         span,
-                    });
+                    }));
                     out.push(lb);
                     cur.push(section_repeat(p, m, times - 1, span));
                 }
@@ -116,10 +116,10 @@ fn programs_as_labels(p: &mut Program) {
                         number: Some(n),
                         name,
                     } => {
-                        label = Some(Spanned {
+                        label = Some(Box::new(Spanned {
                             node: n.to_string(),
                             span: s.span,
-                        });
+                        }));
                         // The program's title stays as a comment.
                         if let Some(text) = name {
                             let style = crate::ir::CommentStyle::Semicolon;
@@ -164,10 +164,10 @@ fn local_targets_as_labels(p: &mut Program) {
     for b in &mut p.blocks {
         if ended && b.label.is_none() {
             if let Some(n) = b.number.as_ref().filter(|n| targets.contains(&n.node)) {
-                b.label = Some(Spanned {
+                b.label = Some(Box::new(Spanned {
                     node: n.node.to_string(),
                     span: n.span,
-                });
+                }));
             }
         }
         ended |= b.stmts.iter().any(|s| {
