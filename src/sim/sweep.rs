@@ -17,6 +17,7 @@
 use super::cutter::{Cutter, Shape};
 use super::grid::{HeightField, TILE};
 use nalgebra::{Vector2, Vector3};
+use std::cell::Cell;
 
 /// Bisection steps for a ramp with a shaped tool.
 const STEPS: usize = 48;
@@ -46,29 +47,72 @@ impl Sweep<'_> {
     pub fn cut(&self, field: &mut HeightField) -> f64 {
         let bottom = field.bottom;
         let mut removed = 0.0;
-        self.visit(field, |h, s| {
-            let s = s.max(bottom);
-            if s < *h as f64 {
-                removed += *h as f64 - s;
-                *h = s as f32;
-            }
-        });
-        removed * field.cell_area()
+        let mut plateaus = 0.0;
+        self.visit_indexed(
+            field,
+            |_, h, s| {
+                let s = s.max(bottom);
+                if s < *h as f64 {
+                    removed += *h as f64 - s;
+                    *h = s as f32;
+                }
+            },
+            |_, cells, z, zmin| {
+                // The same test and height as `f` cell by cell, without
+                // branches, the sum in four parts (no chain of dependent
+                // additions): the compiler can take cells in pairs.
+                let s = z.max(bottom);
+                let low = s as f32;
+                let (mut sum, mut lowered) = ([0.0f64; 4], false);
+                let mut quads = cells.chunks_exact_mut(4);
+                for q in &mut quads {
+                    for k in 0..4 {
+                        let old = q[k] as f64;
+                        let cut = old > zmin && s < old;
+                        sum[k] += if cut { old - s } else { 0.0 };
+                        q[k] = if cut { low } else { q[k] };
+                        lowered |= cut;
+                    }
+                }
+                for (k, h) in quads.into_remainder().iter_mut().enumerate() {
+                    let old = *h as f64;
+                    let cut = old > zmin && s < old;
+                    sum[k] += if cut { old - s } else { 0.0 };
+                    *h = if cut { low } else { *h };
+                    lowered |= cut;
+                }
+                plateaus += (sum[0] + sum[1]) + (sum[2] + sum[3]);
+                lowered
+            },
+        );
+        (removed + plateaus) * field.cell_area()
     }
 
     /// Looks without cutting: the deepest material above the tool.
     pub fn probe(&self, field: &mut HeightField) -> Option<Hit> {
-        let mut best: Option<(f64, usize, f64)> = None;
+        let best: Cell<Option<(f64, usize, f64)>> = Cell::new(None);
         // Below the stock's bottom there is no material (the way out of
         // a through hole).
         let bottom = field.bottom;
-        self.visit_indexed(field, |idx, h, s| {
-            let depth = *h as f64 - s.max(bottom);
-            if depth > best.map_or(0.0, |b| b.0) {
-                best = Some((depth, idx, *h as f64));
+        let look = |idx: usize, h: f32, s: f64| {
+            let depth = h as f64 - s.max(bottom);
+            if depth > best.get().map_or(0.0, |b| b.0) {
+                best.set(Some((depth, idx, h as f64)));
             }
-        });
-        best.map(|(depth, k, h)| {
+        };
+        self.visit_indexed(
+            field,
+            |idx, h, s| look(idx, *h, s),
+            |idx, cells, z, zmin| {
+                for (k, h) in cells.iter().enumerate() {
+                    if *h as f64 > zmin {
+                        look(idx + k, *h, z);
+                    }
+                }
+                false
+            },
+        );
+        best.get().map(|(depth, k, h)| {
             let (x, y) = field.centre(k % field.nx, k / field.nx);
             Hit {
                 depth,
@@ -77,32 +121,62 @@ impl Sweep<'_> {
         })
     }
 
-    fn visit(&self, field: &mut HeightField, mut f: impl FnMut(&mut f32, f64)) {
-        self.visit_indexed(field, |_, h, s| f(h, s))
-    }
-
     /// Calls `f(index, height, surface)` for every cell in reach that the
     /// tool's surface may go below (see the module doc: whole tiles and
-    /// cells the bound rules out are passed over; `f` decides).
-    fn visit_indexed(&self, field: &mut HeightField, mut f: impl FnMut(usize, &mut f32, f64)) {
+    /// cells the bound rules out are passed over; `f` decides). A run of
+    /// cells of one row in a flat tool's [`Plateau`] goes to `run(index
+    /// of the first, cells, the plateau's height, lowest tip)`, which
+    /// must do what `f` does to each cell standing above the lowest tip
+    /// and say whether it lowered any. The cells are visited in the same
+    /// order, with the same heights, as when every cell is solved.
+    fn visit_indexed(
+        &self,
+        field: &mut HeightField,
+        mut f: impl FnMut(usize, &mut f32, f64),
+        mut run: impl FnMut(usize, &mut [f32], f64, f64) -> bool,
+    ) {
         let r = self.reach;
         let (a, b) = (self.a, self.b);
-        let rows = field.rows(a.y.min(b.y) - r, a.y.max(b.y) + r);
-        if rows.is_empty() || field.columns(a.x.min(b.x) - r, a.x.max(b.x) + r).is_empty() {
+        let bound = Bound::new(self.cutter, a.z.min(b.z));
+        // No cell stands above the stock's top (as the cells hold it): a
+        // move whose lowest tip is at or above it (a rapid in air)
+        // touches nothing.
+        if bound.zmin >= field.top as f32 as f64 {
             return;
         }
+        let rows = field.rows(a.y.min(b.y) - r, a.y.max(b.y) + r);
+        let cols = field.columns(a.x.min(b.x) - r, a.x.max(b.x) + r);
+        if rows.is_empty() || cols.is_empty() {
+            return;
+        }
+        let tile_cols = cols.start / TILE..cols.end.div_ceil(TILE);
         let seg = Segment::new(a, b);
-        let bound = Bound::new(self.cutter, a.z.min(b.z));
+        let plateau = Plateau::new(self.cutter, &seg, r);
+        let plateau_z = plateau.as_ref().map_or(0.0, |p| p.z);
+        // A flat tool's surface is within reach or nowhere: the cell's
+        // own bound (the lowest tip) is the tile's, tested first.
+        let flat = matches!(self.cutter.shape, Shape::Flat);
         // Half the diagonal of a tile's cell centres.
         let half = (TILE - 1) as f64 / 2.0;
         let tile_half = (half * field.dx).hypot(half * field.dy);
         let mut spans = [(0, 0); TILE];
+        let mut flats = [(0, 0); TILE];
         for tj in rows.start / TILE..rows.end.div_ceil(TILE) {
+            // A row of tiles none of whose material stands above the
+            // lowest tip is passed over before its rows are clipped.
+            let peaks = &field.peaks[tj * field.tiles_x..];
+            if peaks[tile_cols.clone()]
+                .iter()
+                .all(|p| *p as f64 <= bound.zmin)
+            {
+                continue;
+            }
             let j0 = tj * TILE;
             let (mut lo, mut hi) = (usize::MAX, 0);
             for (k, span) in spans.iter_mut().enumerate() {
                 let j = j0 + k;
                 *span = (0, 0);
+                flats[k] = (0, 0);
                 if !rows.contains(&j) {
                     continue;
                 }
@@ -113,12 +187,18 @@ impl Sweep<'_> {
                         *span = (c.start, c.end);
                         lo = lo.min(c.start);
                         hi = hi.max(c.end);
+                        if let Some((x0, x1)) = plateau.as_ref().and_then(|p| p.row(&seg, y)) {
+                            let c = field.columns(x0, x1);
+                            flats[k] = (c.start.max(span.0), c.end.min(span.1));
+                        }
                     }
                 }
             }
             if lo >= hi {
                 continue;
             }
+            // The cells of a whole tile (fewer at the field's far edges).
+            let tile_rows = (j0 + TILE).min(field.ny) - j0;
             for ti in lo / TILE..hi.div_ceil(TILE) {
                 let peak = field.peaks[tj * field.tiles_x + ti] as f64;
                 if peak <= bound.zmin {
@@ -130,31 +210,118 @@ impl Sweep<'_> {
                 if e > r + SLACK || (e > 0.0 && !bound.may_reach(peak, e * e)) {
                     continue;
                 }
-                let cols = ti * TILE..(ti + 1) * TILE;
+                let cols = ti * TILE..((ti + 1) * TILE).min(field.nx);
                 let mut lowered = false;
+                // The highest cell seen, and how many: when the sweep saw
+                // the whole tile, its highest cell is its new peak.
+                let (mut top, mut seen) = (f32::NEG_INFINITY, 0);
                 for (k, span) in spans.iter().enumerate() {
                     let j = j0 + k;
                     let y = field.origin[1] + (j as f64 + 0.5) * field.dy;
-                    for i in span.0.max(cols.start)..span.1.min(cols.end) {
+                    let (start, end) = (span.0.max(cols.start), span.1.min(cols.end));
+                    if start >= end {
+                        continue;
+                    }
+                    seen += end - start;
+                    // The plateau's cells of this row in this tile, if any.
+                    let (f0, f1) = (flats[k].0.max(start), flats[k].1.min(end));
+                    let (f0, f1) = if f0 < f1 { (f0, f1) } else { (end, end) };
+                    let mut i = start;
+                    while i < end {
+                        if i == f0 {
+                            let row = j * field.nx;
+                            let cells = &mut field.z[row + f0..row + f1];
+                            lowered |= run(row + f0, cells, plateau_z, bound.zmin);
+                            top = cells.iter().fold(top, |m, h| m.max(*h));
+                            i = f1;
+                            continue;
+                        }
                         let idx = j * field.nx + i;
+                        let x = field.origin[0] + (i as f64 + 0.5) * field.dx;
+                        i += 1;
                         let h = field.z[idx];
-                        if h as f64 <= bound.zmin {
-                            continue;
+                        if h as f64 > bound.zmin {
+                            let p = Vector2::new(x, y);
+                            let near = flat || {
+                                let e2 = seg.distance2(p);
+                                e2 <= r * r && bound.may_reach(h as f64, e2)
+                            };
+                            if let Some(s) = near.then(|| seg.surface(self.cutter, r, p)).flatten()
+                            {
+                                f(idx, &mut field.z[idx], s);
+                                lowered |= field.z[idx] < h;
+                            }
                         }
-                        let p = Vector2::new(field.origin[0] + (i as f64 + 0.5) * field.dx, y);
-                        let e2 = seg.distance2(p);
-                        if e2 > r * r || !bound.may_reach(h as f64, e2) {
-                            continue;
-                        }
-                        if let Some(s) = seg.surface(self.cutter, r, p) {
-                            f(idx, &mut field.z[idx], s);
-                            lowered |= field.z[idx] < h;
-                        }
+                        top = top.max(field.z[idx]);
                     }
                 }
                 if lowered {
-                    field.refresh_peak(ti, tj);
+                    if seen == tile_rows * cols.len() {
+                        // Every cell seen, after the cut: the highest.
+                        field.peaks[tj * field.tiles_x + ti] = top;
+                    } else {
+                        field.refresh_peak(ti, tj);
+                    }
                 }
+            }
+        }
+    }
+}
+
+/// Where a flat tool's swept surface is one height, known without a
+/// root: [`Segment::surface`] gives every cell centre there exactly
+/// `z` (the same float). For a horizontal move that is the whole band
+/// round the path, for a move along Z the disc round the axis, for a
+/// ramp the disc round its lower end (the tool passes there last going
+/// down, first going up: the parameter clamps to that end). The region
+/// is taken `margin` inside the reach, far more than the rounding of
+/// [`Segment::surface`]'s tests, so that its every cell passes them.
+struct Plateau {
+    z: f64,
+    /// The disc's centre and radius; `None`: the band round the path.
+    disc: Option<(Vector2<f64>, f64)>,
+    radius: f64,
+}
+
+impl Plateau {
+    fn new(c: &Cutter, seg: &Segment, reach: f64) -> Option<Plateau> {
+        if !matches!(c.shape, Shape::Flat) {
+            return None;
+        }
+        let margin = 1e-6 * (1.0 + reach + seg.l2.sqrt());
+        let radius = reach - margin;
+        if !(radius > 0.0) {
+            return None;
+        }
+        // The same sums as `Segment::surface` makes (the profile is 0).
+        let (z, centre) = if seg.l2 < 1e-18 {
+            (seg.a.z + seg.dz.min(0.0) + 0.0, Some(seg.a.xy()))
+        } else if seg.dz.abs() < 1e-12 {
+            (seg.a.z + 0.0, None)
+        } else if seg.dz > 0.0 {
+            (seg.a.z + 0.0 * seg.dz + 0.0, Some(seg.a.xy()))
+        } else {
+            (seg.a.z + 1.0 * seg.dz + 0.0, Some(seg.a.xy() + seg.d2))
+        };
+        Some(Plateau {
+            z,
+            disc: centre.map(|c| (c, radius)),
+            radius,
+        })
+    }
+
+    /// The X range of row `y` in the plateau.
+    fn row(&self, seg: &Segment, y: f64) -> Option<(f64, f64)> {
+        match self.disc {
+            None => seg
+                .row(y, self.radius)
+                .map(|(lo, hi)| (lo + SLACK, hi - SLACK)),
+            Some((c, r)) => {
+                let dy = y - c.y;
+                (dy.abs() < r).then(|| {
+                    let w = (r * r - dy * dy).sqrt();
+                    (c.x - w, c.x + w)
+                })
             }
         }
     }
@@ -286,7 +453,7 @@ impl Segment {
             let rho2 = w.norm_squared();
             return (rho2 <= r2).then(|| self.a.z + self.dz.min(0.0) + c.profile(rho2.sqrt()));
         }
-        let t0 = w.dot(&self.d2) / self.l2;
+        let t0 = w.dot(&self.d2) * self.inv_l2;
         let e2 = (w - self.d2 * t0).norm_squared().max(0.0);
         if e2 > r2 {
             return None;
@@ -301,10 +468,15 @@ impl Segment {
                 return Some(z);
             }
         }
-        let half = ((r2 - e2) / self.l2).sqrt();
+        let half = ((r2 - e2) * self.inv_l2).sqrt();
         let (lo, hi) = ((t0 - half).max(0.0), (t0 + half).min(1.0));
         if lo > hi {
             return None;
+        }
+        if matches!(c.shape, Shape::Flat) {
+            // The profile is 0: the height where the tool is lowest.
+            let t = if self.dz > 0.0 { lo } else { hi };
+            return Some(self.a.z + t * self.dz + 0.0);
         }
         let t = if c.is_flat() {
             if self.dz > 0.0 {
@@ -600,6 +772,147 @@ mod tests {
             .fold(0.0f32, f32::max);
         assert_eq!(worst, 0.0);
         // Each tile's peak still bounds its cells.
+        for (k, h) in fast.z.iter().enumerate() {
+            let (i, j) = (k % fast.nx, k / fast.nx);
+            assert!(*h <= fast.peaks[(j / TILE) * fast.tiles_x + i / TILE]);
+        }
+    }
+
+    /// A small random generator for the tests (an LCG).
+    fn lcg(seed: u64) -> impl FnMut() -> f64 {
+        let mut seed = seed;
+        move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    #[test]
+    fn every_cell_of_a_flat_plateau_solves_to_its_height() {
+        let mut next = lcg(11);
+        let mut checked = 0;
+        for k in 0..4000 {
+            let c = Cutter::flat([0.0, 0.8, 2.381, 6.0][k % 4]);
+            let reach = c.radius.max(0.035);
+            let a = Vector3::new(50.0 * next(), 50.0 * next(), -10.0 * next());
+            // Lines, ramps down and up, nearly level, plunges, climbs,
+            // and very short and long moves.
+            let len = [0.0, 1e-10, 0.01, 0.3, 2.0, 80.0][k % 6];
+            let angle = 6.3 * next();
+            let dz = match k % 5 {
+                0 => 0.0,
+                1 => 1e-13 * (next() - 0.5),
+                2 => -3.0 * next(),
+                3 => 3.0 * next(),
+                _ => -0.007,
+            };
+            let b = a + Vector3::new(len * angle.cos(), len * angle.sin(), dz);
+            let seg = Segment::new(a, b);
+            let plateau = Plateau::new(&c, &seg, reach).unwrap();
+            for _ in 0..40 {
+                let y = a.y.min(b.y) - reach
+                    + (b.y - a.y).abs().max(0.0) * next()
+                    + 2.0 * reach * next();
+                let Some((x0, x1)) = plateau.row(&seg, y) else {
+                    continue;
+                };
+                for x in [x0, x1, x0 + (x1 - x0) * next()] {
+                    let s = seg.surface(&c, reach, Vector2::new(x, y));
+                    assert_eq!(
+                        s.map(f64::to_bits),
+                        Some(plateau.z.to_bits()),
+                        "{a:?} {b:?} reach {reach}: at ({x}, {y}) {s:?}, plateau {}",
+                        plateau.z
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 50_000, "{checked}");
+        // The plateau is the region the fast path claims: a ramp's lower
+        // end, not its upper one.
+        let c = Cutter::flat(2.0);
+        let seg = Segment::new(Vector3::new(0.0, 0.0, 0.0), Vector3::new(10.0, 0.0, -1.0));
+        let p = Plateau::new(&c, &seg, 2.0).unwrap();
+        assert_eq!(p.z, -1.0);
+        assert!(p
+            .row(&seg, 0.0)
+            .is_some_and(|(lo, hi)| lo > 7.9 && hi < 12.1));
+        assert!(seg.surface(&c, 2.0, Vector2::new(1.0, 0.0)).unwrap() > -0.5);
+    }
+
+    #[test]
+    fn flat_tools_cut_and_probe_as_every_cell_solved() {
+        // dx != dy, a walk of flat tools only: level lines, ramps both
+        // ways, plunges, climbs, repeated passes over cut cells.
+        let s: Stock = "13x9x10-1-1-10".parse().unwrap();
+        let mut next = lcg(3);
+        let mut fast = HeightField::new(&s, 0.07).unwrap();
+        let mut slow = fast.clone();
+        let mut p = Vector3::new(4.0, 4.0, 0.5);
+        let (mut v_fast, mut hits) = (0.0, 0);
+        for k in 0..600 {
+            let c = Cutter::flat([2.0, 0.5, 1.2, 0.0][k / 150]);
+            let reach = c.radius.max(0.0707);
+            let q = match k % 6 {
+                0 => Vector3::new(p.x, p.y, -5.0 * next()),
+                1 | 2 => Vector3::new(
+                    (p.x + 6.0 * (next() - 0.5)).clamp(-2.0, 13.0),
+                    (p.y + 6.0 * (next() - 0.5)).clamp(-2.0, 9.0),
+                    p.z,
+                ),
+                _ => Vector3::new(
+                    (p.x + 0.6 * (next() - 0.5)).clamp(-2.0, 13.0),
+                    (p.y + 0.6 * (next() - 0.5)).clamp(-2.0, 9.0),
+                    (p.z + 0.4 * (next() - 0.55)).clamp(-6.0, 0.5),
+                ),
+            };
+            // A probe (as a rapid's, with play) before the cut finds
+            // the same deepest material as a look at every cell.
+            let probe = Sweep {
+                cutter: &c,
+                a: p,
+                b: q,
+                reach: (reach - 0.02).max(0.0707),
+            };
+            let found = probe.probe(&mut fast);
+            let mut deepest = 0.0f64;
+            let seg = Segment::new(p, q);
+            for j in 0..slow.ny {
+                for i in 0..slow.nx {
+                    let (x, y) = slow.centre(i, j);
+                    if let Some(s) = seg.surface(&c, probe.reach, Vector2::new(x, y)) {
+                        deepest = deepest.max(slow.z[j * slow.nx + i] as f64 - s.max(slow.bottom));
+                    }
+                }
+            }
+            assert_eq!(found.map_or(0.0, |h| h.depth), deepest, "move {k}");
+            hits += found.is_some() as usize;
+            v_fast += Sweep {
+                cutter: &c,
+                a: p,
+                b: q,
+                reach,
+            }
+            .cut(&mut fast);
+            brute_force(&c, p, q, reach, &mut slow);
+            p = q;
+        }
+        assert!(
+            fast.removed() > 100.0 && hits > 50,
+            "{} {hits}",
+            fast.removed()
+        );
+        assert!((v_fast - slow.removed()).abs() < 1e-6 * v_fast, "{v_fast}");
+        let worst = fast
+            .z
+            .iter()
+            .zip(&slow.z)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0f32, f32::max);
+        assert_eq!(worst, 0.0);
         for (k, h) in fast.z.iter().enumerate() {
             let (i, j) = (k % fast.nx, k / fast.nx);
             assert!(*h <= fast.peaks[(j / TILE) * fast.tiles_x + i / TILE]);
