@@ -20,27 +20,47 @@ pub enum Cut {
 
 /// The cuts of a run, in program order; `radius` gives a tool's radius.
 pub fn cuts(events: &[Event], radius: &dyn Fn(i64) -> Option<f64>) -> Vec<Cut> {
-    let mut out: Vec<Cut> = Vec::new();
+    let mut b = CutBuilder::default();
     for c in chunks(events) {
+        b.push(c, radius);
+    }
+    b.finish()
+}
+
+/// The cuts of a run made chunk by chunk ([`super::segment::Chunker`]):
+/// only the cuts are kept, each chunk is moved into its cut.
+#[derive(Debug, Default)]
+pub struct CutBuilder {
+    out: Vec<Cut>,
+}
+
+impl CutBuilder {
+    /// Takes the next chunk: a hole, a milling cut (merged into the one
+    /// before when it continues it) or another cut.
+    pub fn push(&mut self, c: Chunk, radius: &dyn Fn(i64) -> Option<f64>) {
         if let Some(hole) = as_hole(&c) {
-            out.push(Cut::Hole {
+            self.out.push(Cut::Hole {
                 hole,
                 tool: c.tool,
                 moves: c.moves,
             });
-            continue;
+            return;
         }
         let Some(m) = MillCut::of_chunk(&c) else {
-            out.push(Cut::Other(c));
-            continue;
+            self.out.push(Cut::Other(c));
+            return;
         };
         let r = radius(m.tool).unwrap_or(0.0);
-        match out.last_mut() {
+        match self.out.last_mut() {
             Some(Cut::Mill(prev)) if prev.continued_by(&m, r) => prev.absorb(m),
-            _ => out.push(Cut::Mill(m)),
+            _ => self.out.push(Cut::Mill(m)),
         }
     }
-    out
+
+    /// The cuts, in program order.
+    pub fn finish(self) -> Vec<Cut> {
+        self.out
+    }
 }
 
 impl Cut {
