@@ -35,6 +35,7 @@ mod hole;
 mod level;
 pub mod listing;
 mod open;
+mod packed;
 mod pocket;
 mod profile;
 mod segment;
@@ -93,13 +94,14 @@ pub fn recognise_report(
     tool: &dyn Fn(i64) -> ToolId,
     ctx: &Cc2Context,
 ) -> Vec<Diagnostic> {
-    let cuts = cuts::cuts(events, &|t| radius(project, tool, ctx, t));
+    let cuts = cuts::stored(events, &|t| radius(project, tool, ctx, t));
     raise_cuts(cuts, project, tool, ctx)
 }
 
 /// A run's cuts made event by event ([`segment::Chunker`] and
 /// [`cuts::CutBuilder`]): no event outlives the cut it belongs to, so a
-/// run is never held as events. Raised with [`recognise_cuts`].
+/// run is never held as events, and finished cuts are kept packed
+/// ([`packed`]). Raised with [`recognise_cuts`].
 #[derive(Debug, Default)]
 pub struct CutStream {
     chunker: segment::Chunker,
@@ -107,7 +109,7 @@ pub struct CutStream {
 }
 
 /// The cuts of a run ([`CutStream::finish`]).
-pub struct Cuts(Vec<cuts::Cut>);
+pub struct Cuts(Vec<cuts::Stored>);
 
 impl CutStream {
     /// Takes the next event; `radius` gives a tool's radius (mm).
@@ -121,7 +123,7 @@ impl CutStream {
         if let Some(c) = self.chunker.finish() {
             self.cuts.push(c, radius);
         }
-        Cuts(self.cuts.finish())
+        Cuts(self.cuts.finish(radius))
     }
 }
 
@@ -136,18 +138,22 @@ pub fn recognise_cuts(
     raise_cuts(cuts.0, project, tool, ctx)
 }
 
-/// Raises the cuts in order; each cut's moves are dropped once it is
-/// raised (recognition looks at the other cuts only through their
+/// Raises the cuts in order, unpacking one at a time; each is dropped
+/// once raised (recognition looks at the other cuts only through their
 /// envelopes and tops, taken first).
 fn raise_cuts(
-    cuts: Vec<cuts::Cut>,
+    cuts: Vec<cuts::Stored>,
     project: &mut Project,
     tool: &dyn Fn(i64) -> ToolId,
     ctx: &Cc2Context,
 ) -> Vec<Diagnostic> {
-    let mut r = Raiser::new(project, tool, ctx, &cuts);
-    for (i, cut) in cuts.into_iter().enumerate() {
+    let envelopes = cuts.iter().map(|c| c.envelope).collect();
+    let tops = cuts.iter().map(|c| c.top).collect();
+    let mut r = Raiser::new(project, tool, ctx, envelopes, tops);
+    for (i, stored) in cuts.into_iter().enumerate() {
         r.current = i;
+        let cut = stored.unpack();
+        drop(stored);
         match &cut {
             cuts::Cut::Hole { hole, tool, moves } => drill::raise(&mut r, hole, *tool, moves),
             cuts::Cut::Mill(m) => raise_mill(&mut r, m),
