@@ -103,6 +103,10 @@ fn streamed_raising_and_writing_give_the_whole_paths_text() {
                 text,
                 "{what}: raised differently"
             );
+            let codes = |r: &Raised| -> Vec<String> {
+                r.diagnostics.iter().map(|d| format!("{d:?}")).collect()
+            };
+            assert_eq!(codes(&a), codes(&b), "{what}: other diagnostics");
             let mut owned = Vec::new();
             write_owned_project_to(a.project, &[], &mut owned).unwrap();
             assert_eq!(
@@ -110,10 +114,6 @@ fn streamed_raising_and_writing_give_the_whole_paths_text() {
                 text,
                 "{what}: written differently"
             );
-            let codes = |r: &Raised| -> Vec<String> {
-                r.diagnostics.iter().map(|d| format!("{d:?}")).collect()
-            };
-            assert_eq!(codes(&a), codes(&b), "{what}: other diagnostics");
         }
     }
 }
