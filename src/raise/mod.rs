@@ -7,7 +7,8 @@
 //! the statement it belongs to, only the model grows. CC2's recognisers
 //! look back and ahead, but only at the cuts (a cut's moves, and every
 //! cut's envelope): the run is made into cuts as it comes and no event
-//! list is held; each cut's moves are dropped once it is raised.
+//! list is held; finished cuts are kept packed until the run ends, then
+//! unpacked, raised and dropped one at a time.
 
 pub mod blank;
 pub mod cc1;

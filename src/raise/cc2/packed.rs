@@ -139,14 +139,18 @@ mod tests {
                 _ => None,
             })
             .collect();
+        let mut probe = moves[0].clone();
+        probe.kind = MoveKind::Probe;
+        moves.push(probe);
         moves[1].feed = 120.0;
-        moves[2].feed_mode = FeedMode::PerRev;
-        moves[2].coolant.mist = true;
-        moves[2].kind = MoveKind::Probe;
+        moves[1].feed_mode = FeedMode::PerRev;
+        moves[1].coolant.mist = true;
         let packed = PackedMoves::pack(moves.clone());
         let back = packed.unpack();
         assert_eq!(back, moves);
-        assert_eq!(packed.states.len(), 3);
-        assert_eq!(back[1].to[2].to_bits(), (-0.0f64).to_bits());
+        // Rapid, line, arc, probe: one arc; the arc and the probe share
+        // the first move's state, the line has its own.
+        assert_eq!((packed.arcs.len(), packed.states.len()), (1, 3));
+        assert_eq!(back[0].to[2].to_bits(), (-0.0f64).to_bits());
     }
 }
