@@ -69,7 +69,7 @@ pub fn run(ctx: &mut Context, mut a: RaiseArgs<'_>) -> Result<i32, Failure> {
     } else {
         // Streamed: the Part 21 text of a large program is never held whole.
         emit_output_with(a.output, |out| {
-            crate::stepnc::write_project_to(&raised.project, &[], out)
+            crate::stepnc::write_owned_project_to(raised.project, &[], out)
         })
     };
     written.map_err(|e| Failure(format!("writing the output: {e}")))?;

@@ -4,8 +4,11 @@
 //! machining features recognised from the toolpaths.
 //!
 //! [`raise_file`] streams the run: for CC1 no event is held longer than
-//! the statement it belongs to, only the model grows. CC2 needs the whole
-//! event list (its recognisers look back and ahead).
+//! the statement it belongs to, only the model grows. CC2's recognisers
+//! look back and ahead, but only at the cuts (a cut's moves, and every
+//! cut's envelope): the run is made into cuts as it comes and no event
+//! list is held; finished cuts are kept packed until the run ends, then
+//! unpacked, raised and dropped one at a time.
 
 pub mod blank;
 pub mod cc1;
@@ -107,57 +110,99 @@ pub fn raise_events(events: &[Event], opts: &RaiseOptions) -> Raised {
     }
 }
 
-/// CC2: the skeleton and the tools, then the recognisers.
+/// CC2 on a run's events: [`Cc2Pass`] over them.
 fn raise_cc2(events: &[Event], opts: &RaiseOptions) -> Raised {
-    let mut project = project::skeleton(&opts.name, opts.stock.as_ref());
-    let mut tools = opts.tools();
-    let mut ids = std::collections::HashMap::new();
-    let mut run: Vec<holes::Item> = Vec::new();
-    let mut rapid_z: Option<f64> = None;
-    let mut flush =
-        |run: &mut Vec<holes::Item>, tools: &mut project::ToolRegistry, p: &mut Project| {
-            let drilling = matches!(holes::classify(run), holes::Pattern::Hole(_));
-            for it in run.drain(..) {
-                if let holes::Item::Move(m) = it {
-                    let id = tools.id(p, m.tool, m.span);
-                    ids.insert(m.tool, id);
-                    if m.is_feed() {
-                        tools.used(id, drilling);
-                    }
-                }
-            }
-        };
+    let mut pass = Cc2Pass::new(opts);
     for e in events {
-        if let Event::Move(m) = e {
-            if run
+        pass.push(e.clone());
+    }
+    pass.finish(opts)
+}
+
+/// CC2, event by event: the skeleton, the tools as the run first uses
+/// them, the highest rapid and the run's cuts ([`cc2::CutStream`]); then,
+/// once the run has ended (the security plane and the tools' kinds need
+/// all of it), the recognisers over the cuts.
+struct Cc2Pass {
+    project: Project,
+    tools: project::ToolRegistry,
+    ids: std::collections::HashMap<i64, ToolId>,
+    /// The moves of the statement being run (one drilling cycle or not).
+    run: Vec<holes::Item>,
+    rapid_z: Option<f64>,
+    cuts: cc2::CutStream,
+}
+
+impl Cc2Pass {
+    fn new(opts: &RaiseOptions) -> Self {
+        Cc2Pass {
+            project: project::skeleton(&opts.name, opts.stock.as_ref()),
+            tools: opts.tools(),
+            ids: std::collections::HashMap::new(),
+            run: Vec::new(),
+            rapid_z: None,
+            cuts: cc2::CutStream::default(),
+        }
+    }
+
+    fn push(&mut self, e: Event) {
+        if let Event::Move(m) = &e {
+            if self
+                .run
                 .first()
                 .is_some_and(|i| !matches!(i, holes::Item::Move(f) if f.span == m.span))
             {
-                flush(&mut run, &mut tools, &mut project);
+                self.flush();
             }
             if m.kind == crate::toolpath::MoveKind::Rapid {
-                rapid_z = Some(rapid_z.map_or(m.to[2], |z: f64| z.max(m.to[2])));
+                self.rapid_z = Some(self.rapid_z.map_or(m.to[2], |z: f64| z.max(m.to[2])));
             }
-            run.push(holes::Item::Move(m.clone()));
+            self.run.push(holes::Item::Move(m.clone()));
+        }
+        // The project's tools have the table's diameters: the radius
+        // recognition uses (`cc2::recognise_report`) is the table's.
+        let tools = &self.tools;
+        self.cuts.push(e, &|t| cc2::radius_of(tools.diameter(t)));
+    }
+
+    /// Registers the tools of the statement's moves, counting its cuts as
+    /// drilling when the statement is a drilling cycle.
+    fn flush(&mut self) {
+        let drilling = matches!(holes::classify(&self.run), holes::Pattern::Hole(_));
+        for it in self.run.drain(..) {
+            if let holes::Item::Move(m) = it {
+                let id = self.tools.id(&mut self.project, m.tool, m.span);
+                self.ids.insert(m.tool, id);
+                if m.is_feed() {
+                    self.tools.used(id, drilling);
+                }
+            }
         }
     }
-    flush(&mut run, &mut tools, &mut project);
-    tools.settle_kinds(&mut project);
-    let secplane_z = rapid_z.unwrap_or(0.0);
-    project::set_security_plane(&mut project, secplane_z);
-    let table = opts.tools();
-    let ctx = cc2::Cc2Context {
-        tool_diameter: Box::new(move |n| table.diameter(n)),
-        stock: opts.stock.map(|s| (s.corner, s.max())),
-        secplane_z,
-    };
-    let tool = |n: i64| ids.get(&n).copied().unwrap_or(ToolId(0));
-    let mut diagnostics = tools.diagnostics;
-    diagnostics.extend(cc2::recognise_report(events, &mut project, &tool, &ctx));
-    project::set_security_plane(&mut project, secplane_z);
-    Raised {
-        project,
-        diagnostics,
+
+    fn finish(mut self, opts: &RaiseOptions) -> Raised {
+        self.flush();
+        let tools = &self.tools;
+        let cuts = self.cuts.finish(&|t| cc2::radius_of(tools.diameter(t)));
+        let mut project = self.project;
+        self.tools.settle_kinds(&mut project);
+        let secplane_z = self.rapid_z.unwrap_or(0.0);
+        project::set_security_plane(&mut project, secplane_z);
+        let table = opts.tools();
+        let ctx = cc2::Cc2Context {
+            tool_diameter: Box::new(move |n| table.diameter(n)),
+            stock: opts.stock.map(|s| (s.corner, s.max())),
+            secplane_z,
+        };
+        let ids = self.ids;
+        let tool = |n: i64| ids.get(&n).copied().unwrap_or(ToolId(0));
+        let mut diagnostics = self.tools.diagnostics;
+        diagnostics.extend(cc2::recognise_cuts(cuts, &mut project, &tool, &ctx));
+        project::set_security_plane(&mut project, secplane_z);
+        Raised {
+            project,
+            diagnostics,
+        }
     }
 }
 
@@ -218,8 +263,13 @@ fn raise_run(
             Ok(raised)
         }
         Level::Cc2 => {
-            let (events, mut diags) = crate::toolpath::events_of_file(path, id, spec, run, files)?;
-            let mut raised = raise_cc2(&events, opts);
+            let mut tracker = Tracker::new();
+            let mut pass = Cc2Pass::new(opts);
+            let mut sink = |call: crate::canon::Canon, span| {
+                tracker.push(&call, span, |e| pass.push(e));
+            };
+            let mut diags = crate::interp::file::run_file(path, id, spec, run, files, &mut sink)?;
+            let mut raised = pass.finish(opts);
             diags.append(&mut raised.diagnostics);
             raised.diagnostics = diags;
             Ok(raised)

@@ -26,7 +26,9 @@ use crate::span::{FileId, Span};
 use part21::P21File;
 use std::path::Path;
 
-pub use write::{write_project, write_project_to, write_project_with_header};
+pub use write::{
+    write_owned_project_to, write_project, write_project_to, write_project_with_header,
+};
 
 /// FILE_SCHEMA names of ISO 14649 ARM files (read).
 const ARM_SCHEMAS: &[&str] = &["MACHINING_SCHEMA", "MILLING_SCHEMA", "COMBINED_SCHEMA"];

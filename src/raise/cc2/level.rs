@@ -5,6 +5,7 @@
 //! strokes of one face (same Z, touching, no loops) are merged into one
 //! [`MillCut`].
 
+use super::packed::PackedMoves;
 use super::segment::{Chunk, EPS};
 use crate::toolpath::{Move, MoveKind};
 use std::collections::HashMap;
@@ -93,6 +94,54 @@ pub fn contains(outer: Box2, inner: Box2, tol: f64) -> bool {
         && outer[1] <= inner[1] + tol
         && outer[2] >= inner[2] - tol
         && outer[3] >= inner[3] - tol
+}
+
+/// A [`MillCut`] with its moves packed ([`MillCut::pack`]).
+#[derive(Clone, Debug)]
+pub struct PackedMillCut {
+    tool: i64,
+    moves: PackedMoves,
+    levels: Vec<(f64, PackedMoves)>,
+    footprint: Box2,
+    speeds: (f64, f64),
+    has_loops: bool,
+}
+
+impl MillCut {
+    pub fn pack(self) -> PackedMillCut {
+        PackedMillCut {
+            tool: self.tool,
+            moves: PackedMoves::pack(self.moves),
+            levels: self
+                .levels
+                .into_iter()
+                .map(|l| (l.z, PackedMoves::pack(l.moves)))
+                .collect(),
+            footprint: self.footprint,
+            speeds: self.speeds,
+            has_loops: self.has_loops,
+        }
+    }
+}
+
+impl PackedMillCut {
+    pub fn unpack(&self) -> MillCut {
+        MillCut {
+            tool: self.tool,
+            moves: self.moves.unpack(),
+            levels: self
+                .levels
+                .iter()
+                .map(|(z, m)| Level {
+                    z: *z,
+                    moves: m.unpack(),
+                })
+                .collect(),
+            footprint: self.footprint,
+            speeds: self.speeds,
+            has_loops: self.has_loops,
+        }
+    }
 }
 
 impl MillCut {

@@ -35,6 +35,7 @@ mod hole;
 mod level;
 pub mod listing;
 mod open;
+mod packed;
 mod pocket;
 mod profile;
 mod segment;
@@ -93,11 +94,67 @@ pub fn recognise_report(
     tool: &dyn Fn(i64) -> ToolId,
     ctx: &Cc2Context,
 ) -> Vec<Diagnostic> {
-    let cuts = cuts::cuts(events, &|t| radius(project, tool, ctx, t));
-    let mut r = Raiser::new(project, tool, ctx, &cuts);
-    for (i, cut) in cuts.iter().enumerate() {
+    let cuts = cuts::stored(events, &|t| radius(project, tool, ctx, t));
+    raise_cuts(cuts, project, tool, ctx)
+}
+
+/// A run's cuts made event by event ([`segment::Chunker`] and
+/// [`cuts::CutBuilder`]): no event outlives the cut it belongs to, so a
+/// run is never held as events, and finished cuts are kept packed
+/// ([`packed`]). Raised with [`recognise_cuts`].
+#[derive(Debug, Default)]
+pub struct CutStream {
+    chunker: segment::Chunker,
+    cuts: cuts::CutBuilder,
+}
+
+/// The cuts of a run ([`CutStream::finish`]).
+pub struct Cuts(Vec<cuts::Stored>);
+
+impl CutStream {
+    /// Takes the next event; `radius` gives a tool's radius (mm).
+    pub fn push(&mut self, e: Event, radius: &dyn Fn(i64) -> Option<f64>) {
+        if let Some(c) = self.chunker.push(e) {
+            self.cuts.push(c, radius);
+        }
+    }
+
+    pub fn finish(mut self, radius: &dyn Fn(i64) -> Option<f64>) -> Cuts {
+        if let Some(c) = self.chunker.finish() {
+            self.cuts.push(c, radius);
+        }
+        Cuts(self.cuts.finish(radius))
+    }
+}
+
+/// [`recognise_report`] on cuts made by a [`CutStream`] (with the radius
+/// [`recognise_report`] would use: the context's, else the project's).
+pub fn recognise_cuts(
+    cuts: Cuts,
+    project: &mut Project,
+    tool: &dyn Fn(i64) -> ToolId,
+    ctx: &Cc2Context,
+) -> Vec<Diagnostic> {
+    raise_cuts(cuts.0, project, tool, ctx)
+}
+
+/// Raises the cuts in order, unpacking one at a time; each is dropped
+/// once raised (recognition looks at the other cuts only through their
+/// envelopes and tops, taken first).
+fn raise_cuts(
+    cuts: Vec<cuts::Stored>,
+    project: &mut Project,
+    tool: &dyn Fn(i64) -> ToolId,
+    ctx: &Cc2Context,
+) -> Vec<Diagnostic> {
+    let envelopes = cuts.iter().map(|c| c.envelope).collect();
+    let tops = cuts.iter().map(|c| c.top).collect();
+    let mut r = Raiser::new(project, tool, ctx, envelopes, tops);
+    for (i, stored) in cuts.into_iter().enumerate() {
         r.current = i;
-        match cut {
+        let cut = stored.unpack();
+        drop(stored);
+        match &cut {
             cuts::Cut::Hole { hole, tool, moves } => drill::raise(&mut r, hole, *tool, moves),
             cuts::Cut::Mill(m) => raise_mill(&mut r, m),
             cuts::Cut::Other(c) => freeform::raise(&mut r, c.tool, &c.moves, "moves"),
@@ -132,5 +189,10 @@ fn radius(
             .get(id.index())
             .map(|tl| tl.body.dimension.diameter)
     });
+    radius_of(d)
+}
+
+/// The radius of a tool of diameter `d`, when that is a size.
+pub fn radius_of(d: Option<f64>) -> Option<f64> {
     d.filter(|d| *d > 0.0 && d.is_finite()).map(|d| d / 2.0)
 }

@@ -3,12 +3,13 @@
 //! moves in X or Y (the tool leaves for another place); vertical rapids
 //! (peck retracts, the approach down to the R plane) stay in the chunk.
 //! Chunks without any feed move are only positioning and are not kept
-//! (the workplan's security plane stands for them).
+//! (the workplan's security plane stands for them). [`Chunker`] cuts a
+//! run as it comes.
 
 use crate::toolpath::{Event, Move, MoveKind};
 
 /// The moves one tool makes at one place, with the dwells among them.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Chunk {
     pub tool: i64,
     pub moves: Vec<Move>,
@@ -32,50 +33,68 @@ pub fn moves_in_xy(m: &Move) -> bool {
 
 /// The chunks of a run, in program order.
 pub fn chunks(events: &[Event]) -> Vec<Chunk> {
-    let mut out = Vec::new();
-    let mut cur = Chunk {
-        tool: 0,
-        moves: Vec::new(),
-        dwells: Vec::new(),
-    };
-    for e in events {
+    let mut c = Chunker::default();
+    let mut out: Vec<Chunk> = events.iter().filter_map(|e| c.push(e.clone())).collect();
+    out.extend(c.finish());
+    out
+}
+
+/// The chunks of a run made event by event: each is given back as soon
+/// as the event that ends it comes, so a run is never held whole.
+#[derive(Debug, Default)]
+pub struct Chunker {
+    cur: Chunk,
+}
+
+impl Chunker {
+    /// Takes the next event; gives back the chunk it ends, if any.
+    pub fn push(&mut self, e: Event) -> Option<Chunk> {
+        let cur = &mut self.cur;
         match e {
             Event::Move(m) => {
-                if matches!(m.kind, MoveKind::Rapid) && moves_in_xy(m) {
-                    flush(&mut cur, &mut out);
+                if matches!(m.kind, MoveKind::Rapid) && moves_in_xy(&m) {
+                    let done = take(cur);
                     cur.tool = m.tool;
-                    continue;
+                    return done;
                 }
                 if cur.moves.is_empty() {
                     cur.tool = m.tool;
                 }
-                cur.moves.push(m.clone());
+                cur.moves.push(m);
+                None
             }
             Event::ToolChange { tool, .. } => {
-                flush(&mut cur, &mut out);
-                cur.tool = *tool;
+                let done = take(cur);
+                cur.tool = tool;
+                done
             }
-            Event::Dwell { seconds, .. } => cur.dwells.push(DwellAt {
-                after: cur.moves.len(),
-                seconds: *seconds,
-            }),
-            Event::Stop { .. } => flush(&mut cur, &mut out),
-            Event::Comment { .. } => {}
+            Event::Dwell { seconds, .. } => {
+                cur.dwells.push(DwellAt {
+                    after: cur.moves.len(),
+                    seconds,
+                });
+                None
+            }
+            Event::Stop { .. } => take(cur),
+            Event::Comment { .. } => None,
         }
     }
-    flush(&mut cur, &mut out);
-    out
+
+    /// The last chunk, once the run has ended.
+    pub fn finish(mut self) -> Option<Chunk> {
+        take(&mut self.cur)
+    }
 }
 
-fn flush(cur: &mut Chunk, out: &mut Vec<Chunk>) {
+/// The chunk so far, when it cuts (has a feed move); `cur` is emptied and
+/// keeps its tool.
+fn take(cur: &mut Chunk) -> Option<Chunk> {
     let chunk = Chunk {
         tool: cur.tool,
         moves: std::mem::take(&mut cur.moves),
         dwells: std::mem::take(&mut cur.dwells),
     };
-    if chunk.moves.iter().any(|m| m.is_feed()) {
-        out.push(chunk);
-    }
+    chunk.moves.iter().any(|m| m.is_feed()).then_some(chunk)
 }
 
 #[cfg(test)]

@@ -2,7 +2,7 @@
 //! features found so far (what later operations are matched against),
 //! the top surface, the cuts' envelopes, names, diagnostics.
 
-use super::{cuts, level, radius, shape, slot, Cc2Context};
+use super::{level, radius, shape, slot, Cc2Context};
 use crate::diag::Diagnostic;
 use crate::stepnc::model::{
     Executable, Feature, FeatureId, MachiningWorkingstep, Operation, OperationId, Project, ToolId,
@@ -55,27 +55,14 @@ pub(crate) struct Raiser<'a> {
 }
 
 impl<'a> Raiser<'a> {
+    /// `envelopes` and `tops`: every cut's, by index (`cuts::Stored`).
     pub fn new(
         project: &'a mut Project,
         tool: &'a dyn Fn(i64) -> ToolId,
         ctx: &'a Cc2Context,
-        cuts: &[cuts::Cut],
+        envelopes: Vec<level::Box2>,
+        tops: Vec<f64>,
     ) -> Self {
-        let envelopes = cuts
-            .iter()
-            .map(|c| c.envelope(&|t| radius(project, tool, ctx, t)))
-            .collect();
-        let tops = cuts
-            .iter()
-            .map(|c| match c {
-                cuts::Cut::Mill(m) => m
-                    .levels
-                    .iter()
-                    .map(|l| l.z)
-                    .fold(f64::NEG_INFINITY, f64::max),
-                cuts::Cut::Hole { .. } | cuts::Cut::Other(_) => f64::NEG_INFINITY,
-            })
-            .collect();
         Raiser {
             tops,
             top: ctx.stock.map_or(0.0, |s| s.1[2]),

@@ -42,13 +42,47 @@ pub fn write_project_to<O: std::io::Write + ?Sized>(
     out: &mut O,
 ) -> std::io::Result<()> {
     let timer = graph::PhaseTimer::new();
-    let mut w = W::new(p);
-    let root = w.project();
+    let (graph, root) = W::new(p, Vec::new()).build();
     timer.phase("build graph");
-    let Value::Ref(root) = root else {
+    write_graph(graph, root, &p.id, original, out)?;
+    timer.phase("number and write");
+    Ok(())
+}
+
+/// [`write_project_to`] for a project that is not needed afterwards:
+/// each operation's toolpath is dropped as soon as it is written and the
+/// rest of the project before the numbering, so the model and its text
+/// are never both held whole. The text is the same.
+pub fn write_owned_project_to<O: std::io::Write + ?Sized>(
+    mut p: Project,
+    original: &[Record],
+    out: &mut O,
+) -> std::io::Result<()> {
+    let timer = graph::PhaseTimer::new();
+    let toolpaths = p.operations.iter_mut().map(|o| o.toolpath.take());
+    let toolpaths = toolpaths.collect();
+    let (graph, root) = W::new(&p, toolpaths).build();
+    timer.phase("build graph");
+    let name = std::mem::take(&mut p.id);
+    drop(p);
+    write_graph(graph, root, &name, original, out)?;
+    timer.phase("number and write");
+    Ok(())
+}
+
+/// The header (the project's `name`, with the FILE_DESCRIPTION and
+/// FILE_NAME of `original` when given) and the instances, numbered.
+fn write_graph<O: std::io::Write + ?Sized>(
+    graph: graph::Graph,
+    root: Option<u64>,
+    name: &str,
+    original: &[Record],
+    out: &mut O,
+) -> std::io::Result<()> {
+    let Some(root) = root else {
         return Ok(());
     };
-    let mut head = header(&p.id);
+    let mut head = header(name);
     for r in head.iter_mut() {
         if r.entity == "FILE_SCHEMA" {
             continue;
@@ -64,8 +98,7 @@ pub fn write_project_to<O: std::io::Write + ?Sized>(
     }
     text.push_str("ENDSEC;\nDATA;\n");
     out.write_all(text.as_bytes())?;
-    w.graph.write_numbered(root, out)?;
-    timer.phase("number and write");
+    graph.write_numbered(root, out)?;
     out.write_all(b"ENDSEC;\nEND-ISO-10303-21;\n")
 }
 
@@ -110,10 +143,14 @@ pub(crate) struct W<'p> {
     pub features: HashMap<FeatureId, u64>,
     pub operations: HashMap<OperationId, u64>,
     pub tools: HashMap<ToolId, u64>,
+    /// Operations' toolpaths taken out of the project, by operation
+    /// index: each is dropped once written (empty: they are in the
+    /// project).
+    toolpaths: Vec<Option<Vec<Toolpath>>>,
 }
 
 impl<'p> W<'p> {
-    fn new(p: &'p Project) -> Self {
+    fn new(p: &'p Project, toolpaths: Vec<Option<Vec<Toolpath>>>) -> Self {
         W {
             p,
             graph: graph::Graph::default(),
@@ -121,7 +158,22 @@ impl<'p> W<'p> {
             features: HashMap::new(),
             operations: HashMap::new(),
             tools: HashMap::new(),
+            toolpaths,
         }
+    }
+
+    /// The instance graph from the PROJECT, and the PROJECT's number.
+    fn build(mut self) -> (graph::Graph, Option<u64>) {
+        let root = match self.project() {
+            Value::Ref(n) => Some(n),
+            _ => None,
+        };
+        (self.graph, root)
+    }
+
+    /// An operation's toolpath taken out of the project, if it was.
+    pub fn take_toolpath(&mut self, id: OperationId) -> Option<Vec<Toolpath>> {
+        self.toolpaths.get_mut(id.index()).and_then(Option::take)
     }
 
     /// A value instance, shared with an equal one already written.

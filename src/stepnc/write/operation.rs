@@ -12,8 +12,11 @@ impl<'p> W<'p> {
         let n = self.reserve();
         self.operations.insert(id, n);
         let o = self.p.operation(id);
+        let taken = self.take_toolpath(id);
+        let toolpath = self.opt_toolpath_list(if taken.is_some() { &taken } else { &o.toolpath });
+        drop(taken);
         let mut params = vec![
-            self.opt_toolpath_list(&o.toolpath),
+            toolpath,
             self.opt_raw(&o.tool_direction),
             s(&o.id),
             or(o.retract_plane),
