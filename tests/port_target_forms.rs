@@ -213,3 +213,45 @@ fn a_path_tolerance_goes_only_where_the_code_takes_it() {
     let text = port(&src, "linuxcnc", &dir.path().join("b.ngc")).unwrap();
     assert!(text.contains("G64 P0.01"), "{text}");
 }
+
+/// The 840D's tolerance cycle `CYCLE832(tol, type)` is a path mode, not a
+/// motion: ported it becomes the continuous-path mode with the tolerance
+/// (LinuxCNC `G64 P`, the TNC's cycle 32, Fanuc `G64` with W0610 for the
+/// tolerance the machine keeps), and deselection plain `G64`. It used to
+/// be "written as the moves it makes", a bare `G1`, which LinuxCNC then
+/// refused for lack of a feed (the port failed its proof).
+#[test]
+fn a_tolerance_cycle_ports_as_the_path_mode() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "tol.mpf",
+        "G17 G90 G54\nT1 D1\nM6\nS8000 M3\nCYCLE832(0.02,_FINISH,1)\nG0 X0 Y0 Z5\n\
+         G1 Z-1 F500\nX20 Y5\nCYCLE832(0,_OFF,1)\nG0 Z50\nM30\n",
+    );
+    let text = port(&src, "linuxcnc", &dir.path().join("t.ngc")).unwrap();
+    let lines: Vec<&str> = text.lines().map(str::trim).collect();
+    assert!(lines.contains(&"G64 P0.02"), "{text}");
+    assert!(lines.contains(&"G64"), "deselection: {text}");
+    assert!(!lines.contains(&"G1"), "no bare G1: {text}");
+    let text = port(&src, "heidenhain", &dir.path().join("t.h")).unwrap();
+    assert!(text.contains("CYCL DEF 32.1 T+0.02"), "{text}");
+    let out = dir.path().join("t.nc");
+    let o = cncc(&[
+        "port",
+        &src,
+        "--to",
+        "fanuc",
+        "--verify",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(err.contains("W0610") && !err.contains("W0612"), "{err}");
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert!(
+        text.lines().filter(|l| l.trim() == "G64").count() == 2,
+        "{text}"
+    );
+}

@@ -110,6 +110,7 @@ mod tnc_labels;
 pub mod to_named;
 pub mod to_tnc;
 pub mod to_word;
+mod tolerance_cycle;
 mod tool_call;
 pub mod toolmap;
 mod tools;
@@ -156,6 +157,7 @@ pub fn port_owned(
 ) -> (Program, Vec<Diagnostic>) {
     let mut diags = Vec::new();
     haas_cycles::run(&out, from, to, opts.expand_cycles, &mut diags);
+    tolerance_cycle::run(&mut out, from, to);
     if opts.expand_cycles {
         expand::expand_unmappable(&mut out, from, to, &mut diags);
     }
