@@ -31,9 +31,11 @@ case "$target" in
     part21 | post) seed programs/stepnc stepnc ;;
     interp) seed programs/fanuc programs/haas programs/linuxcnc programs/siemens840d programs/heidenhain ;;
     port) # the first byte chooses the source dialect (fuzzing::DIALECTS)
+        # `sed -n`, not `head`: head closes the pipe after 20 names and,
+        # with pipefail, find's SIGPIPE ended this script (status 141).
         k=0
         for d in fanuc haas linuxcnc siemens840d heidenhain; do
-            find "$root/tests/programs/$d" -type f -size -64k | head -20 | while read -r f; do
+            find "$root/tests/programs/$d" -type f -size -64k | sed -n 1,20p | while read -r f; do
                 { printf "\\x$(printf %02x $k)"; cat "$f"; } >"$corpus/seed_$(echo "${f#$root/}" | tr / _)"
             done
             k=$((k + 1))
