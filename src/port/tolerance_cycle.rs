@@ -92,9 +92,10 @@ fn number(p: &Program, e: crate::ir::ExprId, from: &DialectSpec) -> Option<Decim
     }
 }
 
+/// `d` without its sign, exactly as written (no trip through f64).
 fn abs(d: Decimal) -> Decimal {
     if d.to_f64() < 0.0 {
-        crate::port::decimal(-d.to_f64())
+        d.neg()
     } else {
         d
     }
